@@ -1,0 +1,64 @@
+/*
+** measure.h: badness measures (thesis table 3.2).
+**
+** A measure scores a triangle; small is good.  Measures live in one
+** registry: the 23 built-in ones of ../shared/spec/measures.md first (their
+** indices are the MEASURE_* constants below), then any that a user defines
+** at run time (formula or plugin) through measure_register.  Everything else
+** in fliplab refers to a measure by its registry index.
+*/
+#ifndef FLIPLAB_MEASURE_H
+#define FLIPLAB_MEASURE_H
+
+#include "geom/geom.h"
+
+/* Which values a measure takes; it decides the joints' sign convention. */
+typedef enum measure_sign {
+  MEASURE_NONPOS = -1,   /* values <= 0 (a good quantity, negated) */
+  MEASURE_ANYSIGN = 0,   /* both signs: only the min and max joints apply */
+  MEASURE_NONNEG = 1     /* values >= 0 */
+} measure_sign;
+
+typedef double (*measure_fn)(const geom_tri *t, void *ctx);
+
+typedef struct measure {
+  const char *name;     /* command-line name, e.g. "-alpha" */
+  const char *symbol;   /* thesis symbol, e.g. "-α" */
+  const char *desc;     /* one-line description */
+  measure_sign sign;
+  measure_fn fn;
+  void *ctx;            /* passed to fn; NULL for built-ins */
+} measure;
+
+enum {
+  MEASURE_NEG_ALPHA, MEASURE_BETA, MEASURE_GAMMA, MEASURE_A, MEASURE_NEG_C,
+  MEASURE_P, MEASURE_ABC, MEASURE_NEG_AREA, MEASURE_R, MEASURE_NEG_R,
+  MEASURE_NEG_H, MEASURE_NEG_R_OVER_R, MEASURE_NEG_R2_OVER_A,
+  MEASURE_NEG_C_OVER_A, MEASURE_NEG_C_OVER_P, MEASURE_A_MINUS_C,
+  MEASURE_B_OVER_C_MINUS_A, MEASURE_LAMBDA, MEASURE_D, MEASURE_SIGMA,
+  MEASURE_PINF, MEASURE_RINF, MEASURE_NEG_RINF,
+  MEASURE_BUILTIN_COUNT
+};
+
+#define MEASURE_MAX 64        /* registry capacity, built-ins included */
+#define MEASURE_TABLE34_COUNT 20
+
+/* Registry. */
+int measure_count(void);
+const measure *measure_get(int id);
+int measure_find(const char *name);             /* -1 if unknown */
+int measure_register(const measure *m);         /* new id, or -1 if full or taken */
+void measure_unregister_user(void);             /* drop user measures (tests) */
+
+/* Table 3.4's twenty columns, in the thesis's order, as registry ids. */
+extern const int measure_table34[MEASURE_TABLE34_COUNT];
+
+static inline double measure_eval(int id, const geom_tri *t) {
+  const measure *m = measure_get(id);
+  return m->fn(t, m->ctx);
+}
+
+/* Write a comma-separated list of all measure names into buf. */
+void measure_names(char *buf, size_t len);
+
+#endif

@@ -1,0 +1,64 @@
+/*
+** geom.h: points, triangles and exact predicates.
+**
+** A geom_tri holds every quantity of a triangle that a badness measure may
+** need, computed once.  The three vertices are put in a canonical order
+** (lexicographic by x, then y) before anything is computed, so the same
+** triangle gets bit-identical values however its vertices are listed; the
+** flip rules rely on that to be independent of the quadrilateral's first
+** vertex bit for bit.
+*/
+#ifndef FLIPLAB_GEOM_H
+#define FLIPLAB_GEOM_H
+
+#include <stddef.h>
+
+typedef struct geom_point {
+  double x, y;
+} geom_point;
+
+typedef struct geom_tri {
+  geom_point v[3];            /* vertices in canonical (lexicographic) order */
+  double a, b, c;             /* side lengths, a >= b >= c */
+  double alpha, beta, gamma;  /* angles in radians, alpha <= beta <= gamma */
+  double area;                /* A > 0 for a proper triangle */
+  double P;                   /* perimeter a + b + c */
+  double R;                   /* circumradius abc / (4A) */
+  double r;                   /* inradius 2A / P */
+  double h;                   /* shortest altitude a' = 2A / a */
+  double rx, ry;              /* coordinate ranges of the vertices */
+} geom_tri;
+
+/* Fill *t from three points, in any order. */
+void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r);
+
+/* Exact predicates for double inputs.
+** geom_orient: +1 if a, b, c turn anticlockwise, -1 clockwise, 0 collinear.
+** geom_incircle: for anticlockwise a, b, c: +1 if d is strictly inside
+** their circumcircle, -1 strictly outside, 0 on it. */
+int geom_orient(geom_point a, geom_point b, geom_point c);
+int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d);
+
+/* Counts of predicate calls that needed the exact fallback (diagnostics). */
+unsigned long geom_exact_calls(void);
+
+double geom_dist(geom_point p, geom_point q);
+int geom_point_finite(geom_point p);
+
+/* Convex polygon validation, used for every polygon a user hands us.
+** geom_polygon_check reverses a clockwise polygon in place (the documented
+** normalisation: fliplab works anticlockwise) and returns GEOM_OK, or an
+** error code with *bad set to the 0-based index of the offending vertex. */
+typedef enum geom_polyerr {
+  GEOM_OK = 0,
+  GEOM_TOO_FEW,        /* fewer than 3 vertices */
+  GEOM_NOT_FINITE,     /* NaN or infinite coordinate */
+  GEOM_DUPLICATE,      /* two equal vertices */
+  GEOM_COLLINEAR,      /* three consecutive vertices on a line */
+  GEOM_NOT_CONVEX      /* a reflex vertex, or the boundary winds more than once */
+} geom_polyerr;
+
+geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed);
+const char *geom_polyerr_str(geom_polyerr e);
+
+#endif
