@@ -1,0 +1,54 @@
+/*
+** cli.h: the fliplab program's commands and their shared helpers.
+**
+** Each command lives in cli/cmd_NAME.c as cli_cmd_NAME(argc, argv), where
+** argv[0] is the command's name.  A command returns the process exit status;
+** errors are one line on stderr ("fliplab NAME: ..."), exit status 2 for
+** bad usage or input and 1 for a failure while running.
+*/
+#ifndef FLIPLAB_CLI_H
+#define FLIPLAB_CLI_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+int cli_cmd_list(int argc, char **argv);
+int cli_cmd_flip(int argc, char **argv);
+int cli_cmd_sample(int argc, char **argv);
+int cli_cmd_table34(int argc, char **argv);
+int cli_cmd_merge(int argc, char **argv);
+int cli_cmd_classify(int argc, char **argv);
+int cli_cmd_got(int argc, char **argv);
+int cli_cmd_rule(int argc, char **argv);
+
+/* Print "fliplab CMD: message" on stderr; returns 2 (usage/input error). */
+int cli_error(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+  __attribute__((format(printf, 2, 3)))
+#endif
+  ;
+
+/* Strict number parsing: the whole string, finite, in range.  On failure
+** they print the one-line error naming the option and return -1. */
+int cli_parse_u64(const char *cmd, const char *opt, const char *s,
+                  uint64_t lo, uint64_t hi, uint64_t *out);
+int cli_parse_double(const char *cmd, const char *opt, const char *s,
+                     double lo, double hi, double *out);
+
+/* The value of an option "--name VALUE" at argv[*i]; advances *i.
+** NULL (after printing the error) when the value is missing. */
+const char *cli_optarg(const char *cmd, int argc, char **argv, int *i);
+
+/* Is opt one of the help spellings? */
+int cli_is_help(const char *opt);
+
+/* Global options usable before or after any command: --define 'NAME = EXPR'
+** and --plugin FILE.so.  cli_userdefs_take removes them from argv (updating
+** *argc) after registering what they define; returns 0, or 2 after an error. */
+int cli_userdefs_take(int *argc, char **argv);
+
+/* Open FILE for writing, "-" meaning stdout; NULL after printing an error. */
+FILE *cli_open_out(const char *cmd, const char *path);
+void cli_close_out(FILE *f);
+
+#endif

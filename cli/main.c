@@ -1,0 +1,52 @@
+/*
+** main.c: the fliplab program: dispatch to a command.
+*/
+#include <stdio.h>
+#include <string.h>
+#include "cli/cli.h"
+
+typedef struct cli_command {
+  const char *name;
+  int (*run)(int argc, char **argv);
+  const char *summary;
+} cli_command;
+
+static const cli_command cli_commands[] = {
+  {"list",     cli_cmd_list,     "list the badness measures, joints and quadrilateral rules"},
+  {"flip",     cli_cmd_flip,     "decide one convex quadrilateral with a rule"},
+  {"sample",   cli_cmd_sample,   "write random convex pentagons to CSV"},
+  {"table34",  cli_cmd_table34,  "regenerate the thesis's table 3.4 (flip-graph types)"},
+  {"merge",    cli_cmd_merge,    "sum table34 CSV shards"},
+  {"classify", cli_cmd_classify, "classify the directed flip graphs of given pentagons"},
+  {"rule",     cli_cmd_rule,     "test a flip rule: types, intervals, verdicts, witnesses"},
+  {"got",      cli_cmd_got,      "globally optimal triangulation of a convex polygon"},
+};
+#define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
+
+static void cli_usage(FILE *out) {
+  fprintf(out, "usage: fliplab [--define 'NAME = EXPR'] [--plugin FILE.so] COMMAND [options]\n"
+               "       fliplab COMMAND --help | fliplab --version\n\ncommands:\n");
+  for (size_t i = 0; i < CLI_NCOMMANDS; i++)
+    fprintf(out, "  %-9s %s\n", cli_commands[i].name, cli_commands[i].summary);
+}
+
+int main(int argc, char **argv) {
+  if (cli_userdefs_take(&argc, argv) != 0) return 2;
+  if (argc < 2) {
+    cli_usage(stderr);
+    return 2;
+  }
+  if (cli_is_help(argv[1])) {
+    cli_usage(stdout);
+    return 0;
+  }
+  if (strcmp(argv[1], "--version") == 0) {
+    printf("fliplab %s\n", FLIPLAB_VERSION);
+    return 0;
+  }
+  for (size_t i = 0; i < CLI_NCOMMANDS; i++)
+    if (strcmp(argv[1], cli_commands[i].name) == 0)
+      return cli_commands[i].run(argc - 1, argv + 1);
+  fprintf(stderr, "fliplab: unknown command '%s' (try: fliplab --help)\n", argv[1]);
+  return 2;
+}

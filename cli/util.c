@@ -1,0 +1,82 @@
+/*
+** util.c: helpers shared by the commands: errors, strict number parsing,
+** option values, output files.
+*/
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli/cli.h"
+
+int cli_error(const char *cmd, const char *fmt, ...) {
+  va_list ap;
+  fprintf(stderr, "fliplab %s: ", cmd);
+  va_start(ap, fmt);
+  vfprintf(stderr, fmt, ap);
+  va_end(ap);
+  fputc('\n', stderr);
+  return 2;
+}
+
+int cli_parse_u64(const char *cmd, const char *opt, const char *s,
+                  uint64_t lo, uint64_t hi, uint64_t *out) {
+  char *end;
+  errno = 0;
+  if (s == NULL || *s == '\0' || *s == '-' || *s == '+') goto bad;
+  unsigned long long v = strtoull(s, &end, 10);
+  if (errno != 0 || *end != '\0') goto bad;
+  if (v < lo || v > hi) {
+    cli_error(cmd, "%s %s is out of range [%llu, %llu]", opt, s,
+              (unsigned long long)lo, (unsigned long long)hi);
+    return -1;
+  }
+  *out = v;
+  return 0;
+bad:
+  cli_error(cmd, "%s expects a non-negative integer, got '%s'", opt, s ? s : "");
+  return -1;
+}
+
+int cli_parse_double(const char *cmd, const char *opt, const char *s,
+                     double lo, double hi, double *out) {
+  char *end;
+  errno = 0;
+  if (s == NULL || *s == '\0') goto bad;
+  double v = strtod(s, &end);
+  if (errno == ERANGE || *end != '\0' || !isfinite(v)) goto bad;
+  if (v < lo || v > hi) {
+    cli_error(cmd, "%s %s is out of range [%g, %g]", opt, s, lo, hi);
+    return -1;
+  }
+  *out = v;
+  return 0;
+bad:
+  cli_error(cmd, "%s expects a finite number, got '%s'", opt, s ? s : "");
+  return -1;
+}
+
+const char *cli_optarg(const char *cmd, int argc, char **argv, int *i) {
+  if (*i + 1 >= argc) {
+    cli_error(cmd, "option %s needs a value", argv[*i]);
+    return NULL;
+  }
+  *i += 1;
+  return argv[*i];
+}
+
+int cli_is_help(const char *opt) {
+  return strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0 || strcmp(opt, "help") == 0;
+}
+
+FILE *cli_open_out(const char *cmd, const char *path) {
+  if (path == NULL || strcmp(path, "-") == 0) return stdout;
+  FILE *f = fopen(path, "w");
+  if (f == NULL) cli_error(cmd, "cannot write '%s': %s", path, strerror(errno));
+  return f;
+}
+
+void cli_close_out(FILE *f) {
+  if (f != NULL && f != stdout) fclose(f);
+  else if (f == stdout) fflush(stdout);
+}

@@ -1,0 +1,34 @@
+/*
+** sampler.h: random convex polygons.
+**
+** sampler_pentagon is the thesis's iteration method (section 6.3): points
+** uniform in the unit disc, one at a time, keeping their convex hull, until
+** the hull has exactly five vertices.  Sample i depends only on (seed, i):
+** its generator is seeded from a hash of the pair, so any thread count and
+** any split into shards give bit-identical samples.
+**
+** For large n: the vector method (section 6.4) and points on a circle.
+*/
+#ifndef FLIPLAB_SAMPLER_H
+#define FLIPLAB_SAMPLER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "geom/geom.h"
+
+/* A small fast generator (the state of one stream). */
+typedef struct sampler_rng { uint64_t s[4]; } sampler_rng;
+
+void sampler_seed(sampler_rng *g, uint64_t seed, uint64_t stream);
+uint64_t sampler_next(sampler_rng *g);
+double sampler_uniform(sampler_rng *g);   /* [0, 1), 53 random bits */
+double sampler_normal(sampler_rng *g);
+
+/* Pentagon number `index` of the stream `seed`, anticlockwise. */
+void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]);
+
+/* Convex n-gons, anticlockwise, strictly convex, n >= 3. 0 on success. */
+int sampler_vector(sampler_rng *g, size_t n, geom_point *out);
+int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
+
+#endif

@@ -1,0 +1,74 @@
+/*
+** testutil.c: helpers shared by the tests.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "testutil.h"
+
+uint64_t testutil_next(testutil_rng *g) {
+  uint64_t z = (g->s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+double testutil_uniform(testutil_rng *g) {
+  return (double)(testutil_next(g) >> 11) * 0x1.0p-53;
+}
+
+static geom_point testutil_disc_point(testutil_rng *g) {
+  for (;;) {
+    double x = 2 * testutil_uniform(g) - 1, y = 2 * testutil_uniform(g) - 1;
+    if (x * x + y * y < 1) return (geom_point){x, y};
+  }
+}
+
+void testutil_convex_quad(testutil_rng *g, geom_point q[4]) {
+  for (;;) {
+    for (int i = 0; i < 4; i++) q[i] = testutil_disc_point(g);
+    /* Order by angle about the centroid, then require strict convexity. */
+    double cx = (q[0].x + q[1].x + q[2].x + q[3].x) / 4;
+    double cy = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
+    for (int i = 1; i < 4; i++)
+      for (int j = i; j > 0 && atan2(q[j].y - cy, q[j].x - cx) < atan2(q[j - 1].y - cy, q[j - 1].x - cx); j--) {
+        geom_point t = q[j]; q[j] = q[j - 1]; q[j - 1] = t;
+      }
+    int ok = 1;
+    for (int i = 0; i < 4; i++)
+      if (geom_orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) ok = 0;
+    if (ok) return;
+  }
+}
+
+static void testutil_slurp(const char *path, char *buf, size_t cap) {
+  if (buf == NULL || cap == 0) return;
+  buf[0] = '\0';
+  FILE *f = fopen(path, "rb");
+  if (f == NULL) return;
+  size_t n = fread(buf, 1, cap - 1, f);
+  buf[n] = '\0';
+  fclose(f);
+}
+
+void testutil_tmppath(char *buf, size_t len, const char *name) {
+  snprintf(buf, len, "%s/testtmp/%ld-%s", FLIPLAB_BUILD_DIR, (long)getpid(), name);
+}
+
+int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t errcap) {
+  char o[512], e[512], cmd[8192];
+  snprintf(cmd, sizeof cmd, "mkdir -p %s/testtmp", FLIPLAB_BUILD_DIR);
+  if (system(cmd) != 0) return -1;
+  testutil_tmppath(o, sizeof o, "stdout");
+  testutil_tmppath(e, sizeof e, "stderr");
+  snprintf(cmd, sizeof cmd, "%s %s </dev/null >%s 2>%s", FLIPLAB_BIN, args, o, e);
+  int st = system(cmd);
+  testutil_slurp(o, out, outcap);
+  testutil_slurp(e, err, errcap);
+  unlink(o);
+  unlink(e);
+  if (st == -1) return -1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
