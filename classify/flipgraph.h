@@ -41,4 +41,22 @@ typedef struct flipgraph_counts {
   uint64_t dt;           /* type I with sink = Delaunay */
 } flipgraph_counts;
 
+/* Make the ten triangles and the Delaunay fan of an anticlockwise pentagon. */
+void flipgraph_prepare(flipgraph_pentagon *p, const geom_point v[5]);
+
+/* The directed flip graph of p under r. */
+void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_eps,
+                        flipgraph *out);
+
+const char *flipgraph_type_name(flipgraph_type t);   /* "I" .. "V" */
+
+/* Classify pentagons first .. first+count-1 of the sampler stream `seed`
+** (sampler_pentagon) under every rule and add the outcomes to out[0..nrules-1].
+** threads <= 0 means all cores.  Counts do not depend on the thread count.
+** progress (may be NULL) is called now and then from one thread. */
+typedef void (*flipgraph_progress_fn)(uint64_t done, uint64_t total, void *ctx);
+int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
+                    uint64_t count, double tie_eps, int threads,
+                    flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx);
+
 #endif
