@@ -1,0 +1,182 @@
+/*
+** rule.c: building, naming and evaluating flip rules.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "badness/measure.h"
+#include "fliprules/rule.h"
+
+/* ---- the quadrilateral-rule registry ----------------------------------- */
+
+/* DT: AC when D is strictly outside the circumcircle of ABC, BD when
+** strictly inside, EITHER when the four points are cocircular (exactly). */
+static rule_choice rule_dt(const geom_point q[4], void *ctx) {
+  (void)ctx;
+  int s = geom_incircle(q[0], q[1], q[2], q[3]);
+  return s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
+}
+
+static rule_quad rule_quads[RULE_QUAD_MAX] = {
+  [RULE_DT] = {"DT", "Delaunay: the empty-circle diagonal (exact incircle test)", rule_dt, NULL},
+};
+static int rule_nquads = 1;
+
+int rule_quad_register(const rule_quad *q) {
+  if (rule_nquads >= RULE_QUAD_MAX || q->name == NULL || q->fn == NULL) return -1;
+  for (int i = 0; i < rule_nquads; i++)
+    if (strcmp(rule_quads[i].name, q->name) == 0) return -1;
+  rule_quads[rule_nquads] = *q;
+  return rule_nquads++;
+}
+
+int rule_quad_count(void) {
+  return rule_nquads;
+}
+
+const rule_quad *rule_quad_get(int id) {
+  return id >= 0 && id < rule_nquads ? &rule_quads[id] : NULL;
+}
+
+void rule_quad_unregister_user(void) {
+  rule_nquads = 1;
+}
+
+/* ---- naming ------------------------------------------------------------ */
+
+rule rule_delaunay(void) {
+  rule r = {.kind = RULE_QUAD, .measure = -1, .joint = JOINT_MIN, .quad = RULE_DT};
+  snprintf(r.name, sizeof r.name, "DT");
+  return r;
+}
+
+int rule_triangle(int m, joint_id j, rule *out, char *err, size_t errlen) {
+  const measure *M = measure_get(m);
+  const joint *J = joint_get(j);
+  if (M == NULL || J == NULL) {
+    snprintf(err, errlen, "no such measure or joint (ids %d, %d)", m, (int)j);
+    return -1;
+  }
+  if (J->needs_sign && M->sign == MEASURE_ANYSIGN) {
+    snprintf(err, errlen,
+             "rule %s_%s: measure '%s' takes both signs, so joint %s (which needs "
+             "one sign) is undefined for it; use joint -inf or inf",
+             M->name, J->name, M->name, J->name);
+    return -1;
+  }
+  *out = (rule){.kind = RULE_TRIANGLE, .measure = m, .joint = j, .quad = -1};
+  snprintf(out->name, sizeof out->name, "%s_%s", M->name, J->name);
+  return 0;
+}
+
+static void rule_valid_names(char *err, size_t errlen, const char *what) {
+  char measures[2048];
+  measure_names(measures, sizeof measures);
+  size_t used = (size_t)snprintf(err, errlen, "%s: expected DT", what);
+  for (int i = 1; i < rule_nquads && used < errlen; i++)
+    used += (size_t)snprintf(err + used, errlen - used, ", %s", rule_quads[i].name);
+  if (used < errlen)
+    snprintf(err + used, errlen - used,
+             " or MEASURE_JOINT with MEASURE in {%s} and JOINT in {-inf,-1,0,1,2,inf}",
+             measures);
+}
+
+/* Names split at the last '_': measure names may contain '-', '/' and '\''
+** but joint suffixes never contain '_'. */
+int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
+  char what[160];
+  snprintf(what, sizeof what, "unknown rule '%.100s'", name);
+  for (int i = 0; i < rule_nquads; i++)
+    if (strcmp(rule_quads[i].name, name) == 0) {
+      *out = (rule){.kind = RULE_QUAD, .measure = -1, .quad = i};
+      snprintf(out->name, sizeof out->name, "%s", rule_quads[i].name);
+      return 0;
+    }
+  const char *us = strrchr(name, '_');
+  if (us == NULL || us == name || strlen(name) >= 64) {
+    rule_valid_names(err, errlen, what);
+    return -1;
+  }
+  char mname[64];
+  memcpy(mname, name, (size_t)(us - name));
+  mname[us - name] = '\0';
+  int m = measure_find(mname), j = joint_find(us + 1);
+  if (m < 0 || j < 0) {
+    if (m < 0) snprintf(what, sizeof what, "unknown measure '%.60s' in rule '%.60s'", mname, name);
+    else snprintf(what, sizeof what, "unknown joint '%.30s' in rule '%.60s'", us + 1, name);
+    rule_valid_names(err, errlen, what);
+    return -1;
+  }
+  return rule_triangle(m, (joint_id)j, out, err, errlen);
+}
+
+int rule_list_triangle(const int *measures, int nmeasures, rule *out, int cap) {
+  int n = 0;
+  char err[256];
+  for (int j = 0; j < JOINT_COUNT; j++)
+    for (int i = 0; i < nmeasures; i++) {
+      if (n >= cap) return n;
+      if (rule_triangle(measures[i], (joint_id)j, &out[n], err, sizeof err) == 0) n++;
+    }
+  return n;
+}
+
+const char *rule_choice_str(rule_choice c) {
+  static const char *const s[] = {"AC", "BD", "either"};
+  return (unsigned)c < 3 ? s[c] : "?";
+}
+
+/* ---- evaluation -------------------------------------------------------- */
+
+/* Ties follow the spec: relative difference within tie_eps, or equal values
+** (equal infinities included).  A finite value never ties with an infinite
+** one: inf - x = inf <= eps * inf would otherwise call it a tie.  NaN (a
+** measure undefined on a degenerate triangle) gives EITHER, so it shows up
+** as a type-V graph instead of a silent decision. */
+rule_choice rule_compare(double ac, double bd, double tie_eps) {
+  if (ac == bd) return RULE_EITHER;
+  if (isnan(ac) || isnan(bd)) return RULE_EITHER;
+  if (!isinf(ac) && !isinf(bd) && fabs(ac - bd) <= tie_eps * fmax(fabs(ac), fabs(bd)))
+    return RULE_EITHER;
+  return ac < bd ? RULE_AC : RULE_BD;
+}
+
+rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri *t_acd,
+                           const geom_tri *t_abd, const geom_tri *t_bcd,
+                           double tie_eps, double *ac, double *bd) {
+  const measure *M = measure_get(r->measure);
+  int s = M->sign;
+  double fac = joint_apply(r->joint, s, M->fn(t_abc, M->ctx), M->fn(t_acd, M->ctx));
+  double fbd = joint_apply(r->joint, s, M->fn(t_abd, M->ctx), M->fn(t_bcd, M->ctx));
+  if (ac) *ac = fac;
+  if (bd) *bd = fbd;
+  return rule_compare(fac, fbd, tie_eps);
+}
+
+/* Quadrilateral rules see the rotation of ABCD that starts at its
+** lexicographically smallest vertex.  Rotating by one vertex renames the
+** diagonals (AC of BCDA is BD of ABCD), so an odd rotation swaps the answer. */
+static rule_choice rule_eval_quad(const rule_quad *Q, const geom_point q[4]) {
+  int m = 0;
+  for (int i = 1; i < 4; i++)
+    if (q[i].x < q[m].x || (q[i].x == q[m].x && q[i].y < q[m].y)) m = i;
+  geom_point c[4] = {q[m], q[(m + 1) % 4], q[(m + 2) % 4], q[(m + 3) % 4]};
+  rule_choice d = Q->fn(c, Q->ctx);
+  if ((m & 1) && d != RULE_EITHER) d = d == RULE_AC ? RULE_BD : RULE_AC;
+  return d;
+}
+
+rule_choice rule_eval(const rule *r, const geom_point q[4], double tie_eps,
+                      double *ac, double *bd) {
+  if (r->kind == RULE_QUAD) {
+    if (ac) *ac = NAN;
+    if (bd) *bd = NAN;
+    return rule_eval_quad(&rule_quads[r->quad], q);
+  }
+  geom_tri abc, acd, abd, bcd;
+  geom_tri_make(&abc, q[0], q[1], q[2]);
+  geom_tri_make(&acd, q[0], q[2], q[3]);
+  geom_tri_make(&abd, q[0], q[1], q[3]);
+  geom_tri_make(&bcd, q[1], q[2], q[3]);
+  return rule_eval_tris(r, &abc, &acd, &abd, &bcd, tie_eps, ac, bd);
+}

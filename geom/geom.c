@@ -1,0 +1,188 @@
+/*
+** geom.c: triangle quantities and convex polygon validation.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include "geom/geom.h"
+
+static int geom_less(geom_point p, geom_point q) {
+  return p.x < q.x || (p.x == q.x && p.y < q.y);
+}
+
+static void geom_swap(geom_point *p, geom_point *q) {
+  geom_point t = *p;
+  *p = *q;
+  *q = t;
+}
+
+static double geom_min3(double a, double b, double c) {
+  return fmin(a, fmin(b, c));
+}
+
+static double geom_max3(double a, double b, double c) {
+  return fmax(a, fmax(b, c));
+}
+
+/* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
+** accurate for tiny and for near-straight angles alike (acos of the law of
+** cosines loses half the digits there).  twice_area = |u x w| is passed in
+** so the three angles share one cross product. */
+static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_area) {
+  double dot = (u.x - o.x) * (w.x - o.x) + (u.y - o.y) * (w.y - o.y);
+  return atan2(twice_area, dot);
+}
+
+/* Everything below is computed from the canonically ordered vertices
+** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
+** the caller listed them in.  Each side is paired with the vertex opposite
+** it, so that sorting the sides also tells which angle is smallest
+** (opposite c) and largest (opposite a). */
+void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
+  if (geom_less(q, p)) geom_swap(&p, &q);
+  if (geom_less(r, q)) geom_swap(&q, &r);
+  if (geom_less(q, p)) geom_swap(&p, &q);
+  t->v[0] = p;
+  t->v[1] = q;
+  t->v[2] = r;
+
+  double e01x = q.x - p.x, e01y = q.y - p.y;
+  double e02x = r.x - p.x, e02y = r.y - p.y;
+  double e12x = r.x - q.x, e12y = r.y - q.y;
+  double twice = fabs(e01x * e02y - e01y * e02x);
+  double side[3] = {sqrt(e12x * e12x + e12y * e12y),   /* opposite v0 */
+                    sqrt(e02x * e02x + e02y * e02y),   /* opposite v1 */
+                    sqrt(e01x * e01x + e01y * e01y)};  /* opposite v2 */
+  int big = 0, small = 0;
+  for (int i = 1; i < 3; i++) {
+    if (side[i] > side[big]) big = i;
+    if (side[i] < side[small]) small = i;
+  }
+  if (big == small) small = (big + 1) % 3;   /* equilateral: any split */
+  int mid = 3 - big - small;
+  t->a = side[big];
+  t->b = side[mid];
+  t->c = side[small];
+
+  double ang_small = geom_angle(t->v[small], t->v[(small + 1) % 3], t->v[(small + 2) % 3], twice);
+  double ang_big = geom_angle(t->v[big], t->v[(big + 1) % 3], t->v[(big + 2) % 3], twice);
+  double ang_mid = M_PI - ang_small - ang_big;
+  /* Rounding can misorder nearly equal angles; sorting restores the
+  ** contract alpha <= beta <= gamma without changing any value. */
+  t->alpha = geom_min3(ang_small, ang_mid, ang_big);
+  t->gamma = geom_max3(ang_small, ang_mid, ang_big);
+  t->beta = ang_small + ang_mid + ang_big - t->alpha - t->gamma;
+  if (t->beta < t->alpha) t->beta = t->alpha;
+  if (t->beta > t->gamma) t->beta = t->gamma;
+
+  t->area = 0.5 * twice;
+  t->P = t->a + t->b + t->c;
+  t->R = t->a * t->b * t->c / (2.0 * twice);
+  t->r = twice / t->P;
+  t->h = twice / t->a;
+  t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
+  t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);
+}
+
+double geom_dist(geom_point p, geom_point q) {
+  double dx = p.x - q.x, dy = p.y - q.y;
+  return sqrt(dx * dx + dy * dy);
+}
+
+int geom_point_finite(geom_point p) {
+  return isfinite(p.x) && isfinite(p.y);
+}
+
+/* ---- convex polygon validation ---------------------------------------- */
+
+typedef struct geom_ranked { geom_point p; size_t i; } geom_ranked;
+
+static int geom_ranked_cmp(const void *x, const void *y) {
+  const geom_ranked *a = x, *b = y;
+  if (geom_less(a->p, b->p)) return -1;
+  if (geom_less(b->p, a->p)) return 1;
+  return a->i < b->i ? -1 : a->i > b->i;
+}
+
+/* Duplicates anywhere in the list, in O(n log n): sort, compare neighbours.
+** Reports the later of the two rows. */
+static int geom_find_duplicate(const geom_point *p, size_t n, size_t *bad) {
+  geom_ranked *r = malloc(n * sizeof *r);
+  if (r == NULL) return 0;
+  for (size_t i = 0; i < n; i++) r[i] = (geom_ranked){p[i], i};
+  qsort(r, n, sizeof *r, geom_ranked_cmp);
+  int found = 0;
+  for (size_t i = 1; i < n && !found; i++)
+    if (r[i].p.x == r[i - 1].p.x && r[i].p.y == r[i - 1].p.y) {
+      *bad = r[i].i;
+      found = 1;
+    }
+  free(r);
+  return found;
+}
+
+/* Reverse keeping vertex 0 first: p0, p_{n-1}, ..., p1.  Keeping the first
+** vertex means a quadrilateral's diagonals keep their names (AC stays AC). */
+static void geom_reverse_tail(geom_point *p, size_t n) {
+  for (size_t i = 1, j = n - 1; i < j; i++, j--) geom_swap(&p[i], &p[j]);
+}
+
+/* A polygon is strictly convex when every turn has the same (exact,
+** non-zero) orientation and the boundary goes round once.  Equal turns
+** alone admit star polygons (a pentagram turns left at every vertex but
+** winds twice), so the exterior angles are summed: they total 2*pi*w for
+** winding number w, and rounding errors of O(n * 1e-16) cannot move the
+** sum across the gap between 2*pi and 4*pi. */
+geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed) {
+  size_t dummy;
+  if (bad == NULL) bad = &dummy;
+  if (reversed) *reversed = 0;
+  *bad = 0;
+  if (n < 3) return GEOM_TOO_FEW;
+  for (size_t i = 0; i < n; i++)
+    if (!geom_point_finite(p[i])) {
+      *bad = i;
+      return GEOM_NOT_FINITE;
+    }
+  if (geom_find_duplicate(p, n, bad)) return GEOM_DUPLICATE;
+  int sign = 0;
+  for (size_t i = 0; i < n; i++) {
+    size_t j = (i + 1) % n, k = (i + 2) % n;
+    int o = geom_orient(p[i], p[j], p[k]);
+    if (o == 0) {
+      *bad = j;
+      return GEOM_COLLINEAR;
+    }
+    if (sign == 0) sign = o;
+    else if (o != sign) {
+      *bad = j;
+      return GEOM_NOT_CONVEX;
+    }
+  }
+  double turn = 0;
+  for (size_t i = 0; i < n; i++) {
+    geom_point a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n];
+    double ux = b.x - a.x, uy = b.y - a.y, wx = c.x - b.x, wy = c.y - b.y;
+    turn += atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+  }
+  if (fabs(fabs(turn) - 2 * M_PI) > M_PI) {
+    *bad = 0;
+    return GEOM_NOT_CONVEX;
+  }
+  if (sign < 0) {
+    geom_reverse_tail(p, n);
+    if (reversed) *reversed = 1;
+  }
+  return GEOM_OK;
+}
+
+const char *geom_polyerr_str(geom_polyerr e) {
+  static const char *const msg[] = {
+    [GEOM_OK] = "ok",
+    [GEOM_TOO_FEW] = "too few vertices (need at least 3)",
+    [GEOM_NOT_FINITE] = "coordinate is not a finite number",
+    [GEOM_DUPLICATE] = "duplicate point",
+    [GEOM_COLLINEAR] = "collinear with its neighbours (polygon must be strictly convex)",
+    [GEOM_NOT_CONVEX] = "polygon is not convex",
+  };
+  return (unsigned)e < sizeof msg / sizeof msg[0] ? msg[e] : "unknown error";
+}

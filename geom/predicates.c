@@ -1,0 +1,122 @@
+/*
+** predicates.c: orientation and incircle tests, exact for double inputs.
+**
+** Each test first evaluates its determinant in floating point and accepts
+** the sign when the value is larger than a proven bound on the rounding
+** error; otherwise it recomputes the determinant exactly with GMP rationals
+** (every double is a rational, so mpq arithmetic is exact).  The bounds are
+** Shewchuk's "stage A" bounds (Adaptive Precision Floating-Point Arithmetic
+** and Fast Robust Geometric Predicates, 1997, section 4), which cover the
+** rounding of the input differences as well as of the products and sums.
+*/
+#include <math.h>
+#include <stdatomic.h>
+#include <gmp.h>
+#include "geom/geom.h"
+
+/* eps = 2^-53, half an ulp of 1: the relative error of one rounded operation. */
+#define GEOM_EPS 0x1p-53
+
+static atomic_ulong geom_exact_count;
+
+unsigned long geom_exact_calls(void) {
+  return atomic_load_explicit(&geom_exact_count, memory_order_relaxed);
+}
+
+/* ---- exact fallbacks --------------------------------------------------- */
+
+/* NaN and infinities have no rational value (mpq_set_d would abort): the
+** predicates answer 0 for them; callers validate input beforehand. */
+static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) {
+  return geom_point_finite(a) && geom_point_finite(b) && geom_point_finite(c)
+      && geom_point_finite(d);
+}
+
+static int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
+  if (!geom_finite4(a, b, c, a)) return 0;
+  mpq_t t[6];
+  for (int i = 0; i < 6; i++) mpq_init(t[i]);
+  mpq_set_d(t[0], b.x); mpq_set_d(t[4], a.x); mpq_sub(t[0], t[0], t[4]);  /* bx - ax */
+  mpq_set_d(t[1], c.y); mpq_set_d(t[4], a.y); mpq_sub(t[1], t[1], t[4]);  /* cy - ay */
+  mpq_set_d(t[2], b.y); mpq_sub(t[2], t[2], t[4]);                        /* by - ay */
+  mpq_set_d(t[3], c.x); mpq_set_d(t[4], a.x); mpq_sub(t[3], t[3], t[4]);  /* cx - ax */
+  mpq_mul(t[4], t[0], t[1]);
+  mpq_mul(t[5], t[2], t[3]);
+  mpq_sub(t[4], t[4], t[5]);
+  int s = mpq_sgn(t[4]);
+  for (int i = 0; i < 6; i++) mpq_clear(t[i]);
+  return s;
+}
+
+/* The incircle determinant of a, b, c, d translated so that d is the origin:
+**   | adx ady adx^2+ady^2 |
+**   | bdx bdy bdx^2+bdy^2 |
+**   | cdx cdy cdx^2+cdy^2 |   (positive when d is inside circle abc, abc anticlockwise) */
+static int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+  if (!geom_finite4(a, b, c, d)) return 0;
+  geom_point pt[3] = {a, b, c};
+  mpq_t x[3], y[3], lift[3], t, u, det;
+  mpq_inits(t, u, det, NULL);
+  for (int i = 0; i < 3; i++) {
+    mpq_inits(x[i], y[i], lift[i], NULL);
+    mpq_set_d(x[i], pt[i].x); mpq_set_d(t, d.x); mpq_sub(x[i], x[i], t);
+    mpq_set_d(y[i], pt[i].y); mpq_set_d(t, d.y); mpq_sub(y[i], y[i], t);
+    mpq_mul(lift[i], x[i], x[i]);
+    mpq_mul(t, y[i], y[i]);
+    mpq_add(lift[i], lift[i], t);
+  }
+  mpq_set_ui(det, 0, 1);
+  for (int i = 0; i < 3; i++) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpq_mul(t, x[j], y[k]);          /* lift_i * (x_j y_k - x_k y_j) */
+    mpq_mul(u, x[k], y[j]);
+    mpq_sub(t, t, u);
+    mpq_mul(t, t, lift[i]);
+    mpq_add(det, det, t);
+  }
+  int s = mpq_sgn(det);
+  for (int i = 0; i < 3; i++) mpq_clears(x[i], y[i], lift[i], NULL);
+  mpq_clears(t, u, det, NULL);
+  return s;
+}
+
+/* ---- filtered predicates ----------------------------------------------- */
+
+/* det = (bx-ax)(cy-ay) - (by-ay)(cx-ax).  With detsum = |l| + |r| for the
+** two products, |fl(det) - det| <= (3 + 16 eps) eps detsum (Shewchuk's
+** ccwerrboundA), so a larger |fl(det)| has the true sign. */
+int geom_orient(geom_point a, geom_point b, geom_point c) {
+  double l = (b.x - a.x) * (c.y - a.y);
+  double r = (b.y - a.y) * (c.x - a.x);
+  double det = l - r;
+  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  return geom_orient_exact(a, b, c);
+}
+
+/* The lifted 3x3 determinant above.  With permanent = sum of |lift_i| times
+** (|x_j y_k| + |x_k y_j|), |fl(det) - det| <= (10 + 96 eps) eps permanent
+** (Shewchuk's iccerrboundA). */
+int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d) {
+  double adx = a.x - d.x, ady = a.y - d.y;
+  double bdx = b.x - d.x, bdy = b.y - d.y;
+  double cdx = c.x - d.x, cdy = c.y - d.y;
+  double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  double cdxady = cdx * ady, adxcdy = adx * cdy;
+  double adxbdy = adx * bdy, bdxady = bdx * ady;
+  double alift = adx * adx + ady * ady;
+  double blift = bdx * bdx + bdy * bdy;
+  double clift = cdx * cdx + cdy * cdy;
+  double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy)
+             + clift * (adxbdy - bdxady);
+  double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * alift
+                   + (fabs(cdxady) + fabs(adxcdy)) * blift
+                   + (fabs(adxbdy) + fabs(bdxady)) * clift;
+  double bound = (10.0 + 96.0 * GEOM_EPS) * GEOM_EPS * permanent;
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  return geom_incircle_exact(a, b, c, d);
+}
