@@ -58,6 +58,10 @@ static inline double measure_eval(int id, const geom_tri *t) {
   return m->fn(t, m->ctx);
 }
 
+/* Every registered measure of t into out[0 .. measure_count()-1]; the
+** built-ins are evaluated inline, without a call each (hot paths). */
+void measure_eval_all(const geom_tri *t, double *out);
+
 /* Write a comma-separated list of all measure names into buf. */
 void measure_names(char *buf, size_t len);
 
