@@ -15,12 +15,16 @@ static void geom_swap(geom_point *p, geom_point *q) {
   *q = t;
 }
 
+/* Plain comparisons rather than fmin/fmax: the inputs are never NaN here
+** and the comparisons compile to branch-free minsd/maxsd. */
 static double geom_min3(double a, double b, double c) {
-  return fmin(a, fmin(b, c));
+  double m = a < b ? a : b;
+  return m < c ? m : c;
 }
 
 static double geom_max3(double a, double b, double c) {
-  return fmax(a, fmax(b, c));
+  double m = a > b ? a : b;
+  return m > c ? m : c;
 }
 
 /* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
