@@ -47,8 +47,9 @@ int cli_is_help(const char *opt);
 ** *argc) after registering what they define; returns 0, or 2 after an error. */
 int cli_userdefs_take(int *argc, char **argv);
 
-/* Open FILE for writing, "-" meaning stdout; NULL after printing an error. */
+/* Open FILE for writing, "-" meaning stdout; NULL after printing an error.
+** cli_close_out closes it (flushes stdout); -1 when a write failed. */
 FILE *cli_open_out(const char *cmd, const char *path);
-void cli_close_out(FILE *f);
+int cli_close_out(FILE *f);
 
 #endif

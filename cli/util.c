@@ -44,7 +44,12 @@ int cli_parse_double(const char *cmd, const char *opt, const char *s,
   errno = 0;
   if (s == NULL || *s == '\0') goto bad;
   double v = strtod(s, &end);
-  if (errno == ERANGE || *end != '\0' || !isfinite(v)) goto bad;
+  if (*end != '\0') goto bad;
+  if (errno == ERANGE && fabs(v) <= 1.0) {
+    cli_error(cmd, "%s %s is too small in magnitude to compute with", opt, s);
+    return -1;
+  }
+  if (errno == ERANGE || !isfinite(v)) goto bad;
   if (v < lo || v > hi) {
     cli_error(cmd, "%s %s is out of range [%g, %g]", opt, s, lo, hi);
     return -1;
@@ -76,7 +81,9 @@ FILE *cli_open_out(const char *cmd, const char *path) {
   return f;
 }
 
-void cli_close_out(FILE *f) {
-  if (f != NULL && f != stdout) fclose(f);
-  else if (f == stdout) fflush(stdout);
+int cli_close_out(FILE *f) {
+  if (f == NULL) return 0;
+  int bad = ferror(f);
+  bad |= f == stdout ? fflush(f) != 0 : fclose(f) != 0;
+  return bad ? -1 : 0;
 }

@@ -27,6 +27,11 @@ static double geom_max3(double a, double b, double c) {
   return m > c ? m : c;
 }
 
+static double geom_mid3(double a, double b, double c) {
+  double lo = a < b ? a : b, hi = a > b ? a : b;
+  return c < lo ? lo : c > hi ? hi : c;
+}
+
 /* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
 ** accurate for tiny and for near-straight angles alike (acos of the law of
 ** cosines loses half the digits there).  twice_area = |u x w| is passed in
@@ -38,9 +43,7 @@ static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_
 
 /* Everything below is computed from the canonically ordered vertices
 ** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
-** the caller listed them in.  Each side is paired with the vertex opposite
-** it, so that sorting the sides also tells which angle is smallest
-** (opposite c) and largest (opposite a). */
+** the caller listed them in. */
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   if (geom_less(q, p)) geom_swap(&p, &q);
   if (geom_less(r, q)) geom_swap(&q, &r);
@@ -56,27 +59,20 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   double side[3] = {sqrt(e12x * e12x + e12y * e12y),   /* opposite v0 */
                     sqrt(e02x * e02x + e02y * e02y),   /* opposite v1 */
                     sqrt(e01x * e01x + e01y * e01y)};  /* opposite v2 */
-  int big = 0, small = 0;
-  for (int i = 1; i < 3; i++) {
-    if (side[i] > side[big]) big = i;
-    if (side[i] < side[small]) small = i;
-  }
-  if (big == small) small = (big + 1) % 3;   /* equilateral: any split */
-  int mid = 3 - big - small;
-  t->a = side[big];
-  t->b = side[mid];
-  t->c = side[small];
+  t->a = geom_max3(side[0], side[1], side[2]);
+  t->b = geom_mid3(side[0], side[1], side[2]);
+  t->c = geom_min3(side[0], side[1], side[2]);
 
-  double ang_small = geom_angle(t->v[small], t->v[(small + 1) % 3], t->v[(small + 2) % 3], twice);
-  double ang_big = geom_angle(t->v[big], t->v[(big + 1) % 3], t->v[(big + 2) % 3], twice);
-  double ang_mid = M_PI - ang_small - ang_big;
-  /* Rounding can misorder nearly equal angles; sorting restores the
-  ** contract alpha <= beta <= gamma without changing any value. */
-  t->alpha = geom_min3(ang_small, ang_mid, ang_big);
-  t->gamma = geom_max3(ang_small, ang_mid, ang_big);
-  t->beta = ang_small + ang_mid + ang_big - t->alpha - t->gamma;
-  if (t->beta < t->alpha) t->beta = t->alpha;
-  if (t->beta > t->gamma) t->beta = t->gamma;
+  /* All three angles from atan2: deriving one as pi minus the others loses
+  ** its relative accuracy when it is tiny (a needle has two tiny angles). */
+  double ang[3];
+  for (int i = 0; i < 3; i++)
+    ang[i] = geom_angle(t->v[i], t->v[(i + 1) % 3], t->v[(i + 2) % 3], twice);
+  /* Sorting the angle values themselves (not pairing them with sorted
+  ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
+  t->alpha = geom_min3(ang[0], ang[1], ang[2]);
+  t->beta = geom_mid3(ang[0], ang[1], ang[2]);
+  t->gamma = geom_max3(ang[0], ang[1], ang[2]);
 
   t->area = 0.5 * twice;
   t->P = t->a + t->b + t->c;
@@ -130,12 +126,20 @@ static void geom_reverse_tail(geom_point *p, size_t n) {
   for (size_t i = 1, j = n - 1; i < j; i++, j--) geom_swap(&p[i], &p[j]);
 }
 
+/* Which half of the circle an edge direction points into: 0 for angles in
+** [0, pi), 1 for [pi, 2 pi).  The sign of a rounded difference of doubles is
+** the sign of the exact difference, so this is exact. */
+static int geom_half(geom_point from, geom_point to) {
+  double dx = to.x - from.x, dy = to.y - from.y;
+  return !(dy > 0 || (dy == 0 && dx > 0));
+}
+
 /* A polygon is strictly convex when every turn has the same (exact,
 ** non-zero) orientation and the boundary goes round once.  Equal turns
 ** alone admit star polygons (a pentagram turns left at every vertex but
-** winds twice), so the exterior angles are summed: they total 2*pi*w for
-** winding number w, and rounding errors of O(n * 1e-16) cannot move the
-** sum across the gap between 2*pi and 4*pi. */
+** winds twice).  With every turn strictly between 0 and pi, the edge
+** direction changes half (see geom_half) exactly twice per winding, so the
+** winding number is exact too: no angle sums, no atan2, any scale. */
 geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed) {
   size_t dummy;
   if (bad == NULL) bad = &dummy;
@@ -147,8 +151,19 @@ geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *rever
       *bad = i;
       return GEOM_NOT_FINITE;
     }
+  for (size_t i = 0; i < n; i++)
+    if (fabs(p[i].x) > GEOM_MAX_COORD || fabs(p[i].y) > GEOM_MAX_COORD) {
+      *bad = i;
+      return GEOM_OUT_OF_SCALE;
+    }
   if (geom_find_duplicate(p, n, bad)) return GEOM_DUPLICATE;
+  for (size_t i = 0; i < n; i++)
+    if (geom_dist(p[i], p[(i + 1) % n]) < GEOM_MIN_EDGE) {
+      *bad = (i + 1) % n;
+      return GEOM_OUT_OF_SCALE;
+    }
   int sign = 0;
+  size_t changes = 0;
   for (size_t i = 0; i < n; i++) {
     size_t j = (i + 1) % n, k = (i + 2) % n;
     int o = geom_orient(p[i], p[j], p[k]);
@@ -161,14 +176,9 @@ geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *rever
       *bad = j;
       return GEOM_NOT_CONVEX;
     }
+    changes += geom_half(p[i], p[j]) != geom_half(p[j], p[k]);
   }
-  double turn = 0;
-  for (size_t i = 0; i < n; i++) {
-    geom_point a = p[i], b = p[(i + 1) % n], c = p[(i + 2) % n];
-    double ux = b.x - a.x, uy = b.y - a.y, wx = c.x - b.x, wy = c.y - b.y;
-    turn += atan2(ux * wy - uy * wx, ux * wx + uy * wy);
-  }
-  if (fabs(fabs(turn) - 2 * M_PI) > M_PI) {
+  if (changes != 2) {
     *bad = 0;
     return GEOM_NOT_CONVEX;
   }
@@ -187,6 +197,8 @@ const char *geom_polyerr_str(geom_polyerr e) {
     [GEOM_DUPLICATE] = "duplicate point",
     [GEOM_COLLINEAR] = "collinear with its neighbours (polygon must be strictly convex)",
     [GEOM_NOT_CONVEX] = "polygon is not convex",
+    [GEOM_OUT_OF_SCALE] = "outside the supported scale (coordinates within +-1e50, "
+                          "edges at least 1e-50 long)",
   };
   return (unsigned)e < sizeof msg / sizeof msg[0] ? msg[e] : "unknown error";
 }

@@ -55,8 +55,15 @@ typedef enum geom_polyerr {
   GEOM_NOT_FINITE,     /* NaN or infinite coordinate */
   GEOM_DUPLICATE,      /* two equal vertices */
   GEOM_COLLINEAR,      /* three consecutive vertices on a line */
-  GEOM_NOT_CONVEX      /* a reflex vertex, or the boundary winds more than once */
+  GEOM_NOT_CONVEX,     /* a reflex vertex, or the boundary winds more than once */
+  GEOM_OUT_OF_SCALE    /* |coordinate| > GEOM_MAX_COORD or an edge < GEOM_MIN_EDGE */
 } geom_polyerr;
+
+/* The scales fliplab accepts.  Measures are products of up to six lengths
+** (abc, joined by a product) evaluated in double precision: beyond these
+** bounds they would overflow or underflow and decide nothing. */
+#define GEOM_MAX_COORD 1e50
+#define GEOM_MIN_EDGE 1e-50
 
 geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed);
 const char *geom_polyerr_str(geom_polyerr e);

@@ -14,8 +14,13 @@
 static double joint_min(double x, double y) { return x < y ? x : y; }
 static double joint_max(double x, double y) { return x > y ? x : y; }
 /* 1/(1/x + 1/y), and 0 when either is 0: 1/0 = inf makes the sum inf and
-** the result 0 without a special case; +inf is the identity. */
-static double joint_harmonic(double x, double y) { return 1.0 / (1.0 / x + 1.0 / y); }
+** the result 0 without a special case.  +inf is the identity, returned
+** exactly: 1/(1/x) is not always x in floating point. */
+static double joint_harmonic(double x, double y) {
+  if (x == INFINITY) return y;
+  if (y == INFINITY) return x;
+  return 1.0 / (1.0 / x + 1.0 / y);
+}
 static double joint_product(double x, double y) { return x * y; }
 static double joint_sum(double x, double y) { return x + y; }
 static double joint_rss(double x, double y) { return sqrt(x * x + y * y); }

@@ -1,0 +1,279 @@
+/*
+** test_joints.c: the algebra of the six joints (thesis table 3.3) on seeded
+** random values of both sign domains: the l_p formulas and the sign
+** convention, commutativity (bit-exact), associativity (to rounding),
+** monotonicity, the identity element, infinite inputs, and the keys
+** (strictly increasing, invertible, turning f into +, min or max).
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "joints/joint.h"
+#include "testutil.h"
+
+#define TJOINT_SAMPLES 200000
+
+/* A value of the domain of sign s: magnitudes spread over 1e-3 .. 1e3,
+** with exact zeros now and then (measures such as a-c reach 0). */
+static double tjoint_value(testutil_rng *g, int s) {
+  double u = testutil_uniform(g);
+  double m = u < 0.03 ? 0.0 : testutil_uniform(g) * pow(10.0, 6 * testutil_uniform(g) - 3);
+  return s * m;
+}
+
+/* The l_p joints of table 3.3 for x, y >= 0, written independently. */
+static double tjoint_ref(joint_id j, double x, double y) {
+  switch (j) {
+  case JOINT_MIN: return fmin(x, y);
+  case JOINT_HARMONIC: return (x == 0 || y == 0) ? 0 : 1 / (1 / x + 1 / y);
+  case JOINT_PRODUCT: return x * y;
+  case JOINT_SUM: return x + y;
+  case JOINT_RSS: return sqrt(x * x + y * y);
+  default: return fmax(x, y);
+  }
+}
+
+static int tjoint_is_finite_p(joint_id j) {
+  return j != JOINT_MIN && j != JOINT_MAX;
+}
+
+static void tjoint_fail(const char *what, joint_id j, int s, double x, double y, double got, double want) {
+  print_error("%s: joint %s s=%d x=%.17g y=%.17g: got %.17g want %.17g\n", what,
+              joint_get(j)->name, s, x, y, got, want);
+}
+
+static void test_table(void **state) {
+  (void)state;
+  static const char *const names[JOINT_COUNT] = {"-inf", "-1", "0", "1", "2", "inf"};
+  static const joint_keyop ops[JOINT_COUNT] = {JOINT_KEY_MIN, JOINT_KEY_ADD, JOINT_KEY_ADD,
+                                               JOINT_KEY_ADD, JOINT_KEY_ADD, JOINT_KEY_MAX};
+  for (int j = 0; j < JOINT_COUNT; j++) {
+    const joint *J = joint_get((joint_id)j);
+    assert_non_null(J);
+    assert_string_equal(J->name, names[j]);
+    assert_int_equal(joint_find(names[j]), j);
+    assert_int_equal(J->needs_sign, tjoint_is_finite_p((joint_id)j));
+    assert_int_equal(J->keyop, ops[j]);
+    assert_true(J->symbol && J->symbol[0] && J->desc && J->desc[0]);
+  }
+  assert_int_equal(joint_find("3"), -1);
+  assert_int_equal(joint_find(""), -1);
+  assert_int_equal(joint_find("Inf"), -1);
+  assert_int_equal(joint_find("-2"), -1);
+}
+
+/* Formula and sign convention: for s = +1 the l_p formula (to ~4 ulps: an
+** implementation may use x*y/(x+y) or hypot); for s = -1 the finite-p
+** joints are exactly -f(|x|, |y|) and min / max are used as they are. */
+static void test_formula_and_sign(void **state) {
+  (void)state;
+  testutil_rng g = {1};
+  for (int n = 0; n < TJOINT_SAMPLES; n++) {
+    for (int s = -1; s <= 1; s += 2) {
+      double x = tjoint_value(&g, s), y = tjoint_value(&g, s);
+      for (int jj = 0; jj < JOINT_COUNT; jj++) {
+        joint_id j = (joint_id)jj;
+        double got = joint_apply(j, s, x, y), want;
+        if (s == 1) {
+          want = tjoint_ref(j, x, y);
+          if (!(fabs(got - want) <= 1e-15 * fabs(want))) {
+            tjoint_fail("formula", j, s, x, y, got, want);
+            fail();
+          }
+          assert_true(got >= 0);
+        } else {
+          want = tjoint_is_finite_p(j) ? -joint_apply(j, 1, fabs(x), fabs(y))
+                                       : (j == JOINT_MIN ? fmin(x, y) : fmax(x, y));
+          if (got != want) {
+            tjoint_fail("sign convention", j, s, x, y, got, want);
+            fail();
+          }
+          assert_true(got <= 0);
+        }
+      }
+    }
+  }
+}
+
+/* Commutativity must be bit-exact: the flip rules' independence of the
+** first vertex relies on it (rule.h). */
+static void test_commutative(void **state) {
+  (void)state;
+  testutil_rng g = {2};
+  for (int n = 0; n < TJOINT_SAMPLES; n++)
+    for (int s = -1; s <= 1; s += 2) {
+      double x = tjoint_value(&g, s), y = tjoint_value(&g, s);
+      for (int j = 0; j < JOINT_COUNT; j++) {
+        double f1 = joint_apply((joint_id)j, s, x, y), f2 = joint_apply((joint_id)j, s, y, x);
+        if (memcmp(&f1, &f2, sizeof f1) != 0) {
+          tjoint_fail("commutative", (joint_id)j, s, x, y, f1, f2);
+          fail();
+        }
+      }
+    }
+}
+
+/* Associativity holds only to rounding: (x+y)+z and x+(y+z) round
+** different intermediate sums.  With all operands of one sign no
+** cancellation occurs, every operation (1/x, +, *, x^2, sqrt) adds a
+** relative error <= 2^-53, and each side takes at most ~8 of them: the two
+** agree to ~2e-15 relative.  1e-12 leaves a wide margin; min and max are
+** exact. */
+static void test_associative(void **state) {
+  (void)state;
+  testutil_rng g = {3};
+  for (int n = 0; n < TJOINT_SAMPLES; n++)
+    for (int s = -1; s <= 1; s += 2) {
+      double x = tjoint_value(&g, s), y = tjoint_value(&g, s), z = tjoint_value(&g, s);
+      for (int jj = 0; jj < JOINT_COUNT; jj++) {
+        joint_id j = (joint_id)jj;
+        double l = joint_apply(j, s, joint_apply(j, s, x, y), z);
+        double r = joint_apply(j, s, x, joint_apply(j, s, y, z));
+        double tol = tjoint_is_finite_p(j) ? 1e-12 * fabs(l) : 0;
+        if (!(fabs(l - r) <= tol)) {
+          print_error("associative: joint %s s=%d x=%.17g y=%.17g z=%.17g: %.17g vs %.17g\n",
+                      joint_get(j)->name, s, x, y, z, l, r);
+          fail();
+        }
+      }
+    }
+}
+
+/* x <= y implies f(x, z) <= f(y, z): also in floating point, since each
+** step is a monotone function followed by (monotone) rounding.  Half the
+** pairs are adjacent doubles to probe that. */
+static void test_monotone(void **state) {
+  (void)state;
+  testutil_rng g = {4};
+  for (int n = 0; n < TJOINT_SAMPLES; n++)
+    for (int s = -1; s <= 1; s += 2) {
+      double x = tjoint_value(&g, s), y = (n & 1) && x != 0 ? nextafter(x, s * INFINITY) : tjoint_value(&g, s);
+      double z = tjoint_value(&g, s);
+      if (y < x) { double t = x; x = y; y = t; }
+      for (int jj = 0; jj < JOINT_COUNT; jj++) {
+        joint_id j = (joint_id)jj;
+        double fx = joint_apply(j, s, x, z), fy = joint_apply(j, s, y, z);
+        if (!(fx <= fy)) {
+          print_error("monotone: joint %s s=%d x=%.17g <= y=%.17g, z=%.17g: f %.17g > %.17g\n",
+                      joint_get(j)->name, s, x, y, z, fx, fy);
+          fail();
+        }
+      }
+    }
+}
+
+/* f(e, x) == x == f(x, e) exactly for every x of the domain (0 included):
+** the GOT programme uses e for "no triangle yet". */
+static void test_identity(void **state) {
+  (void)state;
+  testutil_rng g = {5};
+  int failures = 0;
+  for (int s = -1; s <= 1; s += 2)
+    for (int jj = 0; jj < JOINT_COUNT; jj++) {
+      joint_id j = (joint_id)jj;
+      double e = joint_identity(j, s);
+      assert_false(isnan(e));
+      int bad = 0;
+      for (int n = 0; n < TJOINT_SAMPLES / 10; n++) {
+        double x = n == 0 ? 0.0 : tjoint_value(&g, s);
+        double l = joint_apply(j, s, e, x), r = joint_apply(j, s, x, e);
+        if (l != x || r != x) {
+          if (bad++ < 3) tjoint_fail("identity", j, s, e, x, l, x);
+        }
+      }
+      if (bad) {
+        print_error("identity fails for joint %s s=%d on %d of %d values\n", joint_get(j)->name, s,
+                    bad, TJOINT_SAMPLES / 10);
+        failures++;
+      }
+      /* the identity's key is the key-space identity */
+      double k = joint_key(j, s, e);
+      if (k != joint_key_identity(j)) {
+        print_error("joint %s s=%d: key(identity %.17g) = %.17g, key identity %.17g\n",
+                    joint_get(j)->name, s, e, k, joint_key_identity(j));
+        failures++;
+      }
+    }
+  assert_int_equal(failures, 0);
+}
+
+/* b/(c-a) is -inf on an exactly equilateral triangle: a joint of the <= 0
+** domain must give the limit, never NaN. */
+static void test_infinite_inputs(void **state) {
+  (void)state;
+  const double ys[] = {-0.5, -3.0, -INFINITY};
+  for (size_t i = 0; i < sizeof ys / sizeof ys[0]; i++) {
+    double y = ys[i];
+    for (int jj = 0; jj < JOINT_COUNT; jj++) {
+      joint_id j = (joint_id)jj;
+      double f = joint_apply(j, -1, -INFINITY, y), f2 = joint_apply(j, -1, y, -INFINITY);
+      double want = j == JOINT_MAX ? y : j == JOINT_HARMONIC ? y : -INFINITY;
+      if (isnan(f) || !(fabs(f - want) <= 1e-15 * fabs(want) || f == want) || f != f2) {
+        tjoint_fail("infinite input", j, -1, -INFINITY, y, f, want);
+        fail();
+      }
+    }
+  }
+}
+
+/* Keys: phi strictly increasing (for values that differ by more than the
+** key's own rounding: log or 1/x of adjacent doubles may round together,
+** so adjacent pairs are only required non-decreasing), unkey inverting it,
+** and phi(f(x, y)) = phi(x) (+) phi(y) to rounding. */
+static void test_keys(void **state) {
+  (void)state;
+  testutil_rng g = {6};
+  for (int n = 0; n < TJOINT_SAMPLES; n++)
+    for (int s = -1; s <= 1; s += 2) {
+      double x = tjoint_value(&g, s);
+      double y = (n & 3) == 0 && x != 0 ? nextafter(x, s * INFINITY) : tjoint_value(&g, s);
+      if (y < x) { double t = x; x = y; y = t; }
+      for (int jj = 0; jj < JOINT_COUNT; jj++) {
+        joint_id j = (joint_id)jj;
+        const joint *J = joint_get(j);
+        double kx = joint_key(j, s, x), ky = joint_key(j, s, y);
+        assert_false(isnan(kx) || isnan(ky));
+        int strict = y - x > 1e-9 * fmax(fabs(x), fabs(y));
+        if (strict ? !(kx < ky) : !(kx <= ky)) {
+          print_error("key not increasing: joint %s s=%d x=%.17g y=%.17g keys %.17g %.17g\n",
+                      J->name, s, x, y, kx, ky);
+          fail();
+        }
+        double ux = joint_unkey(j, s, kx);
+        if (!(fabs(ux - x) <= 1e-12 * fabs(x))) {
+          tjoint_fail("unkey(key(x))", j, s, x, kx, ux, x);
+          fail();
+        }
+        double kf = joint_key(j, s, joint_apply(j, s, x, y));
+        double kc = joint_key_combine(J->keyop, kx, ky);
+        int ok = isinf(kc) ? kf == kc
+                           : fabs(kf - kc) <= 1e-12 * (1 + fabs(kx) + fabs(ky));
+        if (!ok) {
+          print_error("key(f(x,y)) %.17g vs combine(key x, key y) %.17g: joint %s s=%d x=%.17g y=%.17g\n",
+                      kf, kc, J->name, s, x, y);
+          fail();
+        }
+      }
+    }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_table),
+    cmocka_unit_test(test_formula_and_sign),
+    cmocka_unit_test(test_commutative),
+    cmocka_unit_test(test_associative),
+    cmocka_unit_test(test_monotone),
+    cmocka_unit_test(test_identity),
+    cmocka_unit_test(test_infinite_inputs),
+    cmocka_unit_test(test_keys),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
