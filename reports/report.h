@@ -1,0 +1,116 @@
+/*
+** report.h: what fliplab prints about flip-graph counts: table 3.4 as
+** text, Markdown or CSV, the CSV reader that `merge` sums shards with, the
+** type-I-against-DT scatter plot (thesis figure 3.9), and the pentagon CSV
+** files that `sample` writes and `classify` reads.
+**
+** A report works from rows of names and counts, not from rule structs, so a
+** table merged from CSV shards prints exactly like one computed here.
+** Every CSV byte goes through libcsv: fields are quoted by csv_fwrite when
+** (and only when) they need it, files are read with csv_parse.
+*/
+#ifndef FLIPLAB_REPORT_H
+#define FLIPLAB_REPORT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "classify/flipgraph.h"
+#include "geom/geom.h"
+
+/* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
+** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
+typedef struct report_row {
+  char measure[64];
+  char joint[16];
+  char rule[96];
+  flipgraph_counts c;
+} report_row;
+
+/* What the table header says about the run.  Fields a merged CSV does not
+** record (seed, tie tolerance) are marked absent. */
+typedef struct report_meta {
+  uint64_t samples;       /* pentagons behind every percentage */
+  int has_seed;
+  uint64_t seed;
+  int has_tie_eps;
+  double tie_eps;
+  uint64_t shard_k, shard_n;          /* shard_n == 0: not a shard */
+  uint64_t shard_first, shard_total;  /* sample range of the shard */
+  const char *sampler;    /* NULL: "iteration method, unit disc" */
+  const char *note;       /* extra header line, or NULL */
+} report_meta;
+
+typedef enum report_format { REPORT_TEXT, REPORT_MD, REPORT_CSV } report_format;
+
+/* "text", "md" (or "markdown"), "csv"; -1 if unknown. */
+int report_format_parse(const char *s, report_format *out);
+
+/* Fill a row from a rule's registry names. */
+void report_row_from_rule(report_row *row, const rule *r, const flipgraph_counts *c);
+
+/* Write the rows in the chosen format; 0, or -1 on a write error. */
+int report_write(FILE *f, report_format fmt, const report_meta *m,
+                 const report_row *rows, int nrows);
+
+/* Table 3.4's layout: per joint a block DT / I / II / III over the measures
+** (columns in order of first appearance), then the type-V and type-IV
+** lines.  Text splits more than `maxcols` columns into groups (<= 0: 10). */
+int report_table_text(FILE *f, const report_meta *m, const report_row *rows,
+                      int nrows, int maxcols);
+int report_table_md(FILE *f, const report_meta *m, const report_row *rows, int nrows);
+
+/* The 95% Wilson score interval's half-width for k successes in n, in
+** percentage points; 0 when n == 0.  And its maximum over k for this n. */
+double report_wilson_halfwidth(uint64_t k, uint64_t n);
+double report_wilson_max(uint64_t n);
+
+/* Number of type-IV counts among triangle rules (rows with a measure):
+** theorem 1 says it must be 0. */
+uint64_t report_type_iv(const report_row *rows, int nrows);
+
+/* CSV of counts:
+**   measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt
+** one row per rule in the given order, DT (measure, joint empty) included. */
+extern const char *const report_csv_header[10];
+int report_csv_write(FILE *f, const report_row *rows, int nrows);
+
+/* Write one CSV field, quoted through libcsv only when it contains a comma,
+** quote, CR, LF, or leading/trailing blanks (which a reader would trim). */
+int report_csv_field(FILE *f, const char *s);
+
+/* Read a counts CSV written by report_csv_write.  Checks the header, the
+** field counts, the numbers and their consistency (types sum to samples,
+** dt <= type_I, one sample count per file).  On error returns -1 with a
+** one-line message naming the file and row in err.  *rows is malloc'ed. */
+int report_csv_read(const char *path, report_row **rows, int *nrows,
+                    char *err, size_t errlen);
+
+/* acc += add, after checking both list the same rules in the same order;
+** -1 with a message (naming `what`) on a mismatch or an overflow. */
+int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
+                    const char *what, char *err, size_t errlen);
+
+/* Generic CSV records through libcsv.  fn gets each non-empty record with
+** its 1-based line number; a non-zero return stops the walk and is
+** returned.  Lines count LF terminators, so quoted newlines shift them. */
+typedef int (*report_record_fn)(char **fields, int nfields, uint64_t line, void *ctx);
+int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t errlen);
+
+/* Pentagon files: a header x1,y1,...,x5,y5 then one pentagon per row, each
+** coordinate printed with %.17g so it reads back bit for bit. */
+int report_pentagon_header(FILE *f);
+int report_pentagon_write(FILE *f, const geom_point v[5]);
+
+/* Read pentagons (the header line is optional; any orientation; a
+** clockwise pentagon is reversed by geom_polygon_check).  *v is malloc'ed
+** (5 points per pentagon); *reversed counts the reversed ones.  On a bad
+** row: -1 and "FILE line N: problem" in err. */
+int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *count,
+                         size_t *reversed, char *err, size_t errlen);
+
+/* Figure 3.9: type-I % (x) against DT % (y) for every rule that produced
+** no type-V graph; colour by joint, one <title> per point. */
+int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, int nrows);
+
+#endif

@@ -1,0 +1,312 @@
+/*
+** test_table34_cli.c: `fliplab table34` and `fliplab merge` from the
+** outside: the CSV header and one row per rule (the registry's table order,
+** then DT); counts consistent and agreeing with the theorems (R_f, DT,
+** -alpha_inf always Delaunay; no type IV); bit-identical output for 1 and
+** 2 threads; shards merged back byte for byte; text and Markdown layout;
+** the scatter plot; and one-line errors with exit status 2 for bad input.
+*/
+#define _POSIX_C_SOURCE 200809L
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "badness/measure.h"
+#include "fliprules/rule.h"
+#include "joints/joint.h"
+#include "reports/report.h"
+#include "testutil.h"
+
+#define TT_CAP (1 << 20)
+#define TT_HEADER "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt\n"
+
+static char tt_out[TT_CAP], tt_err[TT_CAP];
+
+static int tt_run(const char *fmt, ...)
+#if defined(__GNUC__)
+  __attribute__((format(printf, 1, 2)))
+#endif
+  ;
+
+static int tt_run(const char *fmt, ...) {
+  char args[4096];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(args, sizeof args, fmt, ap);
+  va_end(ap);
+  return testutil_run(args, tt_out, TT_CAP, tt_err, TT_CAP);
+}
+
+static char *tt_slurp(const char *path) {
+  FILE *f = fopen(path, "rb");
+  if (f == NULL) return NULL;
+  char *s = malloc(TT_CAP);
+  size_t n = fread(s, 1, TT_CAP - 1, f);
+  s[n] = '\0';
+  fclose(f);
+  return s;
+}
+
+static void tt_path(char *buf, size_t len, const char *name) {
+  assert_int_equal(system("mkdir -p " FLIPLAB_BUILD_DIR "/testtmp"), 0);
+  testutil_tmppath(buf, len, name);
+}
+
+/* Read a counts CSV from the program's stdout through the library reader. */
+static int tt_read_counts(const char *text, report_row **rows) {
+  char path[512], err[256];
+  int n = 0;
+  tt_path(path, sizeof path, "counts.csv");
+  FILE *f = fopen(path, "wb");
+  fputs(text, f);
+  fclose(f);
+  if (report_csv_read(path, rows, &n, err, sizeof err) != 0) fail_msg("%s", err);
+  unlink(path);
+  return n;
+}
+
+/* stderr is exactly one line. */
+static void tt_one_line(void) {
+  size_t len = strlen(tt_err);
+  if (len == 0 || strchr(tt_err, '\n') != tt_err + len - 1)
+    fail_msg("stderr should be one line: '%s'", tt_err);
+}
+
+static const report_row *tt_find(const report_row *rows, int n, const char *rule) {
+  for (int i = 0; i < n; i++)
+    if (strcmp(rows[i].rule, rule) == 0) return &rows[i];
+  fail_msg("rule %s missing", rule);
+  return NULL;
+}
+
+/* Header, rows in rule_list_triangle's order then DT, and the theorems. */
+static void test_csv_rows(void **state) {
+  (void)state;
+  assert_int_equal(tt_run("table34 --samples 1500 --seed 3 --format csv"), 0);
+  assert_int_equal(strncmp(tt_out, TT_HEADER, strlen(TT_HEADER)), 0);
+  report_row *rows = NULL;
+  int n = tt_read_counts(tt_out, &rows);
+  rule want[MEASURE_TABLE34_COUNT * JOINT_COUNT];
+  int nwant = rule_list_triangle(measure_table34, MEASURE_TABLE34_COUNT, want, 200);
+  assert_int_equal(nwant, 120);
+  assert_int_equal(n, 121);
+  for (int i = 0; i < nwant; i++) {
+    assert_string_equal(rows[i].rule, want[i].name);
+    assert_string_equal(rows[i].measure, measure_get(want[i].measure)->name);
+    assert_string_equal(rows[i].joint, joint_get(want[i].joint)->name);
+  }
+  assert_string_equal(rows[120].rule, "DT");
+  assert_string_equal(rows[120].measure, "");
+  for (int i = 0; i < n; i++) {
+    assert_int_equal(rows[i].c.samples, 1500);   /* the reader checked the sums */
+    assert_int_equal(rows[i].c.type[FLIPGRAPH_IV], 0);   /* theorem 1 */
+  }
+  /* DT is type I with itself as sink; so is every rule that equals DT on
+  ** every convex quadrilateral (R_f: theorem 3, -alpha_inf: theorem 17). */
+  static const char *const always_dt[] = {"DT", "R_-inf", "R_-1", "R_0", "R_1", "R_2",
+                                          "R_inf", "-alpha_inf"};
+  for (size_t k = 0; k < sizeof always_dt / sizeof always_dt[0]; k++) {
+    const report_row *r = tt_find(rows, n, always_dt[k]);
+    assert_int_equal(r->c.type[FLIPGRAPH_I], 1500);
+    assert_int_equal(r->c.dt, 1500);
+  }
+  /* -A_1 always ties (the two triangulations of a quadrilateral have the
+  ** same area), the thesis's first type-V remark. */
+  assert_int_equal(tt_find(rows, n, "-A_1")->c.type[FLIPGRAPH_V], 1500);
+  free(rows);
+}
+
+/* Same seed: the same bytes whatever the thread count. */
+static void test_threads_identical(void **state) {
+  (void)state;
+  assert_int_equal(tt_run("table34 --samples 3000 --seed 11 --format csv --threads 1"), 0);
+  char *one = strdup(tt_out);
+  assert_int_equal(tt_run("table34 --samples 3000 --seed 11 --format csv --threads 2"), 0);
+  assert_string_equal(one, tt_out);
+  free(one);
+}
+
+/* Shards 1/4 .. 4/4 (uneven: 2003 is odd) merge into the unsharded CSV. */
+static void test_shards_merge(void **state) {
+  (void)state;
+  char full[512], shard[4][512], merged[512];
+  tt_path(full, sizeof full, "full.csv");
+  tt_path(merged, sizeof merged, "merged.csv");
+  assert_int_equal(tt_run("table34 --samples 2003 --seed 9 --format csv --out %s", full), 0);
+  uint64_t total = 0;
+  for (int k = 0; k < 4; k++) {
+    char name[32];
+    snprintf(name, sizeof name, "shard%d.csv", k + 1);
+    tt_path(shard[k], sizeof shard[k], name);
+    assert_int_equal(tt_run("table34 --samples 2003 --seed 9 --format csv --shard %d/4 --out %s",
+                            k + 1, shard[k]), 0);
+    char *s = tt_slurp(shard[k]);
+    report_row *rows = NULL;
+    tt_read_counts(s, &rows);
+    /* floor(k S / 4) boundaries: 500, 501, 501, 501 */
+    uint64_t lo = (uint64_t)k * 2003 / 4, hi = (uint64_t)(k + 1) * 2003 / 4;
+    assert_int_equal(rows[0].c.samples, hi - lo);
+    total += rows[0].c.samples;
+    free(rows);
+    free(s);
+  }
+  assert_int_equal(total, 2003);
+  assert_int_equal(tt_run("merge %s %s %s %s --out %s", shard[0], shard[1], shard[2], shard[3],
+                          merged), 0);
+  char *a = tt_slurp(full), *b = tt_slurp(merged);
+  assert_non_null(a);
+  assert_non_null(b);
+  assert_string_equal(a, b);
+  /* Any order of the shards sums to the same. */
+  assert_int_equal(tt_run("merge %s %s %s %s", shard[3], shard[1], shard[0], shard[2]), 0);
+  assert_string_equal(tt_out, a);
+  free(a);
+  free(b);
+
+  /* A shard of other rules, or a non-table CSV: refused with the file named. */
+  char other[512];
+  tt_path(other, sizeof other, "other.csv");
+  assert_int_equal(tt_run("table34 --samples 100 --measures R,-alpha --format csv --out %s",
+                          other), 0);
+  assert_int_equal(tt_run("merge %s %s", shard[0], other), 2);
+  assert_non_null(strstr(tt_err, other));
+  FILE *f = fopen(other, "wb");
+  fputs("measure,joint,rule,samples,I,II,III,IV,V,dt\nR,-inf,R_-inf,1,1,0,0,0,0,1\n", f);
+  fclose(f);
+  assert_int_equal(tt_run("merge %s %s", shard[0], other), 2);
+  assert_non_null(strstr(tt_err, other));
+  assert_non_null(strstr(tt_err, "line 1"));
+  tt_one_line();
+  f = fopen(other, "wb");
+  fputs(TT_HEADER "R,-inf,R_-inf,1,1,0,0,0,0,1\nR,-1,R_-1,1,1,0,0\n", f);
+  fclose(f);
+  assert_int_equal(tt_run("merge %s", other), 2);
+  assert_non_null(strstr(tt_err, "line 3"));
+  tt_one_line();
+  for (int k = 0; k < 4; k++) unlink(shard[k]);
+  unlink(full);
+  unlink(merged);
+  unlink(other);
+}
+
+static size_t tt_count(const char *hay, const char *needle) {
+  size_t n = 0;
+  for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
+  return n;
+}
+
+/* Text and Markdown: the header facts, all 20 measures, six joint blocks. */
+static void test_text_md(void **state) {
+  (void)state;
+  static const char *const joints[6] = {"l_-inf ", "l_-1 ", "l_0 ", "l_1 ", "l_2 ", "l_inf "};
+  for (int md = 0; md < 2; md++) {
+    assert_int_equal(tt_run("table34 --samples 400 --seed 2 --tie-eps 1e-10 --format %s",
+                            md ? "md" : "text"), 0);
+    assert_non_null(strstr(tt_out, "samples: 400"));
+    assert_non_null(strstr(tt_out, "seed: 2"));
+    assert_non_null(strstr(tt_out, "tie tolerance: 1e-10"));
+    assert_non_null(strstr(tt_out, "iteration method, unit disc"));
+    assert_non_null(strstr(tt_out, FLIPLAB_VERSION));
+    for (int i = 0; i < MEASURE_TABLE34_COUNT; i++) {
+      char key[80];
+      snprintf(key, sizeof key, md ? "`%s`" : " %s", measure_get(measure_table34[i])->name);
+      if (strstr(tt_out, key) == NULL) fail_msg("measure %s missing", key);
+    }
+    for (int j = 0; j < 6; j++)
+      assert_int_equal(tt_count(tt_out, joints[j]), md ? 1 : 2);   /* text: 2 column groups */
+    assert_non_null(strstr(tt_out, "Type V"));
+    assert_non_null(strstr(tt_out, "-A_1"));
+    assert_non_null(strstr(tt_out, "Type IV (no sink): none"));
+  }
+}
+
+/* --measures: a list, and "all" (every registered measure). */
+static void test_measures_option(void **state) {
+  (void)state;
+  report_row *rows = NULL;
+  assert_int_equal(tt_run("table34 --samples 50 --measures R,-alpha --format csv"), 0);
+  assert_int_equal(tt_read_counts(tt_out, &rows), 2 * 6 + 1);
+  free(rows);
+  assert_int_equal(tt_run("table34 --samples 50 --measures all --format csv"), 0);
+  int n = tt_read_counts(tt_out, &rows);
+  int ids[MEASURE_MAX], nm = measure_count();
+  for (int i = 0; i < nm; i++) ids[i] = i;
+  rule all[MEASURE_MAX * JOINT_COUNT];
+  assert_int_equal(n, rule_list_triangle(ids, nm, all, MEASURE_MAX * JOINT_COUNT) + 1);
+  free(rows);
+  assert_int_equal(tt_run("table34 --samples 50 --measures R,nosuch"), 2);
+  assert_non_null(strstr(tt_err, "nosuch"));
+}
+
+/* The plot names every rule without type V in a hover title, and no other. */
+static void test_plot(void **state) {
+  (void)state;
+  char svg[512];
+  tt_path(svg, sizeof svg, "plot.svg");
+  assert_int_equal(tt_run("table34 --samples 300 --format csv --plot %s", svg), 0);
+  report_row *rows = NULL;
+  int n = tt_read_counts(tt_out, &rows);
+  char *s = tt_slurp(svg);
+  assert_non_null(s);
+  assert_non_null(strstr(s, "<svg"));
+  assert_non_null(strstr(s, "</svg>"));
+  for (int i = 0; i < n; i++) {
+    char a[160], b[160];
+    snprintf(a, sizeof a, ">%s: type I", rows[i].rule);
+    snprintf(b, sizeof b, "\n%s: type I", rows[i].rule);
+    int named = strstr(s, a) != NULL || strstr(s, b) != NULL;
+    if (named != (rows[i].c.type[FLIPGRAPH_V] == 0))
+      fail_msg("rule %s: named %d, type V %llu", rows[i].rule, named,
+               (unsigned long long)rows[i].c.type[FLIPGRAPH_V]);
+  }
+  free(s);
+  free(rows);
+  unlink(svg);
+}
+
+/* --help exits 0; bad values and unknown options: one line, status 2. */
+static void test_usage_errors(void **state) {
+  (void)state;
+  static const char *const helps[] = {"table34 --help", "merge --help", "sample --help",
+                                      "classify --help"};
+  for (size_t i = 0; i < sizeof helps / sizeof helps[0]; i++) {
+    assert_int_equal(tt_run("%s", helps[i]), 0);
+    assert_non_null(strstr(tt_out, "usage: fliplab"));
+  }
+  static const char *const bad[] = {
+    "table34 --samples 0", "table34 --samples 1000000000001", "table34 --samples -5",
+    "table34 --samples 1e3", "table34 --threads 0", "table34 --threads 1025",
+    "table34 --shard 5/4", "table34 --shard 0/4", "table34 --shard 2", "table34 --shard a/b",
+    "table34 --format xml", "table34 --tie-eps nan", "table34 --tie-eps -1",
+    "table34 --bogus", "table34 --seed", "table34 --measures ,", "merge",
+    "merge --bogus x.csv", "merge /nonexistent/x.csv", "sample --count 0", "sample --what",
+    "classify", "classify --input /nonexistent.csv", "classify --rule nosuch --input x",
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+    int st = tt_run("%s", bad[i]);
+    size_t len = strlen(tt_err);
+    if (st != 2 || len == 0 || strchr(tt_err, '\n') != tt_err + len - 1 ||
+        strncmp(tt_err, "fliplab ", 8) != 0)
+      fail_msg("'%s': status %d, stderr '%s' (want 2 and one line)", bad[i], st, tt_err);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_csv_rows),
+    cmocka_unit_test(test_threads_identical),
+    cmocka_unit_test(test_shards_merge),
+    cmocka_unit_test(test_text_md),
+    cmocka_unit_test(test_measures_option),
+    cmocka_unit_test(test_plot),
+    cmocka_unit_test(test_usage_errors),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
