@@ -165,17 +165,27 @@ static atomic_int formula_bad_seen;
 static atomic_ulong formula_bad_more;
 static char formula_bad_msg[640];
 
-void formula_note_bad_value(const char *measure, const geom_tri *t, double v,
-                            const char *why) {
+void formula_note_message(const char *msg) {
   if (atomic_exchange(&formula_bad_seen, 1)) {
     atomic_fetch_add(&formula_bad_more, 1);
     return;
   }
-  snprintf(formula_bad_msg, sizeof formula_bad_msg,
+  snprintf(formula_bad_msg, sizeof formula_bad_msg, "%s", msg);
+}
+
+void formula_note_bad_value(const char *measure, const geom_tri *t, double v,
+                            const char *why) {
+  if (atomic_load(&formula_bad_seen)) {
+    atomic_fetch_add(&formula_bad_more, 1);
+    return;
+  }
+  char msg[sizeof formula_bad_msg];
+  snprintf(msg, sizeof msg,
            "measure '%s': value %g %s on the triangle (%.17g, %.17g), (%.17g, %.17g), "
            "(%.17g, %.17g)",
            measure, v, why, t->v[0].x, t->v[0].y, t->v[1].x, t->v[1].y, t->v[2].x,
            t->v[2].y);
+  formula_note_message(msg);
 }
 
 /* formula_bad_msg is written once, by the thread that won the exchange;
@@ -313,6 +323,16 @@ static long formula_find_assignment(const char *e) {
   return -1;
 }
 
+static void formula_syntax_error(formula_slot *s, const char *expr, size_t expr_at,
+                                 char *err, size_t errlen) {
+  char m[256];
+  long pos = mupGetErrorPos(s->parser);
+  long elen = (long)strlen(expr);
+  if (pos < 0 || pos > elen) pos = elen;
+  formula_strip_position(mupGetErrorMsg(s->parser), m, sizeof m);
+  snprintf(err, errlen, "syntax error at position %ld: %s", (long)expr_at + pos, m);
+}
+
 /* Compile expr on a scratch parser: variables known, syntax right, exactly
 ** one value.  0 or -1 with the message. */
 static int formula_compile_check(const char *def, const char *expr, size_t expr_at,
@@ -329,34 +349,45 @@ static int formula_compile_check(const char *def, const char *expr, size_t expr_
     return -1;
   }
   int rc = 0;
-  char m[256];
   /* Listing the expression's variables also lists undefined ones (with a
-  ** NULL address): that is how an unknown variable gets its own message. */
+  ** NULL address): that is how an unknown variable gets its own message.
+  ** After an error here the parser must not be evaluated (muParser 2.3
+  ** crashes), so a syntax error found while listing is reported at once. */
   int nv = mupGetExprVarNum(s->parser);
-  if (!mupError(s->parser)) {
-    for (int i = 0; i < nv; i++) {
-      const muChar_t *vn = NULL;
-      muFloat_t *addr = NULL;
-      mupGetExprVar(s->parser, (unsigned)i, &vn, &addr);
-      if (addr == NULL) {
-        const char *where = strstr(expr, vn);
-        snprintf(err, errlen, "unknown variable '%s' at position %ld; the variables are %s", vn,
-                 where ? (long)(expr_at + (size_t)(where - expr)) : (long)expr_at, formula_vars);
-        rc = -1;
-        goto out;
-      }
+  if (mupError(s->parser)) {
+    formula_syntax_error(s, expr, expr_at, err, errlen);
+    rc = -1;
+    goto out;
+  }
+  for (int i = 0; i < nv; i++) {
+    const muChar_t *vn = NULL;
+    muFloat_t *addr = NULL;
+    mupGetExprVar(s->parser, (unsigned)i, &vn, &addr);
+    if (addr == NULL) {
+      const char *where = strstr(expr, vn);
+      snprintf(err, errlen, "unknown variable '%s' at position %ld; the variables are %s", vn,
+               where ? (long)(expr_at + (size_t)(where - expr)) : (long)expr_at, formula_vars);
+      rc = -1;
+      goto out;
     }
+  }
+  /* A fresh parser for the real compilation (the listing left its own
+  ** state behind). */
+  formula_slot_free(s);
+  s = formula_slot_new(expr);
+  if (s == NULL) {
+    snprintf(err, errlen, "out of memory");
+    return -1;
+  }
+  mupEval(s->parser);
+  if (mupError(s->parser)) {
+    formula_syntax_error(s, expr, expr_at, err, errlen);
+    rc = -1;
+    goto out;
   }
   int nres = 0;
   mupEvalMulti(s->parser, &nres);
-  if (mupError(s->parser)) {
-    long pos = mupGetErrorPos(s->parser);
-    long elen = (long)strlen(expr);
-    if (pos < 0 || pos > elen) pos = elen;
-    formula_strip_position(mupGetErrorMsg(s->parser), m, sizeof m);
-    snprintf(err, errlen, "syntax error at position %ld: %s", (long)expr_at + pos, m);
-    rc = -1;
-  } else if (nres != 1) {
+  if (mupError(s->parser) || nres != 1) {
     snprintf(err, errlen, "the expression gives %d comma-separated values; a measure needs one", nres);
     rc = -1;
   }

@@ -44,6 +44,8 @@ int formula_check_name(const char *name, char *err, size_t errlen);
 ** declared >= 0". */
 void formula_note_bad_value(const char *measure, const geom_tri *t, double v,
                             const char *why);
+/* The same for a problem described by a ready one-line message. */
+void formula_note_message(const char *msg);
 
 /* 0 if no bad value was recorded; otherwise 1 and a one-line message (the
 ** measure, the value, the triangle's vertices with %.17g) in msg. */

@@ -46,6 +46,9 @@ int cli_is_help(const char *opt);
 ** and --plugin FILE.so.  cli_userdefs_take removes them from argv (updating
 ** *argc) after registering what they define; returns 0, or 2 after an error. */
 int cli_userdefs_take(int *argc, char **argv);
+/* After a run: if a user measure produced a bad value (NaN, infinite, wrong
+** sign), print it as cmd's one-line error and return 1; else 0. */
+int cli_userdefs_failed(const char *cmd);
 
 /* Open FILE for writing, "-" meaning stdout; NULL after printing an error.
 ** cli_close_out closes it (flushes stdout); -1 when a write failed. */

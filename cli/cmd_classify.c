@@ -134,6 +134,10 @@ int cli_cmd_classify(int argc, char **argv) {
     if ((k & 1023) == 0) cli_progress_update(k, n, &prog);
   }
   cli_progress_finish(&prog);
+  if (cli_userdefs_failed(CMD)) {
+    rc = 1;
+    goto done;
+  }
   rc = ferror(out) ? 1 : 0;
   if (rc) cli_error(CMD, "write error");
 done:

@@ -222,6 +222,10 @@ int cli_cmd_table34(int argc, char **argv) {
       rc = 1;
       goto done;
     }
+    if (cli_userdefs_failed(CMD)) {
+      rc = 1;
+      goto done;
+    }
   }
   for (int r = 0; r < nrules; r++) {
     counts[r].samples = count;

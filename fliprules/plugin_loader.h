@@ -1,0 +1,18 @@
+/*
+** plugin_loader.h: loading plugins (fliplab/plugin.h) into the measure and
+** quadrilateral-rule registries.
+*/
+#ifndef FLIPLAB_PLUGIN_LOADER_H
+#define FLIPLAB_PLUGIN_LOADER_H
+
+#include <stddef.h>
+
+/* dlopen path (a bare file name means ./NAME, not a library search), check
+** the ABI version and every name, then register the plugin's measures and
+** quadrilateral rules, all or none.  0, or -1 with a one-line message. */
+int plugin_load(const char *path, char *err, size_t errlen);
+
+/* Number of plugins loaded. */
+int plugin_count(void);
+
+#endif
