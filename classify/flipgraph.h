@@ -59,4 +59,34 @@ int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first
                     uint64_t count, double tie_eps, int threads,
                     flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx);
 
+/* ---- additions (helper "table") ---------------------------------------- */
+
+/* flipgraph_tally returns 0, or -1 (out untouched) when a rule is invalid
+** (see flipgraph_plan_new), count would run past 2^64, or memory runs out.
+** With threads != 1 the rules' measure and quadrilateral functions are
+** called from several threads at once: they must be reentrant. */
+
+/* Index 0..9 in flipgraph_pentagon.tri of triangle v_i v_j v_k (distinct,
+** any order, taken mod 5): the triples in lexicographic order 012, 013,
+** 014, 023, 024, 034, 123, 124, 134, 234.  -1 if two indices coincide. */
+int flipgraph_tri_index(int i, int j, int k);
+
+/* The directed flip graph of five decisions dec[j] of Q_j: type, sinks,
+** and delaunay = (type I and sink == delaunay_sink >= 0). */
+void flipgraph_from_decisions(const rule_choice dec[5], int delaunay_sink,
+                              flipgraph *out);
+
+/* The fast path of flipgraph_tally, for callers classifying each pentagon
+** under many rules (same decisions as flipgraph_classify, bit for bit):
+** each measure is evaluated once per triangle, rules are grouped by joint,
+** DT is decided once.  flipgraph_plan_new copies the rules; NULL when a rule
+** names an unknown measure, joint or quadrilateral rule, or out of memory.
+** flipgraph_plan_run fills out[0..nrules-1]; a plan may be shared by
+** threads (it is read-only after creation). */
+typedef struct flipgraph_plan flipgraph_plan;
+flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps);
+void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
+                        flipgraph *out);
+void flipgraph_plan_free(flipgraph_plan *pl);
+
 #endif

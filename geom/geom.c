@@ -63,11 +63,16 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   t->b = geom_mid3(side[0], side[1], side[2]);
   t->c = geom_min3(side[0], side[1], side[2]);
 
-  /* All three angles from atan2: deriving one as pi minus the others loses
-  ** its relative accuracy when it is tiny (a needle has two tiny angles). */
+  /* The two angles opposite the two shorter sides come from atan2, which
+  ** keeps its relative accuracy for tiny angles (a needle has two); the
+  ** largest angle, at least pi/3, is pi minus their sum to within an ulp
+  ** or two of pi, which is a relative error of 1e-16 for it. */
+  int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
+  int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
   double ang[3];
-  for (int i = 0; i < 3; i++)
-    ang[i] = geom_angle(t->v[i], t->v[(i + 1) % 3], t->v[(i + 2) % 3], twice);
+  ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
+  ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
+  ang[big] = M_PI - (ang[i1] + ang[i2]);
   /* Sorting the angle values themselves (not pairing them with sorted
   ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
   t->alpha = geom_min3(ang[0], ang[1], ang[2]);

@@ -46,7 +46,15 @@ static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) 
       && geom_point_finite(d);
 }
 
-static int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
+/* The exact paths are rare: keep them out of line so the filters stay small
+** enough to inline cheaply into their callers' hot loops. */
+#if defined(__GNUC__)
+#define GEOM_COLD __attribute__((noinline, cold))
+#else
+#define GEOM_COLD
+#endif
+
+GEOM_COLD static int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
   if (!geom_finite4(a, b, c, a)) return 0;
   mpq_t t[6];
   for (int i = 0; i < 6; i++) mpq_init(t[i]);
@@ -66,7 +74,7 @@ static int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
 **   | adx ady adx^2+ady^2 |
 **   | bdx bdy bdx^2+bdy^2 |
 **   | cdx cdy cdx^2+cdy^2 |   (positive when d is inside circle abc, abc anticlockwise) */
-static int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+GEOM_COLD static int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
   if (!geom_finite4(a, b, c, d)) return 0;
   geom_point pt[3] = {a, b, c};
   mpq_t x[3], y[3], lift[3], t, u, det;

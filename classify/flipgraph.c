@@ -1,0 +1,588 @@
+/*
+** flipgraph.c: directed flip graphs of convex pentagons, one rule at a time
+** (flipgraph_classify) and many rules over many sampled pentagons at once
+** (flipgraph_plan_*, flipgraph_tally).
+**
+** Labels.  v0..v4 anticlockwise, fans T_i = {v_i v_{i+2}, v_i v_{i+3}}.
+** Q_j = A B C D = v_{j+1} v_{j+2} v_{j+3} v_{j+4} decides the edge
+** T_{j+1} - T_{j-1}: RULE_AC (diagonal v_{j+1}v_{j+3}, in T_{j+1}) points it
+** at T_{j+1}, RULE_BD (diagonal v_{j+2}v_{j+4}, in T_{j-1}) at T_{j-1}.  So
+** T_i has the two edges decided by Q_{i-1} (where it is the AC side) and
+** Q_{i+1} (where it is the BD side): it is a sink when dec[i-1] = AC and
+** dec[i+1] = BD, a source when dec[i-1] = BD and dec[i+1] = AC.  Around the
+** cycle T0 - T2 - T4 - T1 - T3, T_i sits at position 3i mod 5.
+**
+** Decision codes.  Five decisions in {AC, BD, EITHER} = {0, 1, 2} pack into
+** code = sum dec[j] 3^j < 243; a plan keeps a 243-entry table from code to
+** graph, so the per-rule work of the hot loop is the ten joint values, five
+** comparisons and one table look-up.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <omp.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#include "classify/flipgraph.h"
+#include "badness/measure.h"
+#include "pentagon/sampler.h"
+
+#define FLIPGRAPH_NCODES 243
+#define FLIPGRAPH_CHUNK 1024      /* pentagons per scheduling unit of tally */
+#define FLIPGRAPH_SLOTS_ALLOC (MEASURE_MAX + 8)   /* slot arrays, padded for vectors */
+
+/* Triangle index of each 3-subset of {0..4}, by bit mask. */
+static const signed char flipgraph_mask_tri[32] = {
+  -1, -1, -1, -1, -1, -1, -1, 0, -1, -1, -1, 1, -1, 3, 6, -1,
+  -1, -1, -1, 2, -1, 4, 7, -1, -1, 5, 8, -1, 9, -1, -1, -1};
+
+/* The four triangles of Q_j as {ABC, ACD, ABD, BCD}.  (test_flipgraph
+** checks it: flipgraph_classify, which reads this table, must agree with
+** rule_eval on the quadrilateral's own points for every rule.) */
+static const unsigned char flipgraph_quad_tri[5][4] = {
+  {6, 8, 7, 9}, {9, 4, 3, 5}, {5, 1, 8, 2}, {2, 7, 4, 0}, {0, 3, 1, 6}};
+
+int flipgraph_tri_index(int i, int j, int k) {
+  i = ((i % 5) + 5) % 5;
+  j = ((j % 5) + 5) % 5;
+  k = ((k % 5) + 5) % 5;
+  return flipgraph_mask_tri[(1 << i) | (1 << j) | (1 << k)];
+}
+
+static const char *const flipgraph_type_names[FLIPGRAPH_NTYPES] = {
+  "I", "II", "III", "IV", "V"};
+
+const char *flipgraph_type_name(flipgraph_type t) {
+  return (unsigned)t < FLIPGRAPH_NTYPES ? flipgraph_type_names[t] : "?";
+}
+
+/* ---- graphs from decisions --------------------------------------------- */
+
+static int flipgraph_cycle_distance(int i, int k) {
+  int d = ((3 * i - 3 * k) % 5 + 5) % 5;
+  return d < 5 - d ? d : 5 - d;
+}
+
+/* Type and sinks of five decisions; delaunay left to the caller. */
+static void flipgraph_shape(const rule_choice dec[5], flipgraph *g) {
+  int source = -1;
+  g->nsinks = 0;
+  g->sink[0] = g->sink[1] = -1;
+  g->delaunay = 0;
+  for (int j = 0; j < 5; j++) g->dec[j] = dec[j];
+  for (int j = 0; j < 5; j++)
+    if (dec[j] == RULE_EITHER) {
+      g->type = FLIPGRAPH_V;
+      return;
+    }
+  for (int i = 0; i < 5; i++) {
+    rule_choice in = dec[(i + 4) % 5], out = dec[(i + 1) % 5];
+    if (in == RULE_AC && out == RULE_BD) g->sink[g->nsinks++] = i;
+    if (in == RULE_BD && out == RULE_AC) source = i;
+  }
+  if (g->nsinks == 0) g->type = FLIPGRAPH_IV;
+  else if (g->nsinks == 2) g->type = FLIPGRAPH_III;
+  else /* one sink, hence one source */
+    g->type = flipgraph_cycle_distance(g->sink[0], source) == 2 ? FLIPGRAPH_I : FLIPGRAPH_II;
+}
+
+void flipgraph_from_decisions(const rule_choice dec[5], int delaunay_sink, flipgraph *out) {
+  flipgraph_shape(dec, out);
+  out->delaunay = out->type == FLIPGRAPH_I && delaunay_sink >= 0
+               && out->sink[0] == delaunay_sink;
+}
+
+static int flipgraph_code(const rule_choice dec[5]) {
+  return dec[0] + 3 * (dec[1] + 3 * (dec[2] + 3 * (dec[3] + 3 * dec[4])));
+}
+
+/* ---- DT and preparation ------------------------------------------------ */
+
+/* DT on Q_j exactly: D strictly outside circle ABC -> AC, inside -> BD. */
+static int flipgraph_dt_decisions(const geom_point v[5], rule_choice dec[5]) {
+  for (int j = 0; j < 5; j++) {
+    int s = geom_incircle(v[(j + 1) % 5], v[(j + 2) % 5], v[(j + 3) % 5], v[(j + 4) % 5]);
+    dec[j] = s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
+  }
+  return flipgraph_code(dec);
+}
+
+/* Prepare and return the DT decision code.  The Delaunay triangulation is
+** DT's unique sink; it is unique unless some Q_j is cocircular (EITHER).
+** (Without EITHER, DT's graph is always type I: thesis theorem 3.) */
+static int flipgraph_prepare_code(flipgraph_pentagon *p, const geom_point v[5]) {
+  static const unsigned char tri[10][3] = {
+    {0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 2, 3}, {0, 2, 4},
+    {0, 3, 4}, {1, 2, 3}, {1, 2, 4}, {1, 3, 4}, {2, 3, 4}};
+  for (int k = 0; k < 5; k++) p->v[k] = v[k];
+  for (int t = 0; t < 10; t++)
+    geom_tri_make(&p->tri[t], v[tri[t][0]], v[tri[t][1]], v[tri[t][2]]);
+  rule_choice dec[5];
+  int code = flipgraph_dt_decisions(v, dec);
+  flipgraph g;
+  flipgraph_shape(dec, &g);
+  p->delaunay_sink = g.type == FLIPGRAPH_I ? g.sink[0] : -1;
+  return code;
+}
+
+void flipgraph_prepare(flipgraph_pentagon *p, const geom_point v[5]) {
+  (void)flipgraph_prepare_code(p, v);
+}
+
+/* ---- one rule ------------------------------------------------------------ */
+
+void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_eps,
+                        flipgraph *out) {
+  rule_choice dec[5];
+  for (int j = 0; j < 5; j++) {
+    if (r->kind == RULE_QUAD) {
+      geom_point q[4];
+      for (int k = 0; k < 4; k++) q[k] = p->v[(j + 1 + k) % 5];
+      dec[j] = rule_eval(r, q, tie_eps, NULL, NULL);
+    } else {
+      const unsigned char *t = flipgraph_quad_tri[j];
+      dec[j] = rule_eval_tris(r, &p->tri[t[0]], &p->tri[t[1]], &p->tri[t[2]],
+                              &p->tri[t[3]], tie_eps, NULL, NULL);
+    }
+  }
+  flipgraph_from_decisions(dec, p->delaunay_sink, out);
+}
+
+/* ---- plans: many rules per pentagon -------------------------------------- */
+
+typedef struct flipgraph_item {
+  int rule;          /* index into the caller's list */
+  int slot;          /* column of the values table */
+} flipgraph_item;
+
+struct flipgraph_plan {
+  int nrules;
+  double tie_eps;
+  rule *rules;                       /* copy */
+  int nslots, slot_measure[MEASURE_MAX];
+  int eval_all;                      /* use measure_eval_all (see plan_new) */
+  int filter_ok;                     /* the division/sqrt filter applies */
+  double filter_k;                   /* its relative gap, 4 tie_eps + 2^-45 */
+  double slot_sign[FLIPGRAPH_SLOTS_ALLOC];        /* -1.0 for measures <= 0, else +1.0 */
+  int slot_neg[FLIPGRAPH_SLOTS_ALLOC];            /* 1 for measures <= 0 */
+  long long slot_negmask[FLIPGRAPH_SLOTS_ALLOC];  /* -1 for measures <= 0, else 0 */
+  int ngroup[JOINT_COUNT];           /* triangle rules grouped by joint */
+  flipgraph_item *group[JOINT_COUNT];
+  int ndt, *dt;                      /* DT rules */
+  int nquad, *quad;                  /* other quadrilateral rules */
+  flipgraph graph[FLIPGRAPH_NCODES]; /* code -> graph (delaunay unset) */
+  unsigned char code_type[FLIPGRAPH_NCODES];   /* code -> type */
+  signed char code_sink1[FLIPGRAPH_NCODES];    /* code -> sink if type I, else -2 */
+};
+
+void flipgraph_plan_free(flipgraph_plan *pl) {
+  if (pl == NULL) return;
+  free(pl->rules);
+  for (int j = 0; j < JOINT_COUNT; j++) free(pl->group[j]);
+  free(pl->dt);
+  free(pl->quad);
+  free(pl);
+}
+
+flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps) {
+  if (nrules < 0 || (nrules > 0 && rules == NULL)) return NULL;
+  flipgraph_plan *pl = calloc(1, sizeof *pl);
+  if (pl == NULL) return NULL;
+  pl->nrules = nrules;
+  pl->tie_eps = tie_eps;
+  pl->filter_ok = tie_eps >= 0 && tie_eps <= 0.125;
+  pl->filter_k = 4 * tie_eps + 0x1p-45;
+  size_t n = nrules > 0 ? (size_t)nrules : 1;
+  pl->rules = malloc(n * sizeof *pl->rules);
+  pl->dt = malloc(n * sizeof *pl->dt);
+  pl->quad = malloc(n * sizeof *pl->quad);
+  for (int j = 0; j < JOINT_COUNT; j++) pl->group[j] = malloc(n * sizeof(flipgraph_item));
+  int ok = pl->rules && pl->dt && pl->quad;
+  for (int j = 0; j < JOINT_COUNT; j++) ok = ok && pl->group[j];
+  if (!ok) goto fail;
+  memcpy(pl->rules, rules, (size_t)nrules * sizeof *rules);
+  for (int i = 0; i < nrules; i++) {
+    const rule *r = &rules[i];
+    if (r->kind == RULE_QUAD) {
+      if (r->quad < 0 || r->quad >= rule_quad_count()) goto fail;
+      if (r->quad == RULE_DT) pl->dt[pl->ndt++] = i;
+      else pl->quad[pl->nquad++] = i;
+      continue;
+    }
+    if (r->kind != RULE_TRIANGLE || r->measure < 0 || r->measure >= measure_count()
+        || (unsigned)r->joint >= JOINT_COUNT)
+      goto fail;
+    int slot = 0;
+    while (slot < pl->nslots && pl->slot_measure[slot] != r->measure) slot++;
+    if (slot == pl->nslots) {
+      int neg = measure_get(r->measure)->sign == MEASURE_NONPOS;
+      pl->slot_measure[slot] = r->measure;
+      pl->slot_neg[slot] = neg;
+      pl->slot_sign[slot] = neg ? -1.0 : 1.0;
+      pl->slot_negmask[slot] = neg ? -1 : 0;
+      pl->nslots++;
+    }
+    flipgraph_item it = {i, slot};
+    pl->group[r->joint][pl->ngroup[r->joint]++] = it;
+  }
+  for (int code = 0; code < FLIPGRAPH_NCODES; code++) {
+    rule_choice dec[5];
+    for (int j = 0, c = code; j < 5; j++, c /= 3) dec[j] = (rule_choice)(c % 3);
+    flipgraph_shape(dec, &pl->graph[code]);
+    pl->code_type[code] = (unsigned char)pl->graph[code].type;
+    pl->code_sink1[code] = (signed char)(pl->graph[code].type == FLIPGRAPH_I ? pl->graph[code].sink[0] : -2);
+  }
+  /* measure_eval_all computes every registered measure without a call per
+  ** built-in: the fast way, unless it would also run user measures (maybe
+  ** slow formulas) that no rule of the plan needs. */
+  pl->eval_all = 1;
+  for (int m = MEASURE_BUILTIN_COUNT; m < measure_count(); m++) {
+    int used = 0;
+    for (int k = 0; k < pl->nslots; k++) used |= pl->slot_measure[k] == m;
+    if (!used) pl->eval_all = 0;
+  }
+  return pl;
+fail:
+  flipgraph_plan_free(pl);
+  return NULL;
+}
+
+/* ---- the hot loop: every rule of one joint at once ------------------------
+**
+** The plan must decide exactly as rule_eval_tris does, bit for bit (the
+** tests compare the two on every rule and many pentagons), while doing far
+** less work.  Four rewrites make that possible; each is exact:
+**
+** 1. Sign.  joint_apply gives g(x, y) for min, max and measures >= 0, and
+**    -g(-x, -y) for the four finite-p joints on measures <= 0 (g being the
+**    joint on magnitudes).  Negation is exact, so g is computed here on the
+**    magnitudes m = sign * x (multiplying by -1.0 is exact).  Comparing
+**    -g_AC with -g_BD: equality, NaN and infinity tests are unchanged,
+**    (-u) - (-v) rounds to exactly -(u - v) (round-to-nearest is
+**    symmetric) so the tie test is unchanged, and -u < -v iff u > v, which
+**    for non-tied, non-NaN values is !(u < v): the decision is flipped.
+** 2. Shared per-triangle work.  g(x, y) = c(h(x), h(y)) with h(x) = 1/x,
+**    c(a, b) = 1/(a + b) for the harmonic joint and h(x) = x*x,
+**    c(a, b) = sqrt(a + b) for the root-sum-square: the same operations in
+**    the same order as joint.c, so the same bits, but h runs once per
+**    triangle instead of once per (triangle, quad) pair.
+** 3. rule_compare inlined: fmax(|ac|, |bd|) is a plain maximum once NaN
+**    has been sent to EITHER; isinf(v) is |v| == inf.
+** 4. A filter saves the final division (harmonic, f = 1/s) or square root
+**    (l_2, f = sqrt(s)) of the sums s_AC, s_BD when their order alone
+**    decides.  Let u = 2^-53, 0 <= tie_eps <= 1/8, K = 4 tie_eps + 2^-45,
+**    both sums in [2^-1000, 2^1000] (so every quantity below is normal and
+**    each rounded operation has relative error <= u) and, say, s_lo <
+**    s_hi with fl(s_hi - s_lo) > K s_hi.  Then s_lo/s_hi < 1 - k, k =
+**    K/(1 + u), and the exact values satisfy f_small/f_big < 1 - k/2
+**    (sqrt(1 - k) <= 1 - k/2; for 1/s the ratio is < 1 - k itself).  After
+**    rounding f_small/f_big < (1 - k/2)(1 + 3u), so fl(f_big - f_small) >
+**    f_big (k/2 - 3u)(1 - u) > tie_eps f_big (1 + u) >= fl(tie_eps f_big):
+**    no tie, and since correctly rounded 1/s and sqrt are monotone, f_AC <
+**    f_BD iff s_AC > s_BD (harmonic) or s_AC < s_BD (l_2).  Equal sums
+**    give equal f: a tie.  A vector with any other lane (near ties, zeros,
+**    infinities, NaN, extreme magnitudes) takes the exact path.
+**
+** Values sit triangle-major (val[t][slot]) so that the loops over slots
+** (all measures of one joint) run on contiguous memory. */
+
+/* Slot lanes are processed FLIPGRAPH_LANES at a time; arrays are padded. */
+#define FLIPGRAPH_LANES 4
+#define FLIPGRAPH_SLOTS ((MEASURE_MAX + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES)
+
+typedef struct flipgraph_work {
+  double val[10][FLIPGRAPH_SLOTS];   /* measure of slot s on triangle t */
+  double mag[10][FLIPGRAPH_SLOTS];   /* magnitudes: val times the slot's sign */
+  double h[10][FLIPGRAPH_SLOTS];     /* 1/mag or mag^2 (harmonic, l_2) */
+  long long code[JOINT_COUNT][FLIPGRAPH_SLOTS];   /* decision codes */
+} flipgraph_work;
+
+/* Padding lanes hold harmless values (never read back). */
+static void flipgraph_work_init(flipgraph_work *w) {
+  for (int t = 0; t < 10; t++)
+    for (int s = 0; s < FLIPGRAPH_SLOTS; s++) w->val[t][s] = w->mag[t][s] = 1.0;
+}
+
+#if defined(__GNUC__) && !defined(FLIPGRAPH_SCALAR)
+/* GCC/Clang generic vectors: one lane per slot, 64-bit lanes throughout
+** (doubles, and comparison masks of -1 / 0), no branches. */
+#define FLIPGRAPH_INLINE static inline __attribute__((always_inline))
+typedef double flipgraph_vd __attribute__((vector_size(8 * FLIPGRAPH_LANES)));
+typedef long long flipgraph_vi __attribute__((vector_size(8 * FLIPGRAPH_LANES)));
+
+/* Lane helpers are macros or take pointers: a vector passed by value would
+** draw GCC's psABI note about 32-byte arguments without AVX. */
+#define FLIPGRAPH_VSEL(m, a, b) \
+  ((flipgraph_vd)(((m) & (flipgraph_vi)(a)) | (~(m) & (flipgraph_vi)(b))))
+#define FLIPGRAPH_VABS(x) ((flipgraph_vd)((flipgraph_vi)(x) & 0x7fffffffffffffffLL))
+
+/* *out = the joint on magnitudes of the lanes at pa and pb (after h). */
+FLIPGRAPH_INLINE void flipgraph_vc(joint_id j, const double *pa, const double *pb,
+                                   flipgraph_vd *out) {
+  flipgraph_vd a, b, r;
+  memcpy(&a, pa, sizeof a);
+  memcpy(&b, pb, sizeof b);
+  switch (j) {
+    case JOINT_MIN: r = FLIPGRAPH_VSEL(a < b, a, b); break;
+    case JOINT_MAX: r = FLIPGRAPH_VSEL(a > b, a, b); break;
+    case JOINT_HARMONIC: r = 1.0 / (a + b); break;
+    case JOINT_PRODUCT: r = a * b; break;
+    case JOINT_RSS: {
+      /* sqrt() must keep errno semantics, which stops GCC vectorising it;
+      ** SSE2's sqrtpd is the same correctly rounded IEEE square root. */
+      double x[FLIPGRAPH_LANES];
+      r = a + b;
+      memcpy(x, &r, sizeof x);
+#if defined(__SSE2__)
+      for (int k = 0; k < FLIPGRAPH_LANES; k += 2)
+        _mm_storeu_pd(&x[k], _mm_sqrt_pd(_mm_loadu_pd(&x[k])));
+#else
+      for (int k = 0; k < FLIPGRAPH_LANES; k++) x[k] = sqrt(x[k]);
+#endif
+      memcpy(&r, x, sizeof r);
+      break;
+    }
+    default: r = a + b; break;
+  }
+  *out = r;
+}
+
+/* Codes of every slot under joint j; see the comment above for why each
+** step is rule_compare's arithmetic. */
+FLIPGRAPH_INLINE void flipgraph_joint_codes(joint_id j, const flipgraph_plan *pl,
+                                             flipgraph_work *w) {
+  const int nv = (pl->nslots + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES;
+  const int finite_p = j != JOINT_MIN && j != JOINT_MAX;
+  const double eps = pl->tie_eps;
+  /* The per-triangle inputs: raw values for min and max, magnitudes for
+  ** sum and product, h(magnitude) for the harmonic and l_2 joints. */
+  double (*src)[FLIPGRAPH_SLOTS] = finite_p ? w->mag : w->val;
+  if (j == JOINT_HARMONIC || j == JOINT_RSS) {
+    for (int t = 0; t < 10; t++)
+      for (int s = 0; s < nv; s++) {
+        double x = w->mag[t][s];
+        w->h[t][s] = j == JOINT_HARMONIC ? 1.0 / x : x * x;
+      }
+    src = w->h;
+  }
+  for (int s = 0; s < nv; s += FLIPGRAPH_LANES) {
+    flipgraph_vi negm, code = {0};
+    memcpy(&negm, &pl->slot_negmask[s], sizeof negm);
+    if (!finite_p) negm = (flipgraph_vi){0};
+    long long p3 = 1;
+    for (int q = 0; q < 5; q++, p3 *= 3) {
+      const unsigned char *t = flipgraph_quad_tri[q];
+      flipgraph_vd fa, fb;
+      if ((j == JOINT_HARMONIC || j == JOINT_RSS) && pl->filter_ok) {
+        flipgraph_vd a0, a1, b0, b1;
+        memcpy(&a0, &src[t[0]][s], sizeof a0);
+        memcpy(&a1, &src[t[1]][s], sizeof a1);
+        memcpy(&b0, &src[t[2]][s], sizeof b0);
+        memcpy(&b1, &src[t[3]][s], sizeof b1);
+        flipgraph_vd sa = a0 + a1, sb = b0 + b1;
+        flipgraph_vd hi = FLIPGRAPH_VSEL(sa > sb, sa, sb), lo = FLIPGRAPH_VSEL(sa > sb, sb, sa);
+        flipgraph_vi eq = sa == sb;
+        flipgraph_vi sure = eq | ((hi <= 0x1p1000) & (lo >= 0x1p-1000)
+                                  & (FLIPGRAPH_VABS(sa - sb) > pl->filter_k * hi));
+        int all_sure = 1;
+        for (int k = 0; k < FLIPGRAPH_LANES; k++) all_sure &= sure[k] != 0;
+        if (all_sure) {
+          /* fa < fb iff sa > sb (harmonic: 1/s decreases) or sa < sb (l_2). */
+          flipgraph_vi lt = j == JOINT_HARMONIC ? sa > sb : sa < sb;
+          flipgraph_vi ac = lt ^ negm;
+          code += (eq & (2 * p3)) | (~eq & ~ac & p3);
+          continue;
+        }
+      }
+      flipgraph_vc(j, &src[t[0]][s], &src[t[1]][s], &fa);
+      flipgraph_vc(j, &src[t[2]][s], &src[t[3]][s], &fb);
+      flipgraph_vd aa = FLIPGRAPH_VABS(fa), ab = FLIPGRAPH_VABS(fb);
+      flipgraph_vd big = FLIPGRAPH_VSEL(aa > ab, aa, ab);
+      flipgraph_vi tie = (fa == fb) | (fa != fa) | (fb != fb)
+                       | ((aa != INFINITY) & (ab != INFINITY) & (FLIPGRAPH_VABS(fa - fb) <= eps * big));
+      flipgraph_vi ac = (fa < fb) ^ negm;
+      code += (tie & (2 * p3)) | (~tie & ~ac & p3);
+    }
+    memcpy(&w->code[j][s], &code, sizeof code);
+  }
+}
+#else
+/* Portable scalar version of the same arithmetic. */
+static inline void flipgraph_joint_codes(joint_id j, const flipgraph_plan *pl,
+                                         flipgraph_work *w) {
+  const int finite_p = j != JOINT_MIN && j != JOINT_MAX;
+  for (int s = 0; s < pl->nslots; s++) {
+    double h[10];
+    for (int t = 0; t < 10; t++) {
+      double x = finite_p ? w->mag[t][s] : w->val[t][s];
+      h[t] = j == JOINT_HARMONIC ? 1.0 / x : j == JOINT_RSS ? x * x : x;
+    }
+    long long code = 0, p3 = 1;
+    for (int q = 0; q < 5; q++, p3 *= 3) {
+      const unsigned char *t = flipgraph_quad_tri[q];
+      double a0 = h[t[0]], a1 = h[t[1]], b0 = h[t[2]], b1 = h[t[3]], fa, fb;
+      switch (j) {
+        case JOINT_MIN: fa = a0 < a1 ? a0 : a1; fb = b0 < b1 ? b0 : b1; break;
+        case JOINT_MAX: fa = a0 > a1 ? a0 : a1; fb = b0 > b1 ? b0 : b1; break;
+        case JOINT_HARMONIC: fa = 1.0 / (a0 + a1); fb = 1.0 / (b0 + b1); break;
+        case JOINT_PRODUCT: fa = a0 * a1; fb = b0 * b1; break;
+        case JOINT_RSS: fa = sqrt(a0 + a1); fb = sqrt(b0 + b1); break;
+        default: fa = a0 + a1; fb = b0 + b1; break;
+      }
+      double aa = fabs(fa), ab = fabs(fb), big = aa > ab ? aa : ab;
+      int tie = fa == fb || isnan(fa) || isnan(fb)
+             || (!isinf(fa) && !isinf(fb) && fabs(fa - fb) <= pl->tie_eps * big);
+      int ac = (fa < fb) != (finite_p && pl->slot_neg[s]);
+      code += tie ? 2 * p3 : ac ? 0 : p3;
+    }
+    w->code[j][s] = code;
+  }
+}
+#endif
+
+/* Codes of every (joint, slot) in use.  On x86-64 with GCC an AVX2 clone is
+** chosen at load time where the CPU has it; every operation is an IEEE
+** basic operation on doubles, so both clones give the same bits. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(FLIPGRAPH_NO_CLONES)
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
+  const int nv = (pl->nslots + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES;
+  if (pl->ngroup[JOINT_HARMONIC] + pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_SUM]
+      + pl->ngroup[JOINT_RSS] > 0)
+    for (int t = 0; t < 10; t++)
+      for (int s = 0; s < nv; s++) w->mag[t][s] = pl->slot_sign[s] * w->val[t][s];
+  for (int j = 0; j < JOINT_COUNT; j++) {
+    if (pl->ngroup[j] == 0) continue;
+    switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
+      case JOINT_MIN: flipgraph_joint_codes(JOINT_MIN, pl, w); break;
+      case JOINT_HARMONIC: flipgraph_joint_codes(JOINT_HARMONIC, pl, w); break;
+      case JOINT_PRODUCT: flipgraph_joint_codes(JOINT_PRODUCT, pl, w); break;
+      case JOINT_SUM: flipgraph_joint_codes(JOINT_SUM, pl, w); break;
+      case JOINT_RSS: flipgraph_joint_codes(JOINT_RSS, pl, w); break;
+      default: flipgraph_joint_codes(JOINT_MAX, pl, w); break;
+    }
+  }
+}
+
+/* Decision codes of every rule of the plan for one prepared pentagon whose
+** DT code is dt_code. */
+static void flipgraph_plan_codes(const flipgraph_plan *pl, const flipgraph_pentagon *p,
+                                 int dt_code, flipgraph_work *w, unsigned char *codes) {
+  if (pl->eval_all) {
+    double all[MEASURE_MAX];
+    for (int t = 0; t < 10; t++) {
+      measure_eval_all(&p->tri[t], all);
+      for (int s = 0; s < pl->nslots; s++) w->val[t][s] = all[pl->slot_measure[s]];
+    }
+  } else {
+    for (int s = 0; s < pl->nslots; s++) {
+      const measure *m = measure_get(pl->slot_measure[s]);
+      for (int t = 0; t < 10; t++) w->val[t][s] = m->fn(&p->tri[t], m->ctx);
+    }
+  }
+  flipgraph_all_codes(pl, w);
+  for (int j = 0; j < JOINT_COUNT; j++)
+    for (int k = 0; k < pl->ngroup[j]; k++)
+      codes[pl->group[j][k].rule] = (unsigned char)w->code[j][pl->group[j][k].slot];
+  for (int k = 0; k < pl->ndt; k++) codes[pl->dt[k]] = (unsigned char)dt_code;
+  for (int k = 0; k < pl->nquad; k++) {
+    flipgraph g;
+    flipgraph_classify(p, &pl->rules[pl->quad[k]], pl->tie_eps, &g);
+    codes[pl->quad[k]] = (unsigned char)flipgraph_code(g.dec);
+  }
+}
+
+void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
+                        flipgraph *out) {
+  unsigned char stackcodes[256], *codes = stackcodes;
+  if (pl->nrules > 256 && (codes = malloc((size_t)pl->nrules)) == NULL) {
+    /* Out of memory: fall back to one rule at a time. */
+    for (int i = 0; i < pl->nrules; i++)
+      flipgraph_classify(p, &pl->rules[i], pl->tie_eps, &out[i]);
+    return;
+  }
+  rule_choice dec[5];
+  flipgraph_work w;
+  flipgraph_work_init(&w);
+  int dt_code = pl->ndt > 0 ? flipgraph_dt_decisions(p->v, dec) : 0;
+  flipgraph_plan_codes(pl, p, dt_code, &w, codes);
+  for (int i = 0; i < pl->nrules; i++) {
+    out[i] = pl->graph[codes[i]];
+    out[i].delaunay = out[i].type == FLIPGRAPH_I && p->delaunay_sink >= 0
+                   && out[i].sink[0] == p->delaunay_sink;
+  }
+  if (codes != stackcodes) free(codes);
+}
+
+/* ---- tally --------------------------------------------------------------- */
+
+/* Each thread adds into its own counts; the totals are integer sums, so
+** neither the thread count nor the scheduling can change them. */
+static void flipgraph_tally_range(const flipgraph_plan *pl, uint64_t seed, uint64_t lo,
+                                  uint64_t hi, unsigned char *codes, flipgraph_counts *c) {
+  flipgraph_pentagon p;
+  flipgraph_work w;
+  geom_point v[5];
+  flipgraph_work_init(&w);
+  for (uint64_t i = lo; i < hi; i++) {
+    sampler_pentagon(seed, i, v);
+    int dt_code = flipgraph_prepare_code(&p, v);
+    flipgraph_plan_codes(pl, &p, dt_code, &w, codes);
+    for (int r = 0; r < pl->nrules; r++) {
+      int code = codes[r];
+      c[r].type[pl->code_type[code]]++;
+      c[r].dt += pl->code_sink1[code] == p.delaunay_sink;
+    }
+  }
+  for (int r = 0; r < pl->nrules; r++) c[r].samples += hi - lo;
+}
+
+int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
+                    uint64_t count, double tie_eps, int threads,
+                    flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx) {
+  if (first + count < first || (nrules > 0 && out == NULL)) return -1;
+  flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, tie_eps);
+  if (pl == NULL) return -1;
+  if (threads <= 0) threads = omp_get_max_threads();
+  uint64_t nchunks = (count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK;
+  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
+  size_t nr = nrules > 0 ? (size_t)nrules : 1;
+  flipgraph_counts *all = calloc((size_t)threads * nr, sizeof *all);
+  unsigned char *codes = malloc((size_t)threads * nr);
+  if (all == NULL || codes == NULL) {
+    free(all);
+    free(codes);
+    flipgraph_plan_free(pl);
+    return -1;
+  }
+  uint64_t done = 0;
+#pragma omp parallel num_threads(threads)
+  {
+    int me = omp_get_thread_num();
+    flipgraph_counts *mine = all + (size_t)me * nr;
+#pragma omp for schedule(dynamic, 1)
+    for (uint64_t k = 0; k < nchunks; k++) {
+      uint64_t lo = first + k * FLIPGRAPH_CHUNK;
+      uint64_t hi = k + 1 == nchunks ? first + count : lo + FLIPGRAPH_CHUNK;
+      flipgraph_tally_range(pl, seed, lo, hi, codes + (size_t)me * nr, mine);
+      uint64_t now;
+#pragma omp atomic capture
+      now = done += hi - lo;
+      if (progress != NULL && me == 0) progress(now, count, ctx);
+    }
+  }
+  if (progress != NULL) progress(count, count, ctx);
+  for (int t = 0; t < threads; t++)
+    for (int r = 0; r < nrules; r++) {
+      const flipgraph_counts *c = &all[(size_t)t * nr + r];
+      out[r].samples += c->samples;
+      for (int y = 0; y < FLIPGRAPH_NTYPES; y++) out[r].type[y] += c->type[y];
+      out[r].dt += c->dt;
+    }
+  free(all);
+  free(codes);
+  flipgraph_plan_free(pl);
+  return 0;
+}

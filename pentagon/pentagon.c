@@ -1,0 +1,201 @@
+/*
+** pentagon.c: the generator streams and the iteration sampler.
+**
+** Generator: xoshiro256** (Blackman and Vigna), its 256-bit state filled by
+** splitmix64 from a hash of (seed, stream).  Pentagon i of seed S is drawn
+** from stream i alone, so it depends only on (S, i): any thread count and
+** any split into shards give bit-identical samples.
+**
+** Iteration method (thesis section 6.3, ../shared/spec/classification.md):
+** points uniform in the unit disc (rejection from the square [-1,1]^2), one
+** at a time, keeping their convex hull, until the hull has exactly five
+** vertices.  Adding one point raises the hull size by at most one, so five
+** is hit exactly.  Every hull test is exact (geom_orient, behind an inlined
+** copy of its floating-point filter), so duplicate,
+** collinear and on-the-boundary draws are handled without tolerances: a
+** point on the hull's boundary is not a new vertex, and a vertex left
+** between two collinear hull points is dropped; the hull stays strictly
+** convex and anticlockwise throughout.
+*/
+#include <math.h>
+#include "pentagon/sampler.h"
+
+static uint64_t sampler_splitmix(uint64_t *x) {
+  uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+static inline uint64_t sampler_rotl(uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
+
+/* The stream's starting point hashes the seed, then adds the stream number
+** and hashes again: distinct (seed, stream) pairs give unrelated states.
+** splitmix64's output function is a bijection of its counter, so the four
+** consecutive outputs cannot all be zero (xoshiro's one forbidden state). */
+void sampler_seed(sampler_rng *g, uint64_t seed, uint64_t stream) {
+  uint64_t x = seed;
+  uint64_t h = sampler_splitmix(&x);
+  x = h ^ (stream * 0xD1B54A32D192ED03ull);
+  (void)sampler_splitmix(&x);
+  for (int i = 0; i < 4; i++) g->s[i] = sampler_splitmix(&x);
+}
+
+uint64_t sampler_next(sampler_rng *g) {
+  uint64_t *s = g->s;
+  uint64_t out = sampler_rotl(s[1] * 5, 7) * 9;
+  uint64_t t = s[1] << 17;
+  s[2] ^= s[0];
+  s[3] ^= s[1];
+  s[1] ^= s[2];
+  s[0] ^= s[3];
+  s[2] ^= t;
+  s[3] = sampler_rotl(s[3], 45);
+  return out;
+}
+
+double sampler_uniform(sampler_rng *g) {
+  return (double)(sampler_next(g) >> 11) * 0x1.0p-53;
+}
+
+/* Marsaglia's polar method; the second deviate is dropped so that the
+** generator carries no hidden state besides its four words. */
+double sampler_normal(sampler_rng *g) {
+  for (;;) {
+    double x = 2 * sampler_uniform(g) - 1, y = 2 * sampler_uniform(g) - 1;
+    double s = x * x + y * y;
+    if (s > 0 && s < 1) return x * sqrt(-2 * log(s) / s);
+  }
+}
+
+/* A point uniform in the open unit disc. */
+static geom_point sampler_disc(sampler_rng *g) {
+  for (;;) {
+    double x = 2 * sampler_uniform(g) - 1, y = 2 * sampler_uniform(g) - 1;
+    if (x * x + y * y < 1) return (geom_point){x, y};
+  }
+}
+
+/* geom_orient's floating-point filter, inlined: most hull tests are
+** decided here without a call (geom_orient keeps a large stack frame for
+** its exact fallback, which made the calls cost two thirds of the
+** sampler's time).  det = (bx-ax)(cy-ay) - (by-ay)(cx-ax); with l, r the
+** two products, |fl(det) - det| <= (3 + 16 eps) eps (|l| + |r|), eps =
+** 2^-53 (Shewchuk's ccwerrboundA), so a larger |fl(det)| has the true sign.
+** The bound assumes no underflow, hence the same guard as geom_orient:
+** differences below 2^-200 (other than 0) go to geom_orient, as do all
+** uncertain cases.  The answer is always geom_orient's exact sign. */
+static inline int sampler_orient(geom_point a, geom_point b, geom_point c) {
+  double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
+  double l = bax * cay, r = bay * cax;
+  double det = l - r;
+  double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (fabs(l) + fabs(r));
+  int tiny = (bax != 0 && fabs(bax) < 0x1p-200) || (bay != 0 && fabs(bay) < 0x1p-200)
+          || (cax != 0 && fabs(cax) < 0x1p-200) || (cay != 0 && fabs(cay) < 0x1p-200);
+  if (!tiny) {
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  return geom_orient(a, b, c);
+}
+
+static int sampler_lexless(geom_point a, geom_point b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+/* Hull of at most two points plus p; collinear points are ordered along
+** their line by the lexicographic order, exactly. */
+static int sampler_hull_small(geom_point *h, int n, geom_point p) {
+  if (n == 0) {
+    h[0] = p;
+    return 1;
+  }
+  if (n == 1) {
+    if (p.x == h[0].x && p.y == h[0].y) return 1;
+    h[1] = p;
+    return 2;
+  }
+  int o = sampler_orient(h[0], h[1], p);
+  if (o > 0) {
+    h[2] = p;
+    return 3;
+  }
+  if (o < 0) {
+    geom_point t = h[0];
+    h[0] = h[1];
+    h[1] = t;
+    h[2] = p;
+    return 3;
+  }
+  /* Collinear: keep the lexicographic extremes of the three. */
+  geom_point lo = h[0], hi = h[1];
+  if (sampler_lexless(hi, lo)) {
+    lo = h[1];
+    hi = h[0];
+  }
+  if (sampler_lexless(p, lo)) lo = p;
+  if (sampler_lexless(hi, p)) hi = p;
+  h[0] = lo;
+  h[1] = hi;
+  return 2;
+}
+
+/* Insert p into the strictly convex anticlockwise hull h[0..n-1], n >= 3.
+** side[k] = orient(h_k, h_{k+1}, p).  If no side is negative p lies inside
+** or on the boundary (a duplicate of a vertex gives zeros only at its two
+** sides) and the hull is unchanged.  Otherwise the sides with side <= 0
+** form one contiguous chain from vertex L to vertex R (p is outside a
+** convex polygon); the vertices strictly inside that chain are dropped,
+** including one left on a segment between its neighbour and p (a zero
+** side next to a negative one), and p goes between L and R. */
+static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
+  int side[8], any = 0;   /* n <= 7 */
+  for (int k = 0; k < n; k++) {
+    side[k] = sampler_orient(h[k], h[(k + 1) % n], p);
+    if (side[k] < 0) any = 1;
+  }
+  if (!any) return n;
+  int L = -1, R = -1;
+  for (int k = 0; k < n; k++) {
+    int prev = side[(k + n - 1) % n];
+    if (side[k] <= 0 && prev > 0) L = k;           /* chain starts at h_k */
+    if (side[k] > 0 && prev <= 0) R = k;           /* chain ends at h_k */
+  }
+  /* New hull: p, then h_R, h_{R+1}, ..., h_L anticlockwise. */
+  geom_point t[8] = {{0, 0}};
+  int m = 0;
+  t[m++] = p;
+  for (int k = R;; k = (k + 1) % n) {
+    t[m++] = h[k];
+    if (k == L) break;
+  }
+  for (int k = 0; k < 8; k++) h[k] = t[k];   /* fixed length: no memmove call */
+  return m;
+}
+
+/* Add p to the strictly convex anticlockwise hull h[0..n-1] (h has room
+** for 8 points; n <= 6) and return the new size.  Not in sampler.h:
+** exposed for test_sampler's degenerate cases, which declare it. */
+int sampler_hull_add(geom_point *h, int n, geom_point p);
+int sampler_hull_add(geom_point *h, int n, geom_point p) {
+  return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
+}
+
+void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
+  sampler_rng g;
+  sampler_seed(&g, seed, index);
+  geom_point h[8];
+  int n = 0;
+  while (n != 5) {
+    geom_point p = sampler_disc(&g);
+    n = sampler_hull_add(h, n, p);
+  }
+  /* Start at the lexicographically smallest vertex, so the labelling
+  ** v0..v4 does not depend on the order the hull was built in. */
+  int s = 0;
+  for (int k = 1; k < 5; k++)
+    if (sampler_lexless(h[k], h[s])) s = k;
+  for (int k = 0; k < 5; k++) v[k] = h[(s + k) % 5];
+}
