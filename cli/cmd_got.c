@@ -1,10 +1,244 @@
 /*
-** cmd_got.c: `fliplab got` (placeholder until its issue lands).
+** cmd_got.c: `fliplab got`: the globally optimal triangulation of a convex
+** polygon (thesis Algorithm 1) for a triangle-based rule, from a CSV file
+** or a random polygon; prints the total badness, whether the optimum is
+** unique (the runner-up gap), the time, and the triangles; optionally
+** writes them as CSV and draws an SVG, and compares with the Delaunay
+** triangulation (as Nielson and Franke did).
 */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "badness/measure.h"
 #include "cli/cli.h"
+#include "got/got.h"
+#include "pentagon/sampler.h"
+#include "reports/report_got.h"
+
+#define CMD "got"
+#define CLI_GOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
+#define CLI_GOT_PRINT_N 50               /* list triangles by default up to this n */
+
+static const char cli_got_usage[] =
+  "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N [--seed S]\n"
+  "                   [--sampler vector|circle]) [--threads T] [--tie-eps E]\n"
+  "                   [--csv FILE] [--svg FILE [--shade]] [--compare DT]\n"
+  "                   [--print-triangles | --no-triangles]\n"
+  "Globally optimal triangulation GOT(b_f) of a convex polygon: the thesis's\n"
+  "Algorithm 1, Theta(n^3) time and Theta(n^2) memory, ties broken towards the\n"
+  "smallest split vertex k.\n\n"
+  "  --rule RULE        triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2\n"
+  "  --polygon FILE     CSV, one vertex 'x,y' per row (optional header 'x,y'); either\n"
+  "                     orientation (clockwise input is reversed keeping vertex 0;\n"
+  "                     printed indices are always the file's rows, 0-based)\n"
+  "  --random N         a random convex N-gon (anticlockwise)\n"
+  "  --seed S           its seed (default 1)\n"
+  "  --sampler NAME     vector (thesis 6.4, default) or circle (random angles on the\n"
+  "                     unit circle: cocircular up to rounding)\n"
+  "  --threads T        OpenMP threads (default: all); results do not depend on T\n"
+  "  --tie-eps E        relative tolerance under which the runner-up ties (1e-12)\n"
+  "  --csv FILE         write the triangles: i,j,k,badness\n"
+  "  --svg FILE         draw the polygon and its GOT; --shade fills triangles by badness\n"
+  "  --compare DT       diagonals and triangles shared with the Delaunay triangulation\n"
+  "  --print-triangles  list the triangles (default only when n <= 50)\n";
+
+typedef struct cli_got_args {
+  const char *rule, *polygon, *sampler, *csv, *svg, *compare;
+  uint64_t random, seed, threads;
+  double tie_eps;
+  int shade, print;     /* print: -1 default, 0 no, 1 yes */
+} cli_got_args;
+
+static int cli_got_parse(int argc, char **argv, cli_got_args *a) {
+  for (int i = 1; i < argc; i++) {
+    const char *o = argv[i], *v = NULL;
+    int val = strcmp(o, "--rule") == 0 || strcmp(o, "--polygon") == 0 ||
+              strcmp(o, "--random") == 0 || strcmp(o, "--seed") == 0 ||
+              strcmp(o, "--sampler") == 0 || strcmp(o, "--threads") == 0 ||
+              strcmp(o, "--tie-eps") == 0 || strcmp(o, "--csv") == 0 ||
+              strcmp(o, "--svg") == 0 || strcmp(o, "--compare") == 0;
+    if (val && (v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
+    if (strcmp(o, "--rule") == 0) a->rule = v;
+    else if (strcmp(o, "--polygon") == 0) a->polygon = v;
+    else if (strcmp(o, "--sampler") == 0) a->sampler = v;
+    else if (strcmp(o, "--csv") == 0) a->csv = v;
+    else if (strcmp(o, "--svg") == 0) a->svg = v;
+    else if (strcmp(o, "--compare") == 0) a->compare = v;
+    else if (strcmp(o, "--random") == 0) {
+      if (cli_parse_u64(CMD, o, v, 3, CLI_GOT_MAX_N, &a->random) != 0) return 2;
+    } else if (strcmp(o, "--seed") == 0) {
+      if (cli_parse_u64(CMD, o, v, 0, UINT64_MAX, &a->seed) != 0) return 2;
+    } else if (strcmp(o, "--threads") == 0) {
+      if (cli_parse_u64(CMD, o, v, 1, 1024, &a->threads) != 0) return 2;
+    } else if (strcmp(o, "--tie-eps") == 0) {
+      if (cli_parse_double(CMD, o, v, 0, 1, &a->tie_eps) != 0) return 2;
+    } else if (strcmp(o, "--shade") == 0) a->shade = 1;
+    else if (strcmp(o, "--print-triangles") == 0) a->print = 1;
+    else if (strcmp(o, "--no-triangles") == 0) a->print = 0;
+    else return cli_error(CMD, "unknown option '%s' (try: fliplab got --help)", o);
+  }
+  if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule P_1)");
+  if ((a->polygon != NULL) == (a->random != 0))
+    return cli_error(CMD, "give exactly one of --polygon FILE.csv and --random N");
+  if (a->sampler && strcmp(a->sampler, "vector") != 0 && strcmp(a->sampler, "circle") != 0)
+    return cli_error(CMD, "unknown sampler '%s' (valid: vector, circle)", a->sampler);
+  if (a->sampler && a->polygon)
+    return cli_error(CMD, "--sampler applies to --random only");
+  if (a->compare && strcmp(a->compare, "DT") != 0)
+    return cli_error(CMD, "--compare supports DT only, got '%s'", a->compare);
+  if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
+  return 0;
+}
+
+/* The polygon: read (map = file row of each vertex) or sampled. */
+static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p, size_t *n,
+                           size_t **map, char *desc, size_t desclen) {
+  char err[512];
+  if (a->polygon) {
+    int rev = 0;
+    if (report_got_read_polygon(a->polygon, p, n, &rev, err, sizeof err) != 0)
+      return cli_error(CMD, "%s", err);
+    if (got_check_memory(*n, r->measure, err, sizeof err) != 0)
+      return cli_error(CMD, "%s", err);
+    *map = malloc(*n * sizeof **map);
+    if (*map == NULL) return cli_error(CMD, "out of memory");
+    for (size_t v = 0; v < *n; v++) (*map)[v] = rev ? (*n - v) % *n : v;
+    snprintf(desc, desclen, "%s%s", a->polygon, rev ? " (clockwise: reversed keeping vertex 0)" : "");
+    return 0;
+  }
+  *n = (size_t)a->random;
+  if (got_check_memory(*n, r->measure, err, sizeof err) != 0)
+    return cli_error(CMD, "%s", err);
+  *p = malloc(*n * sizeof **p);
+  if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
+  sampler_rng g;
+  sampler_seed(&g, a->seed, 0);
+  int circle = a->sampler && strcmp(a->sampler, "circle") == 0;
+  int rc = circle ? sampler_circle(&g, *n, *p) : sampler_vector(&g, *n, *p);
+  if (rc != 0)
+    return cli_error(CMD, "the %s sampler could not make a strictly convex %zu-gon in "
+                     "floating point (points too close); use a smaller N",
+                     circle ? "circle" : "vector", *n);
+  snprintf(desc, desclen, "random %zu-gon (%s sampler, seed %llu)", *n,
+           circle ? "circle" : "vector", (unsigned long long)a->seed);
+  return 0;
+}
+
+static void cli_got_runner_up(const got_result *res) {
+  char b[64];
+  if (!res->has_runner_up) {
+    printf("runner-up: none (a triangle has one triangulation): the optimum is unique\n");
+    return;
+  }
+  got_format_total(res, res->key2, b, sizeof b);
+  if (!res->unique)
+    printf("runner-up: tie (relative gap %.3g <= tie-eps %.3g): the optimum is NOT unique\n",
+           res->rel_gap, res->tie_eps);
+  else if (res->joint == JOINT_PRODUCT && !(fabs(res->gap) > 0 && isfinite(res->gap)))
+    printf("runner-up: %s (relative gap %.6g): the optimum is unique\n", b, res->rel_gap);
+  else
+    printf("runner-up: %s (gap %.6g, relative %.6g): the optimum is unique\n", b, res->gap,
+           res->rel_gap);
+}
+
+static void cli_got_compare(const geom_point *p, size_t n, const got_result *res) {
+  got_triangle *dt = malloc(n * sizeof *dt);
+  got_diff d;
+  int unique = 1;
+  if (dt == NULL || got_delaunay(p, n, dt, &unique) != 0 ||
+      got_compare(res->tri, dt, n, &d) != 0) {
+    printf("compare DT: failed (out of memory)\n");
+    free(dt);
+    return;
+  }
+  printf("compare DT: %zu of %zu diagonals differ; %zu of %zu triangles in common (%.2f%%)%s\n",
+         d.diagonals_differ, d.diagonals, d.triangles_common, d.triangles,
+         100.0 * (double)d.triangles_common / (double)d.triangles,
+         unique ? "; the Delaunay triangulation is unique"
+                : "; the Delaunay triangulation is NOT unique (4+ cocircular vertices): "
+                  "compared with the one of smallest split vertices");
+  free(dt);
+}
 
 int cli_cmd_got(int argc, char **argv) {
-  (void)argc;
-  (void)argv;
-  return cli_error("got", "not built yet");
+  for (int i = 1; i < argc; i++)
+    if (cli_is_help(argv[i])) {
+      fputs(cli_got_usage, stdout);
+      return 0;
+    }
+  cli_got_args a = {0};
+  a.seed = 1;
+  a.tie_eps = RULE_DEFAULT_TIE_EPS;
+  a.print = -1;
+  int rc = cli_got_parse(argc, argv, &a);
+  if (rc != 0) return rc;
+  rule r;
+  char err[512];
+  if (rule_parse(a.rule, &r, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (r.kind != RULE_TRIANGLE)
+    return cli_error(CMD, "rule %s is not triangle-based: GOT needs a measure and a joint "
+                     "(MEASURE_JOINT, e.g. R_inf or P_1)", r.name);
+
+  geom_point *p = NULL;
+  size_t n = 0, *map = NULL;
+  char desc[600];
+  rc = cli_got_polygon(&a, &r, &p, &n, &map, desc, sizeof desc);
+  got_result res;
+  memset(&res, 0, sizeof res);
+  if (rc != 0) goto done;
+  got_options opt = {(int)a.threads, a.tie_eps};
+  if (got_solve(p, n, &r, &opt, &res, err, sizeof err) != 0) {
+    rc = cli_error(CMD, "%s", err);
+    goto done;
+  }
+  if (cli_userdefs_failed(CMD)) {
+    rc = 1;
+    goto done;
+  }
+  const measure *m = measure_get(r.measure);
+  const joint *jt = joint_get(r.joint);
+  char tot[64];
+  got_format_total(&res, res.key, tot, sizeof tot);
+  printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", r.name,
+         m->name, jt->symbol, n, desc, a.tie_eps);
+  if (r.joint == JOINT_PRODUCT)
+    printf("total badness: %s (key %s = %.17g)\n", tot,
+           res.sign >= 0 ? "ln B" : "-ln|B|", res.key);
+  else
+    printf("total badness: %s\n", tot);
+  cli_got_runner_up(&res);
+  printf("time: %.4f s (%d thread%s)\n", res.seconds, res.threads, res.threads == 1 ? "" : "s");
+  if (a.compare) cli_got_compare(p, n, &res);
+  int print = a.print < 0 ? n <= CLI_GOT_PRINT_N : a.print;
+  printf("triangles: %zu%s\n", res.ntri, print ? " (i j k badness; 0-based vertices of the input)"
+                                               : " (list them with --print-triangles)");
+  if (print)
+    for (size_t q = 0; q < res.ntri; q++) {
+      size_t v[3] = {map ? map[res.tri[q].i] : (size_t)res.tri[q].i,
+                     map ? map[res.tri[q].k] : (size_t)res.tri[q].k,
+                     map ? map[res.tri[q].j] : (size_t)res.tri[q].j};
+      printf("%zu %zu %zu %.17g\n", v[0], v[1], v[2], res.tri[q].badness);
+    }
+  if (a.csv) {
+    FILE *f = cli_open_out(CMD, a.csv);
+    if (f == NULL) { rc = 2; goto done; }
+    if (report_got_csv(f, res.tri, res.ntri, map) != 0) rc = cli_error(CMD, "write error on %s", a.csv);
+    cli_close_out(f);
+  }
+  if (a.svg && rc == 0) {
+    FILE *f = cli_open_out(CMD, a.svg);
+    if (f == NULL) { rc = 2; goto done; }
+    char title[200];
+    snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r.name, n, tot,
+             a.shade ? "; shaded by triangle badness" : "");
+    report_got_svg_opts so = {a.shade, title};
+    if (report_got_svg(f, p, n, res.tri, res.ntri, &so) != 0)
+      rc = cli_error(CMD, "write error on %s", a.svg);
+    cli_close_out(f);
+  }
+done:
+  got_result_free(&res);
+  free(p);
+  free(map);
+  return rc;
 }

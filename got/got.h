@@ -1,0 +1,113 @@
+/*
+** got.h: globally optimal triangulations (GOT) of convex polygons.
+**
+** The thesis's Algorithm 1 (Klincsek's dynamic programme generalised to any
+** triangle-based rule b_f): Theta(n^3) time, Theta(n^2) memory, backtracking
+** to the n - 2 triangles.  The programme works in key space (joints/joint.h):
+** B(i, j) = min over i < k < j of key(B(i,k)) (+) key(b(p_i p_k p_j)) (+)
+** key(B(k,j)), with (+) = +, min or max, so products of thousands of values
+** neither overflow nor underflow.  The empty chain B(i, i+1) is the joint's
+** identity; it never enters arithmetic: the k = i+1 and k = j-1 terms are
+** peeled off the inner loop.  Ties are broken deterministically: the
+** smallest k wins, in every cell; each cell is computed by one thread in the
+** same order whatever the thread count, so results are bit-identical.
+**
+** The runner-up is the second smallest total over all triangulations
+** distinct from the returned one (equal to the optimum when the optimum is
+** not unique).  It is computed after the main pass along the optimal tree
+** only (O(n^2)), from the recurrence second(i,j) = min( second smallest
+** candidate over k, t (+) second(i,k*) (+) best(k*,j),
+** t (+) best(i,k*) (+) second(k*,j) ), valid for any monotone (+).
+**
+** Triangle badness in the O(n^3) loop comes from per-measure kernels that
+** read per-pair data precomputed in O(n^2) (side lengths, edge directions)
+** instead of recomputing a geom_tri; they agree with measure_eval on
+** geom_tri_make to within rounding (a few ulps for lengths, products and
+** quotients; about 1e-15 rad absolute for angles, which are differences of
+** edge directions).  User-defined measures fall back to measure_eval (one
+** thread: their context may keep state).  Because of those last-bit
+** differences the optimal value can differ from a recomputation in the last
+** bits; compare totals with a relative tolerance.
+*/
+#ifndef FLIPLAB_GOT_H
+#define FLIPLAB_GOT_H
+
+#include <stddef.h>
+#include "geom/geom.h"
+#include "joints/joint.h"
+#include "fliprules/rule.h"
+
+/* One triangle of a triangulation: polygon vertex indices i < k < j. */
+typedef struct got_triangle {
+  int i, k, j;
+  double badness;       /* measure_eval of the triangle */
+} got_triangle;
+
+typedef struct got_options {
+  int threads;          /* <= 0: OpenMP's default */
+  double tie_eps;       /* relative tie tolerance, default RULE_DEFAULT_TIE_EPS */
+} got_options;
+
+typedef struct got_result {
+  size_t n;
+  int measure;
+  joint_id joint;
+  int sign;             /* the measure's sign (+1, -1, 0) */
+  double key;           /* optimal total in key space */
+  double total;         /* joint_unkey(key); see got_format_total for l_0 */
+  int has_runner_up;    /* 0 when there is one triangulation only (n = 3) */
+  double key2, total2;  /* runner-up (second best distinct triangulation) */
+  double gap;           /* total2 - total in badness units (>= 0) */
+  double rel_gap;       /* gap / max(|total|, |total2|); exact in log space for l_0 */
+  int unique;           /* 1 if rel_gap > tie_eps (the optimum is unique) */
+  double tie_eps;
+  got_triangle *tri;    /* n - 2 triangles, in backtracking order */
+  size_t ntri;
+  double seconds;       /* wall time: precomputation + DP + backtracking */
+  int threads;          /* threads used */
+} got_result;
+
+/* Bytes of working memory the DP needs for n vertices and this measure. */
+size_t got_memory_needed(size_t n, int measure);
+/* 0 if that fits (at most 3/4 of physical memory); otherwise -1 and a
+** one-line message stating the memory needed. */
+int got_check_memory(size_t n, int measure, char *err, size_t errlen);
+
+/* Solve GOT(rule) for the strictly convex anticlockwise polygon p[0..n-1].
+** The rule must be triangle-based.  0 on success; -1 with a message. */
+int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+              got_result *out, char *err, size_t errlen);
+void got_result_free(got_result *res);
+
+/* The total of a key, readable: a plain number, or "exp(K)" / "-exp(-K)"
+** when the l_0 product under/overflows a double. */
+void got_format_total(const got_result *res, double key, char *buf, size_t len);
+
+/* Per-pair data and triangle kernels (exposed for tests and benchmarks).
+** got_pairs_eval writes b(p_i p_k p_j) for k in [k0, k1) into out[k - k0];
+** requires i < k0 <= k1 <= j. */
+typedef struct got_pairs got_pairs;
+got_pairs *got_pairs_new(const geom_point *p, size_t n, int measure, int threads);
+void got_pairs_eval(const got_pairs *pd, size_t i, size_t j, size_t k0, size_t k1,
+                    double *out);
+void got_pairs_free(got_pairs *pd);
+/* 1 if the measure has a specialised kernel, 0 if it uses measure_eval. */
+int got_measure_has_kernel(int measure);
+
+/* The Delaunay triangulation of a strictly convex anticlockwise polygon,
+** exactly (geom_incircle): n - 2 triangles into out (badness left 0).
+** *unique is 0 when four or more vertices are cocircular in a way that
+** makes it ambiguous (then the smallest-k choice is returned).  0 or -1. */
+int got_delaunay(const geom_point *p, size_t n, got_triangle *out, int *unique);
+
+/* Compare two triangulations of the same n-gon: diagonals of a not in b,
+** and triangles common to both. */
+typedef struct got_diff {
+  size_t diagonals;         /* n - 3 */
+  size_t diagonals_differ;  /* diagonals of a that are not in b */
+  size_t triangles;         /* n - 2 */
+  size_t triangles_common;
+} got_diff;
+int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff *out);
+
+#endif

@@ -1,0 +1,409 @@
+/*
+** got_dp.c: the GOT dynamic programme (thesis Algorithm 1) in key space.
+**
+** Table.  One n x n array M of keys: M[i][j] = B(i, j) for i < j, mirrored
+** to M[j][i], so that for a cell (i, j) both B(i, k) (row i) and B(k, j)
+** (row j of the mirror) are read contiguously in k.  The argmin k of each
+** cell sits in a packed upper triangle of int32.  Cells with j = i + 1 (the
+** empty chain, the joint's identity) are never written nor read: the k = i+1
+** term of a cell has no left part and the k = j-1 term no right part, and
+** both are peeled off the loop.
+**
+** Order.  The upper triangle is cut into T x T tiles.  Tile (I, J) needs
+** only tiles (I, K) with K <= J and (K, J) with K >= I, so the tiles of one
+** tile-diagonal J - I = D are independent once all D' < D are done: they
+** are shared among the threads (one implicit barrier per D).  Inside a tile,
+** rows go bottom-up and columns left to right, which satisfies the tile's
+** own dependencies.  Each cell reads rows i and j over k in (i, j); the T
+** cells of a tile row share row i and the T cells of a tile column share
+** row j, so each row fetched from memory is used about T times.
+**
+** Each cell is computed entirely by one thread, in the same order, so the
+** result is bit-identical whatever the thread count.  Ties: a candidate
+** replaces the best only when strictly smaller, so the smallest k wins.
+*/
+#define _POSIX_C_SOURCE 200809L
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <omp.h>
+#include "badness/measure.h"
+#include "got/got_internal.h"
+
+#define GOT_TILE 32
+
+/* How a measure value becomes a key.  The joint module defines the keys;
+** the loops below need them in bulk, so we recognise the common shapes
+** (checked against joint_key on probe values) and fall back to calling
+** joint_key per value for anything else. */
+typedef enum got_keyfn {
+  GOT_KEY_IDENT, GOT_KEY_SQ, GOT_KEY_NEGSQ, GOT_KEY_NEGRECIP,
+  GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_GENERIC,
+  GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (see got_internal.h) */
+} got_keyfn;
+
+static double got_keyfn_one(got_keyfn f, double x) {
+  switch (f) {
+    case GOT_KEY_IDENT: return x;
+    case GOT_KEY_SQ: return x * x;
+    case GOT_KEY_NEGSQ: return -(x * x);
+    case GOT_KEY_NEGRECIP: return -1 / x;
+    case GOT_KEY_LOG: return log(x);
+    case GOT_KEY_NEGLOGNEG: return -log(-x);
+    default: return NAN;
+  }
+}
+
+static got_keyfn got_keyfn_detect(joint_id jt, int s) {
+  static const double probes[3][4] = {
+    {-3.5, -0.25, 0.75, 12.0},       /* s = 0: both signs */
+    {0.25, 0.75, 3.5, 12.0},         /* s = +1 */
+    {-0.25, -0.75, -3.5, -12.0},     /* s = -1 */
+  };
+  const double *pr = probes[s > 0 ? 1 : s < 0 ? 2 : 0];
+  for (int f = 0; f < GOT_KEY_GENERIC; f++) {
+    int ok = 1;
+    for (int q = 0; q < 4 && ok; q++) {
+      double want = joint_key(jt, s, pr[q]), got = got_keyfn_one((got_keyfn)f, pr[q]);
+      ok = (want == got);
+    }
+    if (ok) return (got_keyfn)f;
+  }
+  return GOT_KEY_GENERIC;
+}
+
+typedef struct got_dp {
+  size_t n;
+  got_pairs *pd;
+  joint_id joint;
+  int sign;
+  joint_keyop op;
+  got_keyfn keyfn;
+  double *M;            /* n x n keys, mirrored */
+  int32_t *K;           /* packed upper triangle: argmin k */
+} got_dp;
+
+static inline size_t got_kidx(size_t n, size_t i, size_t j) {
+  return i * n - i * (i + 1) / 2 + (j - i - 1);
+}
+
+/* Turn m measure values into keys, in place. */
+GOT_CLONES static void got_keys(const got_dp *dp, double *t, size_t m) {
+  switch (dp->keyfn) {
+    case GOT_KEY_IDENT: return;
+    case GOT_KEY_SQ: for (size_t q = 0; q < m; q++) t[q] = t[q] * t[q]; return;
+    case GOT_KEY_NEGSQ: for (size_t q = 0; q < m; q++) t[q] = -(t[q] * t[q]); return;
+    case GOT_KEY_NEGRECIP: for (size_t q = 0; q < m; q++) t[q] = -1 / t[q]; return;
+    case GOT_KEY_LOG: got_log_inplace(t, m, 1.0); return;
+    case GOT_KEY_NEGLOGNEG: got_log_inplace(t, m, -1.0); return;
+    case GOT_KEY_FROM_SQ_IDENT: return;
+    case GOT_KEY_FROM_SQ_HALFLOG:
+      got_log_inplace(t, m, 1.0);
+      for (size_t q = 0; q < m; q++) t[q] *= 0.5;
+      return;
+    default:
+      for (size_t q = 0; q < m; q++) t[q] = joint_key(dp->joint, dp->sign, t[q]);
+      return;
+  }
+}
+
+/* Keys of the triangles (i, k, j) for k in (i, j) into t[0 .. j-i-2]. */
+static void got_tri_keys(const got_dp *dp, size_t i, size_t j, double *t) {
+  got_pairs_eval(dp->pd, i, j, i + 1, j, t);
+  got_keys(dp, t, j - i - 1);
+}
+
+#define GOT_ADD(a, b) ((a) + (b))
+#define GOT_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define GOT_MAX(a, b) ((a) > (b) ? (a) : (b))
+
+/* One cell, for one key operation.  NaN candidates (only from degenerate
+** triangles) never win: they fail the strict comparison. */
+#define GOT_CELL(name, COMB) \
+  static void name(got_dp *dp, size_t i, size_t j, double *t) { \
+    const size_t n = dp->n, d = j - i; \
+    got_tri_keys(dp, i, j, t); \
+    double best = t[0]; \
+    size_t bk = i + 1; \
+    if (d > 2) { \
+      const double *Bi = dp->M + i * n, *Bj = dp->M + j * n; \
+      best = INFINITY; \
+      double c = COMB(t[0], Bj[i + 1]);              /* k = i+1: no left part */ \
+      if (c < best) best = c; \
+      const double *tk = t - (i + 1); \
+      for (size_t k = i + 2; k + 1 < j; k++) { \
+        c = COMB(COMB(Bi[k], tk[k]), Bj[k]); \
+        if (c < best) { best = c; bk = k; } \
+      } \
+      c = COMB(Bi[j - 1], t[d - 2]);                 /* k = j-1: no right part */ \
+      if (c < best) { best = c; bk = j - 1; } \
+    } \
+    dp->M[i * n + j] = best; \
+    dp->M[j * n + i] = best; \
+    dp->K[got_kidx(n, i, j)] = (int32_t)bk; \
+  }
+
+GOT_CELL(got_cell_add, GOT_ADD)
+GOT_CELL(got_cell_min, GOT_MIN)
+GOT_CELL(got_cell_max, GOT_MAX)
+
+typedef void (*got_cell_fn)(got_dp *dp, size_t i, size_t j, double *t);
+
+static void got_run(got_dp *dp, int threads, double *tmp) {
+  const size_t n = dp->n, T = GOT_TILE, nb = (n + T - 1) / T;
+  got_cell_fn cell = dp->op == JOINT_KEY_ADD ? got_cell_add
+                   : dp->op == JOINT_KEY_MIN ? got_cell_min : got_cell_max;
+#pragma omp parallel num_threads(threads)
+  {
+    double *t = tmp + (size_t)omp_get_thread_num() * n;
+    for (size_t D = 0; D < nb; D++) {
+      long ntiles = (long)(nb - D);
+#pragma omp for schedule(dynamic, 1)
+      for (long I = 0; I < ntiles; I++) {
+        size_t J = (size_t)I + D;
+        size_t i0 = (size_t)I * T, i1 = i0 + T < n ? i0 + T : n;
+        size_t j0 = J * T, j1 = j0 + T < n ? j0 + T : n;
+        for (size_t i = i1; i-- > i0;)
+          for (size_t j = j0 > i + 2 ? j0 : i + 2; j < j1; j++) cell(dp, i, j, t);
+      }
+    }
+  }
+}
+
+/* ---- runner-up along the optimal tree ---- */
+
+static inline double got_comb(joint_keyop op, double a, double b) {
+  return op == JOINT_KEY_ADD ? GOT_ADD(a, b) : op == JOINT_KEY_MIN ? GOT_MIN(a, b)
+                                                                    : GOT_MAX(a, b);
+}
+
+/* The candidate of split k in cell (i, j) given the triangle key tk and
+** (optionally) replacement values for the left and right parts; the same
+** expression, in the same order, as GOT_CELL. */
+static double got_cand(const got_dp *dp, size_t i, size_t k, size_t j, double tk,
+                       const double *left, const double *right) {
+  const size_t n = dp->n;
+  int hasl = k > i + 1, hasr = k + 1 < j;
+  double l = left ? *left : dp->M[i * n + k], r = right ? *right : dp->M[j * n + k];
+  if (!hasl && !hasr) return tk;
+  if (!hasl) return got_comb(dp->op, tk, r);
+  if (!hasr) return got_comb(dp->op, l, tk);
+  return got_comb(dp->op, got_comb(dp->op, l, tk), r);
+}
+
+typedef struct got_node {
+  size_t i, k, j;
+  long left, right;     /* child cells (chains of length >= 2), or -1 */
+  int has2;
+  double second;
+} got_node;
+
+/* Backtrack from (0, n-1) in pre-order; children get larger indices. */
+static int got_backtrack(const got_dp *dp, got_node *node) {
+  const size_t n = dp->n;
+  typedef struct { size_t i, j; long parent; int side; } item;
+  item *stack = malloc(n * sizeof *stack);
+  if (stack == NULL) return -1;
+  size_t sp = 0, count = 0;
+  stack[sp++] = (item){0, n - 1, -1, 0};
+  while (sp > 0) {
+    item it = stack[--sp];
+    size_t k = (size_t)dp->K[got_kidx(n, it.i, it.j)];
+    long me = (long)count++;
+    node[me] = (got_node){it.i, k, it.j, -1, -1, 0, 0};
+    if (it.parent >= 0) {
+      if (it.side == 0) node[it.parent].left = me;
+      else node[it.parent].right = me;
+    }
+    if (it.j - k >= 2) stack[sp++] = (item){k, it.j, me, 1};
+    if (k - it.i >= 2) stack[sp++] = (item){it.i, k, me, 0};
+  }
+  free(stack);
+  return 0;
+}
+
+/* second(i, j) = min( min over k != k* of candidate(k),
+**                     candidate(k*) with second(left), with second(right) ).
+** Every triangulation other than the best uses either another k at the
+** root or, at k*, a non-best triangulation of one side, and the second
+** smallest of a monotone combination of two independent sets is reached by
+** replacing exactly one part by its second smallest. */
+static void got_runner_up(const got_dp *dp, got_node *node, size_t count, double *t) {
+  for (size_t q = count; q-- > 0;) {
+    got_node *c = &node[q];
+    size_t i = c->i, j = c->j;
+    double best2 = INFINITY;
+    int has = 0;
+    got_tri_keys(dp, i, j, t);
+    for (size_t k = i + 1; k < j; k++) {
+      if (k == c->k) continue;
+      double v = got_cand(dp, i, k, j, t[k - i - 1], NULL, NULL);
+      if (!has || v < best2) best2 = v;
+      has = 1;
+    }
+    double tk = t[c->k - i - 1];
+    if (c->left >= 0 && node[c->left].has2) {
+      double v = got_cand(dp, i, c->k, j, tk, &node[c->left].second, NULL);
+      if (!has || v < best2) best2 = v;
+      has = 1;
+    }
+    if (c->right >= 0 && node[c->right].has2) {
+      double v = got_cand(dp, i, c->k, j, tk, NULL, &node[c->right].second);
+      if (!has || v < best2) best2 = v;
+      has = 1;
+    }
+    c->has2 = has;
+    c->second = best2;
+  }
+}
+
+/* ---- memory ---- */
+
+size_t got_memory_needed(size_t n, int measure) {
+  if (n > ((size_t)1 << 26)) return SIZE_MAX;   /* n^2 * 40 would overflow */
+  size_t tables = 1 + (size_t)got_kernel_tables(measure);
+  return n * n * sizeof(double) * tables          /* keys + pair tables */
+       + n * (n - 1) / 2 * sizeof(int32_t)        /* argmin */
+       + n * (sizeof(got_node) + 64);             /* backtracking, buffers */
+}
+
+static size_t got_phys_memory(void) {
+  long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || psize <= 0) return (size_t)8 << 30;   /* assume 8 GiB */
+  return (size_t)pages * (size_t)psize;
+}
+
+int got_check_memory(size_t n, int measure, char *err, size_t errlen) {
+  size_t need = got_memory_needed(n, measure), have = got_phys_memory() / 4 * 3;
+  if (n <= INT32_MAX && need <= have) return 0;
+  if (need == SIZE_MAX)
+    snprintf(err, errlen, "n = %zu is far too large: the O(n^2) tables would need "
+             "more than %.3g TB", n, (double)n * (double)n * 20 / 1e12);
+  else
+    snprintf(err, errlen, "n = %zu needs %.2f GB of tables (Theta(n^2)), more than the "
+             "%.2f GB allowed (3/4 of physical memory)", n, need / 1e9, have / 1e9);
+  return -1;
+}
+
+/* ---- results ---- */
+
+static double got_rel_gap(const got_result *res) {
+  if (res->key2 == res->key) return 0;
+  if (res->joint == JOINT_PRODUCT) return -expm1(-fabs(res->key2 - res->key));
+  double m = fmax(fabs(res->total), fabs(res->total2));
+  if (!isfinite(m) || !isfinite(res->gap)) return 1;
+  return m > 0 ? res->gap / m : 0;
+}
+
+void got_format_total(const got_result *res, double key, char *buf, size_t len) {
+  double v = joint_unkey(res->joint, res->sign, key);
+  int tiny = v == 0 || !isfinite(v) || fabs(v) < DBL_MIN;
+  if (res->joint == JOINT_PRODUCT && tiny && isfinite(key)) {
+    /* key = ln|B| for values >= 0, -ln|B| for values <= 0 */
+    if (res->sign >= 0) snprintf(buf, len, "exp(%.17g)", key);
+    else snprintf(buf, len, "-exp(%.17g)", -key);
+    return;
+  }
+  snprintf(buf, len, "%.17g", v);
+}
+
+void got_result_free(got_result *res) {
+  if (res == NULL) return;
+  free(res->tri);
+  res->tri = NULL;
+  res->ntri = 0;
+}
+
+int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+              got_result *out, char *err, size_t errlen) {
+  memset(out, 0, sizeof *out);
+  if (r->kind != RULE_TRIANGLE) {
+    snprintf(err, errlen, "rule %s is not triangle-based: GOT needs a measure and a "
+             "joint (MEASURE_JOINT, e.g. R_inf)", r->name);
+    return -1;
+  }
+  if (n < 3) {
+    snprintf(err, errlen, "a polygon needs at least 3 vertices, got %zu", n);
+    return -1;
+  }
+  if (got_check_memory(n, r->measure, err, errlen) != 0) return -1;
+  const measure *m = measure_get(r->measure);
+  int threads = opt && opt->threads > 0 ? opt->threads : omp_get_max_threads();
+  if (!got_measure_has_kernel(r->measure)) threads = 1;   /* user ctx may keep state */
+  double t0 = omp_get_wtime();
+
+  got_dp dp = {0};
+  dp.n = n;
+  dp.joint = r->joint;
+  dp.sign = (int)m->sign;
+  dp.op = joint_get(r->joint)->keyop;
+  dp.keyfn = got_keyfn_detect(r->joint, dp.sign);
+  if (got_measure_has_square(r->measure) && dp.sign > 0 &&
+      (dp.keyfn == GOT_KEY_SQ || dp.keyfn == GOT_KEY_LOG)) {
+    dp.keyfn = dp.keyfn == GOT_KEY_SQ ? GOT_KEY_FROM_SQ_IDENT : GOT_KEY_FROM_SQ_HALFLOG;
+    dp.pd = got_pairs_new_sq(p, n, r->measure, threads);
+  } else {
+    dp.pd = got_pairs_new(p, n, r->measure, threads);
+  }
+  dp.M = malloc(n * n * sizeof *dp.M);
+  dp.K = malloc((n * (n - 1) / 2) * sizeof *dp.K);
+  double *tmp = malloc((size_t)threads * n * sizeof *tmp);
+  got_node *node = malloc(n * sizeof *node);
+  out->tri = malloc(n * sizeof *out->tri);
+  int rc = -1;
+  if (dp.pd == NULL || dp.M == NULL || dp.K == NULL || tmp == NULL || node == NULL ||
+      out->tri == NULL) {
+    snprintf(err, errlen, "out of memory for n = %zu (%.2f GB)", n,
+             got_memory_needed(n, r->measure) / 1e9);
+    goto done;
+  }
+  got_run(&dp, threads, tmp);
+  if (got_backtrack(&dp, node) != 0) {
+    snprintf(err, errlen, "out of memory while backtracking");
+    goto done;
+  }
+  size_t count = n - 2;
+  got_runner_up(&dp, node, count, tmp);
+
+  out->n = n;
+  out->measure = r->measure;
+  out->joint = r->joint;
+  out->sign = dp.sign;
+  out->key = dp.M[n - 1];
+  out->total = joint_unkey(r->joint, dp.sign, out->key);
+  out->has_runner_up = node[0].has2;
+  out->tie_eps = opt ? opt->tie_eps : RULE_DEFAULT_TIE_EPS;
+  if (out->has_runner_up) {
+    out->key2 = node[0].second;
+    out->total2 = joint_unkey(r->joint, dp.sign, out->key2);
+    out->gap = out->total2 - out->total;
+    out->rel_gap = got_rel_gap(out);
+    out->unique = !(out->rel_gap <= out->tie_eps);
+  } else {
+    out->key2 = out->total2 = INFINITY;
+    out->gap = out->rel_gap = INFINITY;
+    out->unique = 1;
+  }
+  for (size_t q = 0; q < count; q++) {
+    geom_tri t;
+    geom_tri_make(&t, p[node[q].i], p[node[q].k], p[node[q].j]);
+    out->tri[q] = (got_triangle){(int)node[q].i, (int)node[q].k, (int)node[q].j,
+                                 measure_eval(r->measure, &t)};
+  }
+  out->ntri = count;
+  out->threads = threads;
+  out->seconds = omp_get_wtime() - t0;
+  rc = 0;
+done:
+  if (rc != 0) got_result_free(out);
+  got_pairs_free(dp.pd);
+  free(dp.M);
+  free(dp.K);
+  free(tmp);
+  free(node);
+  return rc;
+}

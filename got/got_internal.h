@@ -1,0 +1,34 @@
+/*
+** got_internal.h: what the files of got/ share and nobody else needs.
+*/
+#ifndef FLIPLAB_GOT_INTERNAL_H
+#define FLIPLAB_GOT_INTERNAL_H
+
+#include "got/got.h"
+
+/* On x86-64 Linux with GCC the bulk loops (kernels, keys, log) are also
+** compiled for AVX-512F and AVX2 and picked at run time (an ifunc): four
+** or two times the lanes of the SSE2 baseline.  With -std=c11 GCC does not contract a*b+c into an
+** FMA, so both versions perform the same IEEE operations and give
+** bit-identical results on any x86-64 machine. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define GOT_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define GOT_CLONES
+#endif
+
+/* Number of n x n double tables the measure's kernel reads (0, 1 or 2). */
+int got_kernel_tables(int measure);
+
+/* Measures defined as the square root of something (sigma) can hand out
+** b^2 directly: the l_2 key is b^2 and the l_0 key is log(b^2) / 2, so
+** the sqrt is skipped (the keys then differ from joint_key(b) in the last
+** bit only).  got_pairs_new_sq makes got_pairs_eval return b^2. */
+int got_measure_has_square(int measure);
+got_pairs *got_pairs_new_sq(const geom_point *p, size_t n, int measure, int threads);
+
+/* Bulk math for the kernels and keys (see got_kernels.c for accuracy). */
+void got_sqrt_inplace(double *t, size_t m);
+void got_log_inplace(double *t, size_t m, double sign);   /* sign * log(sign * t) */
+
+#endif
