@@ -25,7 +25,15 @@ int cli_parse_u64(const char *cmd, const char *opt, const char *s,
   errno = 0;
   if (s == NULL || *s == '\0' || *s == '-' || *s == '+') goto bad;
   unsigned long long v = strtoull(s, &end, 10);
-  if (errno != 0 || *end != '\0') goto bad;
+  if (errno == 0 && (*end == 'e' || *end == 'E')) {
+    /* Scientific notation for sizes (--samples 1e6): accepted when the
+    ** value is an integer that a double holds exactly. */
+    double d = strtod(s, &end);
+    if (*end != '\0' || !(d >= 0 && d <= 0x1p53) || d != floor(d)) goto bad;
+    v = (unsigned long long)d;
+  } else if (errno != 0 || *end != '\0') {
+    goto bad;
+  }
   if (v < lo || v > hi) {
     cli_error(cmd, "%s %s is out of range [%llu, %llu]", opt, s,
               (unsigned long long)lo, (unsigned long long)hi);
