@@ -25,7 +25,7 @@ int cli_parse_u64(const char *cmd, const char *opt, const char *s,
   errno = 0;
   if (s == NULL || *s == '\0' || *s == '-' || *s == '+') goto bad;
   unsigned long long v = strtoull(s, &end, 10);
-  if (errno == 0 && (*end == 'e' || *end == 'E')) {
+  if (errno == 0 && (*end == 'e' || *end == 'E' || *end == '.')) {
     /* Scientific notation for sizes (--samples 1e6): accepted when the
     ** value is an integer that a double holds exactly. */
     double d = strtod(s, &end);

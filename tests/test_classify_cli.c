@@ -29,20 +29,8 @@
 
 static char tc_out[TC_CAP], tc_err[TC_CAP];
 
-static int tc_run(const char *fmt, ...)
-#if defined(__GNUC__)
-  __attribute__((format(printf, 1, 2)))
-#endif
-  ;
-
-static int tc_run(const char *fmt, ...) {
-  char args[4096];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(args, sizeof args, fmt, ap);
-  va_end(ap);
-  return testutil_run(args, tc_out, TC_CAP, tc_err, TC_CAP);
-}
+/* Run `fliplab printf(FMT, ...)` into tc_out and tc_err. */
+#define TC_RUN(...) testutil_runf(tc_out, TC_CAP, tc_err, TC_CAP, __VA_ARGS__)
 
 static void tc_path(char *buf, size_t len, const char *name) {
   assert_int_equal(system("mkdir -p " FLIPLAB_BUILD_DIR "/testtmp"), 0);
@@ -148,8 +136,8 @@ static int tc_setup(void **state) {
   (void)state;
   tc_path(tc_pent, sizeof tc_pent, "pent.csv");
   tc_path(tc_cls, sizeof tc_cls, "cls.csv");
-  if (tc_run("sample --count %d --seed %d --out %s", TC_N, TC_SEED, tc_pent) != 0) return -1;
-  if (tc_run("classify --input %s --out %s", tc_pent, tc_cls) != 0) return -1;
+  if (TC_RUN("sample --count %d --seed %d --out %s", TC_N, TC_SEED, tc_pent) != 0) return -1;
+  if (TC_RUN("classify --input %s --out %s", tc_pent, tc_cls) != 0) return -1;
   return 0;
 }
 
@@ -187,7 +175,7 @@ static void test_sample_exact(void **state) {
 static void test_matches_table34(void **state) {
   (void)state;
   tc_rows rs = tc_read(tc_cls);
-  assert_int_equal(tc_run("table34 --samples %d --seed %d --format csv", TC_N, TC_SEED), 0);
+  assert_int_equal(TC_RUN("table34 --samples %d --seed %d --format csv", TC_N, TC_SEED), 0);
   char path[512], err[256];
   tc_path(path, sizeof path, "t34.csv");
   FILE *f = fopen(path, "wb");
@@ -271,14 +259,14 @@ static void test_orientation(void **state) {
   tc_path(out, sizeof out, "cw_out.csv");
   static const int cw[5] = {0, 4, 3, 2, 1}, rev[5] = {4, 3, 2, 1, 0};
   tc_write_permuted(in, cw, 0);   /* and no header line */
-  assert_int_equal(tc_run("classify --input %s --out %s", in, out), 0);
+  assert_int_equal(TC_RUN("classify --input %s --out %s", in, out), 0);
   char *a = tc_slurp(tc_cls), *b = tc_slurp(out);
   assert_string_equal(a, b);
   free(a);
   free(b);
 
   tc_write_permuted(in, rev, 1);
-  assert_int_equal(tc_run("classify --input %s --out %s", in, out), 0);
+  assert_int_equal(TC_RUN("classify --input %s --out %s", in, out), 0);
   tc_rows x = tc_read(tc_cls), y = tc_read(out);
   assert_int_equal(x.n, y.n);
   for (int k = 0; k < x.n; k++) {
@@ -311,7 +299,7 @@ static void test_rules_and_input(void **state) {
   fputs("x1,y1,x2,y2,x3,y3,x4,y4,x5,y5\r\n\r\n0,0,1,0,1.5,0.5,1,1.1,0,1.3\r\n"
         "0,0,1,0,1.5,0.5,1,1,0,1.2\r\n", f);
   fclose(f);
-  assert_int_equal(tc_run("classify --rule R_inf --rule DT --rule -alpha_inf --input %s", in), 0);
+  assert_int_equal(TC_RUN("classify --rule R_inf --rule DT --rule -alpha_inf --input %s", in), 0);
   tc_rows rs = {0};
   FILE *m = tmpfile();
   fputs(tc_out, m);
@@ -351,10 +339,9 @@ static void test_bad_rows(void **state) {
           "0,0,1,0,1.5,0.5,1,1,0,1.2\n", f);
     fputs(bad[i].row, f);
     fclose(f);
-    int st = tc_run("classify --input %s", in);
-    size_t len = strlen(tc_err);
+    int st = TC_RUN("classify --input %s", in);
     if (st != 2 || strstr(tc_err, "line 4") == NULL || strstr(tc_err, bad[i].want) == NULL ||
-        len == 0 || strchr(tc_err, '\n') != tc_err + len - 1)
+        !testutil_one_line(tc_err))
       fail_msg("row '%s': status %d, stderr '%s'", bad[i].row, st, tc_err);
     assert_string_equal(tc_out, "");   /* nothing written before the check */
   }

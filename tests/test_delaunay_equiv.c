@@ -84,14 +84,11 @@ static void test_dt_equivalent_rules(void **state) {
     rule_choice d = rule_eval(&dt, q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
     assert_true(d == RULE_AC || d == RULE_BD);
     n_ac += d == RULE_AC;
-    geom_tri abc, acd, abd, bcd;
-    geom_tri_make(&abc, q[0], q[1], q[2]);
-    geom_tri_make(&acd, q[0], q[2], q[3]);
-    geom_tri_make(&abd, q[0], q[1], q[3]);
-    geom_tri_make(&bcd, q[1], q[2], q[3]);
+    geom_tri t[4];   /* ABC, ACD, ABD, BCD */
+    testutil_quad_tris(q, t);
     for (int i = 0; i < nr; i++) {
       double ac, bd;
-      rule_choice c = rule_eval_tris(&rules[i], &abc, &acd, &abd, &bcd, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+      rule_choice c = rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], RULE_DEFAULT_TIE_EPS, &ac, &bd);
       if (c == d) continue;
       if (c == RULE_EITHER) either[i]++;
       if (disagree[i]++ < 3)

@@ -86,14 +86,11 @@ static int tcli_contains_ci(const char *hay, const char *needle) {
 ** stderr, mentioning one of the (|-separated) keywords. */
 static void tcli_expect_error(const char *args, const char *keywords) {
   int st = tcli_run(args);
-  size_t el = strlen(tcli_err);
-  int lines = 0;
-  for (size_t i = 0; i < el; i++) lines += tcli_err[i] == '\n';
   int named = 0;
   char kw[256];
   snprintf(kw, sizeof kw, "%s", keywords);
   for (char *k = strtok(kw, "|"); k; k = strtok(NULL, "|")) named |= tcli_contains_ci(tcli_err, k);
-  if (st != 2 || tcli_out[0] != '\0' || lines != 1 || tcli_err[el - 1] != '\n' || !named) {
+  if (st != 2 || tcli_out[0] != '\0' || !testutil_one_line(tcli_err) || !named) {
     print_error("fliplab %s: status %d, stdout [%s], stderr [%s] (want status 2, one line naming %s)\n",
                 args, st, tcli_out, tcli_err, keywords);
     fail();
@@ -201,8 +198,7 @@ static void test_flip_extreme(void **state) {
         tcli_field("decision", buf, sizeof buf);
         ok = strcmp(buf, "AC") == 0 && !tcli_contains_ci(tcli_out, "nan");
       } else {
-        size_t el = strlen(tcli_err);
-        ok = st == 2 && el > 0 && strchr(tcli_err, '\n') == tcli_err + el - 1 &&
+        ok = st == 2 && testutil_one_line(tcli_err) &&
              !tcli_contains_ci(tcli_err, "convex") && !tcli_contains_ci(tcli_err, "collinear");
       }
       if (!ok) {

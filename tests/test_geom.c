@@ -18,20 +18,6 @@
 #include "geom/geom.h"
 #include "testutil.h"
 
-#define TGEOM_PI 3.14159265358979323846
-
-/* |got - want| <= abs + rel * |want|, with a message naming the value. */
-static void tgeom_near(double got, double want, double rel, double abs,
-                       const char *what, const char *file, int line) {
-  double tol = abs + rel * fabs(want);
-  if (!(fabs(got - want) <= tol)) {
-    print_error("%s: got %.17g, want %.17g (tol %.3g)\n", what, got, want, tol);
-    _fail(file, line);
-  }
-}
-#define TGEOM_NEAR(got, want, rel, abs) \
-  tgeom_near((got), (want), (rel), (abs), #got, __FILE__, __LINE__)
-
 static geom_point tgeom_pt(double x, double y) {
   geom_point p = {x, y};
   return p;
@@ -98,11 +84,11 @@ static int tgeom_orient_naive(geom_point a, geom_point b, geom_point c) {
 static void tgeom_check_invariants(const geom_tri *t) {
   assert_true(t->a >= t->b && t->b >= t->c && t->c > 0);
   assert_true(t->alpha <= t->beta && t->beta <= t->gamma && t->alpha > 0);
-  TGEOM_NEAR(t->alpha + t->beta + t->gamma, TGEOM_PI, 0, 1e-13);
-  TGEOM_NEAR(t->P, t->a + t->b + t->c, 1e-15, 0);
-  TGEOM_NEAR(t->R, t->a * t->b * t->c / (4 * t->area), 1e-13, 0);
-  TGEOM_NEAR(t->r, 2 * t->area / t->P, 1e-13, 0);
-  TGEOM_NEAR(t->h, 2 * t->area / t->a, 1e-13, 0);
+  TESTUTIL_NEAR(t->alpha + t->beta + t->gamma, M_PI, 0, 1e-13);
+  TESTUTIL_NEAR(t->P, t->a + t->b + t->c, 1e-15, 0);
+  TESTUTIL_NEAR(t->R, t->a * t->b * t->c / (4 * t->area), 1e-13, 0);
+  TESTUTIL_NEAR(t->r, 2 * t->area / t->P, 1e-13, 0);
+  TESTUTIL_NEAR(t->h, 2 * t->area / t->a, 1e-13, 0);
   /* canonical order: lexicographic by x then y */
   for (int i = 0; i < 2; i++)
     assert_true(t->v[i].x < t->v[i + 1].x ||
@@ -119,19 +105,19 @@ static void test_tri_equilateral(void **state) {
   geom_tri t;
   geom_tri_make(&t, tgeom_pt(1, s3), tgeom_pt(2, 0), tgeom_pt(0, 0));
   tgeom_check_invariants(&t);
-  TGEOM_NEAR(t.a, 2, 1e-15, 0);
-  TGEOM_NEAR(t.b, 2, 1e-15, 0);
-  TGEOM_NEAR(t.c, 2, 1e-15, 0);
-  TGEOM_NEAR(t.alpha, TGEOM_PI / 3, 1e-14, 0);
-  TGEOM_NEAR(t.beta, TGEOM_PI / 3, 1e-14, 0);
-  TGEOM_NEAR(t.gamma, TGEOM_PI / 3, 1e-14, 0);
-  TGEOM_NEAR(t.area, s3, 1e-15, 0);
-  TGEOM_NEAR(t.P, 6, 1e-15, 0);
-  TGEOM_NEAR(t.R, 2 / s3, 1e-14, 0);
-  TGEOM_NEAR(t.r, 1 / s3, 1e-14, 0);
-  TGEOM_NEAR(t.h, s3, 1e-14, 0);
-  TGEOM_NEAR(t.rx, 2, 0, 0);
-  TGEOM_NEAR(t.ry, s3, 0, 0);
+  TESTUTIL_NEAR(t.a, 2, 1e-15, 0);
+  TESTUTIL_NEAR(t.b, 2, 1e-15, 0);
+  TESTUTIL_NEAR(t.c, 2, 1e-15, 0);
+  TESTUTIL_NEAR(t.alpha, M_PI / 3, 1e-14, 0);
+  TESTUTIL_NEAR(t.beta, M_PI / 3, 1e-14, 0);
+  TESTUTIL_NEAR(t.gamma, M_PI / 3, 1e-14, 0);
+  TESTUTIL_NEAR(t.area, s3, 1e-15, 0);
+  TESTUTIL_NEAR(t.P, 6, 1e-15, 0);
+  TESTUTIL_NEAR(t.R, 2 / s3, 1e-14, 0);
+  TESTUTIL_NEAR(t.r, 1 / s3, 1e-14, 0);
+  TESTUTIL_NEAR(t.h, s3, 1e-14, 0);
+  TESTUTIL_NEAR(t.rx, 2, 0, 0);
+  TESTUTIL_NEAR(t.ry, s3, 0, 0);
   assert_true(t.v[0].x == 0 && t.v[1].x == 1 && t.v[2].x == 2);
 }
 
@@ -143,19 +129,19 @@ static void test_tri_345(void **state) {
   geom_tri t;
   geom_tri_make(&t, tgeom_pt(4, 0), tgeom_pt(0, 3), tgeom_pt(0, 0));
   tgeom_check_invariants(&t);
-  TGEOM_NEAR(t.a, 5, 1e-15, 0);
-  TGEOM_NEAR(t.b, 4, 1e-15, 0);
-  TGEOM_NEAR(t.c, 3, 1e-15, 0);
-  TGEOM_NEAR(t.alpha, atan2(3, 4), 1e-14, 0);
-  TGEOM_NEAR(t.beta, atan2(4, 3), 1e-14, 0);
-  TGEOM_NEAR(t.gamma, TGEOM_PI / 2, 1e-14, 0);
-  TGEOM_NEAR(t.area, 6, 1e-15, 0);
-  TGEOM_NEAR(t.P, 12, 1e-15, 0);
-  TGEOM_NEAR(t.R, 2.5, 1e-15, 0);
-  TGEOM_NEAR(t.r, 1, 1e-15, 0);
-  TGEOM_NEAR(t.h, 2.4, 1e-15, 0);
-  TGEOM_NEAR(t.rx, 4, 0, 0);
-  TGEOM_NEAR(t.ry, 3, 0, 0);
+  TESTUTIL_NEAR(t.a, 5, 1e-15, 0);
+  TESTUTIL_NEAR(t.b, 4, 1e-15, 0);
+  TESTUTIL_NEAR(t.c, 3, 1e-15, 0);
+  TESTUTIL_NEAR(t.alpha, atan2(3, 4), 1e-14, 0);
+  TESTUTIL_NEAR(t.beta, atan2(4, 3), 1e-14, 0);
+  TESTUTIL_NEAR(t.gamma, M_PI / 2, 1e-14, 0);
+  TESTUTIL_NEAR(t.area, 6, 1e-15, 0);
+  TESTUTIL_NEAR(t.P, 12, 1e-15, 0);
+  TESTUTIL_NEAR(t.R, 2.5, 1e-15, 0);
+  TESTUTIL_NEAR(t.r, 1, 1e-15, 0);
+  TESTUTIL_NEAR(t.h, 2.4, 1e-15, 0);
+  TESTUTIL_NEAR(t.rx, 4, 0, 0);
+  TESTUTIL_NEAR(t.ry, 3, 0, 0);
 }
 
 /* Sliver (0,0), (1,0), (0.5, 1e-3): with s = sqrt(0.25 + 1e-6),
@@ -169,18 +155,18 @@ static void test_tri_sliver(void **state) {
   double s = sqrt(0.25 + 1e-6), th = atan(2e-3);
   geom_tri_make(&t, tgeom_pt(0.5, 1e-3), tgeom_pt(1, 0), tgeom_pt(0, 0));
   tgeom_check_invariants(&t);
-  TGEOM_NEAR(t.a, 1, 1e-15, 0);
-  TGEOM_NEAR(t.b, s, 1e-15, 0);
-  TGEOM_NEAR(t.c, s, 1e-15, 0);
-  TGEOM_NEAR(t.alpha, th, 1e-12, 0);
-  TGEOM_NEAR(t.beta, th, 1e-12, 0);
-  TGEOM_NEAR(t.gamma, TGEOM_PI - 2 * th, 1e-14, 0);
-  TGEOM_NEAR(t.area, 5e-4, 1e-13, 0);
-  TGEOM_NEAR(t.R, 125.0005, 1e-12, 0);
-  TGEOM_NEAR(t.r, 1e-3 / (1 + 2 * s), 1e-12, 0);
-  TGEOM_NEAR(t.h, 1e-3, 1e-12, 0);
-  TGEOM_NEAR(t.rx, 1, 0, 0);
-  TGEOM_NEAR(t.ry, 1e-3, 0, 0);
+  TESTUTIL_NEAR(t.a, 1, 1e-15, 0);
+  TESTUTIL_NEAR(t.b, s, 1e-15, 0);
+  TESTUTIL_NEAR(t.c, s, 1e-15, 0);
+  TESTUTIL_NEAR(t.alpha, th, 1e-12, 0);
+  TESTUTIL_NEAR(t.beta, th, 1e-12, 0);
+  TESTUTIL_NEAR(t.gamma, M_PI - 2 * th, 1e-14, 0);
+  TESTUTIL_NEAR(t.area, 5e-4, 1e-13, 0);
+  TESTUTIL_NEAR(t.R, 125.0005, 1e-12, 0);
+  TESTUTIL_NEAR(t.r, 1e-3 / (1 + 2 * s), 1e-12, 0);
+  TESTUTIL_NEAR(t.h, 1e-3, 1e-12, 0);
+  TESTUTIL_NEAR(t.rx, 1, 0, 0);
+  TESTUTIL_NEAR(t.ry, 1e-3, 0, 0);
 }
 
 /* A needle (0,0), (1,0), (0.5, 1e-9): angles 2e-9 (to 1e-18 relative),
@@ -190,11 +176,11 @@ static void test_tri_needle(void **state) {
   (void)state;
   geom_tri t;
   geom_tri_make(&t, tgeom_pt(0, 0), tgeom_pt(1, 0), tgeom_pt(0.5, 1e-9));
-  TGEOM_NEAR(t.alpha, atan(2e-9), 1e-9, 0);
-  TGEOM_NEAR(t.beta, atan(2e-9), 1e-9, 0);
-  TGEOM_NEAR(t.area, 5e-10, 1e-9, 0);
-  TGEOM_NEAR(t.h, 1e-9, 1e-9, 0);
-  TGEOM_NEAR(t.alpha + t.beta + t.gamma, TGEOM_PI, 0, 1e-13);
+  TESTUTIL_NEAR(t.alpha, atan(2e-9), 1e-9, 0);
+  TESTUTIL_NEAR(t.beta, atan(2e-9), 1e-9, 0);
+  TESTUTIL_NEAR(t.area, 5e-10, 1e-9, 0);
+  TESTUTIL_NEAR(t.h, 1e-9, 1e-9, 0);
+  TESTUTIL_NEAR(t.alpha + t.beta + t.gamma, M_PI, 0, 1e-13);
 }
 
 static geom_point tgeom_rand_point(testutil_rng *g, double scale) {
@@ -239,20 +225,20 @@ static void test_tri_random(void **state) {
     for (int i = 0; i < 3; i++)
       for (int j = i + 1; j < 3; j++)
         if (s[j] > s[i]) { double x = s[i]; s[i] = s[j]; s[j] = x; }
-    TGEOM_NEAR(t[0].a, s[0], 1e-14, 0);
-    TGEOM_NEAR(t[0].b, s[1], 1e-14, 0);
-    TGEOM_NEAR(t[0].c, s[2], 1e-14, 0);
+    TESTUTIL_NEAR(t[0].a, s[0], 1e-14, 0);
+    TESTUTIL_NEAR(t[0].b, s[1], 1e-14, 0);
+    TESTUTIL_NEAR(t[0].c, s[2], 1e-14, 0);
     double A = fabs(cross) / 2;
-    TGEOM_NEAR(t[0].area, A, 1e-9, 0);
+    TESTUTIL_NEAR(t[0].area, A, 1e-9, 0);
     /* angle opposite side x: atan2(2A, y^2 + z^2 - x^2) (well conditioned) */
     double ang[3];
     for (int i = 0; i < 3; i++) {
       double x = s[i], y = s[(i + 1) % 3], z = s[(i + 2) % 3];
       ang[i] = atan2(4 * A, y * y + z * z - x * x);
     }
-    TGEOM_NEAR(t[0].gamma, ang[0], 1e-9, 1e-12);
-    TGEOM_NEAR(t[0].beta, ang[1], 1e-9, 1e-12);
-    TGEOM_NEAR(t[0].alpha, ang[2], 1e-9, 1e-12);
+    TESTUTIL_NEAR(t[0].gamma, ang[0], 1e-9, 1e-12);
+    TESTUTIL_NEAR(t[0].beta, ang[1], 1e-9, 1e-12);
+    TESTUTIL_NEAR(t[0].alpha, ang[2], 1e-9, 1e-12);
     double xmin = fmin(p[0].x, fmin(p[1].x, p[2].x)), xmax = fmax(p[0].x, fmax(p[1].x, p[2].x));
     double ymin = fmin(p[0].y, fmin(p[1].y, p[2].y)), ymax = fmax(p[0].y, fmax(p[1].y, p[2].y));
     assert_true(t[0].rx == xmax - xmin);

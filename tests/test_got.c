@@ -299,7 +299,7 @@ static void test_p1_minimum_weight(void **state) {
   ** the minimum is perimeter + 2 * 3 sqrt 3 exactly (in real arithmetic). */
   geom_point reg[6];
   for (int q = 0; q < 6; q++) {
-    double a = q * 3.14159265358979323846 / 3, s = q % 2 ? 1.01 : 1.0;
+    double a = q * M_PI / 3, s = q % 2 ? 1.01 : 1.0;
     reg[q] = (geom_point){s * cos(a), s * sin(a)};
   }
   tgot_check_p1(reg, 6, geom_dist(reg[0], reg[2]) + geom_dist(reg[2], reg[4]) +

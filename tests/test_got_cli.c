@@ -33,9 +33,8 @@
 #define TCLI_CAP (1 << 20)
 static char tcli_out[TCLI_CAP], tcli_err[TCLI_CAP];
 
-static int tcli_run(const char *args) {
-  return testutil_run(args, tcli_out, sizeof tcli_out, tcli_err, sizeof tcli_err);
-}
+/* Run `fliplab printf(FMT, ...)` into tcli_out and tcli_err. */
+#define TCLI_RUN(...) testutil_runf(tcli_out, sizeof tcli_out, tcli_err, sizeof tcli_err, __VA_ARGS__)
 
 static void tcli_write(const char *path, const char *text) {
   FILE *f = fopen(path, "w");
@@ -68,14 +67,9 @@ static double tcli_listed_sum(const char *out, int *count) {
   return s;
 }
 
-static int tcli_one_line(const char *err) {
-  const char *nl = strchr(err, '\n');
-  return err[0] != '\0' && nl != NULL && nl[1] == '\0';
-}
-
 static void test_totals_and_list(void **state) {
   (void)state;
-  assert_int_equal(tcli_run("got --rule P_1 --random 12 --seed 3"), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 12 --seed 3"), 0);
   int count = 0;
   double total = tcli_total(tcli_out), sum = tcli_listed_sum(tcli_out, &count);
   assert_int_equal(count, 10);
@@ -113,10 +107,9 @@ static void tcli_row(int ch, void *data) {
 
 static void test_csv_output(void **state) {
   (void)state;
-  char path[512], args[1024];
+  char path[512];
   testutil_tmppath(path, sizeof path, "got.csv");
-  snprintf(args, sizeof args, "got --rule P_1 --random 30 --csv %s", path);
-  assert_int_equal(tcli_run(args), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 30 --csv %s", path), 0);
   double total = tcli_total(tcli_out);
   FILE *f = fopen(path, "rb");
   assert_non_null(f);
@@ -141,7 +134,7 @@ static void test_polygon_file_orientation(void **state) {
   (void)state;
   /* a convex heptagon, anticlockwise, and the same rows clockwise */
   static const double pt[7][2] = {{0, 0}, {4, -1}, {7, 0.5}, {8, 3}, {6, 6}, {2, 6.5}, {-1, 3}};
-  char ccw[512], cw[512], text[1024], args[2048];
+  char ccw[512], cw[512], text[1024];
   testutil_tmppath(ccw, sizeof ccw, "ccw.csv");
   testutil_tmppath(cw, sizeof cw, "cw.csv");
   size_t u = (size_t)snprintf(text, sizeof text, "x,y\n");
@@ -152,18 +145,15 @@ static void test_polygon_file_orientation(void **state) {
   tcli_write(cw, text);
   const char *rules[] = {"P_1", "R_inf", "-alpha_inf", "sigma_2", "abc_0"};
   for (size_t r = 0; r < 5; r++) {
-    snprintf(args, sizeof args, "got --rule %s --polygon %s", rules[r], ccw);
-    assert_int_equal(tcli_run(args), 0);
+    assert_int_equal(TCLI_RUN("got --rule %s --polygon %s", rules[r], ccw), 0);
     double a = tcli_total(tcli_out);
-    snprintf(args, sizeof args, "got --rule %s --polygon %s", rules[r], cw);
-    assert_int_equal(tcli_run(args), 0);
+    assert_int_equal(TCLI_RUN("got --rule %s --polygon %s", rules[r], cw), 0);
     assert_non_null(strstr(tcli_out, "clockwise"));
     double b = tcli_total(tcli_out);
     assert_true(fabs(a - b) <= 1e-9 * fabs(a));
   }
   /* P_1 on a polygon: the listed triangles' vertex numbers are file rows */
-  snprintf(args, sizeof args, "got --rule P_1 --polygon %s", cw);
-  assert_int_equal(tcli_run(args), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", cw), 0);
   int count = 0;
   double sum = tcli_listed_sum(tcli_out, &count);
   assert_int_equal(count, 5);
@@ -174,24 +164,23 @@ static void test_polygon_file_orientation(void **state) {
 
 static void test_compare_dt(void **state) {
   (void)state;
-  assert_int_equal(tcli_run("got --rule R_1 --random 60 --seed 5 --compare DT"), 0);
+  assert_int_equal(TCLI_RUN("got --rule R_1 --random 60 --seed 5 --compare DT"), 0);
   assert_non_null(strstr(tcli_out, "compare DT: 0 of 57 diagonals differ; 58 of 58 triangles"));
-  assert_int_equal(tcli_run("got --rule P_1 --random 60 --seed 5 --compare DT"), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 60 --seed 5 --compare DT"), 0);
   assert_non_null(strstr(tcli_out, "compare DT: "));
-  assert_int_equal(tcli_run("got --rule P_1 --random 10 --compare XX"), 2);
-  assert_true(tcli_one_line(tcli_err));
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 10 --compare XX"), 2);
+  assert_true(testutil_one_line(tcli_err));
 }
 
 static void test_runner_up(void **state) {
   (void)state;
-  char path[512], args[1024];
+  char path[512];
   testutil_tmppath(path, sizeof path, "square.csv");
   tcli_write(path, "0,0\n1,0\n1,1\n0,1\n");
-  snprintf(args, sizeof args, "got --rule P_1 --polygon %s", path);
-  assert_int_equal(tcli_run(args), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "runner-up: tie"));
   tcli_write(path, "0,0\n3,0\n3,1\n0,2\n");
-  assert_int_equal(tcli_run(args), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "the optimum is unique"));
   remove(path);
 }
@@ -199,12 +188,12 @@ static void test_runner_up(void **state) {
 static void test_threads_same_output(void **state) {
   (void)state;
   static char a[TCLI_CAP];
-  assert_int_equal(tcli_run("got --rule sigma_2 --random 150 --threads 1 --print-triangles"), 0);
+  assert_int_equal(TCLI_RUN("got --rule sigma_2 --random 150 --threads 1 --print-triangles"), 0);
   char *t = strstr(tcli_out, "time: ");
   char *e = strchr(t, '\n');
   memmove(t, e + 1, strlen(e + 1) + 1);   /* drop the time line */
   snprintf(a, sizeof a, "%s", tcli_out);
-  assert_int_equal(tcli_run("got --rule sigma_2 --random 150 --threads 2 --print-triangles"), 0);
+  assert_int_equal(TCLI_RUN("got --rule sigma_2 --random 150 --threads 2 --print-triangles"), 0);
   t = strstr(tcli_out, "time: ");
   e = strchr(t, '\n');
   memmove(t, e + 1, strlen(e + 1) + 1);
@@ -213,10 +202,9 @@ static void test_threads_same_output(void **state) {
 
 static void test_svg(void **state) {
   (void)state;
-  char path[512], args[1024];
+  char path[512];
   testutil_tmppath(path, sizeof path, "got.svg");
-  snprintf(args, sizeof args, "got --rule P_1 --random 200 --svg %s --shade", path);
-  assert_int_equal(tcli_run(args), 0);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 200 --svg %s --shade", path), 0);
   FILE *f = fopen(path, "rb");
   assert_non_null(f);
   static char buf[1 << 20];
@@ -245,13 +233,12 @@ static void test_bad_input(void **state) {
     {"0,0\n1,0\n", "at least 3"},
     {"x,y\n0,0\n1,0\n1,1\n\"0\n", "line"},
   };
-  char path[512], args[1024];
+  char path[512];
   testutil_tmppath(path, sizeof path, "bad.csv");
   for (size_t q = 0; q < sizeof bad / sizeof bad[0]; q++) {
     tcli_write(path, bad[q].text);
-    snprintf(args, sizeof args, "got --rule P_1 --polygon %s", path);
-    assert_int_equal(tcli_run(args), 2);
-    if (!tcli_one_line(tcli_err) || strstr(tcli_err, bad[q].want) == NULL)
+    assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 2);
+    if (!testutil_one_line(tcli_err) || strstr(tcli_err, bad[q].want) == NULL)
       fail_msg("case %zu: stderr '%s' (want '%s')", q, tcli_err, bad[q].want);
   }
   remove(path);
@@ -270,12 +257,12 @@ static void test_bad_input(void **state) {
     "got --rule P_1 --random 10 --tie-eps -1",
   };
   for (size_t q = 0; q < sizeof cmds / sizeof cmds[0]; q++) {
-    int st = tcli_run(cmds[q]);
-    if (st != 2 || !tcli_one_line(tcli_err)) fail_msg("'%s': status %d, stderr '%s'", cmds[q], st, tcli_err);
+    int st = TCLI_RUN("%s", cmds[q]);
+    if (st != 2 || !testutil_one_line(tcli_err)) fail_msg("'%s': status %d, stderr '%s'", cmds[q], st, tcli_err);
   }
-  assert_int_equal(tcli_run("got --rule DT --random 10"), 2);
+  assert_int_equal(TCLI_RUN("got --rule DT --random 10"), 2);
   assert_non_null(strstr(tcli_err, "triangle-based"));
-  assert_int_equal(tcli_run("got --rule P_1 --random 200000"), 2);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 200000"), 2);
   assert_non_null(strstr(tcli_err, "GB"));
 }
 

@@ -19,17 +19,6 @@
 #include "geom/geom.h"
 #include "testutil.h"
 
-#define TMEAS_PI 3.14159265358979323846
-
-static void tmeas_near(double got, double want, double rel, double abs,
-                       const char *what, const char *file, int line) {
-  double tol = abs + rel * fabs(want);
-  if (!(fabs(got - want) <= tol)) {
-    print_error("%s: got %.17g, want %.17g (tol %.3g)\n", what, got, want, tol);
-    _fail(file, line);
-  }
-}
-
 /* The measure NAME on triangle t, looked up by its command-line name. */
 static double tmeas_val(const char *name, const geom_tri *t) {
   int id = measure_find(name);
@@ -50,7 +39,7 @@ static void tmeas_check_table(const char *tri, const geom_tri *t, const tmeas_ex
   for (size_t i = 0; i < n; i++) {
     char what[128];
     snprintf(what, sizeof what, "%s on %s", e[i].name, tri);
-    tmeas_near(tmeas_val(e[i].name, t), e[i].want, e[i].rel, e[i].abs, what, file, line);
+    testutil_near(tmeas_val(e[i].name, t), e[i].want, e[i].rel, e[i].abs, what, file, line);
   }
 }
 #define TMEAS_CHECK(tri, t, e) tmeas_check_table(tri, t, e, sizeof e / sizeof e[0], __FILE__, __LINE__)
@@ -145,7 +134,7 @@ static void test_register_user(void **state) {
 ** Pinf = 2(2 + sqrt3), Rinf = max(2, sqrt3)/2 = 1, -rinf = -sqrt3/(2 + sqrt3). */
 static void test_equilateral(void **state) {
   (void)state;
-  double s3 = sqrt(3.0), pi = TMEAS_PI;
+  double s3 = sqrt(3.0), pi = M_PI;
   geom_tri t;
   geom_tri_make(&t, tmeas_pt(0, 0), tmeas_pt(2, 0), tmeas_pt(1, s3));
   const tmeas_expect e[] = {
@@ -171,7 +160,7 @@ static void test_equilateral(void **state) {
 ** Rinf = 1/2, -rinf = -(sqrt3/4)/(1 + sqrt3/2). */
 static void test_equilateral_unit(void **state) {
   (void)state;
-  double s3 = sqrt(3.0), h = s3 / 2, pi = TMEAS_PI;
+  double s3 = sqrt(3.0), h = s3 / 2, pi = M_PI;
   geom_tri t;
   geom_tri_make(&t, tmeas_pt(0.5, h), tmeas_pt(0, 0), tmeas_pt(1, 0));
   const tmeas_expect e[] = {
@@ -195,7 +184,7 @@ static void test_equilateral_unit(void **state) {
 ** rx = 4, ry = 3: Pinf = 14, Rinf = 2, -rinf = -6/7. */
 static void test_345(void **state) {
   (void)state;
-  double pi = TMEAS_PI, al = atan2(3, 4), be = atan2(4, 3);
+  double pi = M_PI, al = atan2(3, 4), be = atan2(4, 3);
   double sg = sqrt(((al - pi / 3) * (al - pi / 3) + (be - pi / 3) * (be - pi / 3) + (pi / 6) * (pi / 6)) / 3);
   geom_tri t;
   geom_tri_make(&t, tmeas_pt(0, 3), tmeas_pt(0, 0), tmeas_pt(4, 0));
@@ -209,7 +198,7 @@ static void test_345(void **state) {
     {"Pinf", 14, 0, 0}, {"Rinf", 2, 0, 0}, {"-rinf", -6.0 / 7, 1e-15, 0},
   };
   TMEAS_CHECK("3-4-5", &t, e);
-  tmeas_near(sg, 0.38794, 0, 1e-5, "sigma(3-4-5) hand value", __FILE__, __LINE__);
+  testutil_near(sg, 0.38794, 0, 1e-5, "sigma(3-4-5) hand value", __FILE__, __LINE__);
 }
 
 /* Sliver (0,0), (1,0), (0.5, 1e-3); s = sqrt(0.25 + 1e-6), th = atan(2e-3).
@@ -224,7 +213,7 @@ static void test_345(void **state) {
 ** rx = 1, ry = 1e-3: Pinf = 2.002, Rinf = 0.5, -rinf = -5e-4/1.001. */
 static void test_sliver(void **state) {
   (void)state;
-  double pi = TMEAS_PI, s = sqrt(0.25 + 1e-6), th = atan(2e-3), P = 1 + 2 * s;
+  double pi = M_PI, s = sqrt(0.25 + 1e-6), th = atan(2e-3), P = 1 + 2 * s;
   geom_tri t;
   geom_tri_make(&t, tmeas_pt(1, 0), tmeas_pt(0.5, 1e-3), tmeas_pt(0, 0));
   const tmeas_expect e[] = {
@@ -258,11 +247,11 @@ static void test_rotated_345(void **state) {
     {"-rinf", -6 / (1.5 + 3.5 * s3), 1e-14, 0},
   };
   TMEAS_CHECK("rotated 3-4-5", &t, e);
-  tmeas_near(tmeas_val("-rinf", &t), -0.79342, 0, 1e-5, "-rinf rotated hand value", __FILE__, __LINE__);
+  testutil_near(tmeas_val("-rinf", &t), -0.79342, 0, 1e-5, "-rinf rotated hand value", __FILE__, __LINE__);
   for (int i = 0; i < MEASURE_PINF; i++) {
     char what[64];
     snprintf(what, sizeof what, "%s rotated vs unrotated", tmeas_names[i]);
-    tmeas_near(measure_eval(i, &t), measure_eval(i, &u), 1e-13, 1e-14, what, __FILE__, __LINE__);
+    testutil_near(measure_eval(i, &t), measure_eval(i, &u), 1e-13, 1e-14, what, __FILE__, __LINE__);
   }
 }
 
@@ -303,13 +292,13 @@ static void test_rinf_appendix_c(void **state) {
   geom_tri t;
   geom_point p0 = tmeas_pt(0, 0), p1 = tmeas_pt(1, 3), p2 = tmeas_pt(4, 4);
   geom_tri_make(&t, p0, p1, p2);
-  tmeas_near(tmeas_val("-rinf", &t), -0.5, 1e-15, 0, "-rinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
-  tmeas_near(tmeas_inscribed_square(p0, p1, p2), 0.5, 1e-14, 0, "LP square", __FILE__, __LINE__);
-  tmeas_near(tmeas_val("Pinf", &t), 16, 0, 0, "Pinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
-  tmeas_near(tmeas_val("Rinf", &t), 2, 0, 0, "Rinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
+  testutil_near(tmeas_val("-rinf", &t), -0.5, 1e-15, 0, "-rinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
+  testutil_near(tmeas_inscribed_square(p0, p1, p2), 0.5, 1e-14, 0, "LP square", __FILE__, __LINE__);
+  testutil_near(tmeas_val("Pinf", &t), 16, 0, 0, "Pinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
+  testutil_near(tmeas_val("Rinf", &t), 2, 0, 0, "Rinf (0,0),(1,3),(4,4)", __FILE__, __LINE__);
   /* right isosceles (0,0), (1,0), (0,1): the square [0,1/2]^2, r_inf = 1/4 */
   geom_tri_make(&t, tmeas_pt(0, 1), tmeas_pt(0, 0), tmeas_pt(1, 0));
-  tmeas_near(tmeas_val("-rinf", &t), -0.25, 1e-15, 0, "-rinf right isosceles", __FILE__, __LINE__);
+  testutil_near(tmeas_val("-rinf", &t), -0.25, 1e-15, 0, "-rinf right isosceles", __FILE__, __LINE__);
 
   testutil_rng g = {99};
   for (int n = 0; n < 20000; n++) {
@@ -318,7 +307,7 @@ static void test_rinf_appendix_c(void **state) {
     double cr = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
     if (fabs(cr) < 1e-3) continue;   /* keep the LP well conditioned */
     geom_tri_make(&t, q[0], q[1], q[2]);
-    tmeas_near(-tmeas_val("-rinf", &t), tmeas_inscribed_square(q[0], q[1], q[2]), 1e-9, 0,
+    testutil_near(-tmeas_val("-rinf", &t), tmeas_inscribed_square(q[0], q[1], q[2]), 1e-9, 0,
                "-rinf vs largest inscribed square", __FILE__, __LINE__);
   }
 }
@@ -328,7 +317,7 @@ static void test_rinf_appendix_c(void **state) {
 static void test_random_independent(void **state) {
   (void)state;
   testutil_rng g = {2024};
-  double pi = TMEAS_PI;
+  double pi = M_PI;
   int done = 0;
   while (done < 20000) {
     geom_point p[3];

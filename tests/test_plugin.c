@@ -129,12 +129,9 @@ static void test_rule156_definition(void **state) {
   for (int n = 0; n < 50000; n++) {
     geom_point q[4];
     testutil_convex_quad(&g, q);
-    geom_tri abc, acd, abd, bcd;
-    geom_tri_make(&abc, q[0], q[1], q[2]);
-    geom_tri_make(&acd, q[0], q[2], q[3]);
-    geom_tri_make(&abd, q[0], q[1], q[3]);
-    geom_tri_make(&bcd, q[1], q[2], q[3]);
-    double mac = fmin(abc.alpha, acd.alpha), mbd = fmin(abd.alpha, bcd.alpha);
+    geom_tri t[4];   /* ABC, ACD, ABD, BCD */
+    testutil_quad_tris(q, t);
+    double mac = fmin(t[0].alpha, t[1].alpha), mbd = fmin(t[2].alpha, t[3].alpha);
     double lac = dist(q[0], q[2]), lbd = dist(q[1], q[3]);
     if (fabs(lac - lbd) < 1e-9 * lac || fabs(mac - mbd) < 1e-9 || fabs(fmin(mac, mbd) - thr) < 1e-9 ||
         fabs(fmax(mac, mbd) - thr) < 1e-9)

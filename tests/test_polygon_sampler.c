@@ -117,7 +117,7 @@ static void test_circle(void **state) {
   for (size_t i = 0; i < N; i++) {
     assert_true(fabs(hypot(p[i].x, p[i].y) - 1) <= 4e-16);
     double th = atan2(p[i].y, p[i].x);
-    if (th < 0) th += 2 * 3.14159265358979323846;
+    if (th < 0) th += 2 * M_PI;
     assert_true(th > prev);
     prev = th;
     upper += p[i].y > 0;

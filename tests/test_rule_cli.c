@@ -24,9 +24,8 @@
 
 static char out[OUTCAP], err[OUTCAP];
 
-static int run(const char *args) {
-  return testutil_run(args, out, sizeof out, err, sizeof err);
-}
+/* Run `fliplab printf(FMT, ...)` into out and err. */
+#define RUN(...) testutil_runf(out, sizeof out, err, sizeof err, __VA_ARGS__)
 
 /* The count and the percentage printed on the "  LABEL  count ..." line of
 ** the block of rule `name`. */
@@ -49,16 +48,11 @@ static const char *block_of(const char *text, const char *name) {
   return b;
 }
 
-static int one_line(const char *s) {
-  const char *nl = strchr(s, '\n');
-  return s[0] != '\0' && nl != NULL && nl[1] == '\0';
-}
-
 /* --define q = a*b*c: the same counts as the built-in abc for all six
 ** joints, via table34 --measures (CSV) and via rule. */
 static void test_formula_equals_builtin(void **state) {
   (void)state;
-  int rc = run("--define 'q = a*b*c' table34 --measures q,abc --samples 5000 --format csv");
+  int rc = RUN("--define 'q = a*b*c' table34 --measures q,abc --samples 5000 --format csv");
   if (rc != 0) fail_msg("table34 exit %d: %s", rc, err);
   static const char *const joints[] = {"-inf", "-1", "0", "1", "2", "inf"};
   for (int j = 0; j < 6; j++) {
@@ -73,7 +67,7 @@ static void test_formula_equals_builtin(void **state) {
     assert_int_equal(nq, na);
     assert_memory_equal(lq, la, nq);
   }
-  assert_int_equal(run("--define 'q = a*b*c' rule q_0 abc_0 --samples 5000 --quads 1000"), 0);
+  assert_int_equal(RUN("--define 'q = a*b*c' rule q_0 abc_0 --samples 5000 --quads 1000"), 0);
   static const char *const labels[] = {"I", "II", "III", "IV", "V", "DT"};
   for (int k = 0; k < 6; k++)
     assert_int_equal(count_of(out, "q_0", labels[k]), count_of(out, "abc_0", labels[k]));
@@ -82,7 +76,7 @@ static void test_formula_equals_builtin(void **state) {
 /* -2*A/P with joint 1 is -r_1, Delaunay-equivalent (thesis theorem 16). */
 static void test_inradius_is_delaunay(void **state) {
   (void)state;
-  assert_int_equal(run("--define 'rr = -2*A/P' rule rr_1 --samples 20000 --quads 50000"), 0);
+  assert_int_equal(RUN("--define 'rr = -2*A/P' rule rr_1 --samples 20000 --quads 50000"), 0);
   assert_int_equal(count_of(out, "rr_1", "DT"), 20000);
   assert_int_equal(count_of(out, "rr_1", "I"), 20000);
   const char *b = block_of(out, "rr_1");
@@ -146,7 +140,7 @@ static int witnesses(const char *block, witness *w, int cap) {
 ** and they are the lowest sample indices of type III. */
 static void test_gamma_witnesses(void **state) {
   (void)state;
-  assert_int_equal(run("--define 'g = gamma' rule g_inf --samples 3000 --quads 2000 --witnesses 3"), 0);
+  assert_int_equal(RUN("--define 'g = gamma' rule g_inf --samples 3000 --quads 2000 --witnesses 3"), 0);
   const char *b = block_of(out, "g_inf");
   assert_non_null(strstr(b, "verdict: not systematic:"));
   witness w[16];
@@ -193,12 +187,9 @@ static void test_thread_independent(void **state) {
   const char *args =
     "--plugin " PLUGINS "rule109.so --plugin " PLUGINS "rule156.so --define 'g = gamma' "
     "rule rule109 rule156 P2/A_2 g_inf --samples 20000 --quads 20000 --witnesses 2 --threads %d";
-  char cmd[1024];
-  snprintf(cmd, sizeof cmd, args, 1);
-  assert_int_equal(run(cmd), 0);
+  assert_int_equal(RUN(args, 1), 0);
   memcpy(first, out, sizeof out);
-  snprintf(cmd, sizeof cmd, args, 2);
-  assert_int_equal(run(cmd), 0);
+  assert_int_equal(RUN(args, 2), 0);
   assert_string_equal(first, out);
   assert_int_equal(count_of(out, "rule109", "I") + count_of(out, "rule109", "II") +
                    count_of(out, "rule109", "III") + count_of(out, "rule109", "IV") +
@@ -209,8 +200,8 @@ static void test_svg(void **state) {
   (void)state;
   char dir[512], cmd[1024];
   testutil_tmppath(dir, sizeof dir, "svg");
-  snprintf(cmd, sizeof cmd, "--define 'g = gamma' rule g_inf --samples 500 --quads 0 --witnesses 1 --svg-dir %s", dir);
-  assert_int_equal(run(cmd), 0);
+  assert_int_equal(
+    RUN("--define 'g = gamma' rule g_inf --samples 500 --quads 0 --witnesses 1 --svg-dir %s", dir), 0);
   const char *s = strstr(out, "svg: ");
   assert_non_null(s);
   char path[1024];
@@ -233,9 +224,9 @@ static void test_svg(void **state) {
 /* Every refusal: exit status 2 (usage/input) or 1 (bad value during the
 ** run), exactly one line on stderr naming the problem, no crash. */
 static void refused(const char *args, int status, const char *want) {
-  int rc = run(args);
+  int rc = RUN("%s", args);
   if (rc != status) fail_msg("'%s': exit %d, expected %d; stderr: %s", args, rc, status, err);
-  if (!one_line(err)) fail_msg("'%s': stderr is not one line: %s", args, err);
+  if (!testutil_one_line(err)) fail_msg("'%s': stderr is not one line: %s", args, err);
   if (strstr(err, want) == NULL) fail_msg("'%s': stderr lacks '%s': %s", args, want, err);
 }
 

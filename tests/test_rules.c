@@ -22,16 +22,7 @@
 #include "joints/joint.h"
 #include "testutil.h"
 
-#define TRULE_PI 3.14159265358979323846
 #define TRULE_NALL (MEASURE_BUILTIN_COUNT * JOINT_COUNT)
-
-static void trule_near(double got, double want, double rel, const char *what, const char *file, int line) {
-  if (!(fabs(got - want) <= rel * fabs(want))) {
-    print_error("%s: got %.17g, want %.17g\n", what, got, want);
-    _fail(file, line);
-  }
-}
-#define TRULE_NEAR(got, want, rel) trule_near((got), (want), (rel), #got, __FILE__, __LINE__)
 
 static rule trule_get(const char *name) {
   rule r;
@@ -269,21 +260,21 @@ static int trule_appendix_b_sign(double s) {
 ** 2 (pi/6)^2 and the equilateral 0, so BD = (pi/6) sqrt2 > AC -> AC. */
 static void test_appendix_b(void **state) {
   (void)state;
-  double s = sqrt(3.0) / 2, s3 = sqrt(3.0), pi = TRULE_PI;
+  double s = sqrt(3.0) / 2, s3 = sqrt(3.0), pi = M_PI;
   rule p1 = trule_get("P_1"), a1 = trule_get("-alpha_1"), s2 = trule_get("sigma_2"), dt = trule_get("DT");
   const double eps = RULE_DEFAULT_TIE_EPS;
   double ac, bd;
 
   geom_point q[4] = {{1, 0}, {0.5, s}, {-1, 0}, {0.5, -s}};
   assert_int_equal(rule_eval(&p1, q, eps, &ac, &bd), RULE_BD);
-  TRULE_NEAR(ac, 2 * (3 + s3), 1e-14);
-  TRULE_NEAR(bd, 2 + 4 * s3, 1e-14);
+  TESTUTIL_NEAR(ac, 2 * (3 + s3), 1e-14, 0);
+  TESTUTIL_NEAR(bd, 2 + 4 * s3, 1e-14, 0);
   assert_int_equal(rule_eval(&a1, q, eps, &ac, &bd), RULE_BD);
-  TRULE_NEAR(ac, -pi / 3, 1e-13);
-  TRULE_NEAR(bd, -pi / 2, 1e-13);
+  TESTUTIL_NEAR(ac, -pi / 3, 1e-13, 0);
+  TESTUTIL_NEAR(bd, -pi / 2, 1e-13, 0);
   assert_int_equal(rule_eval(&s2, q, eps, &ac, &bd), RULE_AC);
-  TRULE_NEAR(ac, pi / 6 * sqrt(4.0 / 3), 1e-12);
-  TRULE_NEAR(bd, pi / 6 * sqrt(2.0), 1e-12);
+  TESTUTIL_NEAR(ac, pi / 6 * sqrt(4.0 / 3), 1e-12, 0);
+  TESTUTIL_NEAR(bd, pi / 6 * sqrt(2.0), 1e-12, 0);
   /* the double quadrilateral is not exactly cocircular: DT is decided */
   int sg = trule_appendix_b_sign(s);
   assert_int_not_equal(sg, 0);
@@ -379,18 +370,15 @@ static void test_rotation(void **state) {
   for (int n = 0; n < 1000; n++) {
     geom_point q[4];
     testutil_convex_quad(&g, q);
-    geom_tri abc, acd, abd, bcd;
-    geom_tri_make(&abc, q[0], q[1], q[2]);
-    geom_tri_make(&acd, q[0], q[2], q[3]);
-    geom_tri_make(&abd, q[0], q[1], q[3]);
-    geom_tri_make(&bcd, q[1], q[2], q[3]);
+    geom_tri t[4];   /* ABC, ACD, ABD, BCD */
+    testutil_quad_tris(q, t);
     for (int i = 0; i < nr; i++) {
       double ac0 = 0, bd0 = 0;
       rule_choice c0 = rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, &ac0, &bd0);
       assert_int_equal(rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, NULL, NULL), c0);
       if (rules[i].kind == RULE_TRIANGLE) {
         double ac1, bd1;
-        assert_int_equal(rule_eval_tris(&rules[i], &abc, &acd, &abd, &bcd, RULE_DEFAULT_TIE_EPS, &ac1, &bd1), c0);
+        assert_int_equal(rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], RULE_DEFAULT_TIE_EPS, &ac1, &bd1), c0);
         assert_memory_equal(&ac0, &ac1, sizeof ac0);
         assert_memory_equal(&bd0, &bd1, sizeof bd0);
       }

@@ -29,20 +29,8 @@
 
 static char tt_out[TT_CAP], tt_err[TT_CAP];
 
-static int tt_run(const char *fmt, ...)
-#if defined(__GNUC__)
-  __attribute__((format(printf, 1, 2)))
-#endif
-  ;
-
-static int tt_run(const char *fmt, ...) {
-  char args[4096];
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(args, sizeof args, fmt, ap);
-  va_end(ap);
-  return testutil_run(args, tt_out, TT_CAP, tt_err, TT_CAP);
-}
+/* Run `fliplab printf(FMT, ...)` into tt_out and tt_err. */
+#define TT_RUN(...) testutil_runf(tt_out, TT_CAP, tt_err, TT_CAP, __VA_ARGS__)
 
 static char *tt_slurp(const char *path) {
   FILE *f = fopen(path, "rb");
@@ -74,8 +62,7 @@ static int tt_read_counts(const char *text, report_row **rows) {
 
 /* stderr is exactly one line. */
 static void tt_one_line(void) {
-  size_t len = strlen(tt_err);
-  if (len == 0 || strchr(tt_err, '\n') != tt_err + len - 1)
+  if (!testutil_one_line(tt_err))
     fail_msg("stderr should be one line: '%s'", tt_err);
 }
 
@@ -89,7 +76,7 @@ static const report_row *tt_find(const report_row *rows, int n, const char *rule
 /* Header, rows in rule_list_triangle's order then DT, and the theorems. */
 static void test_csv_rows(void **state) {
   (void)state;
-  assert_int_equal(tt_run("table34 --samples 1500 --seed 3 --format csv"), 0);
+  assert_int_equal(TT_RUN("table34 --samples 1500 --seed 3 --format csv"), 0);
   assert_int_equal(strncmp(tt_out, TT_HEADER, strlen(TT_HEADER)), 0);
   report_row *rows = NULL;
   int n = tt_read_counts(tt_out, &rows);
@@ -126,9 +113,9 @@ static void test_csv_rows(void **state) {
 /* Same seed: the same bytes whatever the thread count. */
 static void test_threads_identical(void **state) {
   (void)state;
-  assert_int_equal(tt_run("table34 --samples 3000 --seed 11 --format csv --threads 1"), 0);
+  assert_int_equal(TT_RUN("table34 --samples 3000 --seed 11 --format csv --threads 1"), 0);
   char *one = strdup(tt_out);
-  assert_int_equal(tt_run("table34 --samples 3000 --seed 11 --format csv --threads 2"), 0);
+  assert_int_equal(TT_RUN("table34 --samples 3000 --seed 11 --format csv --threads 2"), 0);
   assert_string_equal(one, tt_out);
   free(one);
 }
@@ -139,13 +126,13 @@ static void test_shards_merge(void **state) {
   char full[512], shard[4][512], merged[512];
   tt_path(full, sizeof full, "full.csv");
   tt_path(merged, sizeof merged, "merged.csv");
-  assert_int_equal(tt_run("table34 --samples 2003 --seed 9 --format csv --out %s", full), 0);
+  assert_int_equal(TT_RUN("table34 --samples 2003 --seed 9 --format csv --out %s", full), 0);
   uint64_t total = 0;
   for (int k = 0; k < 4; k++) {
     char name[32];
     snprintf(name, sizeof name, "shard%d.csv", k + 1);
     tt_path(shard[k], sizeof shard[k], name);
-    assert_int_equal(tt_run("table34 --samples 2003 --seed 9 --format csv --shard %d/4 --out %s",
+    assert_int_equal(TT_RUN("table34 --samples 2003 --seed 9 --format csv --shard %d/4 --out %s",
                             k + 1, shard[k]), 0);
     char *s = tt_slurp(shard[k]);
     report_row *rows = NULL;
@@ -158,14 +145,14 @@ static void test_shards_merge(void **state) {
     free(s);
   }
   assert_int_equal(total, 2003);
-  assert_int_equal(tt_run("merge %s %s %s %s --out %s", shard[0], shard[1], shard[2], shard[3],
+  assert_int_equal(TT_RUN("merge %s %s %s %s --out %s", shard[0], shard[1], shard[2], shard[3],
                           merged), 0);
   char *a = tt_slurp(full), *b = tt_slurp(merged);
   assert_non_null(a);
   assert_non_null(b);
   assert_string_equal(a, b);
   /* Any order of the shards sums to the same. */
-  assert_int_equal(tt_run("merge %s %s %s %s", shard[3], shard[1], shard[0], shard[2]), 0);
+  assert_int_equal(TT_RUN("merge %s %s %s %s", shard[3], shard[1], shard[0], shard[2]), 0);
   assert_string_equal(tt_out, a);
   free(a);
   free(b);
@@ -173,21 +160,21 @@ static void test_shards_merge(void **state) {
   /* A shard of other rules, or a non-table CSV: refused with the file named. */
   char other[512];
   tt_path(other, sizeof other, "other.csv");
-  assert_int_equal(tt_run("table34 --samples 100 --measures R,-alpha --format csv --out %s",
+  assert_int_equal(TT_RUN("table34 --samples 100 --measures R,-alpha --format csv --out %s",
                           other), 0);
-  assert_int_equal(tt_run("merge %s %s", shard[0], other), 2);
+  assert_int_equal(TT_RUN("merge %s %s", shard[0], other), 2);
   assert_non_null(strstr(tt_err, other));
   FILE *f = fopen(other, "wb");
   fputs("measure,joint,rule,samples,I,II,III,IV,V,dt\nR,-inf,R_-inf,1,1,0,0,0,0,1\n", f);
   fclose(f);
-  assert_int_equal(tt_run("merge %s %s", shard[0], other), 2);
+  assert_int_equal(TT_RUN("merge %s %s", shard[0], other), 2);
   assert_non_null(strstr(tt_err, other));
   assert_non_null(strstr(tt_err, "line 1"));
   tt_one_line();
   f = fopen(other, "wb");
   fputs(TT_HEADER "R,-inf,R_-inf,1,1,0,0,0,0,1\nR,-1,R_-1,1,1,0,0\n", f);
   fclose(f);
-  assert_int_equal(tt_run("merge %s", other), 2);
+  assert_int_equal(TT_RUN("merge %s", other), 2);
   assert_non_null(strstr(tt_err, "line 3"));
   tt_one_line();
   for (int k = 0; k < 4; k++) unlink(shard[k]);
@@ -207,7 +194,7 @@ static void test_text_md(void **state) {
   (void)state;
   static const char *const joints[6] = {"l_-inf ", "l_-1 ", "l_0 ", "l_1 ", "l_2 ", "l_inf "};
   for (int md = 0; md < 2; md++) {
-    assert_int_equal(tt_run("table34 --samples 400 --seed 2 --tie-eps 1e-10 --format %s",
+    assert_int_equal(TT_RUN("table34 --samples 400 --seed 2 --tie-eps 1e-10 --format %s",
                             md ? "md" : "text"), 0);
     assert_non_null(strstr(tt_out, "samples: 400"));
     assert_non_null(strstr(tt_out, "seed: 2"));
@@ -231,17 +218,17 @@ static void test_text_md(void **state) {
 static void test_measures_option(void **state) {
   (void)state;
   report_row *rows = NULL;
-  assert_int_equal(tt_run("table34 --samples 50 --measures R,-alpha --format csv"), 0);
+  assert_int_equal(TT_RUN("table34 --samples 50 --measures R,-alpha --format csv"), 0);
   assert_int_equal(tt_read_counts(tt_out, &rows), 2 * 6 + 1);
   free(rows);
-  assert_int_equal(tt_run("table34 --samples 50 --measures all --format csv"), 0);
+  assert_int_equal(TT_RUN("table34 --samples 50 --measures all --format csv"), 0);
   int n = tt_read_counts(tt_out, &rows);
   int ids[MEASURE_MAX], nm = measure_count();
   for (int i = 0; i < nm; i++) ids[i] = i;
   rule all[MEASURE_MAX * JOINT_COUNT];
   assert_int_equal(n, rule_list_triangle(ids, nm, all, MEASURE_MAX * JOINT_COUNT) + 1);
   free(rows);
-  assert_int_equal(tt_run("table34 --samples 50 --measures R,nosuch"), 2);
+  assert_int_equal(TT_RUN("table34 --samples 50 --measures R,nosuch"), 2);
   assert_non_null(strstr(tt_err, "nosuch"));
 }
 
@@ -250,7 +237,7 @@ static void test_plot(void **state) {
   (void)state;
   char svg[512];
   tt_path(svg, sizeof svg, "plot.svg");
-  assert_int_equal(tt_run("table34 --samples 300 --format csv --plot %s", svg), 0);
+  assert_int_equal(TT_RUN("table34 --samples 300 --format csv --plot %s", svg), 0);
   report_row *rows = NULL;
   int n = tt_read_counts(tt_out, &rows);
   char *s = tt_slurp(svg);
@@ -272,17 +259,28 @@ static void test_plot(void **state) {
 }
 
 /* --help exits 0; bad values and unknown options: one line, status 2. */
+/* Sizes in scientific notation mean the same integer: --samples 1.5e3
+** gives the same bytes as --samples 1500. */
+static void test_scientific_sizes(void **state) {
+  (void)state;
+  assert_int_equal(TT_RUN("table34 --samples 1500 --seed 3 --format csv"), 0);
+  char *plain = strdup(tt_out);
+  assert_int_equal(TT_RUN("table34 --samples 1.5e3 --seed 3 --format csv"), 0);
+  assert_string_equal(plain, tt_out);
+  free(plain);
+}
+
 static void test_usage_errors(void **state) {
   (void)state;
   static const char *const helps[] = {"table34 --help", "merge --help", "sample --help",
                                       "classify --help"};
   for (size_t i = 0; i < sizeof helps / sizeof helps[0]; i++) {
-    assert_int_equal(tt_run("%s", helps[i]), 0);
+    assert_int_equal(TT_RUN("%s", helps[i]), 0);
     assert_non_null(strstr(tt_out, "usage: fliplab"));
   }
   static const char *const bad[] = {
     "table34 --samples 0", "table34 --samples 1000000000001", "table34 --samples -5",
-    "table34 --samples 1e3", "table34 --threads 0", "table34 --threads 1025",
+    "table34 --samples 1.5", "table34 --threads 0", "table34 --threads 1025",
     "table34 --shard 5/4", "table34 --shard 0/4", "table34 --shard 2", "table34 --shard a/b",
     "table34 --format xml", "table34 --tie-eps nan", "table34 --tie-eps -1",
     "table34 --bogus", "table34 --seed", "table34 --measures ,", "merge",
@@ -290,10 +288,8 @@ static void test_usage_errors(void **state) {
     "classify", "classify --input /nonexistent.csv", "classify --rule nosuch --input x",
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-    int st = tt_run("%s", bad[i]);
-    size_t len = strlen(tt_err);
-    if (st != 2 || len == 0 || strchr(tt_err, '\n') != tt_err + len - 1 ||
-        strncmp(tt_err, "fliplab ", 8) != 0)
+    int st = TT_RUN("%s", bad[i]);
+    if (st != 2 || !testutil_one_line(tt_err) || strncmp(tt_err, "fliplab ", 8) != 0)
       fail_msg("'%s': status %d, stderr '%s' (want 2 and one line)", bad[i], st, tt_err);
   }
 }
@@ -306,6 +302,7 @@ int main(void) {
     cmocka_unit_test(test_text_md),
     cmocka_unit_test(test_measures_option),
     cmocka_unit_test(test_plot),
+    cmocka_unit_test(test_scientific_sizes),
     cmocka_unit_test(test_usage_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

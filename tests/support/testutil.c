@@ -1,6 +1,12 @@
 /*
 ** testutil.c: helpers shared by the tests.
 */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,6 +49,27 @@ void testutil_convex_quad(testutil_rng *g, geom_point q[4]) {
   }
 }
 
+void testutil_quad_tris(const geom_point q[4], geom_tri t[4]) {
+  geom_tri_make(&t[0], q[0], q[1], q[2]);
+  geom_tri_make(&t[1], q[0], q[2], q[3]);
+  geom_tri_make(&t[2], q[0], q[1], q[3]);
+  geom_tri_make(&t[3], q[1], q[2], q[3]);
+}
+
+void testutil_near(double got, double want, double rel, double abs,
+                   const char *what, const char *file, int line) {
+  double tol = abs + rel * fabs(want);
+  if (!(fabs(got - want) <= tol)) {
+    print_error("%s: got %.17g, want %.17g (tol %.3g)\n", what, got, want, tol);
+    _fail(file, line);
+  }
+}
+
+int testutil_one_line(const char *s) {
+  const char *nl = strchr(s, '\n');
+  return nl != NULL && nl[1] == '\0';
+}
+
 static void testutil_slurp(const char *path, char *buf, size_t cap) {
   if (buf == NULL || cap == 0) return;
   buf[0] = '\0';
@@ -71,4 +98,13 @@ int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t e
   unlink(e);
   if (st == -1) return -1;
   return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
+
+int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char *fmt, ...) {
+  char args[4096];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(args, sizeof args, fmt, ap);
+  va_end(ap);
+  return testutil_run(args, out, outcap, err, errcap);
 }

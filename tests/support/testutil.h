@@ -1,6 +1,7 @@
 /*
 ** testutil.h: helpers shared by the tests: a seeded generator, random
-** convex quadrilaterals, running the fliplab program and capturing output.
+** convex quadrilaterals and their four triangles, a near-equality check,
+** running the fliplab program and capturing output.
 */
 #ifndef FLIPLAB_TESTUTIL_H
 #define FLIPLAB_TESTUTIL_H
@@ -18,9 +19,34 @@ double testutil_uniform(testutil_rng *g);               /* [0, 1) */
 ** returned anticlockwise. */
 void testutil_convex_quad(testutil_rng *g, geom_point q[4]);
 
+/* The four triangles of the quadrilateral q = ABCD, in the order
+** rule_eval_tris takes them: t[0] = ABC, t[1] = ACD (the diagonal AC),
+** t[2] = ABD, t[3] = BCD (the diagonal BD). */
+void testutil_quad_tris(const geom_point q[4], geom_tri t[4]);
+
+/* Fails the running cmocka test unless |got - want| <= abs + rel * |want|
+** (so a NaN always fails), printing WHAT, the values and the tolerance.
+** TESTUTIL_NEAR names the expression and the caller's line. */
+void testutil_near(double got, double want, double rel, double abs,
+                   const char *what, const char *file, int line);
+#define TESTUTIL_NEAR(got, want, rel, abs) \
+  testutil_near((got), (want), (rel), (abs), #got, __FILE__, __LINE__)
+
+/* Whether s is exactly one line: its only '\n' is its last character
+** (the "one clear line on stderr" of every refusal). */
+int testutil_one_line(const char *s);
+
 /* Run `fliplab ARGS` through /bin/sh; capture stdout and stderr (each up to
 ** cap bytes, NUL-terminated; either may be NULL).  Returns the exit status. */
 int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t errcap);
+
+/* testutil_run with the arguments made by printf from FMT (at most 4095
+** characters: the tests' commands are far shorter). */
+int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char *fmt, ...)
+#if defined(__GNUC__)
+  __attribute__((format(printf, 5, 6)))
+#endif
+  ;
 
 /* A fresh path in the build tree for a test's files. */
 void testutil_tmppath(char *buf, size_t len, const char *name);
