@@ -14,30 +14,13 @@
 #include <gmp.h>
 #include "geom/geom.h"
 
-/* eps = 2^-53, half an ulp of 1: the relative error of one rounded operation. */
-#define GEOM_EPS 0x1p-53
-
-/* Shewchuk's bounds are relative, which assumes nothing underflows: a
-** result in the subnormal range has an absolute error of up to 2^-1075
-** whatever its size.  When every non-zero coordinate difference is at least
-** 2^-200 in magnitude, every non-zero term of the permanent (degree 4) is
-** at least 2^-800, so the few absolute errors of 2^-1075 that can still
-** occur (a final product or a cancelling sum in the subnormal range) are
-** below 2^-270 of eps * permanent and the bound holds.  Smaller differences
-** (a polygon at scale 1e-60 and below) go to the exact path.  Overflow needs
-** no test: it makes det or the bound infinite or NaN, and the comparisons
-** below then fail and fall through to the exact path too. */
-static int geom_tiny(double d) {
-  return d != 0 && fabs(d) < 0x1p-200;
-}
+/* GEOM_EPS, and why tiny differences skip the filter: see geom.h. */
 
 static atomic_ulong geom_exact_count;
 
 unsigned long geom_exact_calls(void) {
   return atomic_load_explicit(&geom_exact_count, memory_order_relaxed);
 }
-
-/* ---- exact fallbacks --------------------------------------------------- */
 
 /* NaN and infinities have no rational value (mpq_set_d would abort): the
 ** predicates answer 0 for them; callers validate input beforehand. */
@@ -54,7 +37,9 @@ static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) 
 #define GEOM_COLD
 #endif
 
-GEOM_COLD static int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
+/* The exact half of geom_orient (geom.h holds the filter). */
+GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
   if (!geom_finite4(a, b, c, a)) return 0;
   mpq_t t[6];
   for (int i = 0; i < 6; i++) mpq_init(t[i]);
@@ -104,22 +89,6 @@ GEOM_COLD static int geom_incircle_exact(geom_point a, geom_point b, geom_point 
 
 /* ---- filtered predicates ----------------------------------------------- */
 
-/* det = (bx-ax)(cy-ay) - (by-ay)(cx-ax).  With detsum = |l| + |r| for the
-** two products, |fl(det) - det| <= (3 + 16 eps) eps detsum (Shewchuk's
-** ccwerrboundA), so a larger |fl(det)| has the true sign. */
-int geom_orient(geom_point a, geom_point b, geom_point c) {
-  double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
-  double l = bax * cay, r = bay * cax;
-  double det = l - r;
-  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
-  if (!(geom_tiny(bax) || geom_tiny(bay) || geom_tiny(cax) || geom_tiny(cay))) {
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-  }
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  return geom_orient_exact(a, b, c);
-}
-
 /* The lifted 3x3 determinant above.  With permanent = sum of |lift_i| times
 ** (|x_j y_k| + |x_k y_j|), |fl(det) - det| <= (10 + 96 eps) eps permanent
 ** (Shewchuk's iccerrboundA). */
@@ -139,8 +108,8 @@ int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d) {
                    + (fabs(cdxady) + fabs(adxcdy)) * blift
                    + (fabs(adxbdy) + fabs(bdxady)) * clift;
   double bound = (10.0 + 96.0 * GEOM_EPS) * GEOM_EPS * permanent;
-  if (!(geom_tiny(adx) || geom_tiny(ady) || geom_tiny(bdx) || geom_tiny(bdy)
-        || geom_tiny(cdx) || geom_tiny(cdy))) {
+  if (!(geom_filter_tiny(adx) || geom_filter_tiny(ady) || geom_filter_tiny(bdx)
+        || geom_filter_tiny(bdy) || geom_filter_tiny(cdx) || geom_filter_tiny(cdy))) {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }

@@ -10,9 +10,9 @@
 ** points uniform in the unit disc (rejection from the square [-1,1]^2), one
 ** at a time, keeping their convex hull, until the hull has exactly five
 ** vertices.  Adding one point raises the hull size by at most one, so five
-** is hit exactly.  Every hull test is exact (geom_orient, behind an inlined
-** copy of its floating-point filter), so duplicate,
-** collinear and on-the-boundary draws are handled without tolerances: a
+** is hit exactly.  Every hull test is exact (geom_orient, whose filter is
+** inline), so duplicate, collinear and on-the-boundary draws are handled
+** without tolerances: a
 ** point on the hull's boundary is not a new vertex, and a vertex left
 ** between two collinear hull points is dropped; the hull stays strictly
 ** convex and anticlockwise throughout.
@@ -78,29 +78,6 @@ static geom_point sampler_disc(sampler_rng *g) {
   }
 }
 
-/* geom_orient's floating-point filter, inlined: most hull tests are
-** decided here without a call (geom_orient keeps a large stack frame for
-** its exact fallback, which made the calls cost two thirds of the
-** sampler's time).  det = (bx-ax)(cy-ay) - (by-ay)(cx-ax); with l, r the
-** two products, |fl(det) - det| <= (3 + 16 eps) eps (|l| + |r|), eps =
-** 2^-53 (Shewchuk's ccwerrboundA), so a larger |fl(det)| has the true sign.
-** The bound assumes no underflow, hence the same guard as geom_orient:
-** differences below 2^-200 (other than 0) go to geom_orient, as do all
-** uncertain cases.  The answer is always geom_orient's exact sign. */
-static inline int sampler_orient(geom_point a, geom_point b, geom_point c) {
-  double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
-  double l = bax * cay, r = bay * cax;
-  double det = l - r;
-  double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (fabs(l) + fabs(r));
-  int tiny = (bax != 0 && fabs(bax) < 0x1p-200) || (bay != 0 && fabs(bay) < 0x1p-200)
-          || (cax != 0 && fabs(cax) < 0x1p-200) || (cay != 0 && fabs(cay) < 0x1p-200);
-  if (!tiny) {
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-  }
-  return geom_orient(a, b, c);
-}
-
 static int sampler_lexless(geom_point a, geom_point b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
@@ -117,7 +94,7 @@ static int sampler_hull_small(geom_point *h, int n, geom_point p) {
     h[1] = p;
     return 2;
   }
-  int o = sampler_orient(h[0], h[1], p);
+  int o = geom_orient(h[0], h[1], p);
   if (o > 0) {
     h[2] = p;
     return 3;
@@ -153,7 +130,7 @@ static int sampler_hull_small(geom_point *h, int n, geom_point p) {
 static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
   int side[8], any = 0;   /* n <= 7 */
   for (int k = 0; k < n; k++) {
-    side[k] = sampler_orient(h[k], h[(k + 1) % n], p);
+    side[k] = geom_orient(h[k], h[(k + 1) % n], p);
     if (side[k] < 0) any = 1;
   }
   if (!any) return n;
