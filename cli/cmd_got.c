@@ -13,7 +13,7 @@
 #include "cli/cli.h"
 #include "got/got.h"
 #include "pentagon/sampler.h"
-#include "reports/report_got.h"
+#include "reports/report.h"
 
 #define CMD "got"
 #define CLI_GOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */

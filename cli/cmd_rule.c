@@ -28,7 +28,7 @@
 #include "cli/progress.h"
 #include "fliprules/rule.h"
 #include "pentagon/sampler.h"
-#include "reports/report_flipgraph.h"
+#include "reports/report.h"
 
 #define CLI_RULE_MAX 64
 #define CLI_RULE_CHUNK 1024           /* samples per scheduling unit */

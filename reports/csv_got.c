@@ -12,7 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "reports/report.h"
-#include "reports/report_got.h"
 
 typedef struct report_got_reader {
   geom_point *pts;

@@ -1,8 +1,10 @@
 /*
 ** report.h: what fliplab prints about flip-graph counts: table 3.4 as
 ** text, Markdown or CSV, the CSV reader that `merge` sums shards with, the
-** type-I-against-DT scatter plot (thesis figure 3.9), and the pentagon CSV
-** files that `sample` writes and `classify` reads.
+** type-I-against-DT scatter plot (thesis figure 3.9), the pentagon CSV
+** files that `sample` writes and `classify` reads, one pentagon's directed
+** flip graph as a picture (thesis figure 3.7), and the input and output of
+** `fliplab got` (polygon CSV, triangles as CSV, the SVG of a GOT).
 **
 ** A report works from rows of names and counts, not from rule structs, so a
 ** table merged from CSV shards prints exactly like one computed here.
@@ -17,6 +19,7 @@
 #include <stdio.h>
 #include "classify/flipgraph.h"
 #include "geom/geom.h"
+#include "got/got.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
@@ -112,5 +115,42 @@ int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *cou
 /* Figure 3.9: type-I % (x) against DT % (y) for every rule that produced
 ** no type-V graph; colour by joint, one <title> per point. */
 int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, int nrows);
+
+/* ---- one directed flip graph (reports/svg_flipgraph.c) ---- */
+
+/* The five triangulations of p drawn as small pictures around the cycle
+** T0 - T2 - T4 - T1 - T3, an arrow on each cycle edge pointing to the
+** triangulation the rule prefers (a dashed undirected line for EITHER),
+** sinks in a thick green frame, sources in a dashed red one, the Delaunay
+** triangulation tagged "DT".  caption: lines separated by '\n' (rule, type,
+** coordinates...), drawn below.  0, or -1 on a write error. */
+int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *g,
+                         const char *caption);
+
+/* ---- fliplab got (reports/csv_got.c, reports/svg_got.c) ---- */
+
+/* Read a polygon from CSV: one vertex per row "x,y", an optional header
+** line "x,y".  The polygon is validated (geom_polygon_check) and made
+** anticlockwise; *reversed is 1 when the input was clockwise (it is
+** reversed keeping vertex 0: vertex v is then input vertex (n - v) mod n).
+** Errors are one line, "FILE line N: problem", naming the offending row.
+** 0 on success (free *out), -1 on error. */
+int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *reversed,
+                            char *err, size_t errlen);
+
+/* Triangles as CSV: header "i,j,k,badness", one row per triangle, vertex
+** indices ascending.  map[v] (may be NULL) renumbers vertices, e.g. back
+** to the input's order.  Fields go through report_csv_field (libcsv). */
+int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *map);
+
+typedef struct report_got_svg_opts {
+  int shade;            /* fill triangles by badness (light = good, dark = bad) */
+  const char *title;    /* one line above the picture, or NULL */
+} report_got_svg_opts;
+
+/* The polygon, its triangulation and (small) vertices, scaled to about
+** 1000 px with thin strokes so that n = 1000 stays readable. */
+int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
+                   size_t ntri, const report_got_svg_opts *o);
 
 #endif
