@@ -161,6 +161,41 @@ static void test_graph_from_decisions(void **state) {
   }
 }
 
+/* The spec's definition of locality, applied literally: the single sink
+** T_i is local when, for every vertex v, every diagonal of T_i not incident
+** to v that is a diagonal of Q_v is the one the rule chose for Q_v (a
+** diagonal of T_i that is a side of Q_v is there anyway).  Then inserting v
+** into the LOT of the other four only adds edges at v. */
+static int tfg_sink_is_local(const rule_choice dec[5], int i) {
+  const int diag[2][2] = {{i, (i + 2) % 5}, {i, (i + 3) % 5}};
+  for (int v = 0; v < 5; v++)
+    for (int d = 0; d < 2; d++) {
+      int a = diag[d][0], b = diag[d][1];
+      if (a == v || b == v) continue;
+      int ac = (a == (v + 1) % 5 && b == (v + 3) % 5) || (b == (v + 1) % 5 && a == (v + 3) % 5);
+      int bd = (a == (v + 2) % 5 && b == (v + 4) % 5) || (b == (v + 2) % 5 && a == (v + 4) % 5);
+      if ((ac && dec[v] != RULE_AC) || (bd && dec[v] != RULE_BD)) return 0;
+    }
+  return 1;
+}
+
+/* The spec reduces locality to the source's distance from the sink; check
+** that reduction against the definition on every one-sink decision vector. */
+static void test_type_one_is_local(void **state) {
+  (void)state;
+  int ones = 0;
+  for (int code = 0; code < 32; code++) {
+    rule_choice dec[5];
+    for (int j = 0; j < 5; j++) dec[j] = (code >> j) & 1 ? RULE_BD : RULE_AC;
+    flipgraph g;
+    flipgraph_from_decisions(dec, -1, &g);
+    if (g.nsinks != 1) continue;
+    ones++;
+    assert_int_equal(tfg_sink_is_local(dec, g.sink[0]), g.type == FLIPGRAPH_I);
+  }
+  assert_int_equal(ones, 20);   /* 2^5 - 2 with no sink - 10 with two */
+}
+
 /* Figure 3.3: P_1 = sum of the two triangles' perimeters = the quad's
 ** perimeter + 2 * diagonal, so it picks the shorter diagonal.  Diagonal
 ** lengths: v0v2 = sqrt 40 = 6.32, v0v3 = 5, v1v3 = sqrt 18 = 4.24,
@@ -456,6 +491,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_triangle_indexing),
     cmocka_unit_test(test_graph_from_decisions),
+    cmocka_unit_test(test_type_one_is_local),
     cmocka_unit_test(test_figure_3_3),
     cmocka_unit_test(test_dt_always_type_one),
     cmocka_unit_test(test_fast_path_equals_rule_eval),
