@@ -254,26 +254,32 @@ static void cli_rule_describe(const rule *r) {
 
 /* A type-V pentagon says nothing about systematicity or locality, so the
 ** "no counterexample" claims count only the pentagons of types I-IV. */
+/* "1 pentagon", "2 pentagons". */
+static const char *cli_rule_s(unsigned long long n) {
+  return n == 1 ? "" : "s";
+}
+
 static void cli_rule_verdicts(const rule *r, const flipgraph_counts *c) {
   unsigned long long n = c->samples;
   unsigned long long t2 = c->type[FLIPGRAPH_II], t3 = c->type[FLIPGRAPH_III];
   unsigned long long t4 = c->type[FLIPGRAPH_IV], t5 = c->type[FLIPGRAPH_V];
   unsigned long long decided = n - t5;
   const char *of = t5 ? " of types I-IV" : "";
-  if (t3) printf("  verdict: not systematic: %llu counterexamples (type III, two LOTs)\n", t3);
+  if (t3) printf("  verdict: not systematic: %llu counterexample%s (type III, two LOTs)\n", t3,
+                 cli_rule_s(t3));
   else printf("  verdict: no counterexample to systematicity in %llu pentagons%s (no type III)\n",
               decided, of);
-  if (t2) printf("  verdict: not local: %llu counterexamples (type II)\n", t2);
+  if (t2) printf("  verdict: not local: %llu counterexample%s (type II)\n", t2, cli_rule_s(t2));
   else printf("  verdict: no counterexample to locality in %llu pentagons%s (no type II)\n",
               decided, of);
   if (t4 && r->kind == RULE_TRIANGLE)
     printf("  verdict: BUG: %llu pentagons without a sink (type IV), impossible for a "
            "triangle-based rule (thesis theorem 1)\n", t4);
   else if (t4)
-    printf("  verdict: no LOT exists on %llu pentagons (type IV, no sink)\n", t4);
+    printf("  verdict: no LOT exists on %llu pentagon%s (type IV, no sink)\n", t4, cli_rule_s(t4));
   if (t5)
-    printf("  verdict: returns either on %llu pentagons (type V): ties within tie_eps, which a "
-           "good rule hits with probability zero\n", t5);
+    printf("  verdict: returns either on %llu pentagon%s (type V): ties within tie_eps, which a "
+           "good rule hits with probability zero\n", t5, cli_rule_s(t5));
   if (n > 0 && c->dt == n)
     printf("  verdict: agrees with Delaunay on all %llu pentagons\n", n);
 }
