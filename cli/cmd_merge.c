@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli/cli.h"
+#include "badness/measure.h"
 #include "reports/report.h"
 
 #define CMD "merge"
@@ -18,12 +19,14 @@ static const char cli_merge_usage[] =
   "  --out FILE       write the merged table to FILE (default: stdout)\n"
   "  --format F       csv (default), text or md: the table as table34 prints it\n"
   "                   (the CSV records neither seed nor tie tolerance)\n"
+  "  --columns C      text: at most C measures per block (default: all)\n"
   "  --plot FILE.svg  also draw type-I % against DT % (thesis figure 3.9)\n"
   "A file name '-' reads standard input.\n";
 
 int cli_cmd_merge(int argc, char **argv) {
   const char *outpath = NULL, *plotpath = NULL;
   report_format fmt = REPORT_CSV;
+  uint64_t columns = 0;
   const char **files = calloc((size_t)argc, sizeof *files);
   int nfiles = 0;
   if (files == NULL) return cli_error(CMD, "out of memory");
@@ -42,6 +45,10 @@ int cli_cmd_merge(int argc, char **argv) {
         cli_error(CMD, "--format must be csv, text or md, got '%s'", v);
         goto usage;
       }
+    } else if (strcmp(a, "--columns") == 0) {
+      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_parse_u64(CMD, a, v, 1, MEASURE_MAX, &columns) != 0)
+        goto usage;
     } else if (a[0] == '-' && a[1] != '\0') {
       cli_error(CMD, "unknown option '%s' (try: fliplab merge --help)", a);
       goto usage;
@@ -80,7 +87,7 @@ int cli_cmd_merge(int argc, char **argv) {
   if (out == NULL) goto done;
   char note[64];
   snprintf(note, sizeof note, "merged from %d CSV file%s", nfiles, nfiles > 1 ? "s" : "");
-  report_meta meta = {.samples = acc[0].c.samples, .note = note};
+  report_meta meta = {.samples = acc[0].c.samples, .note = note, .text_columns = (int)columns};
   rc = report_write(out, fmt, &meta, acc, nacc) != 0 ? 1 : 0;
   cli_close_out(out);
   if (rc == 0 && plotpath != NULL) {

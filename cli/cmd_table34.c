@@ -32,6 +32,8 @@ static const char cli_table34_usage[] =
   "  --tie-eps E      tie tolerance of the rules (default 1e-12)\n"
   "  --format F       text (default), md, or csv (counts, one row per rule,\n"
   "                   DT last with empty measure and joint)\n"
+  "  --columns C      text: at most C measures per block, for narrow terminals\n"
+  "                   (default: all in one block, the thesis's layout)\n"
   "  --out FILE       write the table to FILE (default: stdout)\n"
   "  --shard K/N      only samples [floor((K-1)S/N), floor(KS/N)) of the S samples;\n"
   "                   sum the shards' CSVs with `fliplab merge`\n"
@@ -108,7 +110,7 @@ static int cli_table34_shard(const char *s, uint64_t *k, uint64_t *n) {
 }
 
 typedef struct cli_table34_opts {
-  uint64_t samples, seed, threads, shard_k, shard_n;
+  uint64_t samples, seed, threads, shard_k, shard_n, columns;
   double tie_eps;
   report_format format;
   const char *out, *plot, *measures;
@@ -145,6 +147,10 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
         cli_error(CMD, "--format must be text, md or csv, got '%s'", v);
         return -1;
       }
+    } else if (strcmp(a, "--columns") == 0) {
+      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_parse_u64(CMD, a, v, 1, MEASURE_MAX, &o->columns) != 0)
+        return -1;
     } else if (strcmp(a, "--shard") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
           cli_table34_shard(v, &o->shard_k, &o->shard_n) != 0)
@@ -233,7 +239,8 @@ int cli_cmd_table34(int argc, char **argv) {
   }
   report_meta meta = {.samples = count, .has_seed = 1, .seed = o.seed, .has_tie_eps = 1,
                       .tie_eps = o.tie_eps, .shard_k = o.shard_k, .shard_n = o.shard_n,
-                      .shard_first = first, .shard_total = o.samples};
+                      .shard_first = first, .shard_total = o.samples,
+                      .text_columns = (int)o.columns};
   uint64_t iv = report_type_iv(rows, nrules);
   if (iv > 0)
     fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "

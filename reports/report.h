@@ -42,6 +42,7 @@ typedef struct report_meta {
   uint64_t shard_first, shard_total;  /* sample range of the shard */
   const char *sampler;    /* NULL: "iteration method, unit disc" */
   const char *note;       /* extra header line, or NULL */
+  int text_columns;       /* text: at most this many measures per block; 0 = all (thesis layout) */
 } report_meta;
 
 typedef enum report_format { REPORT_TEXT, REPORT_MD, REPORT_CSV } report_format;
@@ -58,7 +59,8 @@ int report_write(FILE *f, report_format fmt, const report_meta *m,
 
 /* Table 3.4's layout: per joint a block DT / I / II / III over the measures
 ** (columns in order of first appearance), then the type-V and type-IV
-** lines.  Text splits more than `maxcols` columns into groups (<= 0: 10). */
+** lines.  Text splits more than `maxcols` columns into balanced groups;
+** maxcols <= 0 keeps them all in one block, as the thesis prints them. */
 int report_table_text(FILE *f, const report_meta *m, const report_row *rows,
                       int nrows, int maxcols);
 int report_table_md(FILE *f, const report_meta *m, const report_row *rows, int nrows);

@@ -262,7 +262,7 @@ int report_table_text(FILE *f, const report_meta *m, const report_row *rows,
     report_layout_free(&L);
     return -1;
   }
-  if (maxcols <= 0) maxcols = 10;
+  if (maxcols <= 0 || maxcols > L.ncols) maxcols = L.ncols;
   fprintf(f, "Table 3.4: %% of flip graphs of each type\n");
   report_header_lines(f, m, 0);
   /* Balanced groups: 20 columns -> 10 + 10, 23 -> 8 + 8 + 7. */
@@ -333,5 +333,5 @@ int report_write(FILE *f, report_format fmt, const report_meta *m,
   case REPORT_MD: return report_table_md(f, m, rows, nrows);
   case REPORT_TEXT: break;
   }
-  return report_table_text(f, m, rows, nrows, 10);
+  return report_table_text(f, m, rows, nrows, m->text_columns);
 }

@@ -206,12 +206,18 @@ static void test_text_md(void **state) {
       snprintf(key, sizeof key, md ? "`%s`" : " %s", measure_get(measure_table34[i])->name);
       if (strstr(tt_out, key) == NULL) fail_msg("measure %s missing", key);
     }
-    for (int j = 0; j < 6; j++)
-      assert_int_equal(tt_count(tt_out, joints[j]), md ? 1 : 2);   /* text: 2 column groups */
+    /* The thesis's layout: one block per joint, all 20 measures side by side. */
+    for (int j = 0; j < 6; j++) assert_int_equal(tt_count(tt_out, joints[j]), 1);
+    assert_null(strstr(tt_out, "Measures 1-"));
     assert_non_null(strstr(tt_out, "Type V"));
     assert_non_null(strstr(tt_out, "-A_1"));
     assert_non_null(strstr(tt_out, "Type IV (no sink): none"));
   }
+  /* --columns 10 splits the text into two groups of ten measures. */
+  assert_int_equal(TT_RUN("table34 --samples 400 --seed 2 --columns 10"), 0);
+  for (int j = 0; j < 6; j++) assert_int_equal(tt_count(tt_out, joints[j]), 2);
+  assert_non_null(strstr(tt_out, "Measures 1-10 of 20"));
+  assert_non_null(strstr(tt_out, "Measures 11-20 of 20"));
 }
 
 /* --measures: a list, and "all" (every registered measure). */
@@ -283,7 +289,7 @@ static void test_usage_errors(void **state) {
     "table34 --samples 1.5", "table34 --threads 0", "table34 --threads 1025",
     "table34 --shard 5/4", "table34 --shard 0/4", "table34 --shard 2", "table34 --shard a/b",
     "table34 --format xml", "table34 --tie-eps nan", "table34 --tie-eps -1",
-    "table34 --bogus", "table34 --seed", "table34 --measures ,", "merge",
+    "table34 --bogus", "table34 --columns 0", "table34 --seed", "table34 --measures ,", "merge",
     "merge --bogus x.csv", "merge /nonexistent/x.csv", "sample --count 0", "sample --what",
     "classify", "classify --input /nonexistent.csv", "classify --rule nosuch --input x",
   };
