@@ -99,12 +99,10 @@ static int flipgraph_code(const rule_choice dec[5]) {
 
 /* ---- DT and preparation ------------------------------------------------ */
 
-/* DT on Q_j exactly: D strictly outside circle ABC -> AC, inside -> BD. */
+/* DT on every Q_j (exact). */
 static int flipgraph_dt_decisions(const geom_point v[5], rule_choice dec[5]) {
-  for (int j = 0; j < 5; j++) {
-    int s = geom_incircle(v[(j + 1) % 5], v[(j + 2) % 5], v[(j + 3) % 5], v[(j + 4) % 5]);
-    dec[j] = s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
-  }
+  for (int j = 0; j < 5; j++)
+    dec[j] = rule_delaunay_eval(v[(j + 1) % 5], v[(j + 2) % 5], v[(j + 3) % 5], v[(j + 4) % 5]);
   return flipgraph_code(dec);
 }
 

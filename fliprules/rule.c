@@ -11,10 +11,14 @@
 
 /* DT: AC when D is strictly outside the circumcircle of ABC, BD when
 ** strictly inside, EITHER when the four points are cocircular (exactly). */
+rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d) {
+  int s = geom_incircle(a, b, c, d);
+  return s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
+}
+
 static rule_choice rule_dt(const geom_point q[4], void *ctx) {
   (void)ctx;
-  int s = geom_incircle(q[0], q[1], q[2], q[3]);
-  return s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
+  return rule_delaunay_eval(q[0], q[1], q[2], q[3]);
 }
 
 static rule_quad rule_quads[RULE_QUAD_MAX] = {

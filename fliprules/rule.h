@@ -75,6 +75,9 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
                            const geom_tri *t_abd, const geom_tri *t_bcd,
                            double tie_eps, double *ac, double *bd);
 
+/* DT on ABCD directly: exact, so no canonical rotation is needed. */
+rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d);
+
 const char *rule_choice_str(rule_choice c);   /* "AC", "BD", "either" */
 
 /* Every triangle-based rule name "m_j" for the given measures, in table order
