@@ -50,6 +50,22 @@ int cli_userdefs_take(int *argc, char **argv);
 ** sign), print it as cmd's one-line error and return 1; else 0. */
 int cli_userdefs_failed(const char *cmd);
 
+/* A progress bar on stderr for long runs.  It appears only when stderr is
+** a terminal and the run has lasted about a second, so quick runs, pipes,
+** logs and tests never see it (cli/progress.c). */
+typedef struct cli_progress {
+  int enabled;          /* stderr is a terminal */
+  int shown;            /* the bar has been drawn (needs erasing) */
+  double t0;            /* start, seconds */
+  double last;          /* last redraw, seconds */
+  const char *label;
+} cli_progress;
+
+void cli_progress_start(cli_progress *p, const char *label);
+/* A flipgraph_progress_fn: ctx is the cli_progress. */
+void cli_progress_update(uint64_t done, uint64_t total, void *ctx);
+void cli_progress_finish(cli_progress *p);
+
 /* Open FILE for writing, "-" meaning stdout; NULL after printing an error.
 ** cli_close_out closes it (flushes stdout); -1 when a write failed. */
 FILE *cli_open_out(const char *cmd, const char *path);

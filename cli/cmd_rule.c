@@ -25,7 +25,6 @@
 #include "badness/measure.h"
 #include "classify/flipgraph.h"
 #include "cli/cli.h"
-#include "cli/progress.h"
 #include "fliprules/rule.h"
 #include "pentagon/sampler.h"
 #include "reports/report.h"

@@ -9,7 +9,6 @@
 #include "badness/measure.h"
 #include "classify/flipgraph.h"
 #include "cli/cli.h"
-#include "cli/progress.h"
 #include "fliprules/rule.h"
 #include "joints/joint.h"
 #include "reports/report.h"

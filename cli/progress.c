@@ -1,12 +1,12 @@
 /*
-** progress.c: the stderr progress bar (see progress.h).  Redrawn at most
+** progress.c: the stderr progress bar (see cli.h).  Redrawn at most
 ** ten times a second with a carriage return; erased when the run ends.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <time.h>
 #include <unistd.h>
-#include "cli/progress.h"
+#include "cli/cli.h"
 
 #define CLI_PROGRESS_DELAY 1.0    /* seconds before the bar appears */
 #define CLI_PROGRESS_WIDTH 30
