@@ -97,9 +97,17 @@ static _Thread_local formula_tls_entry formula_tls[FORMULA_MAX];
 /* A fresh parser bound to a fresh variable array, expression set.  Called
 ** with formula_lock held: muParser's constructors are not documented as
 ** safe to run concurrently. */
+/* Slots are written on every evaluation by their own thread: each gets
+** whole cache lines, or two threads' variable arrays could share a line and
+** every evaluation would bounce it between the cores (false sharing, which
+** cancelled the second thread entirely before this). */
+#define FORMULA_LINE 64
+
 static formula_slot *formula_slot_new(const char *expr) {
-  formula_slot *s = calloc(1, sizeof *s);
+  size_t size = (sizeof(formula_slot) + FORMULA_LINE - 1) / FORMULA_LINE * FORMULA_LINE;
+  formula_slot *s = aligned_alloc(FORMULA_LINE, size);
   if (s == NULL) return NULL;
+  memset(s, 0, size);
   s->parser = mupCreate(muBASETYPE_FLOAT);
   if (s->parser == NULL) {
     free(s);

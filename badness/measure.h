@@ -19,6 +19,7 @@ typedef enum measure_sign {
   MEASURE_NONNEG = 1     /* values >= 0 */
 } measure_sign;
 
+/* Called from several threads at once (table engine, GOT): must be reentrant. */
 typedef double (*measure_fn)(const geom_tri *t, void *ctx);
 
 typedef struct measure {

@@ -24,8 +24,8 @@
 ** instead of recomputing a geom_tri; they agree with measure_eval on
 ** geom_tri_make to within rounding (a few ulps for lengths, products and
 ** quotients; about 1e-15 rad absolute for angles, which are differences of
-** edge directions).  User-defined measures fall back to measure_eval (one
-** thread: their context may keep state).  Because of those last-bit
+** edge directions).  User-defined measures fall back to measure_eval (slower;
+** measure functions are reentrant by contract, so still multithreaded).  Because of those last-bit
 ** differences the optimal value can differ from a recomputation in the last
 ** bits; compare totals with a relative tolerance.
 */

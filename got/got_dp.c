@@ -333,7 +333,6 @@ int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *o
   if (got_check_memory(n, r->measure, err, errlen) != 0) return -1;
   const measure *m = measure_get(r->measure);
   int threads = opt && opt->threads > 0 ? opt->threads : omp_get_max_threads();
-  if (!got_measure_has_kernel(r->measure)) threads = 1;   /* user ctx may keep state */
   double t0 = omp_get_wtime();
 
   got_dp dp = {0};

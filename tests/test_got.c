@@ -473,7 +473,8 @@ static void test_limits(void **state) {
 }
 
 /* A user measure (no kernel) goes through measure_eval: same optimum as the
-** built-in it copies. */
+** built-in it copies, on several threads (measure functions are reentrant
+** by contract), bit-identical to one thread. */
 static double tgot_user_p(const geom_tri *t, void *ctx) {
   (void)ctx;
   return t->a + t->b + t->c;
@@ -488,12 +489,22 @@ static void test_user_measure_fallback(void **state) {
   geom_point p[60];
   tgot_polygon(4, 60, p);
   rule ru = tgot_rule(id, JOINT_SUM), rb = tgot_rule(MEASURE_P, JOINT_SUM);
-  got_result a, b;
+  got_result a, a1, b;
   tgot_solve(p, 60, &ru, 2, &a);
+  tgot_solve(p, 60, &ru, 1, &a1);
   tgot_solve(p, 60, &rb, 2, &b);
   assert_true(tgot_close(a.total, b.total, b.total));
-  assert_int_equal(a.threads, 1);
+  assert_int_equal(a.threads, 2);
+  assert_memory_equal(&a.key, &a1.key, sizeof a.key);
+  assert_int_equal(a.ntri, a1.ntri);
+  for (size_t q = 0; q < a.ntri; q++) {   /* field by field: the struct has padding */
+    assert_int_equal(a.tri[q].i, a1.tri[q].i);
+    assert_int_equal(a.tri[q].k, a1.tri[q].k);
+    assert_int_equal(a.tri[q].j, a1.tri[q].j);
+    assert_memory_equal(&a.tri[q].badness, &a1.tri[q].badness, sizeof(double));
+  }
   got_result_free(&a);
+  got_result_free(&a1);
   got_result_free(&b);
   measure_unregister_user();
 }
