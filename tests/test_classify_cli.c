@@ -240,15 +240,6 @@ static void tc_write_permuted(const char *path, const int perm[5], int header) {
   fclose(f);
 }
 
-static char *tc_slurp(const char *path) {
-  FILE *f = fopen(path, "rb");
-  char *s = malloc(64u << 20);
-  size_t n = fread(s, 1, (64u << 20) - 1, f);
-  s[n] = '\0';
-  fclose(f);
-  return s;
-}
-
 /* Clockwise p1 p5 p4 p3 p2 is reversed back to p1..p5: identical output.
 ** Fully reversed p5..p1 becomes p5 p1 p2 p3 p4, a rotation: the same types
 ** and dt, sinks shifted by one, decisions rotated by one. */
@@ -260,7 +251,7 @@ static void test_orientation(void **state) {
   static const int cw[5] = {0, 4, 3, 2, 1}, rev[5] = {4, 3, 2, 1, 0};
   tc_write_permuted(in, cw, 0);   /* and no header line */
   assert_int_equal(TC_RUN("classify --input %s --out %s", in, out), 0);
-  char *a = tc_slurp(tc_cls), *b = tc_slurp(out);
+  char *a = testutil_read_file(tc_cls), *b = testutil_read_file(out);
   assert_string_equal(a, b);
   free(a);
   free(b);

@@ -36,13 +36,6 @@ static char tcli_out[TCLI_CAP], tcli_err[TCLI_CAP];
 /* Run `fliplab printf(FMT, ...)` into tcli_out and tcli_err. */
 #define TCLI_RUN(...) testutil_runf(tcli_out, sizeof tcli_out, tcli_err, sizeof tcli_err, __VA_ARGS__)
 
-static void tcli_write(const char *path, const char *text) {
-  FILE *f = fopen(path, "w");
-  assert_non_null(f);
-  fputs(text, f);
-  fclose(f);
-}
-
 static double tcli_total(const char *out) {
   const char *t = strstr(out, "total badness: ");
   assert_non_null(t);
@@ -139,10 +132,10 @@ static void test_polygon_file_orientation(void **state) {
   testutil_tmppath(cw, sizeof cw, "cw.csv");
   size_t u = (size_t)snprintf(text, sizeof text, "x,y\n");
   for (int q = 0; q < 7; q++) u += (size_t)snprintf(text + u, sizeof text - u, "%g,%g\n", pt[q][0], pt[q][1]);
-  tcli_write(ccw, text);
+  testutil_write_file(ccw, text);
   u = 0;
   for (int q = 6; q >= 0; q--) u += (size_t)snprintf(text + u, sizeof text - u, "%g,%g\n", pt[q][0], pt[q][1]);
-  tcli_write(cw, text);
+  testutil_write_file(cw, text);
   const char *rules[] = {"P_1", "R_inf", "-alpha_inf", "sigma_2", "abc_0"};
   for (size_t r = 0; r < 5; r++) {
     assert_int_equal(TCLI_RUN("got --rule %s --polygon %s", rules[r], ccw), 0);
@@ -176,10 +169,10 @@ static void test_runner_up(void **state) {
   (void)state;
   char path[512];
   testutil_tmppath(path, sizeof path, "square.csv");
-  tcli_write(path, "0,0\n1,0\n1,1\n0,1\n");
+  testutil_write_file(path, "0,0\n1,0\n1,1\n0,1\n");
   assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "runner-up: tie"));
-  tcli_write(path, "0,0\n3,0\n3,1\n0,2\n");
+  testutil_write_file(path, "0,0\n3,0\n3,1\n0,2\n");
   assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "the optimum is unique"));
   remove(path);
@@ -205,18 +198,15 @@ static void test_svg(void **state) {
   char path[512];
   testutil_tmppath(path, sizeof path, "got.svg");
   assert_int_equal(TCLI_RUN("got --rule P_1 --random 200 --svg %s --shade", path), 0);
-  FILE *f = fopen(path, "rb");
-  assert_non_null(f);
-  static char buf[1 << 20];
-  size_t n = fread(buf, 1, sizeof buf - 1, f);
-  buf[n] = '\0';
-  fclose(f);
+  char *buf = testutil_read_file(path);
+  assert_non_null(buf);
   remove(path);
   assert_true(strncmp(buf, "<svg", 4) == 0);
   assert_non_null(strstr(buf, "</svg>"));
   size_t dots = 0, tris = 0;
   for (char *s = buf; (s = strstr(s, "<circle")) != NULL; s++) dots++;
   for (char *s = buf; (s = strstr(s, "<polygon fill=\"#")) != NULL; s++) tris++;
+  free(buf);
   assert_int_equal(dots, 200);
   assert_int_equal(tris, 198);
 }
@@ -236,7 +226,7 @@ static void test_bad_input(void **state) {
   char path[512];
   testutil_tmppath(path, sizeof path, "bad.csv");
   for (size_t q = 0; q < sizeof bad / sizeof bad[0]; q++) {
-    tcli_write(path, bad[q].text);
+    testutil_write_file(path, bad[q].text);
     assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 2);
     if (!testutil_one_line(tcli_err) || strstr(tcli_err, bad[q].want) == NULL)
       fail_msg("case %zu: stderr '%s' (want '%s')", q, tcli_err, bad[q].want);

@@ -32,19 +32,6 @@ static char *trep_slurp(FILE *f) {
   return s;
 }
 
-static size_t trep_count(const char *hay, const char *needle) {
-  size_t n = 0;
-  for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
-  return n;
-}
-
-static void trep_write_file(const char *path, const char *text) {
-  FILE *f = fopen(path, "wb");
-  assert_non_null(f);
-  fputs(text, f);
-  fclose(f);
-}
-
 /* A consistent random row: the five types sum to samples, dt <= type I. */
 static void trep_random_row(testutil_rng *g, report_row *r, const char *m, const char *j,
                             uint64_t samples) {
@@ -193,7 +180,7 @@ static void test_csv_counts_errors(void **state) {
     const char *b = cases[i].body;
     if (strncmp(b, "HDR", 3) == 0) snprintf(body, sizeof body, "%s%s", hdr, b + 3);
     else snprintf(body, sizeof body, "%s", b);
-    trep_write_file(path, body);
+    testutil_write_file(path, body);
     report_row *rows = NULL;
     int n = 0;
     err[0] = '\0';
@@ -283,10 +270,10 @@ static void test_text_table(void **state) {
   for (int j = 0; j < 6; j++) {
     char label[16];
     snprintf(label, sizeof label, "l_%s ", trep_joints[j]);
-    assert_int_equal(trep_count(s, label), 1);
+    assert_int_equal(testutil_count(s, label), 1);
   }
-  assert_true(trep_count(s, " 24.68") >= 18);   /* 1234 / 5000 */
-  assert_true(trep_count(s, " 12.34") >= 18);   /* 617 / 5000 */
+  assert_true(testutil_count(s, " 24.68") >= 18);   /* 1234 / 5000 */
+  assert_true(testutil_count(s, " 12.34") >= 18);   /* 617 / 5000 */
   assert_non_null(strstr(s, "-r2/A"));
   assert_non_null(strstr(s, "b/(c-a)"));
   const char *v = strstr(s, "Type V");
@@ -333,7 +320,7 @@ static void test_text_groups(void **state) {
   assert_non_null(strstr(s, "Measures 1-8 of 23"));
   assert_non_null(strstr(s, "Measures 9-16 of 23"));
   assert_non_null(strstr(s, "Measures 17-23 of 23"));
-  assert_int_equal(trep_count(s, "l_-inf "), 3);
+  assert_int_equal(testutil_count(s, "l_-inf "), 3);
   free(s);
 }
 
@@ -351,7 +338,7 @@ static void test_md_table(void **state) {
   size_t bars = 0;
   for (char *line = strtok(s, "\n"); line; line = strtok(NULL, "\n")) {
     if (line[0] != '|') continue;
-    size_t b = trep_count(line, "|") - trep_count(line, "\\|");
+    size_t b = testutil_count(line, "|") - testutil_count(line, "\\|");
     if (lines == 0) bars = b;
     assert_int_equal(b, bars);
     lines++;
@@ -384,7 +371,7 @@ static void test_scatter(void **state) {
   assert_non_null(strstr(s, "<svg"));
   assert_non_null(strstr(s, "</svg>"));
   /* Five distinct type-I values, all with DT 800: five data circles. */
-  assert_int_equal(trep_count(s, "fill-opacity=\"0.8\""), 5);
+  assert_int_equal(testutil_count(s, "fill-opacity=\"0.8\""), 5);
   for (int i = 0; i < n; i++) {
     if (i == 3 || i == 7) continue;
     char key[128];
@@ -397,7 +384,7 @@ static void test_scatter(void **state) {
   snprintf(key, sizeof key, "\n%s: type I", rows[3].rule);
   assert_null(strstr(s, key));
   assert_non_null(strstr(s, "a&lt;b&amp;c: type I"));
-  assert_int_equal(trep_count(s, "<title>"), trep_count(s, "</title>"));
+  assert_int_equal(testutil_count(s, "<title>"), testutil_count(s, "</title>"));
   free(s);
 }
 

@@ -206,17 +206,14 @@ static void test_svg(void **state) {
   assert_non_null(s);
   char path[1024];
   assert_int_equal(sscanf(s, "svg: %1023s", path), 1);
-  FILE *f = fopen(path, "r");
-  assert_non_null(f);
-  static char svg[1 << 16];
-  size_t n = fread(svg, 1, sizeof svg - 1, f);
-  svg[n] = '\0';
-  fclose(f);
+  char *svg = testutil_read_file(path);
+  assert_non_null(svg);
   assert_non_null(strstr(svg, "<svg"));
   assert_non_null(strstr(svg, "</svg>"));
   assert_non_null(strstr(svg, ">sink<"));
   assert_non_null(strstr(svg, "marker-end"));
   assert_non_null(strstr(svg, "rule g_inf"));
+  free(svg);
   snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
   assert_int_equal(system(cmd), 0);
 }

@@ -32,16 +32,6 @@ static char tt_out[TT_CAP], tt_err[TT_CAP];
 /* Run `fliplab printf(FMT, ...)` into tt_out and tt_err. */
 #define TT_RUN(...) testutil_runf(tt_out, TT_CAP, tt_err, TT_CAP, __VA_ARGS__)
 
-static char *tt_slurp(const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (f == NULL) return NULL;
-  char *s = malloc(TT_CAP);
-  size_t n = fread(s, 1, TT_CAP - 1, f);
-  s[n] = '\0';
-  fclose(f);
-  return s;
-}
-
 static void tt_path(char *buf, size_t len, const char *name) {
   assert_int_equal(system("mkdir -p " FLIPLAB_BUILD_DIR "/testtmp"), 0);
   testutil_tmppath(buf, len, name);
@@ -134,7 +124,7 @@ static void test_shards_merge(void **state) {
     tt_path(shard[k], sizeof shard[k], name);
     assert_int_equal(TT_RUN("table34 --samples 2003 --seed 9 --format csv --shard %d/4 --out %s",
                             k + 1, shard[k]), 0);
-    char *s = tt_slurp(shard[k]);
+    char *s = testutil_read_file(shard[k]);
     report_row *rows = NULL;
     tt_read_counts(s, &rows);
     /* floor(k S / 4) boundaries: 500, 501, 501, 501 */
@@ -147,7 +137,7 @@ static void test_shards_merge(void **state) {
   assert_int_equal(total, 2003);
   assert_int_equal(TT_RUN("merge %s %s %s %s --out %s", shard[0], shard[1], shard[2], shard[3],
                           merged), 0);
-  char *a = tt_slurp(full), *b = tt_slurp(merged);
+  char *a = testutil_read_file(full), *b = testutil_read_file(merged);
   assert_non_null(a);
   assert_non_null(b);
   assert_string_equal(a, b);
@@ -183,12 +173,6 @@ static void test_shards_merge(void **state) {
   unlink(other);
 }
 
-static size_t tt_count(const char *hay, const char *needle) {
-  size_t n = 0;
-  for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
-  return n;
-}
-
 /* Text and Markdown: the header facts, all 20 measures, six joint blocks. */
 static void test_text_md(void **state) {
   (void)state;
@@ -207,7 +191,7 @@ static void test_text_md(void **state) {
       if (strstr(tt_out, key) == NULL) fail_msg("measure %s missing", key);
     }
     /* The thesis's layout: one block per joint, all 20 measures side by side. */
-    for (int j = 0; j < 6; j++) assert_int_equal(tt_count(tt_out, joints[j]), 1);
+    for (int j = 0; j < 6; j++) assert_int_equal(testutil_count(tt_out, joints[j]), 1);
     assert_null(strstr(tt_out, "Measures 1-"));
     assert_non_null(strstr(tt_out, "Type V"));
     assert_non_null(strstr(tt_out, "-A_1"));
@@ -215,7 +199,7 @@ static void test_text_md(void **state) {
   }
   /* --columns 10 splits the text into two groups of ten measures. */
   assert_int_equal(TT_RUN("table34 --samples 400 --seed 2 --columns 10"), 0);
-  for (int j = 0; j < 6; j++) assert_int_equal(tt_count(tt_out, joints[j]), 2);
+  for (int j = 0; j < 6; j++) assert_int_equal(testutil_count(tt_out, joints[j]), 2);
   assert_non_null(strstr(tt_out, "Measures 1-10 of 20"));
   assert_non_null(strstr(tt_out, "Measures 11-20 of 20"));
 }
@@ -246,7 +230,7 @@ static void test_plot(void **state) {
   assert_int_equal(TT_RUN("table34 --samples 300 --format csv --plot %s", svg), 0);
   report_row *rows = NULL;
   int n = tt_read_counts(tt_out, &rows);
-  char *s = tt_slurp(svg);
+  char *s = testutil_read_file(svg);
   assert_non_null(s);
   assert_non_null(strstr(s, "<svg"));
   assert_non_null(strstr(s, "</svg>"));

@@ -108,3 +108,30 @@ int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char
   va_end(ap);
   return testutil_run(args, out, outcap, err, errcap);
 }
+
+char *testutil_read_file(const char *path) {
+  FILE *f = fopen(path, "rb");
+  if (f == NULL) return NULL;
+  size_t cap = 1 << 16, n = 0, got;
+  char *s = malloc(cap);
+  while (s != NULL && (got = fread(s + n, 1, cap - n - 1, f)) > 0) {
+    n += got;
+    if (n + 1 == cap) s = realloc(s, cap *= 2);
+  }
+  fclose(f);
+  if (s != NULL) s[n] = '\0';
+  return s;
+}
+
+void testutil_write_file(const char *path, const char *text) {
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  fputs(text, f);
+  assert_int_equal(fclose(f), 0);
+}
+
+size_t testutil_count(const char *hay, const char *needle) {
+  size_t n = 0;
+  for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
+  return n;
+}

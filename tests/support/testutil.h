@@ -48,6 +48,14 @@ int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char
 #endif
   ;
 
+/* The whole file as a NUL-terminated malloc'ed string (NULL if it cannot
+** be read); write text to a file, failing the test if it cannot. */
+char *testutil_read_file(const char *path);
+void testutil_write_file(const char *path, const char *text);
+
+/* Non-overlapping occurrences of needle in hay. */
+size_t testutil_count(const char *hay, const char *needle);
+
 /* A fresh path in the build tree for a test's files. */
 void testutil_tmppath(char *buf, size_t len, const char *name);
 
