@@ -23,8 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <muParserDLL.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
+#include "formula.h"
+#include "measure.h"
 
 /* ---- variables: one table drives binding, filling and messages ---------- */
 

@@ -18,7 +18,7 @@
 #define FLIPLAB_FORMULA_H
 
 #include <stddef.h>
-#include "geom/geom.h"
+#include "geom.h"
 
 #define FORMULA_MAX 32          /* formulas per process */
 #define FORMULA_NAME_MAX 32     /* longest NAME, terminator included */

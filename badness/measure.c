@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "badness/measure.h"
+#include "measure.h"
 
 /* The built-in measures, once: id, name, symbol, sign, description and the
 ** value as an expression of the triangle t.  The list generates both the

@@ -10,7 +10,7 @@
 #ifndef FLIPLAB_MEASURE_H
 #define FLIPLAB_MEASURE_H
 
-#include "geom/geom.h"
+#include "geom.h"
 
 /* Which values a measure takes; it decides the joints' sign convention. */
 typedef enum measure_sign {

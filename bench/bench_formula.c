@@ -15,11 +15,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/rule.h"
-#include "pentagon/sampler.h"
+#include "formula.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "rule.h"
+#include "sampler.h"
 
 #define BENCH_RUNS 5
 

@@ -18,9 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#include "badness/measure.h"
-#include "got/got.h"
-#include "pentagon/sampler.h"
+#include "measure.h"
+#include "got.h"
+#include "sampler.h"
 
 #define BENCH_PI3 1.04719755119659774615
 

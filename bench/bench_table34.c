@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <time.h>
 #include <omp.h>
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
+#include "measure.h"
+#include "flipgraph.h"
 
 #define BENCH_RUNS 5
 

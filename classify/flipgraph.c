@@ -24,9 +24,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#include "classify/flipgraph.h"
-#include "badness/measure.h"
-#include "pentagon/sampler.h"
+#include "flipgraph.h"
+#include "measure.h"
+#include "sampler.h"
 
 #define FLIPGRAPH_NCODES 243
 #define FLIPGRAPH_CHUNK 1024      /* pentagons per scheduling unit of tally */

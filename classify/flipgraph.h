@@ -12,8 +12,8 @@
 #define FLIPLAB_FLIPGRAPH_H
 
 #include <stdint.h>
-#include "geom/geom.h"
-#include "fliprules/rule.h"
+#include "geom.h"
+#include "rule.h"
 
 typedef enum flipgraph_type {
   FLIPGRAPH_I, FLIPGRAPH_II, FLIPGRAPH_III, FLIPGRAPH_IV, FLIPGRAPH_V,

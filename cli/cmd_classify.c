@@ -18,12 +18,12 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "cli/cli.h"
-#include "fliprules/rule.h"
-#include "joints/joint.h"
-#include "reports/report.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "cli.h"
+#include "rule.h"
+#include "joint.h"
+#include "report.h"
 
 #define CMD "classify"
 #define CLI_MAX_RULES 1024

@@ -4,8 +4,8 @@
 */
 #include <math.h>
 #include <string.h>
-#include "cli/cli.h"
-#include "fliprules/rule.h"
+#include "cli.h"
+#include "rule.h"
 
 static int cli_flip_usage(void) {
   printf("usage: fliplab flip RULE x1 y1 x2 y2 x3 y3 x4 y4 [--tie-eps E]\n\n"

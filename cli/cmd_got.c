@@ -9,11 +9,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "cli/cli.h"
-#include "got/got.h"
-#include "pentagon/sampler.h"
-#include "reports/report.h"
+#include "measure.h"
+#include "cli.h"
+#include "got.h"
+#include "sampler.h"
+#include "report.h"
 
 #define CMD "got"
 #define CLI_GOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */

@@ -2,10 +2,10 @@
 ** cmd_list.c: `fliplab list`: the measures, joints and quadrilateral rules.
 */
 #include <string.h>
-#include "badness/measure.h"
-#include "cli/cli.h"
-#include "fliprules/rule.h"
-#include "joints/joint.h"
+#include "measure.h"
+#include "cli.h"
+#include "rule.h"
+#include "joint.h"
 
 static const char *cli_list_sign(measure_sign s) {
   return s == MEASURE_NONNEG ? ">= 0" : s == MEASURE_NONPOS ? "<= 0" : "any";

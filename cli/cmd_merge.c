@@ -6,9 +6,9 @@
 */
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli.h"
-#include "badness/measure.h"
-#include "reports/report.h"
+#include "cli.h"
+#include "measure.h"
+#include "report.h"
 
 #define CMD "merge"
 

@@ -21,13 +21,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "cli/cli.h"
-#include "fliprules/rule.h"
-#include "pentagon/sampler.h"
-#include "reports/report.h"
+#include "formula.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "cli.h"
+#include "rule.h"
+#include "sampler.h"
+#include "report.h"
 
 #define CLI_RULE_MAX 64
 #define CLI_RULE_CHUNK 1024           /* samples per scheduling unit */

@@ -5,9 +5,9 @@
 ** for bit.  Pentagon i of seed S is the one table34 classifies as sample i.
 */
 #include <string.h>
-#include "cli/cli.h"
-#include "pentagon/sampler.h"
-#include "reports/report.h"
+#include "cli.h"
+#include "sampler.h"
+#include "report.h"
 
 #define CMD "sample"
 #define CLI_MAX_SAMPLES 1000000000000ull   /* 1e12 */

@@ -6,12 +6,12 @@
 */
 #include <stdlib.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "cli/cli.h"
-#include "fliprules/rule.h"
-#include "joints/joint.h"
-#include "reports/report.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "cli.h"
+#include "rule.h"
+#include "joint.h"
+#include "report.h"
 
 #define CMD "table34"
 #define CLI_MAX_SAMPLES 1000000000000ull   /* 1e12 */

@@ -3,7 +3,7 @@
 */
 #include <stdio.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "cli.h"
 
 typedef struct cli_command {
   const char *name;

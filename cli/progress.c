@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <time.h>
 #include <unistd.h>
-#include "cli/cli.h"
+#include "cli.h"
 
 #define CLI_PROGRESS_DELAY 1.0    /* seconds before the bar appears */
 #define CLI_PROGRESS_WIDTH 30

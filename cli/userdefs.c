@@ -17,9 +17,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "badness/formula.h"
-#include "cli/cli.h"
-#include "fliprules/plugin_loader.h"
+#include "formula.h"
+#include "cli.h"
+#include "plugin_loader.h"
 
 static void cli_userdefs_atexit(void) {
   char msg[1024];

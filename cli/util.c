@@ -7,7 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "cli.h"
 
 int cli_error(const char *cmd, const char *fmt, ...) {
   va_list ap;

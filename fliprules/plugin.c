@@ -14,11 +14,11 @@
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
-#include "fliprules/plugin.h"
-#include "fliprules/plugin_loader.h"
-#include "fliprules/rule.h"
+#include "formula.h"
+#include "measure.h"
+#include "plugin.h"
+#include "plugin_loader.h"
+#include "rule.h"
 
 #define PLUGIN_MAX 16
 #define PLUGIN_ITEMS_MAX 32     /* measures or rules per plugin */

@@ -4,8 +4,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "fliprules/rule.h"
+#include "measure.h"
+#include "rule.h"
 
 /* ---- the quadrilateral-rule registry ----------------------------------- */
 

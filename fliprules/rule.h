@@ -17,8 +17,8 @@
 #define FLIPLAB_RULE_H
 
 #include <stddef.h>
-#include "geom/geom.h"
-#include "joints/joint.h"
+#include "geom.h"
+#include "joint.h"
 
 typedef enum rule_choice { RULE_AC = 0, RULE_BD = 1, RULE_EITHER = 2 } rule_choice;
 

@@ -3,7 +3,7 @@
 */
 #include <math.h>
 #include <stdlib.h>
-#include "geom/geom.h"
+#include "geom.h"
 
 static int geom_less(geom_point p, geom_point q) {
   return p.x < q.x || (p.x == q.x && p.y < q.y);

@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdatomic.h>
 #include <gmp.h>
-#include "geom/geom.h"
+#include "geom.h"
 
 /* GEOM_EPS, and why tiny differences skip the filter: see geom.h. */
 

@@ -33,9 +33,9 @@
 #define FLIPLAB_GOT_H
 
 #include <stddef.h>
-#include "geom/geom.h"
-#include "joints/joint.h"
-#include "fliprules/rule.h"
+#include "geom.h"
+#include "joint.h"
+#include "rule.h"
 
 /* One triangle of a triangulation: polygon vertex indices i < k < j. */
 typedef struct got_triangle {

@@ -15,7 +15,7 @@
 ** triangulation is unique exactly when no cell has such a tie.
 */
 #include <stdlib.h>
-#include "got/got_internal.h"
+#include "got_internal.h"
 
 int got_delaunay(const geom_point *p, size_t n, got_triangle *out, int *unique) {
   if (n < 3) return -1;

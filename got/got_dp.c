@@ -31,8 +31,8 @@
 #include <string.h>
 #include <unistd.h>
 #include <omp.h>
-#include "badness/measure.h"
-#include "got/got_internal.h"
+#include "measure.h"
+#include "got_internal.h"
 
 #define GOT_TILE 32
 

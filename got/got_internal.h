@@ -4,7 +4,7 @@
 #ifndef FLIPLAB_GOT_INTERNAL_H
 #define FLIPLAB_GOT_INTERNAL_H
 
-#include "got/got.h"
+#include "got.h"
 
 /* On x86-64 Linux with GCC the bulk loops (kernels, keys, log) are also
 ** compiled for AVX-512F and AVX2 and picked at run time (an ifunc): four

@@ -37,8 +37,8 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#include "badness/measure.h"
-#include "got/got_internal.h"
+#include "measure.h"
+#include "got_internal.h"
 
 #define GOT_PI 3.14159265358979323846
 #define GOT_2PI 6.28318530717958647693

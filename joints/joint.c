@@ -9,7 +9,7 @@
 */
 #include <math.h>
 #include <string.h>
-#include "joints/joint.h"
+#include "joint.h"
 
 static double joint_min(double x, double y) { return x < y ? x : y; }
 static double joint_max(double x, double y) { return x > y ? x : y; }

@@ -18,7 +18,7 @@
 ** convex and anticlockwise throughout.
 */
 #include <math.h>
-#include "pentagon/sampler.h"
+#include "sampler.h"
 
 static uint64_t sampler_splitmix(uint64_t *x) {
   uint64_t z = (*x += 0x9E3779B97F4A7C15ull);

@@ -27,7 +27,7 @@
 */
 #include <math.h>
 #include <stdlib.h>
-#include "pentagon/sampler.h"
+#include "sampler.h"
 
 #define SAMPLER_TRIES 100
 #define SAMPLER_2PI 6.28318530717958647693

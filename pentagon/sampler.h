@@ -14,7 +14,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "geom/geom.h"
+#include "geom.h"
 
 /* A small fast generator (the state of one stream). */
 typedef struct sampler_rng { uint64_t s[4]; } sampler_rng;

@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "reports/report.h"
+#include "report.h"
 
 typedef struct report_got_reader {
   geom_point *pts;

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <csv.h>
-#include "reports/report.h"
+#include "report.h"
 
 #define REPORT_CSV_MAXFIELDS 256   /* fields kept per record; more are only counted */
 

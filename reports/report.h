@@ -17,9 +17,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "classify/flipgraph.h"
-#include "geom/geom.h"
-#include "got/got.h"
+#include "flipgraph.h"
+#include "geom.h"
+#include "got.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */

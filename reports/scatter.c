@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "reports/report.h"
+#include "report.h"
 
 /* Okabe-Ito colours, readable by colour-blind eyes; one per joint. */
 static const struct { const char *joint, *label, *colour; } report_palette[] = {

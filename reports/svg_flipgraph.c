@@ -10,7 +10,7 @@
 */
 #include <math.h>
 #include <string.h>
-#include "reports/report.h"
+#include "report.h"
 
 #define RFG_W 720.0
 #define RFG_CX 360.0

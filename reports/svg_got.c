@@ -11,7 +11,7 @@
 */
 #include <math.h>
 #include <stdio.h>
-#include "reports/report.h"
+#include "report.h"
 
 #define REPORT_GOT_SIZE 1000.0
 #define REPORT_GOT_MARGIN 12.0

@@ -7,9 +7,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "joints/joint.h"
-#include "reports/report.h"
+#include "measure.h"
+#include "joint.h"
+#include "report.h"
 
 /* The joints in table order with a word for the block label. */
 static const struct { const char *name, *word; } report_joints[] = {

@@ -19,8 +19,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "pentagon/sampler.h"
-#include "reports/report.h"
+#include "sampler.h"
+#include "report.h"
 #include "testutil.h"
 
 #define TC_CAP (1 << 20)

@@ -16,9 +16,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "fliprules/rule.h"
-#include "geom/geom.h"
+#include "measure.h"
+#include "rule.h"
+#include "geom.h"
 #include "testutil.h"
 
 #define TDT_QUADS 100000

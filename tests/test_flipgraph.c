@@ -23,10 +23,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/rule.h"
-#include "pentagon/sampler.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "rule.h"
+#include "sampler.h"
 #include "testutil.h"
 
 #define TFG_EPS RULE_DEFAULT_TIE_EPS

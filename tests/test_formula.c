@@ -16,10 +16,10 @@
 #include <stdio.h>
 #include <string.h>
 #include <omp.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/rule.h"
+#include "formula.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "rule.h"
 #include "testutil.h"
 
 static int teardown(void **state) {

@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "geom/geom.h"
+#include "geom.h"
 #include "testutil.h"
 
 static geom_point tgeom_pt(double x, double y) {

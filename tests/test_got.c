@@ -36,10 +36,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "got/got.h"
-#include "got/got_internal.h"
-#include "pentagon/sampler.h"
+#include "measure.h"
+#include "got.h"
+#include "got_internal.h"
+#include "sampler.h"
 #include "testutil.h"
 
 #define TGOT_REL 1e-9

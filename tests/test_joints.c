@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "joints/joint.h"
+#include "joint.h"
 #include "testutil.h"
 
 #define TJOINT_SAMPLES 200000

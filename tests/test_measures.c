@@ -15,8 +15,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "geom/geom.h"
+#include "measure.h"
+#include "geom.h"
 #include "testutil.h"
 
 /* The measure NAME on triangle t, looked up by its command-line name. */

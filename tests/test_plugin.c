@@ -17,12 +17,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "badness/formula.h"
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/plugin.h"
-#include "fliprules/plugin_loader.h"
-#include "fliprules/rule.h"
+#include "formula.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "plugin.h"
+#include "plugin_loader.h"
+#include "rule.h"
 #include "testutil.h"
 
 #define PLUGIN_DIR FLIPLAB_BUILD_DIR "/plugins/"

@@ -24,8 +24,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "geom/geom.h"
-#include "pentagon/sampler.h"
+#include "geom.h"
+#include "sampler.h"
 #include "testutil.h"
 
 typedef int (*tps_fn)(sampler_rng *g, size_t n, geom_point *out);

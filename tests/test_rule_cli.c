@@ -13,10 +13,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/rule.h"
-#include "pentagon/sampler.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "rule.h"
+#include "sampler.h"
 #include "testutil.h"
 
 #define OUTCAP (1 << 20)

@@ -16,10 +16,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "fliprules/rule.h"
-#include "geom/geom.h"
-#include "joints/joint.h"
+#include "measure.h"
+#include "rule.h"
+#include "geom.h"
+#include "joint.h"
 #include "testutil.h"
 
 #define TRULE_NALL (MEASURE_BUILTIN_COUNT * JOINT_COUNT)

@@ -24,8 +24,8 @@
 #include <string.h>
 #include <omp.h>
 
-#include "geom/geom.h"
-#include "pentagon/sampler.h"
+#include "geom.h"
+#include "sampler.h"
 #include "testutil.h"
 
 /* Exposed by pentagon.c for this test only. */

@@ -18,10 +18,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "badness/measure.h"
-#include "fliprules/rule.h"
-#include "joints/joint.h"
-#include "reports/report.h"
+#include "measure.h"
+#include "rule.h"
+#include "joint.h"
+#include "report.h"
 #include "testutil.h"
 
 #define TT_CAP (1 << 20)

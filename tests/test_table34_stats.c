@@ -35,9 +35,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "badness/measure.h"
-#include "classify/flipgraph.h"
-#include "fliprules/rule.h"
+#include "measure.h"
+#include "flipgraph.h"
+#include "rule.h"
 
 #define TS34_N 20000
 #define TS34_SEED 20260523

@@ -3,7 +3,7 @@
 ** the Delaunay-equivalent rule R_1 must agree with DT on a quadrilateral.
 */
 #include <stdio.h>
-#include "fliprules/rule.h"
+#include <fliplab/rule.h>
 
 int main(void) {
   geom_point q[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1.1}};

@@ -8,7 +8,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "geom/geom.h"
+#include "geom.h"
 
 /* splitmix64: a small seeded generator for test data. */
 typedef struct testutil_rng { uint64_t s; } testutil_rng;
