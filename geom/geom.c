@@ -202,8 +202,8 @@ const char *geom_polyerr_str(geom_polyerr e) {
     [GEOM_DUPLICATE] = "duplicate point",
     [GEOM_COLLINEAR] = "collinear with its neighbours (polygon must be strictly convex)",
     [GEOM_NOT_CONVEX] = "polygon is not convex",
-    [GEOM_OUT_OF_SCALE] = "outside the supported scale (coordinates within +-1e50, "
-                          "edges at least 1e-50 long)",
+    [GEOM_OUT_OF_SCALE] = ("outside the supported scale (coordinates within +-1e50, "
+                           "edges at least 1e-50 long)"),
   };
   return (unsigned)e < sizeof msg / sizeof msg[0] ? msg[e] : "unknown error";
 }

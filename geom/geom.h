@@ -12,6 +12,7 @@
 #define FLIPLAB_GEOM_H
 
 #include <stddef.h>
+#include "fliplab_config.h"
 
 typedef struct geom_point {
   double x, y;

@@ -1,0 +1,50 @@
+/*
+** fliplab_config.h: the floating-point model fliplab is built for, checked
+** at compile time, and the home of compiler and feature guards.
+**
+** fliplab promises bit-identical output whatever the compiler, -march,
+** thread count or shard split, and its exactness arguments (the predicate
+** filters of geom.h, the joints' exact commutativity, the flip-graph
+** filters) assume that every double operation is one correctly rounded
+** IEEE 754 binary64 operation, done where the source says.  Three things
+** break that, so all three are part of the build contract:
+**
+** - Excess precision (x87 arithmetic, FLT_EVAL_METHOD 1 or 2): an
+**   intermediate kept in a wider register rounds twice or not at all.
+**   Refused below.
+** - Fast-math (-ffast-math, -ffinite-math-only, -fassociative-math ...):
+**   reassociation, reciprocal approximations and "no NaN/inf" assumptions
+**   change decisions and break the NaN-means-tie convention.  Refused below.
+** - Contraction of a*b + c into a fused multiply-add: clang does it by
+**   default with -march=haswell, GCC outside strict ISO mode.  One rounding
+**   instead of two changes x*x + y*y depending on the operand order, so
+**   commutativity and rotation invariance fail.  The build passes
+**   -ffp-contract=off to everything (top CMakeLists.txt) and pkg-config
+**   hands it to plugins (fliplab.pc); for clang the pragma below also turns
+**   it off in every file that includes geom.h, whatever the flags.  (GCC
+**   ignores the pragma; it has no macro telling whether contraction is on.)
+**
+** Every public header includes this one through geom.h.
+*/
+#ifndef FLIPLAB_CONFIG_H
+#define FLIPLAB_CONFIG_H
+
+#include <float.h>
+
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "fliplab needs FLT_EVAL_METHOD == 0 (double arithmetic in double precision; on x86 use SSE2, e.g. -msse2 -mfpmath=sse)"
+#endif
+
+#if defined(__FAST_MATH__)
+#error "fliplab must not be built with -ffast-math: decisions depend on IEEE rounding, NaN and infinities"
+#endif
+
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "fliplab must not be built with -ffinite-math-only: NaN and infinite values carry meaning"
+#endif
+
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+#endif
