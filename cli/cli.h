@@ -66,9 +66,22 @@ void cli_progress_start(cli_progress *p, const char *label);
 void cli_progress_update(uint64_t done, uint64_t total, void *ctx);
 void cli_progress_finish(cli_progress *p);
 
-/* Open FILE for writing, "-" meaning stdout; NULL after printing an error.
-** cli_close_out closes it (flushes stdout); -1 when a write failed. */
+/* Output files (cli/output.c).  cli_open_out(cmd, FILE) returns a stream
+** for FILE ("-" or NULL: stdout) that really writes a temporary file in
+** FILE's directory; FILE itself is replaced (renamed over) only when the
+** whole command succeeds, by cli_outputs_finish, which main() calls with
+** the command's exit status.  So a failing run leaves every old file
+** byte-identical and no partial file behind.  Devices (/dev/full, FIFOs)
+** are written directly.  NULL after printing the one-line error (cannot
+** create, or FILE already named by another output of this run).
+** cli_close_out flushes and closes (stdout: flushes), checking every write;
+** on failure it prints "fliplab CMD: cannot write 'FILE': REASON" once and
+** returns -1 (the caller just returns 1).  cli_abort_out discards an output:
+** its old file stays.  cli_outputs_finish returns the final status: 1 when
+** status was 0 but some output or stdout could not be written/renamed. */
 FILE *cli_open_out(const char *cmd, const char *path);
 int cli_close_out(FILE *f);
+void cli_abort_out(FILE *f);
+int cli_outputs_finish(const char *cmd, int status);
 
 #endif

@@ -137,11 +137,11 @@ int cli_cmd_classify(int argc, char **argv) {
     rc = 1;
     goto done;
   }
-  rc = ferror(out) ? 1 : 0;
-  if (rc) cli_error(CMD, "write error");
+  rc = cli_close_out(out) != 0 ? 1 : 0;
+  out = NULL;
 done:
   if (in != NULL && in != stdin) fclose(in);
-  if (out != NULL) cli_close_out(out);
+  cli_abort_out(out);
   free(v);
   free(rules);
   return rc;

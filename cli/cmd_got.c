@@ -222,8 +222,8 @@ int cli_cmd_got(int argc, char **argv) {
   if (a.csv) {
     FILE *f = cli_open_out(CMD, a.csv);
     if (f == NULL) { rc = 2; goto done; }
-    if (report_got_csv(f, res.tri, res.ntri, map) != 0) rc = cli_error(CMD, "write error on %s", a.csv);
-    cli_close_out(f);
+    report_got_csv(f, res.tri, res.ntri, map);
+    if (cli_close_out(f) != 0) rc = 1;
   }
   if (a.svg && rc == 0) {
     FILE *f = cli_open_out(CMD, a.svg);
@@ -232,9 +232,8 @@ int cli_cmd_got(int argc, char **argv) {
     snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r.name, n, tot,
              a.shade ? "; shaded by triangle badness" : "");
     report_got_svg_opts so = {a.shade, title};
-    if (report_got_svg(f, p, n, res.tri, res.ntri, &so) != 0)
-      rc = cli_error(CMD, "write error on %s", a.svg);
-    cli_close_out(f);
+    report_got_svg(f, p, n, res.tri, res.ntri, &so);
+    if (cli_close_out(f) != 0) rc = 1;
   }
 done:
   got_result_free(&res);

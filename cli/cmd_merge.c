@@ -88,18 +88,11 @@ int cli_cmd_merge(int argc, char **argv) {
   char note[64];
   snprintf(note, sizeof note, "merged from %d CSV file%s", nfiles, nfiles > 1 ? "s" : "");
   report_meta meta = {.samples = acc[0].c.samples, .note = note, .text_columns = (int)columns};
-  rc = report_write(out, fmt, &meta, acc, nacc) != 0 ? 1 : 0;
-  cli_close_out(out);
-  if (rc == 0 && plotpath != NULL) {
-    FILE *plot = cli_open_out(CMD, plotpath);
-    if (plot == NULL) {
-      rc = 2;
-      goto done;
-    }
-    rc = report_scatter_svg(plot, &meta, acc, nacc) != 0 ? 1 : 0;
-    cli_close_out(plot);
-  }
-  if (rc == 1) cli_error(CMD, "write error");
+  FILE *plot = NULL;
+  if (plotpath != NULL && (plot = cli_open_out(CMD, plotpath)) == NULL) goto done;
+  report_write(out, fmt, &meta, acc, nacc);
+  if (plot != NULL) report_scatter_svg(plot, &meta, acc, nacc);
+  rc = cli_close_out(out) != 0 || cli_close_out(plot) != 0 ? 1 : 0;
 done:
   free(acc);
   free(add);

@@ -338,8 +338,8 @@ static void cli_rule_svg_path(char *buf, size_t len, const char *dir, const char
 
 static int cli_rule_svg(const char *path, const rule *r, const cli_rule_opts *o, uint64_t idx,
                         const flipgraph_pentagon *p, const flipgraph *g) {
-  FILE *f = fopen(path, "w");
-  if (f == NULL) return cli_error("rule", "cannot write '%s': %s", path, strerror(errno));
+  FILE *f = cli_open_out("rule", path);
+  if (f == NULL) return 2;
   char cap[1024];
   snprintf(cap, sizeof cap,
            "rule %s: type %s, pentagon #%llu of seed %llu (tie_eps %g)\n"
@@ -350,9 +350,8 @@ static int cli_rule_svg(const char *path, const rule *r, const cli_rule_opts *o,
            r->name, flipgraph_type_name(g->type), (unsigned long long)idx,
            (unsigned long long)o->seed, o->tie_eps, p->v[0].x, p->v[0].y, p->v[1].x, p->v[1].y,
            p->v[2].x, p->v[2].y, p->v[3].x, p->v[3].y, p->v[4].x, p->v[4].y);
-  int rc = report_flipgraph_svg(f, p, g, cap);
-  if (fclose(f) != 0 || rc != 0) return cli_error("rule", "write error on '%s'", path);
-  return 0;
+  report_flipgraph_svg(f, p, g, cap);
+  return cli_close_out(f) != 0 ? 1 : 0;
 }
 
 /* Witnesses are re-derived from their index with the one-rule reference

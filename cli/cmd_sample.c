@@ -61,7 +61,5 @@ int cli_cmd_sample(int argc, char **argv) {
     sampler_pentagon(seed, first + k, v);
     if (report_pentagon_write(out, v) != 0) rc = 1;
   }
-  if (rc != 0) cli_error(CMD, "write error");
-  cli_close_out(out);
-  return rc;
+  return cli_close_out(out) != 0 ? 1 : rc;
 }

@@ -245,15 +245,15 @@ int cli_cmd_table34(int argc, char **argv) {
     fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "
                     "rules, which theorem 1 rules out: this is a bug\n",
             (unsigned long long)iv);
-  rc = 0;
-  if (report_write(out, o.format, &meta, rows, nrules) != 0 ||
-      (plot != NULL && report_scatter_svg(plot, &meta, rows, nrules) != 0)) {
-    cli_error(CMD, "write error");
-    rc = 1;
-  }
+  /* A failed write sets the stream's error flag, which cli_close_out
+  ** reports (once, naming the file). */
+  report_write(out, o.format, &meta, rows, nrules);
+  if (plot != NULL) report_scatter_svg(plot, &meta, rows, nrules);
+  rc = cli_close_out(out) != 0 || cli_close_out(plot) != 0 ? 1 : 0;
+  out = plot = NULL;
 done:
-  if (out != NULL) cli_close_out(out);
-  if (plot != NULL) cli_close_out(plot);
+  cli_abort_out(out);     /* only on an early exit: nothing to keep */
+  cli_abort_out(plot);
   free(counts);
   free(rows);
   free(rules);

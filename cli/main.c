@@ -38,15 +38,20 @@ int main(int argc, char **argv) {
   }
   if (cli_is_help(argv[1])) {
     cli_usage(stdout);
-    return 0;
+    return cli_outputs_finish("help", 0);
   }
   if (strcmp(argv[1], "--version") == 0) {
     printf("fliplab %s\n", FLIPLAB_VERSION);
-    return 0;
+    return cli_outputs_finish("version", 0);
   }
   for (size_t i = 0; i < CLI_NCOMMANDS; i++)
-    if (strcmp(argv[1], cli_commands[i].name) == 0)
-      return cli_commands[i].run(argc - 1, argv + 1);
+    if (strcmp(argv[1], cli_commands[i].name) == 0) {
+      /* Outputs reach their names only if the command succeeded, user
+      ** measures included (cli/output.c). */
+      int st = cli_commands[i].run(argc - 1, argv + 1);
+      if (st == 0 && cli_userdefs_failed(cli_commands[i].name)) st = 1;
+      return cli_outputs_finish(cli_commands[i].name, st);
+    }
   fprintf(stderr, "fliplab: unknown command '%s' (try: fliplab --help)\n", argv[1]);
   return 2;
 }

@@ -1,6 +1,6 @@
 /*
 ** util.c: helpers shared by the commands: errors, strict number parsing,
-** option values, output files.
+** option values (output files: output.c).
 */
 #include <errno.h>
 #include <math.h>
@@ -80,18 +80,4 @@ const char *cli_optarg(const char *cmd, int argc, char **argv, int *i) {
 
 int cli_is_help(const char *opt) {
   return strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0 || strcmp(opt, "help") == 0;
-}
-
-FILE *cli_open_out(const char *cmd, const char *path) {
-  if (path == NULL || strcmp(path, "-") == 0) return stdout;
-  FILE *f = fopen(path, "w");
-  if (f == NULL) cli_error(cmd, "cannot write '%s': %s", path, strerror(errno));
-  return f;
-}
-
-int cli_close_out(FILE *f) {
-  if (f == NULL) return 0;
-  int bad = ferror(f);
-  bad |= f == stdout ? fflush(f) != 0 : fclose(f) != 0;
-  return bad ? -1 : 0;
 }

@@ -100,6 +100,19 @@ int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t e
   return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
 }
 
+int testutil_run_to(const char *args, const char *stdout_path, char *err, size_t errcap) {
+  char e[512], cmd[8192];
+  snprintf(cmd, sizeof cmd, "mkdir -p %s/testtmp", FLIPLAB_BUILD_DIR);
+  if (system(cmd) != 0) return -1;
+  testutil_tmppath(e, sizeof e, "stderr");
+  snprintf(cmd, sizeof cmd, "%s %s </dev/null >%s 2>%s", FLIPLAB_BIN, args, stdout_path, e);
+  int st = system(cmd);
+  testutil_slurp(e, err, errcap);
+  unlink(e);
+  if (st == -1) return -1;
+  return WIFEXITED(st) ? WEXITSTATUS(st) : 128 + WTERMSIG(st);
+}
+
 int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char *fmt, ...) {
   char args[4096];
   va_list ap;

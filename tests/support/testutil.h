@@ -40,6 +40,10 @@ int testutil_one_line(const char *s);
 ** cap bytes, NUL-terminated; either may be NULL).  Returns the exit status. */
 int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t errcap);
 
+/* testutil_run with standard output sent to the file stdout_path (e.g.
+** /dev/full) instead of being captured. */
+int testutil_run_to(const char *args, const char *stdout_path, char *err, size_t errcap);
+
 /* testutil_run with the arguments made by printf from FMT (at most 4095
 ** characters: the tests' commands are far shorter). */
 int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char *fmt, ...)
