@@ -25,6 +25,7 @@
 #include <muParserDLL.h>
 #include "formula.h"
 #include "measure.h"
+#include "splitmix.h"
 
 /* ---- variables: one table drives binding, filling and messages ---------- */
 
@@ -138,17 +139,22 @@ static formula_slot *formula_slot_get(formula *f) {
     mupError(s->parser);
   }
   pthread_mutex_unlock(&formula_lock);
-  if (s == NULL) {
-    fprintf(stderr, "fliplab: out of memory creating a parser for measure '%s'\n", f->name);
-    abort();
-  }
+  if (s == NULL) return NULL;
   formula_tls[f->index] = (formula_tls_entry){f->serial, s};
   return s;
 }
 
+/* Out of memory for a parser: the value is NaN and the run fails with the
+** reason (a library does not abort its caller). */
 static double formula_eval_raw(formula *f, const geom_tri *t) {
   formula_tls_entry *e = &formula_tls[f->index];
   formula_slot *s = e->serial == f->serial ? e->slot : formula_slot_get(f);
+  if (s == NULL) {
+    char msg[128];
+    snprintf(msg, sizeof msg, "measure '%s': out of memory creating a parser", f->name);
+    formula_note_message(msg);
+    return NAN;
+  }
   formula_fill(s->var, t);
   return mupEval(s->parser);
 }
@@ -157,14 +163,7 @@ static double formula_eval_raw(formula *f, const geom_tri *t) {
 ** recorded (not replaced) so that the run can be failed afterwards. */
 static double formula_measure_fn(const geom_tri *t, void *ctx) {
   formula *f = ctx;
-  double v = formula_eval_raw(f, t);
-  if (!isfinite(v))
-    formula_note_bad_value(f->name, t, v, "is not finite");
-  else if (f->sign == MEASURE_NONNEG && v < 0)
-    formula_note_bad_value(f->name, t, v, "is negative, outside the measure's sign domain >= 0");
-  else if (f->sign == MEASURE_NONPOS && v > 0)
-    formula_note_bad_value(f->name, t, v, "is positive, outside the measure's sign domain <= 0");
-  return v;
+  return formula_check_value(f->name, t, formula_eval_raw(f, t), f->sign, 0);
 }
 
 /* ---- bad values ---------------------------------------------------------- */
@@ -194,6 +193,17 @@ void formula_note_bad_value(const char *measure, const geom_tri *t, double v,
            measure, v, why, t->v[0].x, t->v[0].y, t->v[1].x, t->v[1].y, t->v[2].x,
            t->v[2].y);
   formula_note_message(msg);
+}
+
+double formula_check_value(const char *measure, const geom_tri *t, double v, measure_sign sign,
+                           int allow_inf) {
+  if (isnan(v) || (!allow_inf && isinf(v)))
+    formula_note_bad_value(measure, t, v, "is not finite");
+  else if (sign == MEASURE_NONNEG && v < 0)
+    formula_note_bad_value(measure, t, v, "is negative, outside the measure's sign domain >= 0");
+  else if (sign == MEASURE_NONPOS && v > 0)
+    formula_note_bad_value(measure, t, v, "is positive, outside the measure's sign domain <= 0");
+  return v;
 }
 
 /* formula_bad_msg is written once, by the thread that won the exchange;
@@ -408,15 +418,8 @@ out:
 /* ---- the sign domain from sample triangles ------------------------------ */
 
 /* splitmix64: the sample triangles must be the same on every run. */
-static uint64_t formula_rng_next(uint64_t *s) {
-  uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 static double formula_rng_uniform(uint64_t *s) {
-  return (double)(formula_rng_next(s) >> 11) * 0x1.0p-53;
+  return geom_unit53(geom_splitmix64(s));
 }
 
 #define FORMULA_SAMPLES 3000
@@ -440,12 +443,11 @@ static void formula_sample_tri(int k, uint64_t *rng, geom_tri *t) {
   double scale = 1, ox = 0, oy = 0;
   if (k < 1500) {
     for (int i = 0; i < 3; i++) {
-      double x, y;
+      double u, v;
       do {
-        x = 2 * formula_rng_uniform(rng) - 1;
-        y = 2 * formula_rng_uniform(rng) - 1;
-      } while (x * x + y * y >= 1);
-      p[i] = (geom_point){x, y};
+        u = formula_rng_uniform(rng);
+        v = formula_rng_uniform(rng);
+      } while (!geom_disc_accept(u, v, &p[i]));
     }
   } else {
     double u = 2 * formula_rng_uniform(rng) - 0.5;           /* apex position along the base */

@@ -19,6 +19,7 @@
 
 #include <stddef.h>
 #include "geom.h"
+#include "measure.h"
 
 #define FORMULA_MAX 32          /* formulas per process */
 #define FORMULA_NAME_MAX 32     /* longest NAME, terminator included */
@@ -44,6 +45,12 @@ int formula_check_name(const char *name, char *err, size_t errlen);
 ** declared >= 0". */
 void formula_note_bad_value(const char *measure, const geom_tri *t, double v,
                             const char *why);
+/* The one check of a user measure's value, formulas and plugins alike:
+** NaN, an infinity unless allow_inf (plugins may return +-inf, formulas may
+** not), or a value outside the sign domain is recorded with
+** formula_note_bad_value.  Returns v. */
+double formula_check_value(const char *measure, const geom_tri *t, double v, measure_sign sign,
+                           int allow_inf);
 /* The same for a problem described by a ready one-line message. */
 void formula_note_message(const char *msg);
 

@@ -21,7 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#if defined(__SSE2__)
+#include "fliplab_config.h"
+#if FLIPLAB_HAVE_SSE2
 #include <emmintrin.h>
 #endif
 #include "flipgraph.h"
@@ -302,7 +303,7 @@ static void flipgraph_work_init(flipgraph_work *w) {
     for (int s = 0; s < FLIPGRAPH_SLOTS; s++) w->val[t][s] = w->mag[t][s] = 1.0;
 }
 
-#if defined(__GNUC__) && !defined(FLIPGRAPH_SCALAR)
+#if FLIPLAB_HAVE_VECTORS && !defined(FLIPGRAPH_SCALAR)
 /* GCC/Clang generic vectors: one lane per slot, 64-bit lanes throughout
 ** (doubles, and comparison masks of -1 / 0), no branches. */
 #define FLIPGRAPH_INLINE static inline __attribute__((always_inline))
@@ -332,7 +333,7 @@ FLIPGRAPH_INLINE void flipgraph_vc(joint_id j, const double *pa, const double *p
       double x[FLIPGRAPH_LANES];
       r = a + b;
       memcpy(x, &r, sizeof x);
-#if defined(__SSE2__)
+#if FLIPLAB_HAVE_SSE2
       for (int k = 0; k < FLIPGRAPH_LANES; k += 2)
         _mm_storeu_pd(&x[k], _mm_sqrt_pd(_mm_loadu_pd(&x[k])));
 #else
@@ -442,7 +443,7 @@ static inline void flipgraph_joint_codes(joint_id j, const flipgraph_plan *pl,
 /* Codes of every (joint, slot) in use.  On x86-64 with GCC an AVX2 clone is
 ** chosen at load time where the CPU has it; every operation is an IEEE
 ** basic operation on doubles, so both clones give the same bits. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(FLIPGRAPH_NO_CLONES)
+#if FLIPLAB_HAVE_CLONES && !defined(FLIPGRAPH_NO_CLONES)
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
@@ -518,69 +519,114 @@ void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
 
 /* Each thread adds into its own counts; the totals are integer sums, so
 ** neither the thread count nor the scheduling can change them. */
-static void flipgraph_tally_range(const flipgraph_plan *pl, uint64_t seed, uint64_t lo,
-                                  uint64_t hi, unsigned char *codes, flipgraph_counts *c) {
+typedef struct flipgraph_range {
+  const flipgraph_plan *pl;
+  const flipgraph_run *run;
+  int thread;
+  unsigned char *codes;     /* nrules */
+  flipgraph *graphs;        /* nrules, when the run has a hook */
+} flipgraph_range;
+
+static void flipgraph_hook(const flipgraph_range *t, uint64_t i, const flipgraph_pentagon *p) {
+  const flipgraph_plan *pl = t->pl;
+  for (int r = 0; r < pl->nrules; r++) {
+    flipgraph *g = &t->graphs[r];
+    *g = pl->graph[t->codes[r]];
+    g->delaunay = g->type == FLIPGRAPH_I && p->delaunay_sink >= 0
+               && g->sink[0] == p->delaunay_sink;
+  }
+  t->run->each(t->run->each_ctx, t->thread, i, p, t->graphs);
+}
+
+static void flipgraph_tally_range(const flipgraph_range *t, uint64_t lo, uint64_t hi,
+                                  flipgraph_counts *c) {
+  const flipgraph_plan *pl = t->pl;
   flipgraph_pentagon p;
   flipgraph_work w;
   geom_point v[5];
   flipgraph_work_init(&w);
   for (uint64_t i = lo; i < hi; i++) {
-    sampler_pentagon(seed, i, v);
+    sampler_pentagon(t->run->seed, i, v);
     int dt_code = flipgraph_prepare_code(&p, v);
-    flipgraph_plan_codes(pl, &p, dt_code, &w, codes);
+    flipgraph_plan_codes(pl, &p, dt_code, &w, t->codes);
     for (int r = 0; r < pl->nrules; r++) {
-      int code = codes[r];
+      int code = t->codes[r];
       c[r].type[pl->code_type[code]]++;
       c[r].dt += pl->code_sink1[code] == p.delaunay_sink;
     }
+    if (t->run->each != NULL) flipgraph_hook(t, i, &p);
   }
   for (int r = 0; r < pl->nrules; r++) c[r].samples += hi - lo;
+}
+
+int flipgraph_tally_threads(int threads, uint64_t count) {
+  if (threads <= 0) threads = omp_get_max_threads();
+  uint64_t nchunks = (count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK;
+  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
+  return threads;
+}
+
+/* Per-thread sums, added in thread order (integers: any order gives the same). */
+static void flipgraph_tally_sum(const flipgraph_counts *all, int threads, int nrules,
+                                flipgraph_counts *out) {
+  for (int t = 0; t < threads; t++)
+    for (int r = 0; r < nrules; r++) {
+      const flipgraph_counts *c = &all[(size_t)t * (size_t)nrules + (size_t)r];
+      out[r].samples += c->samples;
+      for (int y = 0; y < FLIPGRAPH_NTYPES; y++) out[r].type[y] += c->type[y];
+      out[r].dt += c->dt;
+    }
+}
+
+static void flipgraph_tally_loop(const flipgraph_plan *pl, const flipgraph_run *run, int threads,
+                                 flipgraph_counts *all, unsigned char *codes, flipgraph *graphs) {
+  size_t nr = pl->nrules > 0 ? (size_t)pl->nrules : 1;
+  uint64_t nchunks = (run->count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK, done = 0;
+#pragma omp parallel num_threads(threads)
+  {
+    int me = omp_get_thread_num();
+    flipgraph_range t = {pl, run, me, codes + (size_t)me * nr,
+                         graphs ? graphs + (size_t)me * nr : NULL};
+#pragma omp for schedule(dynamic, 1)
+    for (uint64_t k = 0; k < nchunks; k++) {
+      uint64_t lo = run->first + k * FLIPGRAPH_CHUNK;
+      uint64_t hi = k + 1 == nchunks ? run->first + run->count : lo + FLIPGRAPH_CHUNK;
+      flipgraph_tally_range(&t, lo, hi, all + (size_t)me * nr);
+      uint64_t now;
+#pragma omp atomic capture
+      now = done += hi - lo;
+      if (run->progress != NULL && me == 0) run->progress(now, run->count, run->progress_ctx);
+    }
+  }
+  if (run->progress != NULL) run->progress(run->count, run->count, run->progress_ctx);
+}
+
+int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
+                        flipgraph_counts *out) {
+  if (run->first + run->count < run->first || (nrules > 0 && out == NULL)) return -1;
+  flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, run->tie_eps);
+  if (pl == NULL) return -1;
+  int threads = flipgraph_tally_threads(run->threads, run->count);
+  size_t nr = nrules > 0 ? (size_t)nrules : 1;
+  flipgraph_counts *all = calloc((size_t)threads * nr, sizeof *all);
+  unsigned char *codes = malloc((size_t)threads * nr);
+  flipgraph *graphs = run->each ? malloc((size_t)threads * nr * sizeof *graphs) : NULL;
+  int rc = -1;
+  if (all != NULL && codes != NULL && (run->each == NULL || graphs != NULL)) {
+    flipgraph_tally_loop(pl, run, threads, all, codes, graphs);
+    flipgraph_tally_sum(all, threads, nrules, out);
+    rc = 0;
+  }
+  free(all);
+  free(codes);
+  free(graphs);
+  flipgraph_plan_free(pl);
+  return rc;
 }
 
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
                     flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx) {
-  if (first + count < first || (nrules > 0 && out == NULL)) return -1;
-  flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, tie_eps);
-  if (pl == NULL) return -1;
-  if (threads <= 0) threads = omp_get_max_threads();
-  uint64_t nchunks = (count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK;
-  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
-  size_t nr = nrules > 0 ? (size_t)nrules : 1;
-  flipgraph_counts *all = calloc((size_t)threads * nr, sizeof *all);
-  unsigned char *codes = malloc((size_t)threads * nr);
-  if (all == NULL || codes == NULL) {
-    free(all);
-    free(codes);
-    flipgraph_plan_free(pl);
-    return -1;
-  }
-  uint64_t done = 0;
-#pragma omp parallel num_threads(threads)
-  {
-    int me = omp_get_thread_num();
-    flipgraph_counts *mine = all + (size_t)me * nr;
-#pragma omp for schedule(dynamic, 1)
-    for (uint64_t k = 0; k < nchunks; k++) {
-      uint64_t lo = first + k * FLIPGRAPH_CHUNK;
-      uint64_t hi = k + 1 == nchunks ? first + count : lo + FLIPGRAPH_CHUNK;
-      flipgraph_tally_range(pl, seed, lo, hi, codes + (size_t)me * nr, mine);
-      uint64_t now;
-#pragma omp atomic capture
-      now = done += hi - lo;
-      if (progress != NULL && me == 0) progress(now, count, ctx);
-    }
-  }
-  if (progress != NULL) progress(count, count, ctx);
-  for (int t = 0; t < threads; t++)
-    for (int r = 0; r < nrules; r++) {
-      const flipgraph_counts *c = &all[(size_t)t * nr + r];
-      out[r].samples += c->samples;
-      for (int y = 0; y < FLIPGRAPH_NTYPES; y++) out[r].type[y] += c->type[y];
-      out[r].dt += c->dt;
-    }
-  free(all);
-  free(codes);
-  flipgraph_plan_free(pl);
-  return 0;
+  flipgraph_run run = {seed, first, count, tie_eps, threads, progress, ctx, NULL, NULL};
+  return flipgraph_tally_run(rules, nrules, &run, out);
 }

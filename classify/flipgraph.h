@@ -5,8 +5,7 @@
 ** T_i = {v_i v_{i+2}, v_i v_{i+3}}.  Quadrilateral Q_j = v_{j+1} v_{j+2}
 ** v_{j+3} v_{j+4} (vertex v_j deleted) decides the edge T_{j+1} - T_{j-1}:
 ** RULE_AC (diagonal v_{j+1}v_{j+3}) points it at T_{j+1}, RULE_BD (diagonal
-** v_{j+2}v_{j+4}) at T_{j-1}.  Types I-V follow
-** ../shared/spec/classification.md.
+** v_{j+2}v_{j+4}) at T_{j-1}.  Types I-V: docs/classification.md.
 */
 #ifndef FLIPLAB_FLIPGRAPH_H
 #define FLIPLAB_FLIPGRAPH_H
@@ -58,6 +57,33 @@ typedef void (*flipgraph_progress_fn)(uint64_t done, uint64_t total, void *ctx);
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
                     flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx);
+
+/* The same tally with a per-sample hook: each(ctx, thread, index, p, g) is
+** called for every pentagon after its classification, with g[0..nrules-1]
+** its graphs under the rules, from the thread numbered `thread` (0 <= thread
+** < the thread count in use, which is threads, or all cores when threads
+** <= 0), so a hook may keep per-thread state without locks.  Pentagons are
+** handed out in chunks of ascending indices, in no fixed order between
+** threads: a hook that wants "the first K" keeps each thread's first K and
+** merges them afterwards (the first K of the union are the first K).
+** flipgraph_tally is flipgraph_tally_run without a hook. */
+typedef void (*flipgraph_sample_fn)(void *ctx, int thread, uint64_t index,
+                                    const flipgraph_pentagon *p, const flipgraph *g);
+typedef struct flipgraph_run {
+  uint64_t seed, first, count;
+  double tie_eps;
+  int threads;                        /* <= 0: all cores */
+  flipgraph_progress_fn progress;     /* may be NULL */
+  void *progress_ctx;
+  flipgraph_sample_fn each;           /* may be NULL */
+  void *each_ctx;
+} flipgraph_run;
+int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
+                        flipgraph_counts *out);
+
+/* The thread count flipgraph_tally_run will use for `threads` and `count`
+** pentagons (never more threads than chunks of work). */
+int flipgraph_tally_threads(int threads, uint64_t count);
 
 /* ---- additions (helper "table") ---------------------------------------- */
 

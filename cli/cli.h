@@ -11,6 +11,7 @@
 
 #include <stdint.h>
 #include <stdio.h>
+#include "fliplab_config.h"
 
 int cli_cmd_list(int argc, char **argv);
 int cli_cmd_flip(int argc, char **argv);
@@ -22,11 +23,7 @@ int cli_cmd_got(int argc, char **argv);
 int cli_cmd_rule(int argc, char **argv);
 
 /* Print "fliplab CMD: message" on stderr; returns 2 (usage/input error). */
-int cli_error(const char *cmd, const char *fmt, ...)
-#if defined(__GNUC__)
-  __attribute__((format(printf, 2, 3)))
-#endif
-  ;
+int cli_error(const char *cmd, const char *fmt, ...) FLIPLAB_PRINTF(2, 3);
 
 /* Strict number parsing: the whole string, finite, in range.  On failure
 ** they print the one-line error naming the option and return -1. */

@@ -8,12 +8,11 @@
 ** convex quadrilaterals, and witness pentagons for every non-type-I outcome.
 **
 ** Determinism.  Pentagon i is sampler_pentagon(seed, i) and quadrilateral i
-** comes from its own generator stream, so every count is independent of
-** the thread count.  Witnesses are the lowest sample indices of each
-** outcome: samples are cut into chunks; each chunk, scanned in ascending
-** order, keeps its own first K; chunks are merged in index order.  The
-** first K of the merged sequence are the lowest K overall, whichever
-** thread ran which chunk.
+** is sampler_quad(seed, i), so every count is independent of the thread
+** count.  The counts are the classify engine's (flipgraph_tally_run);
+** witnesses are the lowest sample indices of each outcome, collected by
+** its per-sample hook: each thread keeps its own lowest K, and the lowest
+** K of their union are the lowest K overall, whichever thread ran what.
 */
 #include <errno.h>
 #include <math.h>
@@ -30,10 +29,7 @@
 #include "report.h"
 
 #define CLI_RULE_MAX 64
-#define CLI_RULE_CHUNK 1024           /* samples per scheduling unit */
-#define CLI_RULE_BLOCK 64             /* chunks merged at a time */
 #define CLI_RULE_WITNESS_MAX 100
-#define CLI_RULE_QUAD_SALT 0x51A7C0DE5EEDF00Dull
 
 /* Witness slots: types II, III, IV, V (type I needs none). */
 #define CLI_RULE_WTYPES 4
@@ -69,148 +65,67 @@ static void cli_rule_usage(FILE *f) {
 
 /* ---- statistics ----------------------------------------------------------- */
 
-/* 95% Wilson score interval of k successes in n, in percent. */
-static void cli_rule_wilson(uint64_t k, uint64_t n, double *lo, double *hi) {
-  if (n == 0) {
-    *lo = 0;
-    *hi = 100;
-    return;
-  }
-  const double z = 1.959963984540054;
-  double nn = (double)n, p = (double)k / nn, z2 = z * z;
-  double den = 1 + z2 / nn;
-  double centre = (p + z2 / (2 * nn)) / den;
-  double half = z * sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / den;
-  *lo = 100 * fmax(0, centre - half);
-  *hi = 100 * fmin(1, centre + half);
-}
-
 static void cli_rule_pct_line(const char *label, uint64_t k, uint64_t n, const char *note) {
   double lo, hi;
-  cli_rule_wilson(k, n, &lo, &hi);
+  report_wilson(k, n, &lo, &hi);
   printf("  %-5s %10llu  %8.3f%%  [%.3f, %.3f]%s%s\n", label, (unsigned long long)k,
          n ? 100.0 * (double)k / (double)n : 0.0, lo, hi, note ? "  " : "", note ? note : "");
 }
 
-/* ---- pentagons: counts and witnesses ------------------------------------ */
+/* ---- pentagons: counts (the classify engine) and witnesses (its hook) ---- */
 
 static int cli_rule_wslot(flipgraph_type t) {
   return t == FLIPGRAPH_I ? -1 : (int)t - 1;
 }
 
-/* One chunk [lo, hi): counts into c[nrules], first K witnesses into
-** w[nrules][CLI_RULE_WTYPES]. */
-static void cli_rule_chunk(const flipgraph_plan *pl, int nrules, uint64_t seed, uint64_t lo,
-                           uint64_t hi, int k, flipgraph_counts *c, cli_rule_found *w,
-                           flipgraph *g) {
-  geom_point v[5];
-  flipgraph_pentagon p;
-  for (uint64_t i = lo; i < hi; i++) {
-    sampler_pentagon(seed, i, v);
-    flipgraph_prepare(&p, v);
-    flipgraph_plan_run(pl, &p, g);
-    for (int r = 0; r < nrules; r++) {
-      c[r].samples++;
-      c[r].type[g[r].type]++;
-      c[r].dt += g[r].delaunay;
-      int s = cli_rule_wslot(g[r].type);
-      if (s >= 0) {
-        cli_rule_found *f = &w[r * CLI_RULE_WTYPES + s];
-        if (f->n < k) f->idx[f->n++] = i;
-      }
-    }
+/* Keep the k lowest indices in f, ascending (insertion: k <= 100). */
+static void cli_rule_keep(cli_rule_found *f, int k, uint64_t idx) {
+  if (f->n == k && (k == 0 || idx >= f->idx[k - 1])) return;
+  int j = f->n < k ? f->n++ : k - 1;
+  for (; j > 0 && f->idx[j - 1] > idx; j--) f->idx[j] = f->idx[j - 1];
+  f->idx[j] = idx;
+}
+
+typedef struct cli_rule_hook {
+  int nrules, k;
+  cli_rule_found *w;   /* [thread][rule][slot] */
+} cli_rule_hook;
+
+static void cli_rule_each(void *ctx, int thread, uint64_t index, const flipgraph_pentagon *p,
+                          const flipgraph *g) {
+  (void)p;
+  cli_rule_hook *h = ctx;
+  cli_rule_found *mine = h->w + (size_t)thread * (size_t)h->nrules * CLI_RULE_WTYPES;
+  for (int r = 0; r < h->nrules; r++) {
+    int s = cli_rule_wslot(g[r].type);
+    if (s >= 0) cli_rule_keep(&mine[r * CLI_RULE_WTYPES + s], h->k, index);
   }
 }
 
+/* Each thread kept its own lowest K per outcome; the lowest K overall are
+** among them, whichever thread ran which chunk. */
 static int cli_rule_pentagons(const rule *rules, int nrules, const cli_rule_opts *o,
                               flipgraph_counts *counts, cli_rule_found *found) {
-  flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, o->tie_eps);
-  if (pl == NULL) return -1;
-  int k = (int)o->witnesses, threads = o->threads ? (int)o->threads : omp_get_max_threads();
+  int threads = flipgraph_tally_threads((int)o->threads, o->samples);
   size_t per = (size_t)nrules * CLI_RULE_WTYPES;
-  cli_rule_found *bw = calloc(CLI_RULE_BLOCK * per, sizeof *bw);
-  flipgraph_counts *bc = calloc((size_t)CLI_RULE_BLOCK * (size_t)nrules, sizeof *bc);
-  flipgraph *scratch = malloc((size_t)threads * (size_t)nrules * sizeof *scratch);
-  if (bw == NULL || bc == NULL || scratch == NULL) {
-    free(bw);
-    free(bc);
-    free(scratch);
-    flipgraph_plan_free(pl);
-    return -1;
-  }
+  cli_rule_hook h = {nrules, (int)o->witnesses, calloc((size_t)threads * per, sizeof *h.w)};
+  if (h.w == NULL) return -1;
   cli_progress prog;
   cli_progress_start(&prog, "rule");
-  uint64_t nchunks = (o->samples + CLI_RULE_CHUNK - 1) / CLI_RULE_CHUNK;
-  for (uint64_t b0 = 0; b0 < nchunks; b0 += CLI_RULE_BLOCK) {
-    int nb = (int)(nchunks - b0 < CLI_RULE_BLOCK ? nchunks - b0 : CLI_RULE_BLOCK);
-    memset(bw, 0, (size_t)nb * per * sizeof *bw);
-    memset(bc, 0, (size_t)nb * (size_t)nrules * sizeof *bc);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (int q = 0; q < nb; q++) {
-      uint64_t lo = (b0 + (uint64_t)q) * CLI_RULE_CHUNK;
-      uint64_t hi = lo + CLI_RULE_CHUNK < o->samples ? lo + CLI_RULE_CHUNK : o->samples;
-      cli_rule_chunk(pl, nrules, o->seed, lo, hi, k, bc + (size_t)q * (size_t)nrules,
-                     bw + (size_t)q * per, scratch + (size_t)omp_get_thread_num() * (size_t)nrules);
-    }
-    /* Merge in chunk order: counts add, witnesses keep the first K. */
-    for (int q = 0; q < nb; q++)
-      for (int r = 0; r < nrules; r++) {
-        const flipgraph_counts *c = &bc[(size_t)q * (size_t)nrules + (size_t)r];
-        counts[r].samples += c->samples;
-        for (int t = 0; t < FLIPGRAPH_NTYPES; t++) counts[r].type[t] += c->type[t];
-        counts[r].dt += c->dt;
-        for (int s = 0; s < CLI_RULE_WTYPES; s++) {
-          const cli_rule_found *src = &bw[(size_t)q * per + (size_t)r * CLI_RULE_WTYPES + (size_t)s];
-          cli_rule_found *dst = &found[(size_t)r * CLI_RULE_WTYPES + (size_t)s];
-          for (int i = 0; i < src->n && dst->n < k; i++) dst->idx[dst->n++] = src->idx[i];
-        }
-      }
-    uint64_t done = (b0 + (uint64_t)nb) * CLI_RULE_CHUNK;
-    cli_progress_update(done < o->samples ? done : o->samples, o->samples, &prog);
-  }
+  flipgraph_run run = {o->seed, 0, o->samples, o->tie_eps, threads, cli_progress_update, &prog,
+                       cli_rule_each, &h};
+  int rc = flipgraph_tally_run(rules, nrules, &run, counts);
   cli_progress_finish(&prog);
-  free(bw);
-  free(bc);
-  free(scratch);
-  flipgraph_plan_free(pl);
-  return 0;
+  for (int t = 0; t < threads && rc == 0; t++)
+    for (size_t x = 0; x < per; x++) {
+      const cli_rule_found *src = &h.w[(size_t)t * per + x];
+      for (int i = 0; i < src->n; i++) cli_rule_keep(&found[x], h.k, src->idx[i]);
+    }
+  free(h.w);
+  return rc;
 }
 
 /* ---- quadrilaterals: Delaunay equivalence ------------------------------- */
-
-/* Quadrilateral i: four points uniform in the unit disc, drawn again until
-** they are in strictly convex position, ordered anticlockwise from the one
-** with the smallest angle about their centroid. */
-static void cli_rule_quad(uint64_t seed, uint64_t i, geom_point q[4]) {
-  sampler_rng g;
-  sampler_seed(&g, seed ^ CLI_RULE_QUAD_SALT, i);
-  for (;;) {
-    double ang[4], cx = 0, cy = 0;
-    for (int k = 0; k < 4; k++) {
-      double x, y;
-      do {
-        x = 2 * sampler_uniform(&g) - 1;
-        y = 2 * sampler_uniform(&g) - 1;
-      } while (x * x + y * y >= 1);
-      q[k] = (geom_point){x, y};
-      cx += x / 4;
-      cy += y / 4;
-    }
-    for (int k = 0; k < 4; k++) ang[k] = atan2(q[k].y - cy, q[k].x - cx);
-    for (int a = 1; a < 4; a++)
-      for (int b = a; b > 0 && ang[b] < ang[b - 1]; b--) {
-        double t = ang[b];
-        ang[b] = ang[b - 1];
-        ang[b - 1] = t;
-        geom_point p = q[b];
-        q[b] = q[b - 1];
-        q[b - 1] = p;
-      }
-    int ok = 1;
-    for (int k = 0; k < 4; k++) ok &= geom_orient(q[k], q[(k + 1) % 4], q[(k + 2) % 4]) > 0;
-    if (ok) return;
-  }
-}
 
 static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadcheck *out) {
   rule dt = rule_delaunay();
@@ -220,7 +135,7 @@ static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadc
     reduction(+ : dis, ties, coc) reduction(min : first)
   for (uint64_t i = 0; i < o->quads; i++) {
     geom_point q[4];
-    cli_rule_quad(o->seed, i, q);
+    sampler_quad(o->seed, i, q);
     rule_choice d = rule_eval(&dt, q, o->tie_eps, NULL, NULL);
     if (d == RULE_EITHER) {
       coc++;
@@ -303,7 +218,7 @@ static void cli_rule_quad_report(const rule *r, const cli_rule_opts *o,
     return;
   }
   geom_point q[4];
-  cli_rule_quad(o->seed, qc->first, q);
+  sampler_quad(o->seed, qc->first, q);
   double ac, bd;
   rule dt = rule_delaunay();
   rule_choice c = rule_eval(r, q, o->tie_eps, &ac, &bd);

@@ -25,6 +25,10 @@
 
 static int plugin_n;
 
+/* The ABI's sign constants are the registry's, so a promise converts by cast. */
+_Static_assert((int)FLIPLAB_PLUGIN_NONPOS == (int)MEASURE_NONPOS && (int)FLIPLAB_PLUGIN_ANYSIGN == (int)MEASURE_ANYSIGN
+               && (int)FLIPLAB_PLUGIN_NONNEG == (int)MEASURE_NONNEG, "plugin sign constants");
+
 static double plugin_measure_fn(const geom_tri *t, void *ctx) {
   const fliplab_plugin_measure *m = ctx;
   fliplab_plugin_tri p = {
@@ -33,14 +37,7 @@ static double plugin_measure_fn(const geom_tri *t, void *ctx) {
     .alpha = t->alpha, .beta = t->beta, .gamma = t->gamma,
     .A = t->area, .P = t->P, .R = t->R, .r = t->r, .h = t->h, .rx = t->rx, .ry = t->ry,
   };
-  double v = m->fn(&p);
-  if (isnan(v))
-    formula_note_bad_value(m->name, t, v, "is not a number");
-  else if (m->sign == FLIPLAB_PLUGIN_NONNEG && v < 0)
-    formula_note_bad_value(m->name, t, v, "is negative, but the plugin promised values >= 0");
-  else if (m->sign == FLIPLAB_PLUGIN_NONPOS && v > 0)
-    formula_note_bad_value(m->name, t, v, "is positive, but the plugin promised values <= 0");
-  return v;
+  return formula_check_value(m->name, t, m->fn(&p), (measure_sign)m->sign, 1);
 }
 
 static rule_choice plugin_rule_fn(const geom_point q[4], void *ctx) {

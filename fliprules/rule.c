@@ -163,7 +163,7 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
 static rule_choice rule_eval_quad(const rule_quad *Q, const geom_point q[4]) {
   int m = 0;
   for (int i = 1; i < 4; i++)
-    if (q[i].x < q[m].x || (q[i].x == q[m].x && q[i].y < q[m].y)) m = i;
+    if (geom_lexless(q[i], q[m])) m = i;
   geom_point c[4] = {q[m], q[(m + 1) % 4], q[(m + 2) % 4], q[(m + 3) % 4]};
   rule_choice d = Q->fn(c, Q->ctx);
   if ((m & 1) && d != RULE_EITHER) d = d == RULE_AC ? RULE_BD : RULE_AC;

@@ -24,7 +24,12 @@
 **   it off in every file that includes geom.h, whatever the flags.  (GCC
 **   ignores the pragma; it has no macro telling whether contraction is on.)
 **
-** Every public header includes this one through geom.h.
+** Every public header includes this one through geom.h (predicates.h, the
+** lowest header, includes it directly).  The rest of the code asks the
+** feature macros at the end, never the compiler: what each one turns on is
+** the same IEEE arithmetic (vector extensions, SSE2 square roots, function
+** clones chosen at load time), so a build with or without them gives the
+** same bits.
 */
 #ifndef FLIPLAB_CONFIG_H
 #define FLIPLAB_CONFIG_H
@@ -45,6 +50,46 @@
 
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
+#endif
+
+/* ---- compiler features ---------------------------------------------------- */
+
+/* printf-style format checking of a function's arguments. */
+#if defined(__GNUC__)
+#define FLIPLAB_PRINTF(fmt, first) __attribute__((format(printf, fmt, first)))
+#else
+#define FLIPLAB_PRINTF(fmt, first)
+#endif
+
+/* Rare slow paths (exact arithmetic) kept out of line, so the filters that
+** call them stay small enough to inline into hot loops. */
+#if defined(__GNUC__)
+#define FLIPLAB_COLD __attribute__((noinline, cold))
+#else
+#define FLIPLAB_COLD
+#endif
+
+/* GCC/Clang generic vectors (vector_size) and always_inline. */
+#if defined(__GNUC__)
+#define FLIPLAB_HAVE_VECTORS 1
+#else
+#define FLIPLAB_HAVE_VECTORS 0
+#endif
+
+/* SSE2 intrinsics (<emmintrin.h>): the correctly rounded sqrtpd. */
+#if defined(__SSE2__)
+#define FLIPLAB_HAVE_SSE2 1
+#else
+#define FLIPLAB_HAVE_SSE2 0
+#endif
+
+/* Function clones for wider vector units, picked at load time (an ifunc):
+** GCC on x86-64 Linux only.  Every clone performs the same IEEE basic
+** operations, so they give the same bits. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define FLIPLAB_HAVE_CLONES 1
+#else
+#define FLIPLAB_HAVE_CLONES 0
 #endif
 
 #endif

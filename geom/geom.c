@@ -5,10 +5,6 @@
 #include <stdlib.h>
 #include "geom.h"
 
-static int geom_less(geom_point p, geom_point q) {
-  return p.x < q.x || (p.x == q.x && p.y < q.y);
-}
-
 static void geom_swap(geom_point *p, geom_point *q) {
   geom_point t = *p;
   *p = *q;
@@ -45,9 +41,9 @@ static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_
 ** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
 ** the caller listed them in. */
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
-  if (geom_less(q, p)) geom_swap(&p, &q);
-  if (geom_less(r, q)) geom_swap(&q, &r);
-  if (geom_less(q, p)) geom_swap(&p, &q);
+  if (geom_lexless(q, p)) geom_swap(&p, &q);
+  if (geom_lexless(r, q)) geom_swap(&q, &r);
+  if (geom_lexless(q, p)) geom_swap(&p, &q);
   t->v[0] = p;
   t->v[1] = q;
   t->v[2] = r;
@@ -103,8 +99,8 @@ typedef struct geom_ranked { geom_point p; size_t i; } geom_ranked;
 
 static int geom_ranked_cmp(const void *x, const void *y) {
   const geom_ranked *a = x, *b = y;
-  if (geom_less(a->p, b->p)) return -1;
-  if (geom_less(b->p, a->p)) return 1;
+  if (geom_lexless(a->p, b->p)) return -1;
+  if (geom_lexless(b->p, a->p)) return 1;
   return a->i < b->i ? -1 : a->i > b->i;
 }
 

@@ -12,9 +12,10 @@
 #include <math.h>
 #include <stdatomic.h>
 #include <gmp.h>
-#include "geom.h"
+#include "fliplab_config.h"
+#include "predicates.h"
 
-/* GEOM_EPS, and why tiny differences skip the filter: see geom.h. */
+/* GEOM_EPS, and why tiny differences skip the filter: see predicates.h. */
 
 static atomic_ulong geom_exact_count;
 
@@ -25,17 +26,13 @@ unsigned long geom_exact_calls(void) {
 /* NaN and infinities have no rational value (mpq_set_d would abort): the
 ** predicates answer 0 for them; callers validate input beforehand. */
 static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) {
-  return geom_point_finite(a) && geom_point_finite(b) && geom_point_finite(c)
-      && geom_point_finite(d);
+  return isfinite(a.x) && isfinite(a.y) && isfinite(b.x) && isfinite(b.y)
+      && isfinite(c.x) && isfinite(c.y) && isfinite(d.x) && isfinite(d.y);
 }
 
 /* The exact paths are rare: keep them out of line so the filters stay small
 ** enough to inline cheaply into their callers' hot loops. */
-#if defined(__GNUC__)
-#define GEOM_COLD __attribute__((noinline, cold))
-#else
-#define GEOM_COLD
-#endif
+#define GEOM_COLD FLIPLAB_COLD
 
 /* The exact half of geom_orient (geom.h holds the filter). */
 GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {

@@ -4,6 +4,7 @@
 #ifndef FLIPLAB_GOT_INTERNAL_H
 #define FLIPLAB_GOT_INTERNAL_H
 
+#include "fliplab_config.h"
 #include "got.h"
 
 /* On x86-64 Linux with GCC the bulk loops (kernels, keys, log) are also
@@ -11,7 +12,7 @@
 ** or two times the lanes of the SSE2 baseline.  With -std=c11 GCC does not contract a*b+c into an
 ** FMA, so both versions perform the same IEEE operations and give
 ** bit-identical results on any x86-64 machine. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#if FLIPLAB_HAVE_CLONES
 #define GOT_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define GOT_CLONES

@@ -34,7 +34,8 @@
 #include <stdlib.h>
 #include <stdint.h>
 #include <string.h>
-#if defined(__SSE2__)
+#include "fliplab_config.h"
+#if FLIPLAB_HAVE_SSE2
 #include <emmintrin.h>
 #endif
 #include "measure.h"
@@ -75,7 +76,7 @@ static inline double got_wrap(double d) { return d + GOT_2PI * (double)(d < -GOT
 ** rounded IEEE square root, two at a time. */
 void got_sqrt_inplace(double *t, size_t m) {
   size_t q = 0;
-#if defined(__SSE2__)
+#if FLIPLAB_HAVE_SSE2
   for (; q + 2 <= m; q += 2) _mm_storeu_pd(t + q, _mm_sqrt_pd(_mm_loadu_pd(t + q)));
 #endif
   for (; q < m; q++) t[q] = sqrt(t[q]);
@@ -96,7 +97,7 @@ static int got_log_special(const double *t, size_t m, double sign) {
   const double lo = 0x1p-1022, hi = 0x1.fffffffffffffp+1023;
   size_t q = 0;
   int bad = 0;
-#if defined(__SSE2__)
+#if FLIPLAB_HAVE_SSE2
   const __m128d vlo = _mm_set1_pd(lo), vhi = _mm_set1_pd(hi), vs = _mm_set1_pd(sign);
   __m128d acc = _mm_setzero_pd();
   for (; q + 2 <= m; q += 2) {

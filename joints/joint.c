@@ -40,17 +40,18 @@ typedef struct joint_impl {
 } joint_impl;
 
 static const joint_impl joint_table[JOINT_COUNT] = {
-  [JOINT_MIN] = {{"-inf", "l_-inf", "min(x, y)", 0, JOINT_KEY_MIN},
+  [JOINT_MIN] = {{"-inf", "l_-inf", "min(x, y)", 0, JOINT_KEY_MIN, "min", "#0072B2"},
                  joint_min, INFINITY, joint_key_identity_fn, joint_key_identity_fn},
-  [JOINT_HARMONIC] = {{"-1", "l_-1", "1/(1/x + 1/y), harmonic", 1, JOINT_KEY_ADD},
+  [JOINT_HARMONIC] = {{"-1", "l_-1", "1/(1/x + 1/y), harmonic", 1, JOINT_KEY_ADD, "harmonic", "#E69F00"},
                       joint_harmonic, INFINITY, joint_key_harmonic, joint_unkey_harmonic},
-  [JOINT_PRODUCT] = {{"0", "l_0", "x*y, product (geometric)", 1, JOINT_KEY_ADD},
+  [JOINT_PRODUCT] = {{"0", "l_0", "x*y, product (geometric)", 1, JOINT_KEY_ADD, "product", "#009E73"},
                      joint_product, 1.0, log, exp},
-  [JOINT_SUM] = {{"1", "l_1", "x + y, sum", 1, JOINT_KEY_ADD},
+  [JOINT_SUM] = {{"1", "l_1", "x + y, sum", 1, JOINT_KEY_ADD, "sum", "#D55E00"},
                  joint_sum, 0.0, joint_key_identity_fn, joint_key_identity_fn},
-  [JOINT_RSS] = {{"2", "l_2", "sqrt(x^2 + y^2), root-sum-square", 1, JOINT_KEY_ADD},
+  [JOINT_RSS] = {{"2", "l_2", "sqrt(x^2 + y^2), root-sum-square", 1, JOINT_KEY_ADD,
+                 "root-sum-sq", "#CC79A7"},
                  joint_rss, 0.0, joint_key_square, sqrt},
-  [JOINT_MAX] = {{"inf", "l_inf", "max(x, y)", 0, JOINT_KEY_MAX},
+  [JOINT_MAX] = {{"inf", "l_inf", "max(x, y)", 0, JOINT_KEY_MAX, "max", "#56B4E9"},
                  joint_max, -INFINITY, joint_key_identity_fn, joint_key_identity_fn},
 };
 

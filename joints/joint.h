@@ -34,6 +34,8 @@ typedef struct joint {
   const char *desc;
   int needs_sign;       /* 1 if the measure must keep one sign */
   joint_keyop keyop;
+  const char *word;     /* one word for tables: "min", "harmonic", ... */
+  const char *colour;   /* its colour in pictures (Okabe-Ito, colour-blind safe) */
 } joint;
 
 const joint *joint_get(joint_id j);

@@ -19,13 +19,7 @@
 */
 #include <math.h>
 #include "sampler.h"
-
-static uint64_t sampler_splitmix(uint64_t *x) {
-  uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
+#include "splitmix.h"
 
 static inline uint64_t sampler_rotl(uint64_t x, int k) {
   return (x << k) | (x >> (64 - k));
@@ -37,10 +31,10 @@ static inline uint64_t sampler_rotl(uint64_t x, int k) {
 ** consecutive outputs cannot all be zero (xoshiro's one forbidden state). */
 void sampler_seed(sampler_rng *g, uint64_t seed, uint64_t stream) {
   uint64_t x = seed;
-  uint64_t h = sampler_splitmix(&x);
+  uint64_t h = geom_splitmix64(&x);
   x = h ^ (stream * 0xD1B54A32D192ED03ull);
-  (void)sampler_splitmix(&x);
-  for (int i = 0; i < 4; i++) g->s[i] = sampler_splitmix(&x);
+  (void)geom_splitmix64(&x);
+  for (int i = 0; i < 4; i++) g->s[i] = geom_splitmix64(&x);
 }
 
 uint64_t sampler_next(sampler_rng *g) {
@@ -57,7 +51,7 @@ uint64_t sampler_next(sampler_rng *g) {
 }
 
 double sampler_uniform(sampler_rng *g) {
-  return (double)(sampler_next(g) >> 11) * 0x1.0p-53;
+  return geom_unit53(sampler_next(g));
 }
 
 /* Marsaglia's polar method; the second deviate is dropped so that the
@@ -70,16 +64,12 @@ double sampler_normal(sampler_rng *g) {
   }
 }
 
-/* A point uniform in the open unit disc. */
-static geom_point sampler_disc(sampler_rng *g) {
+geom_point sampler_disc(sampler_rng *g) {
+  geom_point p;
   for (;;) {
-    double x = 2 * sampler_uniform(g) - 1, y = 2 * sampler_uniform(g) - 1;
-    if (x * x + y * y < 1) return (geom_point){x, y};
+    double u = sampler_uniform(g), v = sampler_uniform(g);
+    if (geom_disc_accept(u, v, &p)) return p;
   }
-}
-
-static int sampler_lexless(geom_point a, geom_point b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
 /* Hull of at most two points plus p; collinear points are ordered along
@@ -108,12 +98,12 @@ static int sampler_hull_small(geom_point *h, int n, geom_point p) {
   }
   /* Collinear: keep the lexicographic extremes of the three. */
   geom_point lo = h[0], hi = h[1];
-  if (sampler_lexless(hi, lo)) {
+  if (geom_lexless(hi, lo)) {
     lo = h[1];
     hi = h[0];
   }
-  if (sampler_lexless(p, lo)) lo = p;
-  if (sampler_lexless(hi, p)) hi = p;
+  if (geom_lexless(p, lo)) lo = p;
+  if (geom_lexless(hi, p)) hi = p;
   h[0] = lo;
   h[1] = hi;
   return 2;
@@ -173,6 +163,44 @@ void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
   ** v0..v4 does not depend on the order the hull was built in. */
   int s = 0;
   for (int k = 1; k < 5; k++)
-    if (sampler_lexless(h[k], h[s])) s = k;
+    if (geom_lexless(h[k], h[s])) s = k;
   for (int k = 0; k < 5; k++) v[k] = h[(s + k) % 5];
+}
+
+/* Quadrilateral i of seed S: four points uniform in the unit disc, drawn
+** again until they are in strictly convex position, ordered anticlockwise
+** from the one with the smallest angle about their centroid.  The stream
+** is (S xor a salt, i), so quadrilateral i and pentagon i are unrelated.
+** atan2 only orders the points; the convexity test is exact. */
+#define SAMPLER_QUAD_SALT 0x51A7C0DE5EEDF00Dull
+
+static void sampler_by_angle(geom_point q[4], double cx, double cy) {
+  double ang[4];
+  for (int k = 0; k < 4; k++) ang[k] = atan2(q[k].y - cy, q[k].x - cx);
+  for (int a = 1; a < 4; a++)
+    for (int b = a; b > 0 && ang[b] < ang[b - 1]; b--) {
+      double t = ang[b];
+      ang[b] = ang[b - 1];
+      ang[b - 1] = t;
+      geom_point p = q[b];
+      q[b] = q[b - 1];
+      q[b - 1] = p;
+    }
+}
+
+void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]) {
+  sampler_rng g;
+  sampler_seed(&g, seed ^ SAMPLER_QUAD_SALT, index);
+  for (;;) {
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 4; k++) {
+      q[k] = sampler_disc(&g);
+      cx += q[k].x / 4;
+      cy += q[k].y / 4;
+    }
+    sampler_by_angle(q, cx, cy);
+    int ok = 1;
+    for (int k = 0; k < 4; k++) ok &= geom_orient(q[k], q[(k + 1) % 4], q[(k + 2) % 4]) > 0;
+    if (ok) return;
+  }
 }

@@ -7,6 +7,9 @@
 ** its generator is seeded from a hash of the pair, so any thread count and
 ** any split into shards give bit-identical samples.
 **
+** sampler_quad draws random convex quadrilaterals the same way (points
+** uniform in the unit disc, kept when in convex position).
+**
 ** For large n: the vector method (section 6.4) and points on a circle.
 */
 #ifndef FLIPLAB_SAMPLER_H
@@ -24,8 +27,16 @@ uint64_t sampler_next(sampler_rng *g);
 double sampler_uniform(sampler_rng *g);   /* [0, 1), 53 random bits */
 double sampler_normal(sampler_rng *g);
 
+/* A point uniform in the open unit disc (rejection from [-1, 1)^2). */
+geom_point sampler_disc(sampler_rng *g);
+
 /* Pentagon number `index` of the stream `seed`, anticlockwise. */
 void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]);
+
+/* Quadrilateral number `index` of the stream `seed`: four points uniform
+** in the unit disc in strictly convex position, anticlockwise (the
+** Delaunay-equivalence check of `fliplab rule`, and the tests). */
+void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 
 /* Convex n-gons, anticlockwise, strictly convex, n >= 3. 0 on success. */
 int sampler_vector(sampler_rng *g, size_t n, geom_point *out);

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <csv.h>
+#include "fliplab_config.h"
 #include "report.h"
 
 #define REPORT_CSV_MAXFIELDS 256   /* fields kept per record; more are only counted */
@@ -22,11 +23,7 @@ const char *const report_csv_header[10] = {
   "type_IV", "type_V", "dt"
 };
 
-static void report_errf(char *err, size_t errlen, const char *fmt, ...)
-#if defined(__GNUC__)
-  __attribute__((format(printf, 3, 4)))
-#endif
-  ;
+static void report_errf(char *err, size_t errlen, const char *fmt, ...) FLIPLAB_PRINTF(3, 4);
 
 static void report_errf(char *err, size_t errlen, const char *fmt, ...) {
   va_list ap;

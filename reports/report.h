@@ -70,6 +70,10 @@ int report_table_md(FILE *f, const report_meta *m, const report_row *rows, int n
 double report_wilson_halfwidth(uint64_t k, uint64_t n);
 double report_wilson_max(uint64_t n);
 
+/* The 95% Wilson score interval [lo, hi] of k successes in n, in percent,
+** clipped to [0, 100]; [0, 100] when n == 0. */
+void report_wilson(uint64_t k, uint64_t n, double *lo, double *hi);
+
 /* Number of type-IV counts among triangle rules (rows with a measure):
 ** theorem 1 says it must be 0. */
 uint64_t report_type_iv(const report_row *rows, int nrows);
@@ -113,6 +117,10 @@ int report_pentagon_write(FILE *f, const geom_point v[5]);
 ** row: -1 and "FILE line N: problem" in err. */
 int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *count,
                          size_t *reversed, char *err, size_t errlen);
+
+/* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute
+** value with either quote).  0, or -1 on a write error. */
+int report_xml_text(FILE *f, const char *s);
 
 /* Figure 3.9: type-I % (x) against DT % (y) for every rule that produced
 ** no type-V graph; colour by joint, one <title> per point. */

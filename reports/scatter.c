@@ -12,17 +12,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "joint.h"
 #include "report.h"
 
-/* Okabe-Ito colours, readable by colour-blind eyes; one per joint. */
-static const struct { const char *joint, *label, *colour; } report_palette[] = {
-  {"-inf", "l_-inf (min)", "#0072B2"},    {"-1", "l_-1 (harmonic)", "#E69F00"},
-  {"0", "l_0 (product)", "#009E73"},      {"1", "l_1 (sum)", "#D55E00"},
-  {"2", "l_2 (root-sum-sq)", "#CC79A7"},  {"inf", "l_inf (max)", "#56B4E9"},
-  {"", "quadrilateral rule (DT)", "#000000"},
-};
-#define REPORT_NPALETTE ((int)(sizeof report_palette / sizeof report_palette[0]))
-#define REPORT_OTHER_COLOUR "#999999"
+/* Legend entries: the joints (their colours live with them, in joints/),
+** then quadrilateral rules such as DT, then groups mixing several of these.
+** Only entries that some drawn circle uses appear in the legend. */
+enum { REPORT_QUAD = JOINT_COUNT, REPORT_MIXED, REPORT_NKINDS };
+#define REPORT_QUAD_COLOUR "#000000"
 #define REPORT_MIXED_COLOUR "#FFFFFF"
 
 /* Canvas and plot square, in pixels. */
@@ -37,22 +34,15 @@ static double report_py(double v, double lo) {
   return PY0 + PSIZE - PAD - (v - lo) / (100 - lo) * (PSIZE - 2 * PAD);
 }
 
-static const char *report_colour(const char *joint) {
-  for (int i = 0; i < REPORT_NPALETTE; i++)
-    if (strcmp(report_palette[i].joint, joint) == 0) return report_palette[i].colour;
-  return REPORT_OTHER_COLOUR;
+/* A row's legend entry: its joint, or REPORT_QUAD for a rule without one. */
+static int report_kind(const char *joint) {
+  int j = joint[0] ? joint_find(joint) : -1;
+  return j >= 0 ? j : REPORT_QUAD;
 }
 
-static void report_xml(FILE *f, const char *s) {
-  for (; *s; s++) {
-    switch (*s) {
-    case '&': fputs("&amp;", f); break;
-    case '<': fputs("&lt;", f); break;
-    case '>': fputs("&gt;", f); break;
-    case '"': fputs("&quot;", f); break;
-    default: fputc(*s, f);
-    }
-  }
+static const char *report_kind_colour(int k) {
+  return k < JOINT_COUNT ? joint_get((joint_id)k)->colour
+       : k == REPORT_QUAD ? REPORT_QUAD_COLOUR : REPORT_MIXED_COLOUR;
 }
 
 typedef struct report_group {
@@ -100,37 +90,43 @@ static void report_svg_axes(FILE *f, double lo) {
           PX0 - 50, PY0 + PSIZE / 2);
 }
 
-static void report_svg_legend(FILE *f) {
-  int x = PX0 + 14, y = PY0 + 16;
+/* The legend lists exactly the entries used[] marks (what was drawn). */
+static void report_svg_legend(FILE *f, const int used[REPORT_NKINDS]) {
+  int x = PX0 + 14, y = PY0 + 16, n = 0;
+  for (int k = 0; k < REPORT_NKINDS; k++) n += used[k] != 0;
   fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"230\" height=\"%d\" fill=\"#fff\" "
              "fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n",
-          x - 8, y - 12, 16 * (REPORT_NPALETTE + 1) + 30);
+          x - 8, y - 12, 16 * n + 30);
   fprintf(f, "<text x=\"%d\" y=\"%d\" font-weight=\"bold\">joint</text>\n", x, y + 2);
-  for (int i = 0; i < REPORT_NPALETTE; i++) {
-    int yy = y + 18 + 16 * i;
+  int yy = y + 18;
+  for (int k = 0; k < REPORT_NKINDS; k++) {
+    if (!used[k]) continue;
     fprintf(f, "<circle cx=\"%d\" cy=\"%d\" r=\"5\" fill=\"%s\" stroke=\"#333\"/>"
-               "<text x=\"%d\" y=\"%d\">%s</text>\n",
-            x + 5, yy - 4, report_palette[i].colour, x + 16, yy, report_palette[i].label);
+               "<text x=\"%d\" y=\"%d\">", x + 5, yy - 4, report_kind_colour(k), x + 16, yy);
+    if (k < JOINT_COUNT)
+      fprintf(f, "%s (%s)", joint_get((joint_id)k)->symbol, joint_get((joint_id)k)->word);
+    else
+      fputs(k == REPORT_QUAD ? "quadrilateral rule (DT)" : "several joints", f);
+    fputs("</text>\n", f);
+    yy += 16;
   }
-  int yy = y + 18 + 16 * REPORT_NPALETTE;
-  fprintf(f, "<circle cx=\"%d\" cy=\"%d\" r=\"5\" fill=\"%s\" stroke=\"#333\"/>"
-             "<text x=\"%d\" y=\"%d\">several joints</text>\n",
-          x + 5, yy - 4, REPORT_MIXED_COLOUR, x + 16, yy);
   fprintf(f, "<text x=\"%d\" y=\"%d\" fill=\"#555\">larger circle: rules with equal counts</text>\n",
-          x, yy + 18);
+          x, yy + 2);
 }
 
-static void report_svg_point(FILE *f, const report_row *rows, int nrows,
-                             const report_group *g, double lo, uint64_t n) {
-  const char *colour = report_colour(rows[g->first].joint);
+/* Draw one group; returns its legend entry. */
+static int report_svg_point(FILE *f, const report_row *rows, int nrows,
+                            const report_group *g, double lo, uint64_t n) {
+  int kind = report_kind(rows[g->first].joint);
   int shown = 0;
   for (int i = g->first; i < nrows && shown < g->size; i++) {
     if (rows[i].c.type[FLIPGRAPH_V] != 0 || rows[i].c.type[FLIPGRAPH_I] != g->i ||
         rows[i].c.dt != g->dt)
       continue;
-    if (strcmp(report_colour(rows[i].joint), colour) != 0) colour = REPORT_MIXED_COLOUR;
+    if (report_kind(rows[i].joint) != kind) kind = REPORT_MIXED;
     shown++;
   }
+  const char *colour = report_kind_colour(kind);
   double px = report_px(report_pc(g->i, n), lo), py = report_py(report_pc(g->dt, n), lo);
   double r = 4.5 + 1.5 * sqrt((double)(g->size - 1));
   fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\" fill-opacity=\"0.8\" "
@@ -141,12 +137,13 @@ static void report_svg_point(FILE *f, const report_row *rows, int nrows,
     const flipgraph_counts *c = &rows[i].c;
     if (c->type[FLIPGRAPH_V] != 0 || c->type[FLIPGRAPH_I] != g->i || c->dt != g->dt) continue;
     if (shown++) fputc('\n', f);
-    report_xml(f, rows[i].rule);
+    report_xml_text(f, rows[i].rule);
     fprintf(f, ": type I %.2f%%, DT %.2f%% (II %.2f%%, III %.2f%%)",
             report_pc(c->type[FLIPGRAPH_I], n), report_pc(c->dt, n),
             report_pc(c->type[FLIPGRAPH_II], n), report_pc(c->type[FLIPGRAPH_III], n));
   }
   fprintf(f, "</title></circle>\n");
+  return kind;
 }
 
 int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, int nrows) {
@@ -187,8 +184,9 @@ int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, in
   fprintf(f, "; %d rules without type-V graphs; hover a point for its rules</text>\n",
           nplot);
   report_svg_axes(f, lo);
-  for (int k = 0; k < ng; k++) report_svg_point(f, rows, nrows, &g[k], lo, n);
-  report_svg_legend(f);
+  int used[REPORT_NKINDS] = {0};
+  for (int k = 0; k < ng; k++) used[report_svg_point(f, rows, nrows, &g[k], lo, n)] = 1;
+  report_svg_legend(f, used);
   fprintf(f, "</svg>\n");
   free(g);
   return ferror(f) ? -1 : 0;

@@ -137,16 +137,6 @@ static void report_flipgraph_edge(FILE *f, const flipgraph *g, int k) {
             (j + 3 + (d == RULE_BD)) % 5);
 }
 
-static void report_flipgraph_text(FILE *f, const char *s) {
-  for (; *s; s++) {
-    if (*s == '<') fputs("&lt;", f);
-    else if (*s == '>') fputs("&gt;", f);
-    else if (*s == '&') fputs("&amp;", f);
-    else if (*s == '\'') fputs("&apos;", f);
-    else fputc(*s, f);
-  }
-}
-
 int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *g,
                          const char *caption) {
   int lines = 0;
@@ -185,7 +175,7 @@ int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *
       memcpy(line, s, n);
       line[n] = '\0';
       fprintf(f, "<text x='12' y='%.1f' font-size='12' font-family='monospace'>", y);
-      report_flipgraph_text(f, line);
+      report_xml_text(f, line);
       fprintf(f, "</text>\n");
       y += RFG_LINE;
       s += n;

@@ -45,12 +45,7 @@ static void report_got_colour(double f, char *buf, size_t len) {
 /* A line of text, with the XML specials escaped. */
 static void report_got_text(FILE *f, double x, double y, int size, const char *s) {
   fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%d\">", x, y, size);
-  for (; *s; s++) {
-    if (*s == '<') fputs("&lt;", f);
-    else if (*s == '>') fputs("&gt;", f);
-    else if (*s == '&') fputs("&amp;", f);
-    else fputc(*s, f);
-  }
+  report_xml_text(f, s);
   fputs("</text>\n", f);
 }
 

@@ -11,12 +11,6 @@
 #include "joint.h"
 #include "report.h"
 
-/* The joints in table order with a word for the block label. */
-static const struct { const char *name, *word; } report_joints[] = {
-  {"-inf", "min"}, {"-1", "harmonic"}, {"0", "product"},
-  {"1", "sum"},    {"2", "root-sum-sq"}, {"inf", "max"},
-};
-#define REPORT_NJOINTS ((int)(sizeof report_joints / sizeof report_joints[0]))
 
 /* The four rows of a joint block: label and which count they show. */
 enum { REPORT_ROW_DT = -1 };
@@ -49,11 +43,31 @@ void report_row_from_rule(report_row *row, const rule *r, const flipgraph_counts
   if (c != NULL) row->c = *c;
 }
 
+/* Centre and half-width of the 95% Wilson score interval, as fractions. */
+static void report_wilson_parts(uint64_t k, uint64_t n, double *centre, double *half) {
+  double z = REPORT_Z95, nn = (double)n, p = (double)k / nn;
+  double den = 1 + z * z / nn;
+  *centre = (p + z * z / (2 * nn)) / den;
+  *half = z / den * sqrt(p * (1 - p) / nn + z * z / (4 * nn * nn));
+}
+
 double report_wilson_halfwidth(uint64_t k, uint64_t n) {
   if (n == 0) return 0;
-  double z = REPORT_Z95, nn = (double)n, p = (double)k / nn;
-  double half = z / (1 + z * z / nn) * sqrt(p * (1 - p) / nn + z * z / (4 * nn * nn));
+  double centre, half;
+  report_wilson_parts(k, n, &centre, &half);
   return 100 * half;
+}
+
+void report_wilson(uint64_t k, uint64_t n, double *lo, double *hi) {
+  if (n == 0) {
+    *lo = 0;
+    *hi = 100;
+    return;
+  }
+  double centre, half;
+  report_wilson_parts(k, n, &centre, &half);
+  *lo = 100 * fmax(0, centre - half);
+  *hi = 100 * fmin(1, centre + half);
 }
 
 double report_wilson_max(uint64_t n) {
@@ -94,12 +108,12 @@ static int report_layout_make(report_layout *L, const report_meta *m,
   memset(L, 0, sizeof *L);
   size_t cap = (size_t)(nrows > 0 ? nrows : 1);
   L->col = malloc(cap * sizeof *L->col);
-  L->block = malloc((cap + REPORT_NJOINTS) * sizeof *L->block);
+  L->block = malloc((cap + JOINT_COUNT) * sizeof *L->block);
   if (L->col == NULL || L->block == NULL) return -1;
-  for (int j = 0; j < REPORT_NJOINTS; j++)
+  for (int j = 0; j < JOINT_COUNT; j++)
     for (int i = 0; i < nrows; i++)
-      if (rows[i].measure[0] && strcmp(rows[i].joint, report_joints[j].name) == 0) {
-        L->block[L->nblocks++] = report_joints[j].name;
+      if (rows[i].measure[0] && strcmp(rows[i].joint, joint_get((joint_id)j)->name) == 0) {
+        L->block[L->nblocks++] = joint_get((joint_id)j)->name;
         break;
       }
   for (int i = 0; i < nrows; i++) {
@@ -145,10 +159,10 @@ static void report_cell(char *buf, size_t len, const report_layout *L,
   report_pct(buf, len, L, type == REPORT_ROW_DT ? rows[i].c.dt : rows[i].c.type[type]);
 }
 
+/* The joint's word for the block label (joints/ owns it). */
 static const char *report_joint_word(const char *name) {
-  for (int j = 0; j < REPORT_NJOINTS; j++)
-    if (strcmp(report_joints[j].name, name) == 0) return report_joints[j].word;
-  return "user";
+  int j = joint_find(name);
+  return j >= 0 ? joint_get((joint_id)j)->word : "user";
 }
 
 /* ------------------------------------------------------------- header */

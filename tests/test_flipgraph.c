@@ -403,6 +403,66 @@ static void test_tally_equals_loop(void **state) {
   assert_int_equal(flipgraph_tally(rules, 1, seed, UINT64_MAX, 10, TFG_EPS, 1, tally, NULL, NULL), -1);
 }
 
+/* The per-sample hook sees every pentagon once, on a thread number below
+** the thread count, with the graphs flipgraph_classify gives; its per-thread
+** counts add up to the tally's. */
+#define TFG_HOOK_THREADS 2
+typedef struct tfg_hook {
+  int nrules, bad;
+  uint64_t first, count;
+  unsigned char *seen;
+  flipgraph_counts c[TFG_HOOK_THREADS][TFG_MAXRULES];
+  const rule *rules;
+} tfg_hook;
+
+static void tfg_each(void *ctx, int thread, uint64_t i, const flipgraph_pentagon *p,
+                     const flipgraph *g) {
+  tfg_hook *h = ctx;
+  if (thread < 0 || thread >= TFG_HOOK_THREADS || i < h->first || i >= h->first + h->count) {
+    h->bad = 1;
+    return;
+  }
+  h->seen[i - h->first]++;
+  for (int r = 0; r < h->nrules; r++) {
+    flipgraph want;
+    flipgraph_classify(p, &h->rules[r], TFG_EPS, &want);
+    if (want.type != g[r].type || want.delaunay != g[r].delaunay) h->bad = 1;
+    h->c[thread][r].samples++;
+    h->c[thread][r].type[g[r].type]++;
+    h->c[thread][r].dt += (uint64_t)g[r].delaunay;
+  }
+}
+
+static void test_tally_hook(void **state) {
+  (void)state;
+  rule rules[TFG_MAXRULES];
+  int n = tfg_all_rules(rules);
+  if (n > 12) n = 12;
+  static tfg_hook h;
+  memset(&h, 0, sizeof h);
+  h.nrules = n;
+  h.first = 70;
+  h.count = 5000;
+  h.rules = rules;
+  h.seen = calloc(h.count, 1);
+  flipgraph_counts out[TFG_MAXRULES];
+  memset(out, 0, sizeof out);
+  flipgraph_run run = {7, h.first, h.count, TFG_EPS, TFG_HOOK_THREADS, NULL, NULL, tfg_each, &h};
+  assert_int_equal(flipgraph_tally_run(rules, n, &run, out), 0);
+  assert_int_equal(h.bad, 0);
+  for (uint64_t i = 0; i < h.count; i++) assert_int_equal(h.seen[i], 1);
+  for (int r = 0; r < n; r++) {
+    flipgraph_counts sum = {0};
+    for (int t = 0; t < TFG_HOOK_THREADS; t++) {
+      sum.samples += h.c[t][r].samples;
+      for (int y = 0; y < FLIPGRAPH_NTYPES; y++) sum.type[y] += h.c[t][r].type[y];
+      sum.dt += h.c[t][r].dt;
+    }
+    assert_memory_equal(&sum, &out[r], sizeof sum);
+  }
+  free(h.seen);
+}
+
 /* Theorem 1 of the thesis: no triangle-based rule has a type IV pentagon.
 ** And types I, II, III and V each occur under some triangle rule. */
 static void test_types_reached(void **state) {
@@ -496,6 +556,7 @@ int main(void) {
     cmocka_unit_test(test_dt_always_type_one),
     cmocka_unit_test(test_fast_path_equals_rule_eval),
     cmocka_unit_test(test_tally_equals_loop),
+    cmocka_unit_test(test_tally_hook),
     cmocka_unit_test(test_types_reached),
     cmocka_unit_test(test_type_four_by_quad_rule),
   };

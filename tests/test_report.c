@@ -388,6 +388,37 @@ static void test_scatter(void **state) {
   free(s);
 }
 
+/* Figure 3.9's legend lists exactly the colours drawn: DT sharing its spot
+** with R_1 is drawn white ("several joints"), so neither DT's black entry
+** nor l_1's appears; l_-inf's point is drawn and its entry is there. */
+static void test_scatter_legend(void **state) {
+  (void)state;
+  report_row rows[3];
+  testutil_rng g = {5};
+  trep_random_row(&g, &rows[0], "R", "1", 1000);
+  trep_random_row(&g, &rows[1], "", "", 1000);
+  trep_random_row(&g, &rows[2], "P", "-inf", 1000);
+  for (int i = 0; i < 3; i++) {
+    memset(rows[i].c.type, 0, sizeof rows[i].c.type);
+    rows[i].c.type[FLIPGRAPH_I] = i < 2 ? 1000 : 700;
+    rows[i].c.type[FLIPGRAPH_III] = 1000 - rows[i].c.type[FLIPGRAPH_I];
+    rows[i].c.dt = i < 2 ? 1000 : 400;
+  }
+  report_meta m = {.samples = 1000};
+  FILE *f = tmpfile();
+  assert_int_equal(report_scatter_svg(f, &m, rows, 3), 0);
+  char *s = trep_slurp(f);
+  fclose(f);
+  assert_non_null(strstr(s, ">several joints<"));
+  assert_non_null(strstr(s, ">l_-inf (min)<"));
+  assert_null(strstr(s, "quadrilateral rule"));
+  assert_null(strstr(s, ">l_1 (sum)<"));
+  /* Every legend colour is a drawn circle's: legend circles have r="5". */
+  assert_int_equal(testutil_count(s, "r=\"5\""), 2);
+  assert_int_equal(testutil_count(s, "fill=\"#FFFFFF\""), 2);   /* point + legend */
+  free(s);
+}
+
 /* Pentagons: %.17g reads back bit for bit; clockwise rows are reversed
 ** keeping the first vertex; bad rows name their line and problem. */
 static void test_pentagon_files(void **state) {
@@ -462,6 +493,7 @@ int main(void) {
     cmocka_unit_test(test_text_groups),
     cmocka_unit_test(test_md_table),
     cmocka_unit_test(test_scatter),
+    cmocka_unit_test(test_scatter_legend),
     cmocka_unit_test(test_pentagon_files),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

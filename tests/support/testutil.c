@@ -13,40 +13,21 @@
 #include <string.h>
 #include <unistd.h>
 #include "testutil.h"
+#include "sampler.h"
+#include "splitmix.h"
 
 uint64_t testutil_next(testutil_rng *g) {
-  uint64_t z = (g->s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  return geom_splitmix64(&g->s);
 }
 
 double testutil_uniform(testutil_rng *g) {
-  return (double)(testutil_next(g) >> 11) * 0x1.0p-53;
+  return geom_unit53(testutil_next(g));
 }
 
-static geom_point testutil_disc_point(testutil_rng *g) {
-  for (;;) {
-    double x = 2 * testutil_uniform(g) - 1, y = 2 * testutil_uniform(g) - 1;
-    if (x * x + y * y < 1) return (geom_point){x, y};
-  }
-}
-
+/* One sampler for every random quadrilateral: pentagon/'s, on a stream
+** chosen by this generator. */
 void testutil_convex_quad(testutil_rng *g, geom_point q[4]) {
-  for (;;) {
-    for (int i = 0; i < 4; i++) q[i] = testutil_disc_point(g);
-    /* Order by angle about the centroid, then require strict convexity. */
-    double cx = (q[0].x + q[1].x + q[2].x + q[3].x) / 4;
-    double cy = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
-    for (int i = 1; i < 4; i++)
-      for (int j = i; j > 0 && atan2(q[j].y - cy, q[j].x - cx) < atan2(q[j - 1].y - cy, q[j - 1].x - cx); j--) {
-        geom_point t = q[j]; q[j] = q[j - 1]; q[j - 1] = t;
-      }
-    int ok = 1;
-    for (int i = 0; i < 4; i++)
-      if (geom_orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) ok = 0;
-    if (ok) return;
-  }
+  sampler_quad(testutil_next(g), 0, q);
 }
 
 void testutil_quad_tris(const geom_point q[4], geom_tri t[4]) {

@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "fliplab_config.h"
 #include "geom.h"
 
 /* splitmix64: a small seeded generator for test data. */
@@ -47,10 +48,7 @@ int testutil_run_to(const char *args, const char *stdout_path, char *err, size_t
 /* testutil_run with the arguments made by printf from FMT (at most 4095
 ** characters: the tests' commands are far shorter). */
 int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char *fmt, ...)
-#if defined(__GNUC__)
-  __attribute__((format(printf, 5, 6)))
-#endif
-  ;
+  FLIPLAB_PRINTF(5, 6);
 
 /* The whole file as a NUL-terminated malloc'ed string (NULL if it cannot
 ** be read); write text to a file, failing the test if it cannot. */
