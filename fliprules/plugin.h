@@ -14,7 +14,9 @@
 **
 ** Build a plugin against this header only (no fliplab library needed):
 **
-**     cc -std=c11 -O2 -shared -fPIC -I PREFIX/include my.c -o my.so -lm
+**     cc -std=c11 -O2 -shared -fPIC $(pkg-config --cflags fliplab) my.c -o my.so -lm
+**
+** The full contract, with the examples of plugins/, is docs/plugins.md.
 **
 ** Contract:
 ** - abi must be FLIPLAB_PLUGIN_ABI; fliplab refuses any other value.  The
