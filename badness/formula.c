@@ -15,6 +15,8 @@
 ** stale entry left behind by formula_reset (tests) is recognised and
 ** replaced rather than followed.
 */
+#include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -239,8 +241,8 @@ int formula_check_name(const char *name, char *err, size_t errlen) {
     return -1;
   }
   if (n >= FORMULA_NAME_MAX) {
-    snprintf(err, errlen, "measure name '%.40s...' is longer than %d characters", name,
-             FORMULA_NAME_MAX - 1);
+    snprintf(err, errlen, "measure name '%.20s...' is %zu characters long; at most %d", name,
+             n, FORMULA_NAME_MAX - 1);
     return -1;
   }
   for (size_t i = 0; i < n; i++) {
@@ -280,7 +282,11 @@ static int formula_split(const char *def, char *name, int *sign, size_t *expr_at
     snprintf(err, errlen, "expected NAME = EXPR (or NAME >= 0 : EXPR, NAME <= 0 : EXPR)");
     return -1;
   }
-  if (nlen >= FORMULA_NAME_MAX) nlen = FORMULA_NAME_MAX - 1;
+  if (nlen >= FORMULA_NAME_MAX) {
+    snprintf(err, errlen, "measure name '%.20s...' is %zu characters long; at most %d",
+             n0, nlen, FORMULA_NAME_MAX - 1);
+    return -1;
+  }
   memcpy(name, n0, nlen);
   name[nlen] = '\0';
   while (*p == ' ' || *p == '\t') p++;
@@ -348,7 +354,30 @@ static void formula_syntax_error(formula_slot *s, const char *expr, size_t expr_
   long elen = (long)strlen(expr);
   if (pos < 0 || pos > elen) pos = elen;
   formula_strip_position(mupGetErrorMsg(s->parser), m, sizeof m);
+  if (strlen(m) > 100) memcpy(m + 97, "...", 4);   /* muParser echoes the bad token */
   snprintf(err, errlen, "syntax error at position %ld: %s", (long)expr_at + pos, m);
+}
+
+/* Every numeric literal must be a double: muParser takes 1e400 for a name
+** (then "unknown variable") and 1e-400 for 0.  A literal starts with a digit,
+** or '.' and a digit, not inside a name.  0 or -1 with the message. */
+static int formula_check_numbers(const char *e, size_t expr_at, char *err, size_t errlen) {
+  for (size_t i = 0; e[i] != '\0'; i++) {
+    int starts = (e[i] >= '0' && e[i] <= '9') || (e[i] == '.' && e[i + 1] >= '0' && e[i + 1] <= '9');
+    int inside = i > 0 && (isalnum((unsigned char)e[i - 1]) || e[i - 1] == '_' || e[i - 1] == '.');
+    if (!starts || inside) continue;
+    char *end;
+    errno = 0;
+    double v = strtod(e + i, &end);
+    if (errno == ERANGE) {
+      snprintf(err, errlen, "number '%.*s' at position %zu is out of range (%s)",
+               (int)((end - (e + i)) < 40 ? end - (e + i) : 40), e + i, expr_at + i,
+               fabs(v) > 1 ? "it overflows a double" : "it underflows a double to 0 or a subnormal");
+      return -1;
+    }
+    if (end > e + i) i = (size_t)(end - e) - 1;
+  }
+  return 0;
 }
 
 /* Compile expr on a scratch parser: variables known, syntax right, exactly
@@ -361,6 +390,7 @@ static int formula_compile_check(const char *def, const char *expr, size_t expr_
              (long)expr_at + eq);
     return -1;
   }
+  if (formula_check_numbers(expr, expr_at, err, errlen) != 0) return -1;
   formula_slot *s = formula_slot_new(expr);
   if (s == NULL) {
     snprintf(err, errlen, "out of memory");
@@ -532,6 +562,12 @@ int formula_define(const char *def, char *err, size_t errlen) {
   char name[FORMULA_NAME_MAX];
   int sign;
   size_t expr_at;
+  size_t dlen = strlen(def);
+  if (dlen > FORMULA_TEXT_MAX) {
+    snprintf(err, errlen, "the definition is %zu characters long; at most %d are accepted",
+             dlen, FORMULA_TEXT_MAX);
+    return -1;
+  }
   if (formula_split(def, name, &sign, &expr_at, err, errlen) != 0) return -1;
   if (formula_check_name(name, err, errlen) != 0) return -1;
   if (formula_n >= FORMULA_MAX || measure_count() >= MEASURE_MAX) {

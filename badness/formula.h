@@ -23,6 +23,11 @@
 
 #define FORMULA_MAX 32          /* formulas per process */
 #define FORMULA_NAME_MAX 32     /* longest NAME, terminator included */
+/* Longest definition text.  muParser formats its error messages into a
+** fixed buffer and overflows it (a crash, not an error) on a bad token of
+** about 2,000 characters; refusing longer definitions up front keeps every
+** token far below that.  A real measure is a line, not a page. */
+#define FORMULA_TEXT_MAX 1024
 
 /* The variables a formula may use, space-separated (for messages and help):
 ** a b c alpha beta gamma A P R r h rx ry x1 y1 x2 y2 x3 y3, and constant pi.

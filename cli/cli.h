@@ -22,7 +22,9 @@ int cli_cmd_classify(int argc, char **argv);
 int cli_cmd_got(int argc, char **argv);
 int cli_cmd_rule(int argc, char **argv);
 
-/* Print "fliplab CMD: message" on stderr; returns 2 (usage/input error). */
+/* Print "fliplab CMD: message" ("fliplab: message" when cmd is NULL) on
+** stderr, as one line of at most about 1000 bytes (control characters
+** shown as '?'); returns 2 (usage/input error). */
 int cli_error(const char *cmd, const char *fmt, ...) FLIPLAB_PRINTF(2, 3);
 
 /* Strict number parsing: the whole string, finite, in range.  On failure

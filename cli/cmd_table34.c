@@ -236,10 +236,12 @@ int cli_cmd_table34(int argc, char **argv) {
     counts[r].samples = count;
     report_row_from_rule(&rows[r], &rules[r], &counts[r]);
   }
+  report_run run = {.known = 1, .seed = o.seed, .tie_eps = o.tie_eps, .first = first,
+                    .end = first + count, .total = o.samples, .rules = (uint64_t)nrules};
   report_meta meta = {.samples = count, .has_seed = 1, .seed = o.seed, .has_tie_eps = 1,
                       .tie_eps = o.tie_eps, .shard_k = o.shard_k, .shard_n = o.shard_n,
                       .shard_first = first, .shard_total = o.samples,
-                      .text_columns = (int)o.columns};
+                      .text_columns = (int)o.columns, .run = &run};
   uint64_t iv = report_type_iv(rows, nrules);
   if (iv > 0)
     fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "

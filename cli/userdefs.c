@@ -21,11 +21,13 @@
 #include "cli.h"
 #include "plugin_loader.h"
 
+#define CLI_ECHO_MAX 60   /* characters of a definition repeated in its error */
+
 static void cli_userdefs_atexit(void) {
   char msg[1024];
   if (formula_check_errors(msg, sizeof msg)) {
     fflush(NULL);
-    fprintf(stderr, "fliplab: %s\n", msg);
+    cli_error(NULL, "%s", msg);
     _exit(1);
   }
 }
@@ -67,12 +69,14 @@ int cli_userdefs_take(int *argc, char **argv) {
     }
     if (def != NULL) {
       if (formula_define(def, err, sizeof err) < 0) {
-        fprintf(stderr, "fliplab: --define '%s': %s\n", def, err);
+        /* Echo at most CLI_ECHO_MAX characters of the definition. */
+        cli_error(NULL, "--define '%.*s%s': %s", CLI_ECHO_MAX, def,
+                  strlen(def) > CLI_ECHO_MAX ? "..." : "", err);
         return 2;
       }
     } else if (plug != NULL) {
       if (plugin_load(plug, err, sizeof err) != 0) {
-        fprintf(stderr, "fliplab: --plugin: %s\n", err);
+        cli_error(NULL, "--plugin: %s", err);
         return 2;
       }
     } else {

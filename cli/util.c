@@ -9,13 +9,23 @@
 #include <string.h>
 #include "cli.h"
 
+/* The message is one line of bounded length whatever it echoes: control
+** characters (a newline inside a quoted CSV field, a tab) become '?', and
+** past CLI_ERROR_MAX bytes it is cut and ends in "...". */
+#define CLI_ERROR_MAX 1000
+
 int cli_error(const char *cmd, const char *fmt, ...) {
+  char msg[CLI_ERROR_MAX + 1];
   va_list ap;
-  fprintf(stderr, "fliplab %s: ", cmd);
   va_start(ap, fmt);
-  vfprintf(stderr, fmt, ap);
+  int n = vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
-  fputc('\n', stderr);
+  if (n < 0) msg[0] = '\0';
+  if (n >= (int)sizeof msg) memcpy(msg + CLI_ERROR_MAX - 3, "...", 4);
+  for (char *p = msg; *p; p++)
+    if ((unsigned char)*p < 0x20 || *p == 0x7f) *p = '?';
+  if (cmd != NULL) fprintf(stderr, "fliplab %s: %s\n", cmd, msg);
+  else fprintf(stderr, "fliplab: %s\n", msg);
   return 2;
 }
 

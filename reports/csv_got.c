@@ -23,13 +23,6 @@ typedef struct report_got_reader {
   const char *path;
 } report_got_reader;
 
-static int report_got_number(const char *s, double *v) {
-  char *end;
-  errno = 0;
-  *v = strtod(s, &end);
-  return s[0] != '\0' && *end == '\0' && errno != ERANGE;
-}
-
 static int report_got_record(char **f, int nf, uint64_t line, void *data) {
   report_got_reader *r = data;
   unsigned long long ln = (unsigned long long)line;
@@ -41,13 +34,10 @@ static int report_got_record(char **f, int nf, uint64_t line, void *data) {
   }
   double xy[2];
   for (int q = 0; q < 2; q++) {
-    if (!report_got_number(f[q], &xy[q])) {
-      snprintf(r->err, r->errlen, "%s line %llu: '%.40s' is not a number", r->path, ln, f[q]);
-      return -1;
-    }
-    if (!isfinite(xy[q])) {
-      snprintf(r->err, r->errlen, "%s line %llu: '%.40s' is not a finite number", r->path,
-               ln, f[q]);
+    const char *why = report_number(f[q], &xy[q]);
+    if (why != NULL) {
+      snprintf(r->err, r->errlen, "%s line %llu: %s '%.40s' %s", r->path, ln, q ? "y" : "x",
+               f[q], why);
       return -1;
     }
   }

@@ -8,19 +8,28 @@
 ** empty record for the CR/LF pair, which is skipped like any blank line).
 */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <csv.h>
 #include "fliplab_config.h"
+#include "joint.h"
+#include "measure.h"
 #include "report.h"
 
-#define REPORT_CSV_MAXFIELDS 256   /* fields kept per record; more are only counted */
+/* Bounds on what a reader accepts (a crafted file must not take all memory
+** or time): fields per record, bytes per field, rules per counts file (every
+** measure of the registry under every joint, and room for whole-
+** quadrilateral rules). */
+#define REPORT_CSV_MAXFIELDS 256
+#define REPORT_CSV_FIELD_MAX 4096
+#define REPORT_CSV_MAXROWS (MEASURE_MAX * JOINT_COUNT + 64)
 
-const char *const report_csv_header[10] = {
+const char *const report_csv_header[REPORT_CSV_NCOLS] = {
   "measure", "joint", "rule", "samples", "type_I", "type_II", "type_III",
-  "type_IV", "type_V", "dt"
+  "type_IV", "type_V", "dt", "seed", "tie_eps", "first", "end", "total", "rules"
 };
 
 static void report_errf(char *err, size_t errlen, const char *fmt, ...) FLIPLAB_PRINTF(3, 4);
@@ -48,7 +57,12 @@ int report_csv_field(FILE *f, const char *s) {
 }
 
 int report_csv_write(FILE *f, const report_row *rows, int nrows) {
-  for (int i = 0; i < 10; i++) {
+  return report_csv_write_run(f, rows, nrows, NULL);
+}
+
+int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const report_run *run) {
+  int ncols = run != NULL ? REPORT_CSV_NCOLS : 10;
+  for (int i = 0; i < ncols; i++) {
     if (i > 0) fputc(',', f);
     report_csv_field(f, report_csv_header[i]);
   }
@@ -63,7 +77,20 @@ int report_csv_write(FILE *f, const report_row *rows, int nrows) {
     fprintf(f, ",%llu", (unsigned long long)c->samples);
     for (int t = 0; t < FLIPGRAPH_NTYPES; t++)
       fprintf(f, ",%llu", (unsigned long long)c->type[t]);
-    fprintf(f, ",%llu\n", (unsigned long long)c->dt);
+    fprintf(f, ",%llu", (unsigned long long)c->dt);
+    /* tie_eps in the fewest digits that read back bit for bit, so merge
+    ** compares it exactly. */
+    if (run != NULL) {
+      char eps[32];
+      for (int d = 1; d <= 17; d++) {
+        snprintf(eps, sizeof eps, "%.*g", d, run->tie_eps);
+        if (strtod(eps, NULL) == run->tie_eps) break;
+      }
+      fprintf(f, ",%llu,%s,%llu,%llu,%llu,%d", (unsigned long long)run->seed, eps,
+              (unsigned long long)run->first, (unsigned long long)run->end,
+              (unsigned long long)run->total, nrows);
+    }
+    fputc('\n', f);
   }
   return ferror(f) ? -1 : 0;
 }
@@ -89,37 +116,53 @@ int report_pentagon_write(FILE *f, const geom_point v[5]) {
 
 /* ---------------------------------------------------------------- reading */
 
+/* libcsv grows its field buffer without limit; a reader must not (a
+** crafted file with one huge field would take all memory).  Its buffer
+** is grown through this function, which refuses past REPORT_CSV_FIELD_MAX
+** bytes and says so in a per-thread flag, so the error can tell "field too
+** long" from "out of memory". */
+static _Thread_local int report_csv_field_refused;
+
+static void *report_csv_realloc(void *p, size_t n) {
+  if (n > REPORT_CSV_FIELD_MAX + 1) {
+    report_csv_field_refused = 1;
+    return NULL;
+  }
+  return realloc(p, n);
+}
+
 typedef struct report_csvstate {
   char *fields[REPORT_CSV_MAXFIELDS];
-  int nfields;       /* fields seen in the current record (may exceed the kept ones) */
-  int kept;
+  int nfields;       /* fields seen in the current record */
   uint64_t line;
   int stop;          /* non-zero: the callback's verdict, ignore the rest */
-  int oom;
+  int oom, toomany;
   report_record_fn fn;
   void *ctx;
 } report_csvstate;
 
 static void report_csv_clear(report_csvstate *st) {
-  for (int i = 0; i < st->kept; i++) free(st->fields[i]);
-  st->nfields = st->kept = 0;
+  for (int i = 0; i < st->nfields; i++) free(st->fields[i]);
+  st->nfields = 0;
 }
 
 static void report_csv_cb_field(void *s, size_t len, void *data) {
   report_csvstate *st = data;
   if (st->stop) return;
-  if (st->kept < REPORT_CSV_MAXFIELDS) {
-    char *copy = malloc(len + 1);
-    if (copy == NULL) {
-      st->oom = 1;
-      st->stop = -1;
-      return;
-    }
-    if (len > 0) memcpy(copy, s, len);
-    copy[len] = '\0';
-    st->fields[st->kept++] = copy;
+  if (st->nfields == REPORT_CSV_MAXFIELDS) {
+    st->toomany = 1;
+    st->stop = -1;
+    return;
   }
-  st->nfields++;
+  char *copy = malloc(len + 1);
+  if (copy == NULL) {
+    st->oom = 1;
+    st->stop = -1;
+    return;
+  }
+  if (len > 0) memcpy(copy, s, len);
+  copy[len] = '\0';
+  st->fields[st->nfields++] = copy;
 }
 
 static void report_csv_cb_record(int c, void *data) {
@@ -133,6 +176,29 @@ static void report_csv_cb_record(int c, void *data) {
   if (c == '\n') st->line++;
 }
 
+/* The message for a libcsv failure at the current line. */
+static void report_csv_parse_err(struct csv_parser *p, const report_csvstate *st,
+                                 char *err, size_t errlen) {
+  unsigned long long ln = (unsigned long long)st->line;
+  if (report_csv_field_refused)
+    report_errf(err, errlen, "line %llu: a field is longer than %d bytes", ln,
+                REPORT_CSV_FIELD_MAX);
+  else if (csv_error(p) == CSV_ENOMEM || csv_error(p) == CSV_ETOOBIG)
+    report_errf(err, errlen, "line %llu: out of memory", ln);
+  else
+    report_errf(err, errlen, "line %llu: malformed CSV (%s)", ln, csv_strerror(csv_error(p)));
+}
+
+/* A UTF-8 byte order mark (which spreadsheet programs write) is not data:
+** skipped at the start of the input, so it never shows up as an invisible
+** character inside a "not a number" error. */
+static size_t report_csv_bom(const char *buf, size_t n) {
+  return n >= 3 && (unsigned char)buf[0] == 0xEF && (unsigned char)buf[1] == 0xBB &&
+                 (unsigned char)buf[2] == 0xBF
+           ? 3
+           : 0;
+}
+
 int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t errlen) {
   struct csv_parser p;
   report_csvstate st;
@@ -141,17 +207,21 @@ int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t 
   st.line = 1;
   st.fn = fn;
   st.ctx = ctx;
+  report_csv_field_refused = 0;
   if (csv_init(&p, CSV_STRICT | CSV_STRICT_FINI | CSV_REPALL_NL) != 0) {
     report_errf(err, errlen, "out of memory");
     return -1;
   }
-  int rc = 0;
+  csv_set_realloc_func(&p, report_csv_realloc);
+  csv_set_blk_size(&p, 4096);
+  int rc = 0, first = 1;
   size_t n;
   while (!st.stop && (n = fread(buf, 1, sizeof buf, in)) > 0) {
-    if (csv_parse(&p, buf, n, report_csv_cb_field, report_csv_cb_record, &st) != n &&
-        !st.stop) {
-      report_errf(err, errlen, "line %llu: malformed CSV (%s)",
-                  (unsigned long long)st.line, csv_strerror(csv_error(&p)));
+    size_t skip = first ? report_csv_bom(buf, n) : 0;
+    first = 0;
+    if (csv_parse(&p, buf + skip, n - skip, report_csv_cb_field, report_csv_cb_record, &st) !=
+            n - skip && !st.stop) {
+      report_csv_parse_err(&p, &st, err, errlen);
       rc = -1;
       break;
     }
@@ -162,14 +232,18 @@ int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t 
   }
   if (rc == 0 && !st.stop &&
       csv_fini(&p, report_csv_cb_field, report_csv_cb_record, &st) != 0 && !st.stop) {
-    report_errf(err, errlen, "line %llu: malformed CSV (%s)",
-                (unsigned long long)st.line, csv_strerror(csv_error(&p)));
+    report_csv_parse_err(&p, &st, err, errlen);
     rc = -1;
   }
   report_csv_clear(&st);
   csv_free(&p);
   if (st.oom) {
-    report_errf(err, errlen, "out of memory");
+    report_errf(err, errlen, "line %llu: out of memory", (unsigned long long)st.line);
+    return -1;
+  }
+  if (st.toomany) {
+    report_errf(err, errlen, "line %llu: more than %d fields", (unsigned long long)st.line,
+                REPORT_CSV_MAXFIELDS);
     return -1;
   }
   return rc != 0 ? rc : st.stop;
@@ -179,6 +253,19 @@ int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t 
 static void report_prefix_err(char *err, size_t errlen, const char *name, const char *perr) {
   if (perr[0] == '\0') return;
   report_errf(err, errlen, strncmp(perr, "line ", 5) == 0 ? "%s %s" : "%s: %s", name, perr);
+}
+
+const char *report_number(const char *s, double *v) {
+  char *end;
+  errno = 0;
+  double x = strtod(s, &end);
+  if (*s == '\0' || end == s || *end != '\0') return "is not a number";
+  if (!isfinite(x)) return "is not finite";
+  /* ERANGE: beyond the doubles, or below the normal ones (then read as 0
+  ** or a subnormal, silently losing the value). */
+  if (errno == ERANGE || (x != 0 && fabs(x) < DBL_MIN)) return "is out of range";
+  *v = x;
+  return NULL;
 }
 
 /* Strict decimal count: digits only, no sign, no overflow. */
@@ -195,62 +282,69 @@ static int report_parse_count(const char *s, uint64_t *out) {
   return 0;
 }
 
+/* ------------------------------------------------------- counts files */
+
 typedef struct report_countsread {
   const char *name;
   report_row *rows;
   int n, cap;
   int header_seen;
+  int ncols;             /* 10 (no run columns) or REPORT_CSV_NCOLS */
+  report_run run;
   char *err;
   size_t errlen;
 } report_countsread;
 
-static int report_counts_record(char **f, int nf, uint64_t line, void *data) {
-  report_countsread *cr = data;
-  unsigned long long ln = (unsigned long long)line;
-  if (!cr->header_seen) {
-    int ok = nf == 10;
-    for (int i = 0; ok && i < 10; i++) ok = strcmp(f[i], report_csv_header[i]) == 0;
-    if (!ok) {
-      report_errf(cr->err, cr->errlen,
-                  "%s line %llu: not a table34 CSV (the header must be "
-                  "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt)",
-                  cr->name, ln);
-      return -1;
-    }
-    cr->header_seen = 1;
-    return 0;
-  }
-  if (nf != 10) {
-    report_errf(cr->err, cr->errlen, "%s line %llu: expected 10 fields, got %d",
-                cr->name, ln, nf);
+static int report_counts_header(report_countsread *cr, char **f, int nf, uint64_t line) {
+  int ok = nf == 10 || nf == REPORT_CSV_NCOLS;
+  for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_csv_header[i]) == 0;
+  if (!ok) {
+    report_errf(cr->err, cr->errlen,
+                "%s line %llu: not a table34 CSV (the header must be "
+                "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt"
+                "[,seed,tie_eps,first,end,total,rules])",
+                cr->name, (unsigned long long)line);
     return -1;
   }
-  if (cr->n == cr->cap) {
-    int cap = cr->cap ? 2 * cr->cap : 64;
-    report_row *r = realloc(cr->rows, (size_t)cap * sizeof *r);
-    if (r == NULL) {
-      report_errf(cr->err, cr->errlen, "%s: out of memory", cr->name);
-      return -1;
-    }
-    cr->rows = r;
-    cr->cap = cap;
-  }
-  report_row *row = &cr->rows[cr->n];
-  memset(row, 0, sizeof *row);
+  cr->header_seen = 1;
+  cr->ncols = nf;
+  cr->run.known = nf == REPORT_CSV_NCOLS;
+  return 0;
+}
+
+/* The row's names: a known joint, rule = MEASURE_JOINT (or a whole-
+** quadrilateral rule such as DT, measure and joint empty). */
+static int report_counts_names(report_countsread *cr, char **f, report_row *row,
+                               unsigned long long ln) {
   if (strlen(f[0]) >= sizeof row->measure || strlen(f[1]) >= sizeof row->joint ||
       strlen(f[2]) >= sizeof row->rule || f[2][0] == '\0') {
-    report_errf(cr->err, cr->errlen, "%s line %llu: rule name empty or too long",
-                cr->name, ln);
+    report_errf(cr->err, cr->errlen, "%s line %llu: rule name empty or too long", cr->name, ln);
     return -1;
   }
   strcpy(row->measure, f[0]);
   strcpy(row->joint, f[1]);
   strcpy(row->rule, f[2]);
-  uint64_t *dst[8] = {&row->c.samples, &row->c.type[0], &row->c.type[1], &row->c.type[2],
-                      &row->c.type[3], &row->c.type[4], &row->c.dt, NULL};
+  if (row->measure[0] == '\0' && row->joint[0] == '\0') return 0;
+  char want[sizeof row->measure + sizeof row->joint + 1];
+  snprintf(want, sizeof want, "%s_%s", row->measure, row->joint);
+  if (row->measure[0] == '\0' || joint_find(row->joint) < 0 || strcmp(want, row->rule) != 0) {
+    report_errf(cr->err, cr->errlen,
+                "%s line %llu: rule '%.40s' does not match its measure '%.40s' and joint "
+                "'%.16s' (expected MEASURE_JOINT with a joint -inf, -1, 0, 1, 2 or inf)",
+                cr->name, ln, row->rule, row->measure, row->joint);
+    return -1;
+  }
+  return 0;
+}
+
+/* The seven counts: types sum to samples, dt <= type_I. */
+static int report_counts_numbers(report_countsread *cr, char **f, report_row *row,
+                                 unsigned long long ln) {
+  uint64_t *dst[7] = {&row->c.samples, &row->c.type[0], &row->c.type[1], &row->c.type[2],
+                      &row->c.type[3], &row->c.type[4], &row->c.dt};
   for (int i = 0; i < 7; i++)
     if (report_parse_count(f[3 + i], dst[i]) != 0) {
-      report_errf(cr->err, cr->errlen, "%s line %llu: %s '%s' is not a count",
+      report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count",
                   cr->name, ln, report_csv_header[3 + i], f[3 + i]);
       return -1;
     }
@@ -268,6 +362,74 @@ static int report_counts_record(char **f, int nf, uint64_t line, void *data) {
                 cr->name, ln);
     return -1;
   }
+  return 0;
+}
+
+/* The run columns: the same on every row, samples = end - first, first <
+** end <= total; rules is checked against the row count at the end. */
+static int report_counts_run(report_countsread *cr, char **f, const report_row *row,
+                             unsigned long long ln) {
+  report_run r = {.known = 1};
+  uint64_t *dst[5] = {&r.seed, &r.first, &r.end, &r.total, &r.rules};
+  const int col[5] = {10, 12, 13, 14, 15};
+  for (int i = 0; i < 5; i++)
+    if (report_parse_count(f[col[i]], dst[i]) != 0) {
+      report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count", cr->name,
+                  ln, report_csv_header[col[i]], f[col[i]]);
+      return -1;
+    }
+  if (report_number(f[11], &r.tie_eps) != NULL && strcmp(f[11], "0") != 0) {
+    report_errf(cr->err, cr->errlen, "%s line %llu: tie_eps '%.40s' is not a number",
+                cr->name, ln, f[11]);
+    return -1;
+  }
+  if (strcmp(f[11], "0") == 0) r.tie_eps = 0;
+  if (!(r.first <= r.end && r.end <= r.total) || row->c.samples != r.end - r.first ||
+      r.rules == 0 || r.rules > REPORT_CSV_MAXROWS) {
+    report_errf(cr->err, cr->errlen,
+                "%s line %llu: inconsistent run columns (need first <= end <= total, "
+                "samples = end - first, 1 <= rules <= %d)", cr->name, ln, REPORT_CSV_MAXROWS);
+    return -1;
+  }
+  if (cr->n == 0) {
+    cr->run = r;
+  } else if (memcmp(&r, &cr->run, sizeof r) != 0) {
+    report_errf(cr->err, cr->errlen,
+                "%s line %llu: run columns (seed,tie_eps,first,end,total,rules) differ from "
+                "the first row's", cr->name, ln);
+    return -1;
+  }
+  return 0;
+}
+
+static int report_counts_record(char **f, int nf, uint64_t line, void *data) {
+  report_countsread *cr = data;
+  unsigned long long ln = (unsigned long long)line;
+  if (!cr->header_seen) return report_counts_header(cr, f, nf, line);
+  if (nf != cr->ncols) {
+    report_errf(cr->err, cr->errlen, "%s line %llu: expected %d fields, got %d",
+                cr->name, ln, cr->ncols, nf);
+    return -1;
+  }
+  if (cr->n == REPORT_CSV_MAXROWS) {
+    report_errf(cr->err, cr->errlen, "%s line %llu: more than %d rules", cr->name, ln,
+                REPORT_CSV_MAXROWS);
+    return -1;
+  }
+  if (cr->n == cr->cap) {
+    int cap = cr->cap ? 2 * cr->cap : 64;
+    report_row *r = realloc(cr->rows, (size_t)cap * sizeof *r);
+    if (r == NULL) {
+      report_errf(cr->err, cr->errlen, "%s line %llu: out of memory", cr->name, ln);
+      return -1;
+    }
+    cr->rows = r;
+    cr->cap = cap;
+  }
+  report_row *row = &cr->rows[cr->n];
+  memset(row, 0, sizeof *row);
+  if (report_counts_names(cr, f, row, ln) != 0 || report_counts_numbers(cr, f, row, ln) != 0)
+    return -1;
   if (cr->n > 0 && row->c.samples != cr->rows[0].c.samples) {
     report_errf(cr->err, cr->errlen,
                 "%s line %llu: samples %llu differs from the first row's %llu",
@@ -275,7 +437,43 @@ static int report_counts_record(char **f, int nf, uint64_t line, void *data) {
                 (unsigned long long)cr->rows[0].c.samples);
     return -1;
   }
+  if (cr->run.known && report_counts_run(cr, f, row, ln) != 0) return -1;
+  for (int i = 0; i < cr->n; i++)
+    if (strcmp(cr->rows[i].rule, row->rule) == 0) {
+      report_errf(cr->err, cr->errlen, "%s line %llu: rule '%.40s' appears twice",
+                  cr->name, ln, row->rule);
+      return -1;
+    }
   cr->n++;
+  return 0;
+}
+
+int report_counts_read(FILE *in, const char *name, report_row **rows, int *nrows,
+                       report_run *run, char *err, size_t errlen) {
+  report_countsread cr = {.name = name, .err = err, .errlen = errlen};
+  char perr[256] = "";
+  err[0] = '\0';
+  int rc = report_csv_each(in, report_counts_record, &cr, perr, sizeof perr) != 0 ? -1 : 0;
+  report_prefix_err(err, errlen, name, perr);
+  if (rc == 0 && !cr.header_seen) {
+    report_errf(err, errlen, "%s: empty file (no header)", name);
+    rc = -1;
+  } else if (rc == 0 && cr.n == 0) {
+    report_errf(err, errlen, "%s: no rows after the header", name);
+    rc = -1;
+  } else if (rc == 0 && cr.run.known && cr.run.rules != (uint64_t)cr.n) {
+    /* A file cut at a row boundary parses cleanly: only this count shows it. */
+    report_errf(err, errlen, "%s: %d rules, but its rows say %llu: the file is truncated "
+                "or has extra rows", name, cr.n, (unsigned long long)cr.run.rules);
+    rc = -1;
+  }
+  if (rc != 0) {
+    free(cr.rows);
+    return -1;
+  }
+  *rows = cr.rows;
+  *nrows = cr.n;
+  if (run != NULL) *run = cr.run;
   return 0;
 }
 
@@ -287,26 +485,9 @@ int report_csv_read(const char *path, report_row **rows, int *nrows,
     report_errf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
     return -1;
   }
-  report_countsread cr = {.name = path, .err = err, .errlen = errlen};
-  char perr[256] = "";
-  int rc = report_csv_each(in, report_counts_record, &cr, perr, sizeof perr);
+  int rc = report_counts_read(in, path, rows, nrows, NULL, err, errlen);
   if (!is_stdin) fclose(in);
-  if (rc != 0) rc = -1;
-  report_prefix_err(err, errlen, path, perr);
-  if (rc == 0 && !cr.header_seen) {
-    report_errf(err, errlen, "%s: empty file (no header)", path);
-    rc = -1;
-  } else if (rc == 0 && cr.n == 0) {
-    report_errf(err, errlen, "%s: no rows after the header", path);
-    rc = -1;
-  }
-  if (rc != 0) {
-    free(cr.rows);
-    return -1;
-  }
-  *rows = cr.rows;
-  *nrows = cr.n;
-  return 0;
+  return rc;
 }
 
 int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
@@ -342,9 +523,9 @@ int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
 
 typedef struct report_pentread {
   const char *name;
-  geom_point *v;
-  size_t n, cap;
-  size_t reversed;
+  report_pentagon_fn fn;
+  void *ctx;
+  uint64_t n;
   int first;
   char *err;
   size_t errlen;
@@ -373,18 +554,11 @@ static int report_pent_record(char **f, int nf, uint64_t line, void *data) {
   }
   geom_point p[5];
   for (int i = 0; i < 10; i++) {
-    char *end;
-    const char *s = f[i];
-    double x = strtod(s, &end);
-    const char *coord = i % 2 ? "y" : "x";
-    if (*s == '\0' || end == s || *end != '\0') {
-      report_errf(pr->err, pr->errlen, "%s line %llu: %s%d '%.40s' is not a number",
-                  pr->name, ln, coord, i / 2 + 1, s);
-      return -1;
-    }
-    if (!isfinite(x)) {
-      report_errf(pr->err, pr->errlen, "%s line %llu: %s%d '%.40s' is not finite",
-                  pr->name, ln, coord, i / 2 + 1, s);
+    double x = 0;
+    const char *why = report_number(f[i], &x);
+    if (why != NULL) {
+      report_errf(pr->err, pr->errlen, "%s line %llu: %s%d '%.40s' %s", pr->name, ln,
+                  i % 2 ? "y" : "x", i / 2 + 1, f[i], why);
       return -1;
     }
     if (i % 2) p[i / 2].y = x;
@@ -394,45 +568,69 @@ static int report_pent_record(char **f, int nf, uint64_t line, void *data) {
   int rev = 0;
   geom_polyerr e = geom_polygon_check(p, 5, &bad, &rev);
   if (e != GEOM_OK) {
-    if (e == GEOM_DUPLICATE || e == GEOM_COLLINEAR)
-      report_errf(pr->err, pr->errlen, "%s line %llu: point %zu (x%zu,y%zu): %s", pr->name,
-                  ln, bad + 1, bad + 1, bad + 1, geom_polyerr_str(e));
-    else
-      report_errf(pr->err, pr->errlen, "%s line %llu: %s", pr->name, ln, geom_polyerr_str(e));
+    /* bad is the offending vertex in the row's order, as got names it. */
+    report_errf(pr->err, pr->errlen, "%s line %llu: point %zu (x%zu,y%zu): %s", pr->name,
+                ln, bad + 1, bad + 1, bad + 1, geom_polyerr_str(e));
     return -1;
   }
-  if (pr->n == pr->cap) {
-    size_t cap = pr->cap ? 2 * pr->cap : 1024;
-    geom_point *nv = realloc(pr->v, cap * 5 * sizeof *nv);
-    if (nv == NULL) {
-      report_errf(pr->err, pr->errlen, "%s: out of memory", pr->name);
-      return -1;
-    }
-    pr->v = nv;
-    pr->cap = cap;
-  }
-  memcpy(pr->v + 5 * pr->n, p, sizeof p);
   pr->n++;
-  pr->reversed += rev != 0;
-  return 0;
+  return pr->fn(p, pr->n, line, rev, pr->ctx);
 }
 
-int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *count,
-                         size_t *reversed, char *err, size_t errlen) {
-  report_pentread pr = {.name = name, .first = 1, .err = err, .errlen = errlen};
+int report_pentagon_each(FILE *in, const char *name, report_pentagon_fn fn, void *ctx,
+                         char *err, size_t errlen) {
+  report_pentread pr = {.name = name, .fn = fn, .ctx = ctx, .first = 1, .err = err,
+                        .errlen = errlen};
   char perr[256] = "";
+  err[0] = '\0';
   int rc = report_csv_each(in, report_pent_record, &pr, perr, sizeof perr);
   report_prefix_err(err, errlen, name, perr);
   if (rc == 0 && pr.n == 0) {
     report_errf(err, errlen, "%s: no pentagons", name);
     rc = -1;
   }
-  if (rc != 0) {
-    free(pr.v);
+  return rc;
+}
+
+/* report_pentagon_read collects what report_pentagon_each streams. */
+typedef struct report_pentbuf {
+  const char *name;
+  geom_point *v;
+  size_t n, cap, reversed;
+  char *err;
+  size_t errlen;
+} report_pentbuf;
+
+static int report_pent_collect(const geom_point v[5], uint64_t id, uint64_t line, int rev,
+                               void *ctx) {
+  report_pentbuf *b = ctx;
+  (void)id;
+  if (b->n == b->cap) {
+    size_t cap = b->cap ? 2 * b->cap : 1024;
+    geom_point *nv = realloc(b->v, cap * 5 * sizeof *nv);
+    if (nv == NULL) {
+      report_errf(b->err, b->errlen, "%s line %llu: out of memory", b->name,
+                  (unsigned long long)line);
+      return -1;
+    }
+    b->v = nv;
+    b->cap = cap;
+  }
+  memcpy(b->v + 5 * b->n, v, 5 * sizeof *v);
+  b->n++;
+  b->reversed += rev != 0;
+  return 0;
+}
+
+int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *count,
+                         size_t *reversed, char *err, size_t errlen) {
+  report_pentbuf b = {.name = name, .err = err, .errlen = errlen};
+  if (report_pentagon_each(in, name, report_pent_collect, &b, err, errlen) != 0) {
+    free(b.v);
     return -1;
   }
-  *v = pr.v;
-  *count = pr.n;
-  if (reversed) *reversed = pr.reversed;
+  *v = b.v;
+  *count = b.n;
+  if (reversed) *reversed = b.reversed;
   return 0;
 }

@@ -30,6 +30,16 @@ typedef struct report_row {
   flipgraph_counts c;
 } report_row;
 
+/* A counts CSV's record of its run (the run columns, see below). */
+typedef struct report_run {
+  int known;              /* the file has the run columns */
+  uint64_t seed;
+  double tie_eps;
+  uint64_t first, end;    /* sample range [first, end) counted */
+  uint64_t total;         /* the run's samples (--samples) */
+  uint64_t rules;         /* rows of the file */
+} report_run;
+
 /* What the table header says about the run.  Fields a merged CSV does not
 ** record (seed, tie tolerance) are marked absent. */
 typedef struct report_meta {
@@ -43,6 +53,7 @@ typedef struct report_meta {
   const char *sampler;    /* NULL: "iteration method, unit disc" */
   const char *note;       /* extra header line, or NULL */
   int text_columns;       /* text: at most this many measures per block; 0 = all (thesis layout) */
+  const report_run *run;  /* CSV: the run columns merge checks; NULL: the ten only */
 } report_meta;
 
 typedef enum report_format { REPORT_TEXT, REPORT_MD, REPORT_CSV } report_format;
@@ -80,9 +91,18 @@ uint64_t report_type_iv(const report_row *rows, int nrows);
 
 /* CSV of counts:
 **   measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt
-** one row per rule in the given order, DT (measure, joint empty) included. */
-extern const char *const report_csv_header[10];
-int report_csv_write(FILE *f, const report_row *rows, int nrows);
+** one row per rule in the given order, DT (measure, joint empty) included,
+** then (report_csv_write_run; what `merge` checks, docs/merge.md) the run
+** on every row:  seed,tie_eps,first,end,total,rules
+** = sampler seed, tie tolerance (%.17g), the sample range [first, end) the
+** counts cover out of the run's total samples, and the file's row count
+** (a file cut at a row boundary is caught by it). */
+#define REPORT_CSV_NCOLS 16
+extern const char *const report_csv_header[REPORT_CSV_NCOLS];
+
+
+int report_csv_write(FILE *f, const report_row *rows, int nrows);   /* the ten columns */
+int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const report_run *run);
 
 /* Write one CSV field, quoted through libcsv only when it contains a comma,
 ** quote, CR, LF, or leading/trailing blanks (which a reader would trim). */
@@ -94,6 +114,14 @@ int report_csv_field(FILE *f, const char *s);
 ** one-line message naming the file and row in err.  *rows is malloc'ed. */
 int report_csv_read(const char *path, report_row **rows, int *nrows,
                     char *err, size_t errlen);
+/* The same from a stream (name is used in messages).  Also refuses: more
+** than a registry's worth of rules, a field over 4096 bytes, a joint that
+** is not one of the six, a rule that is not MEASURE_JOINT, a rule twice;
+** with the run columns, rows that disagree on them and a row count other
+** than `rules`.  *run (may be NULL) gets the run columns (known = 0 when the
+** file has only the ten). */
+int report_counts_read(FILE *in, const char *name, report_row **rows, int *nrows,
+                       report_run *run, char *err, size_t errlen);
 
 /* acc += add, after checking both list the same rules in the same order;
 ** -1 with a message (naming `what`) on a mismatch or an overflow. */
@@ -102,9 +130,17 @@ int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
 
 /* Generic CSV records through libcsv.  fn gets each non-empty record with
 ** its 1-based line number; a non-zero return stops the walk and is
-** returned.  Lines count LF terminators, so quoted newlines shift them. */
+** returned.  Lines count LF terminators, so quoted newlines shift them.
+** A leading UTF-8 byte order mark is skipped; a record of more than 256
+** fields or a field of more than 4096 bytes is an error ("line N: ..."). */
 typedef int (*report_record_fn)(char **fields, int nfields, uint64_t line, void *ctx);
 int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t errlen);
+
+/* A coordinate or other real number, strictly: NULL and *v set, or why
+** not ("is not a number", "is not finite", "is out of range": beyond the
+** doubles or below the normal ones, which strtod would turn into 0 or a
+** subnormal without a word). */
+const char *report_number(const char *s, double *v);
 
 /* Pentagon files: a header x1,y1,...,x5,y5 then one pentagon per row, each
 ** coordinate printed with %.17g so it reads back bit for bit. */
@@ -117,6 +153,13 @@ int report_pentagon_write(FILE *f, const geom_point v[5]);
 ** row: -1 and "FILE line N: problem" in err. */
 int report_pentagon_read(FILE *in, const char *name, geom_point **v, size_t *count,
                          size_t *reversed, char *err, size_t errlen);
+/* Streaming: fn gets each checked pentagon (anticlockwise), its 1-based id
+** (header excluded), its line and whether it was reversed; a non-zero
+** return stops the walk and is returned.  Constant memory in the rows. */
+typedef int (*report_pentagon_fn)(const geom_point v[5], uint64_t id, uint64_t line,
+                                  int reversed, void *ctx);
+int report_pentagon_each(FILE *in, const char *name, report_pentagon_fn fn, void *ctx,
+                         char *err, size_t errlen);
 
 /* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute
 ** value with either quote).  0, or -1 on a write error. */

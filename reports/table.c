@@ -121,14 +121,18 @@ static int report_layout_make(report_layout *L, const report_meta *m,
     if (report_find(L->col, L->ncols, rows[i].measure) < 0) L->col[L->ncols++] = rows[i].measure;
     if (report_find(L->block, L->nblocks, rows[i].joint) < 0) L->block[L->nblocks++] = rows[i].joint;
   }
-  L->cell = malloc((size_t)(L->nblocks * L->ncols + 1) * sizeof *L->cell);
+  /* Sizes in size_t: blocks x columns overflowed an int on a crafted CSV
+  ** of tens of thousands of rules (readers now cap the rules, too). */
+  size_t ncell = (size_t)L->nblocks * (size_t)L->ncols;
+  L->cell = malloc((ncell + 1) * sizeof *L->cell);
   if (L->cell == NULL) return -1;
-  for (int k = 0; k < L->nblocks * L->ncols; k++) L->cell[k] = -1;
+  for (size_t k = 0; k < ncell; k++) L->cell[k] = -1;
   for (int i = 0; i < nrows; i++) {
     if (rows[i].measure[0] == '\0') continue;
     int b = report_find(L->block, L->nblocks, rows[i].joint);
     int c = report_find(L->col, L->ncols, rows[i].measure);
-    if (L->cell[b * L->ncols + c] < 0) L->cell[b * L->ncols + c] = i;
+    size_t k = (size_t)b * (size_t)L->ncols + (size_t)c;
+    if (L->cell[k] < 0) L->cell[k] = i;
   }
   L->samples = m->samples;
   /* Two decimals resolve 1e-4 of the samples; from a million samples on the
@@ -151,7 +155,7 @@ static void report_pct(char *buf, size_t len, const report_layout *L, uint64_t k
 
 static void report_cell(char *buf, size_t len, const report_layout *L,
                         const report_row *rows, int b, int c, int type) {
-  int i = L->cell[b * L->ncols + c];
+  int i = L->cell[(size_t)b * (size_t)L->ncols + (size_t)c];
   if (i < 0) {
     snprintf(buf, len, "-");
     return;
@@ -343,7 +347,7 @@ int report_table_md(FILE *f, const report_meta *m, const report_row *rows, int n
 int report_write(FILE *f, report_format fmt, const report_meta *m,
                  const report_row *rows, int nrows) {
   switch (fmt) {
-  case REPORT_CSV: return report_csv_write(f, rows, nrows);
+  case REPORT_CSV: return report_csv_write_run(f, rows, nrows, m->run);
   case REPORT_MD: return report_table_md(f, m, rows, nrows);
   case REPORT_TEXT: break;
   }

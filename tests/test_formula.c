@@ -190,6 +190,31 @@ static void test_bad_definitions(void **state) {
   define_bad("q = b", "already exists");
 }
 
+/* What muParser cannot survive never reaches it, and what it would misread
+** is refused: a definition over FORMULA_TEXT_MAX characters (a 2,100-character
+** bad token crashed muParser's message formatting), a name over the limit
+** (was silently cut, then "unknown rule"), literals outside the doubles
+** (1e400 was an "unknown variable", 1e-400 silently 0).  Messages stay short. */
+static void test_bounds(void **state) {
+  (void)state;
+  static char def[3000];
+  char err[1024];
+  memcpy(def, "q = a+", 6);
+  memset(def + 6, '#', 2100);
+  def[2106] = '\0';
+  define_bad(def, "at most 1024");
+  def[6 + 1000] = '\0';                     /* under the limit: a syntax error */
+  assert_true(formula_define(def, err, sizeof err) < 0);
+  assert_non_null(strstr(err, "syntax error at position 6"));
+  assert_true(strlen(err) < 200);
+  define_bad("averyveryveryveryverylongnamethatistoolong = a", "at most 31");
+  define_bad("q = 1e400*a", "number '1e400' at position 4 is out of range");
+  define_bad("q = a*1e-400", "number '1e-400' at position 6 is out of range");
+  define_bad("q = a + 2.5E+999", "out of range");
+  define_bad("q = a + x1e999", "unknown variable 'x1e999'");   /* a name, not a number */
+  define_ok("q = a*1e300 + 0.5e-300");
+}
+
 /* Bad values during a run are recorded with the triangle, not dropped. */
 static void test_bad_values(void **state) {
   (void)state;
@@ -237,6 +262,7 @@ int main(void) {
     cmocka_unit_test_teardown(test_variables, teardown),
     cmocka_unit_test_teardown(test_signs, teardown),
     cmocka_unit_test_teardown(test_bad_definitions, teardown),
+    cmocka_unit_test_teardown(test_bounds, teardown),
     cmocka_unit_test_teardown(test_bad_values, teardown),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

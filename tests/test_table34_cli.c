@@ -25,7 +25,8 @@
 #include "testutil.h"
 
 #define TT_CAP (1 << 20)
-#define TT_HEADER "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt\n"
+#define TT_HEADER \
+  "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt,seed,tie_eps,first,end,total,rules\n"
 
 static char tt_out[TT_CAP], tt_err[TT_CAP];
 
@@ -162,7 +163,8 @@ static void test_shards_merge(void **state) {
   assert_non_null(strstr(tt_err, "line 1"));
   tt_one_line();
   f = fopen(other, "wb");
-  fputs(TT_HEADER "R,-inf,R_-inf,1,1,0,0,0,0,1\nR,-1,R_-1,1,1,0,0\n", f);
+  fputs("measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt\n"
+        "R,-inf,R_-inf,1,1,0,0,0,0,1\nR,-1,R_-1,1,1,0,0\n", f);
   fclose(f);
   assert_int_equal(TT_RUN("merge %s", other), 2);
   assert_non_null(strstr(tt_err, "line 3"));
