@@ -18,6 +18,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "measure.h"
 #include "flipgraph.h"
 #include "cli.h"
@@ -56,93 +57,131 @@ static void cli_classify_row(FILE *out, size_t id, const rule *r, const flipgrap
   fprintf(out, ",%d\n", g->delaunay ? 1 : 0);
 }
 
-int cli_cmd_classify(int argc, char **argv) {
-  const char *inpath = NULL, *outpath = NULL;
-  double eps = RULE_DEFAULT_TIE_EPS;
-  rule *rules = malloc(CLI_MAX_RULES * sizeof *rules);
-  int nrules = 0, rc = 2;
-  geom_point *v = NULL;
-  FILE *in = NULL, *out = NULL;
-  if (rules == NULL) return cli_error(CMD, "out of memory");
+typedef struct cli_classify_opts {
+  const char *in, *out;
+  double eps;
+  rule *rules;
+  int nrules;
+} cli_classify_opts;
+
+/* 0, 1 after --help, or 2 after a usage error (printed). */
+static int cli_classify_parse(int argc, char **argv, cli_classify_opts *o) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *val;
     char err[1024];
     if (cli_is_help(a)) {
       fputs(cli_classify_usage, stdout);
-      rc = 0;
-      goto done;
+      return 1;
     }
     if (strcmp(a, "--input") == 0) {
-      if ((inpath = cli_optarg(CMD, argc, argv, &i)) == NULL) goto done;
+      if ((o->in = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
     } else if (strcmp(a, "--out") == 0) {
-      if ((outpath = cli_optarg(CMD, argc, argv, &i)) == NULL) goto done;
+      if ((o->out = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
     } else if (strcmp(a, "--tie-eps") == 0) {
       if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_parse_double(CMD, a, val, 0, 1, &eps) != 0)
-        goto done;
+          cli_parse_double(CMD, a, val, 0, 1, &o->eps) != 0)
+        return 2;
     } else if (strcmp(a, "--rule") == 0) {
-      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL) goto done;
-      if (nrules == CLI_MAX_RULES) {
-        cli_error(CMD, "at most %d rules", CLI_MAX_RULES);
-        goto done;
-      }
-      if (rule_parse(val, &rules[nrules], err, sizeof err) != 0) {
-        cli_error(CMD, "%s", err);
-        goto done;
-      }
-      nrules++;
+      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
+      if (o->nrules == CLI_MAX_RULES) return cli_error(CMD, "at most %d rules", CLI_MAX_RULES);
+      if (rule_parse(val, &o->rules[o->nrules], err, sizeof err) != 0)
+        return cli_error(CMD, "%s", err);
+      o->nrules++;
     } else {
-      cli_error(CMD, "unknown option '%s' (try: fliplab classify --help)", a);
-      goto done;
+      return cli_error(CMD, "unknown option '%s' (try: fliplab classify --help)", a);
     }
   }
-  if (inpath == NULL) {
-    cli_error(CMD, "--input FILE.csv is required (try: fliplab classify --help)");
-    goto done;
+  if (o->in == NULL)
+    return cli_error(CMD, "--input FILE.csv is required (try: fliplab classify --help)");
+  if (o->nrules == 0) {
+    o->nrules = rule_list_triangle(measure_table34, MEASURE_TABLE34_COUNT, o->rules,
+                                   CLI_MAX_RULES - 1);
+    o->rules[o->nrules++] = rule_delaunay();
   }
-  if (nrules == 0) {
-    nrules = rule_list_triangle(measure_table34, MEASURE_TABLE34_COUNT, rules,
-                                CLI_MAX_RULES - 1);
-    rules[nrules++] = rule_delaunay();
-  }
+  return 0;
+}
 
-  /* Read and check every row before writing anything. */
-  in = strcmp(inpath, "-") == 0 ? stdin : fopen(inpath, "rb");
-  if (in == NULL) {
-    cli_error(CMD, "cannot read '%s': %s", inpath, strerror(errno));
-    goto done;
-  }
-  size_t n = 0;
-  char err[512];
-  if (report_pentagon_read(in, inpath, &v, &n, NULL, err, sizeof err) != 0) {
-    cli_error(CMD, "%s", err);
-    goto done;
-  }
-  if ((out = cli_open_out(CMD, outpath)) == NULL) goto done;
-  fputs("id,rule,decisions,type,sink,dt\n", out);
+/* The streaming step: each pentagon, as it is read, classified under every
+** rule and written; memory does not grow with the rows.  A failed write
+** stops the run at once (the output will be discarded anyway). */
+typedef struct cli_classify_run {
+  const cli_classify_opts *o;
+  FILE *in, *out;
+  uint64_t size;           /* input bytes, for the progress bar (0: unknown) */
   cli_progress prog;
-  cli_progress_start(&prog, "classify");
-  for (size_t k = 0; k < n; k++) {
-    flipgraph_pentagon p;
-    flipgraph_prepare(&p, v + 5 * k);
-    for (int r = 0; r < nrules; r++) {
-      flipgraph g;
-      flipgraph_classify(&p, &rules[r], eps, &g);
-      cli_classify_row(out, k + 1, &rules[r], &g);
+} cli_classify_run;
+
+static int cli_classify_one(const geom_point v[5], uint64_t id, uint64_t line, int rev,
+                            void *ctx) {
+  cli_classify_run *run = ctx;
+  const cli_classify_opts *o = run->o;
+  (void)line;
+  (void)rev;
+  flipgraph_pentagon p;
+  flipgraph_prepare(&p, v);
+  for (int r = 0; r < o->nrules; r++) {
+    flipgraph g;
+    flipgraph_classify(&p, &o->rules[r], o->eps, &g);
+    cli_classify_row(run->out, (size_t)id, &o->rules[r], &g);
+  }
+  if ((id & 1023) == 0) {
+    if (ferror(run->out)) return 1;
+    long pos = run->size > 0 ? ftell(run->in) : -1;
+    if (pos >= 0) cli_progress_update((uint64_t)pos, run->size, &run->prog);
+  }
+  return 0;
+}
+
+static int cli_classify_ok(const geom_point v[5], uint64_t id, uint64_t line, int rev,
+                           void *ctx) {
+  (void)v, (void)id, (void)line, (void)rev, (void)ctx;
+  return 0;
+}
+
+static int cli_classify_stream(const cli_classify_opts *o, FILE *in, FILE *out) {
+  cli_classify_run run = {.o = o, .in = in, .out = out};
+  struct stat st;
+  char err[512];
+  if (in != stdin && fstat(fileno(in), &st) == 0 && S_ISREG(st.st_mode)) {
+    run.size = (uint64_t)st.st_size;
+    /* Standard output cannot be taken back: a bad row must be found
+    ** before the first line is written.  A file can be read twice (a file
+    ** output is discarded on failure anyway; stdin is read once, so rows
+    ** before a bad one are printed). */
+    if (out == stdout) {
+      if (report_pentagon_each(in, o->in, cli_classify_ok, NULL, err, sizeof err) != 0)
+        return cli_error(CMD, "%s", err);
+      rewind(in);
     }
-    if ((k & 1023) == 0) cli_progress_update(k, n, &prog);
   }
-  cli_progress_finish(&prog);
-  if (cli_userdefs_failed(CMD)) {
-    rc = 1;
-    goto done;
+  fputs("id,rule,decisions,type,sink,dt\n", out);
+  cli_progress_start(&run.prog, "classify");
+  int rc = report_pentagon_each(in, o->in, cli_classify_one, &run, err, sizeof err);
+  cli_progress_finish(&run.prog);
+  if (rc < 0) return cli_error(CMD, "%s", err);   /* bad input: exit 2 */
+  if (cli_close_out(out) != 0) return 1;          /* rc > 0: a write failed */
+  return cli_userdefs_failed(CMD) ? 1 : 0;
+}
+
+int cli_cmd_classify(int argc, char **argv) {
+  cli_classify_opts o = {.eps = RULE_DEFAULT_TIE_EPS};
+  o.rules = malloc(CLI_MAX_RULES * sizeof *o.rules);
+  if (o.rules == NULL) return cli_error(CMD, "out of memory");
+  int rc = cli_classify_parse(argc, argv, &o);
+  FILE *in = NULL, *out = NULL;
+  if (rc != 0) {
+    free(o.rules);
+    return rc == 1 ? 0 : rc;
   }
-  rc = cli_close_out(out) != 0 ? 1 : 0;
-  out = NULL;
-done:
+  in = strcmp(o.in, "-") == 0 ? stdin : fopen(o.in, "rb");
+  if (in == NULL)
+    rc = cli_error(CMD, "cannot read '%s': %s", o.in, strerror(errno));
+  else if ((out = cli_open_out(CMD, o.out)) == NULL)
+    rc = 2;
+  else
+    rc = cli_classify_stream(&o, in, out);
+  /* On failure the output is discarded by cli_outputs_finish (main). */
   if (in != NULL && in != stdin) fclose(in);
-  cli_abort_out(out);
-  free(v);
-  free(rules);
+  free(o.rules);
   return rc;
 }
