@@ -260,10 +260,10 @@ const char *report_number(const char *s, double *v) {
   errno = 0;
   double x = strtod(s, &end);
   if (*s == '\0' || end == s || *end != '\0') return "is not a number";
+  /* ERANGE: beyond the doubles (strtod gives inf), or below the normal
+  ** ones (then read as 0 or a subnormal, silently losing the value). */
+  if (errno == ERANGE || (x != 0 && isfinite(x) && fabs(x) < DBL_MIN)) return "is out of range";
   if (!isfinite(x)) return "is not finite";
-  /* ERANGE: beyond the doubles, or below the normal ones (then read as 0
-  ** or a subnormal, silently losing the value). */
-  if (errno == ERANGE || (x != 0 && fabs(x) < DBL_MIN)) return "is out of range";
   *v = x;
   return NULL;
 }
