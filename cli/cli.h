@@ -41,6 +41,47 @@ const char *cli_optarg(const char *cmd, int argc, char **argv, int *i);
 /* Is opt one of the help spellings? */
 int cli_is_help(const char *opt);
 
+/* ---- help and "did you mean" (cli/hint.c) ---- */
+
+/* One option of a command: its help line lists it with its default. */
+typedef struct cli_option {
+  const char *name;   /* "--samples" */
+  const char *arg;    /* "N", or NULL for a flag */
+  const char *dflt;   /* the default as help shows it, or NULL (flags, required) */
+  const char *help;   /* one short line */
+} cli_option;
+#define CLI_NOPTS(table) (sizeof(table) / sizeof((table)[0]))
+
+/* "usage", a blank line, "about" (ends with '\n'), then every option. */
+void cli_help(FILE *f, const char *usage, const char *about, const cli_option *o, size_t n);
+const cli_option *cli_option_find(const char *name, const cli_option *o, size_t n);
+/* "unknown option '--sed': did you mean '--seed'?"; returns 2. */
+int cli_unknown_option(const char *cmd, const char *opt, const cli_option *o, size_t n);
+int cli_unknown_command(const char *name, const char *const *names, size_t n);
+
+/* Edit distance (with swaps), and the closest of names[] to s, or NULL when
+** none is close (see cli/hint.c; "alpha" finds "-alpha"). */
+size_t cli_edit_distance(const char *a, const char *b);
+const char *cli_closest(const char *s, const char *const *names, size_t n);
+const char *cli_closest_measure(const char *s);
+
+/* rule_parse with a useful error: "did you mean", or how to define an
+** unknown measure.  0, or 2 after printing the one-line error. */
+struct rule;
+int cli_parse_rule(const char *cmd, const char *name, struct rule *out);
+/* A comma-separated list of rules ("R_1,P_1,DT") appended to out[*n..cap-1]. */
+int cli_parse_rule_list(const char *cmd, const char *list, struct rule *out, int *n, int cap);
+
+/* Output names: 2 (after the error) when path's extension names another
+** known format than want ("svg", "csv"): `--plot fig.png` is refused rather
+** than filled with SVG.  No extension, an unknown one, or "-" is accepted. */
+int cli_check_out_ext(const char *cmd, const char *opt, const char *path, const char *want);
+/* The table format a file name asks for: "csv", "md", "text" (.txt), or NULL. */
+const char *cli_format_of_path(const char *path);
+/* Table columns of `per` characters that fit beside `fixed` ones on the
+** terminal; 0 (no limit) when stdout is not a terminal. */
+uint64_t cli_terminal_columns(int fixed, int per);
+
 /* Global options usable before or after any command: --define 'NAME = EXPR'
 ** and --plugin FILE.so.  cli_userdefs_take removes them from argv (updating
 ** *argc) after registering what they define; returns 0, or 2 after an error. */

@@ -7,14 +7,20 @@
 #include "cli.h"
 #include "rule.h"
 
+static const cli_option cli_flip_opts[] = {
+  {"--tie-eps", "E", "1e-12", "relative tolerance under which the two joint values tie"},
+};
+
 static int cli_flip_usage(void) {
-  printf("usage: fliplab flip RULE x1 y1 x2 y2 x3 y3 x4 y4 [--tie-eps E]\n\n"
-         "Decides which diagonal of the convex quadrilateral ABCD the rule prefers:\n"
-         "AC (A=(x1,y1) to C=(x3,y3)), BD, or either (a tie within the tie tolerance,\n"
-         "default 1e-12, relative).  For a triangle-based rule MEASURE_JOINT both joint\n"
-         "values are printed: f(AC) = f(b(ABC), b(ACD)), f(BD) = f(b(ABD), b(BCD)).\n"
-         "The quadrilateral must be strictly convex; clockwise input is accepted and\n"
-         "relabelled A, D, C, B (anticlockwise, same diagonals), which is noted.\n");
+  cli_help(stdout, "usage: fliplab flip RULE x1 y1 x2 y2 x3 y3 x4 y4 [options]",
+           "Decides which diagonal of the convex quadrilateral ABCD the rule prefers:\n"
+           "AC (A=(x1,y1) to C=(x3,y3)), BD, or either (a tie within the tie tolerance,\n"
+           "relative).  For a triangle-based rule MEASURE_JOINT both joint values are\n"
+           "printed: f(AC) = f(b(ABC), b(ACD)), f(BD) = f(b(ABD), b(BCD)).\n"
+           "The quadrilateral must be strictly convex; clockwise input is accepted and\n"
+           "relabelled A, D, C, B (anticlockwise, same diagonals), which is noted.\n"
+           "Rules, measures, joints and ties: docs/rules.md, docs/measures.md, docs/joints.md.\n",
+           cli_flip_opts, CLI_NOPTS(cli_flip_opts));
   return 0;
 }
 
@@ -31,7 +37,7 @@ int cli_cmd_flip(int argc, char **argv) {
     }
     /* A leading '-' is a rule or a negative number, never an option here. */
     if (strncmp(argv[i], "--", 2) == 0 && strlen(argv[i]) > 2)
-      return cli_error("flip", "unknown option '%s'", argv[i]);
+      return cli_unknown_option("flip", argv[i], cli_flip_opts, CLI_NOPTS(cli_flip_opts));
     if (npos == 9) return cli_error("flip", "too many arguments: expected RULE and 8 coordinates");
     pos[npos++] = argv[i];
   }
@@ -39,8 +45,7 @@ int cli_cmd_flip(int argc, char **argv) {
     return cli_error("flip", "expected RULE and 8 coordinates (x1 y1 ... x4 y4), got %d argument%s",
                      npos, npos == 1 ? "" : "s");
   rule r;
-  char err[4096];
-  if (rule_parse(pos[0], &r, err, sizeof err) != 0) return cli_error("flip", "%s", err);
+  if (cli_parse_rule("flip", pos[0], &r) != 0) return 2;
   geom_point q[4];
   static const char *const coord[8] = {"x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"};
   for (int k = 0; k < 8; k++) {

@@ -22,10 +22,11 @@ static int cli_list_width(const char *s, int width) {
 int cli_cmd_list(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
     if (cli_is_help(argv[i])) {
-      printf("usage: fliplab list\n\n"
-             "Lists the badness measures (name, thesis symbol, sign domain, meaning),\n"
-             "the joint functions and the quadrilateral rules.  A triangle-based rule\n"
-             "is named MEASURE_JOINT, e.g. R_inf, -alpha_inf, P_1, -r2/A_0.\n");
+      cli_help(stdout, "usage: fliplab list",
+               "Lists the badness measures (name, thesis symbol, sign domain, meaning),\n"
+               "the joint functions and the quadrilateral rules.  A triangle-based rule\n"
+               "is named MEASURE_JOINT, e.g. R_inf, -alpha_inf, P_1, -r2/A_0.  Formulas and\n"
+               "meanings: docs/measures.md, docs/joints.md, docs/rules.md.\n", NULL, 0);
       return 0;
     }
     return cli_error("list", "unexpected argument '%s'", argv[i]);

@@ -50,17 +50,25 @@ typedef struct cli_rule_quadcheck {
   uint64_t first;                     /* lowest disagreeing index, or UINT64_MAX */
 } cli_rule_quadcheck;
 
+static const cli_option cli_rule_opts_help[] = {
+  {"--samples", "N", "100000", "random convex pentagons (iteration method), at most 2^40"},
+  {"--seed", "S", "1", "sampler seed: pentagon i is table34's pentagon i of seed S"},
+  {"--witnesses", "K", "3", "witness pentagons printed per non-type-I outcome, at most 100"},
+  {"--svg-dir", "DIR", "none", "draw each witness's directed flip graph into DIR"},
+  {"--quads", "M", "100000", "random convex quadrilaterals for the Delaunay-equivalence check"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules, at most 1e-3"},
+  {"--threads", "T", "all cores", "threads; no output depends on T"},
+};
+
 static void cli_rule_usage(FILE *f) {
-  fprintf(f,
-          "usage: fliplab rule RULE... [--samples N] [--seed S] [--witnesses K] [--svg-dir DIR]\n"
-          "                    [--quads M] [--tie-eps E] [--threads T]\n\n"
-          "Tests each flip rule (MEASURE_JOINT, DT, or a plugin's rule) on N random convex\n"
-          "pentagons (iteration method, default 100000) and M random convex quadrilaterals\n"
-          "(default 100000): types I-V with 95%% Wilson intervals, agreement with Delaunay,\n"
-          "verdicts, and up to K (default 3) witness pentagons per non-type-I outcome (lowest\n"
-          "sample indices; the same for any --threads).  --svg-dir draws each witness's\n"
-          "directed flip graph (thesis figure 3.7).  User measures: fliplab --define 'q = a*b*c'\n"
-          "rule q_1; plugins: fliplab --plugin FILE.so rule NAME.\n");
+  cli_help(f, "usage: fliplab rule RULE... [options]",
+           "Tests each flip rule (MEASURE_JOINT, DT, or a plugin's rule; several may be given,\n"
+           "also as a comma list) on random convex pentagons and quadrilaterals: flip-graph\n"
+           "types I-V with 95% Wilson intervals, agreement with Delaunay, verdicts, and the\n"
+           "witness pentagons of the lowest sample indices (the same for any --threads).\n"
+           "User measures: fliplab --define 'q = a*b*c' rule q_1; plugins: fliplab --plugin\n"
+           "FILE.so rule NAME.  Types and verdicts: docs/classification.md.\n",
+           cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
 }
 
 /* ---- statistics ----------------------------------------------------------- */
@@ -327,12 +335,11 @@ static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o, rule *rules, 
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (strncmp(a, "--", 2) != 0 || strcmp(a, "--") == 0) {
-      char err[4096];
-      if (*nrules >= CLI_RULE_MAX) return cli_error("rule", "at most %d rules", CLI_RULE_MAX);
-      if (rule_parse(a, &rules[*nrules], err, sizeof err) != 0) return cli_error("rule", "%s", err);
-      (*nrules)++;
+      if (cli_parse_rule_list("rule", a, rules, nrules, CLI_RULE_MAX) != 0) return 2;
       continue;
     }
+    if (cli_option_find(a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help)) == NULL)
+      return cli_unknown_option("rule", a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
     if ((v = cli_optarg("rule", argc, argv, &i)) == NULL) return 2;
     if (strcmp(a, "--samples") == 0) {
       if (cli_parse_u64("rule", a, v, 1, 1ull << 40, &o->samples)) return 2;
@@ -349,7 +356,7 @@ static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o, rule *rules, 
     } else if (strcmp(a, "--svg-dir") == 0) {
       o->svg_dir = v;
     } else {
-      return cli_error("rule", "unknown option '%s' (try: fliplab rule --help)", a);
+      return cli_unknown_option("rule", a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
     }
   }
   if (*nrules == 0) return cli_error("rule", "no rule given (try: fliplab rule --help)");

@@ -12,15 +12,20 @@
 #define CMD "sample"
 #define CLI_MAX_SAMPLES 1000000000000ull   /* 1e12 */
 
-static const char cli_sample_usage[] =
-  "usage: fliplab sample [--count N] [--seed S] [--first I] [--out FILE.csv] [--no-header]\n"
-  "Write random convex pentagons (iteration method, unit disc; anticlockwise) as\n"
-  "CSV rows x1,y1,...,x5,y5 after a header line with those names.\n\n"
-  "  --count N    pentagons (default 5000; at most 1e12)\n"
-  "  --seed S     sampler seed (default 1): the pentagons of table34 --seed S\n"
-  "  --first I    start at sample index I (default 0)\n"
-  "  --out FILE   output file (default: stdout)\n"
-  "  --no-header  omit the header line\n";
+static const cli_option cli_sample_opts[] = {
+  {"--count", "N", "5000", "pentagons, at most 1e12"},
+  {"--seed", "S", "1", "sampler seed: the pentagons of table34 --seed S"},
+  {"--first", "I", "0", "start at sample index I"},
+  {"--out", "FILE.csv", "stdout", "output file ('-': stdout)"},
+  {"--no-header", NULL, NULL, "omit the header line x1,y1,...,x5,y5"},
+};
+
+static void cli_sample_usage(void) {
+  cli_help(stdout, "usage: fliplab sample [options]",
+           "Write random convex pentagons (iteration method, unit disc; anticlockwise) as\n"
+           "CSV rows x1,y1,...,x5,y5 after a header line with those names (docs/formats.md).\n",
+           cli_sample_opts, CLI_NOPTS(cli_sample_opts));
+}
 
 int cli_cmd_sample(int argc, char **argv) {
   uint64_t count = 5000, seed = 1, first = 0;
@@ -29,7 +34,7 @@ int cli_cmd_sample(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (cli_is_help(a)) {
-      fputs(cli_sample_usage, stdout);
+      cli_sample_usage();
       return 0;
     }
     if (strcmp(a, "--count") == 0) {
@@ -45,11 +50,13 @@ int cli_cmd_sample(int argc, char **argv) {
           cli_parse_u64(CMD, a, v, 0, UINT64_MAX - CLI_MAX_SAMPLES, &first) != 0)
         return 2;
     } else if (strcmp(a, "--out") == 0) {
-      if ((outpath = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
+      if ((outpath = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_check_out_ext(CMD, a, outpath, "csv") != 0)
+        return 2;
     } else if (strcmp(a, "--no-header") == 0) {
       header = 0;
     } else {
-      return cli_error(CMD, "unknown option '%s' (try: fliplab sample --help)", a);
+      return cli_unknown_option(CMD, a, cli_sample_opts, CLI_NOPTS(cli_sample_opts));
     }
   }
   FILE *out = cli_open_out(CMD, outpath);

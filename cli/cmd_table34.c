@@ -18,25 +18,33 @@
 #define CLI_MAX_THREADS 1024
 #define CLI_MAX_SHARDS 1000000ull
 
-static const char cli_table34_usage[] =
-  "usage: fliplab table34 [options]\n"
-  "Classify the directed flip graphs of random convex pentagons (the thesis's\n"
-  "iteration method in the unit disc) under every (measure x joint) rule.\n\n"
-  "  --samples N      pentagons (default 5000; at most 1e12)\n"
-  "  --seed S         sampler seed (default 1); same seed, same table\n"
-  "  --threads T      threads (default: all cores); the table does not depend on T\n"
-  "  --measures M     table34 (the 20 columns, default), all (those 20, then\n"
-  "                   beta, d, sigma and user-defined measures) or a comma-separated\n"
-  "                   list of measure names, e.g. R,-alpha,mymeasure\n"
-  "  --tie-eps E      tie tolerance of the rules (default 1e-12)\n"
-  "  --format F       text (default), md, or csv (counts, one row per rule,\n"
-  "                   DT last with empty measure and joint)\n"
-  "  --columns C      text: at most C measures per block, for narrow terminals\n"
-  "                   (default: all in one block, the thesis's layout)\n"
-  "  --out FILE       write the table to FILE (default: stdout)\n"
-  "  --shard K/N      only samples [floor((K-1)S/N), floor(KS/N)) of the S samples;\n"
-  "                   sum the shards' CSVs with `fliplab merge`\n"
-  "  --plot FILE.svg  also draw type-I % against DT % (thesis figure 3.9)\n";
+static const cli_option cli_table34_help[] = {
+  {"--samples", "N", "5000", "pentagons, at most 1e12"},
+  {"--seed", "S", "1", "sampler seed; same seed, same table"},
+  {"--threads", "T", "all cores", "threads; the table does not depend on T"},
+  {"--measures", "M", "table34",
+   "table34 (the thesis's 20 columns), all (those, then beta, d,\n"
+   "                     sigma and user measures) or a comma list of measure names,\n"
+   "                     e.g. R,-alpha,mymeasure"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules"},
+  {"--format", "F", "--out's extension, else text",
+   "text, md, or csv (one row per rule, DT last; docs/formats.md)"},
+  {"--columns", "C", "fit the terminal; no limit off a terminal",
+   "text: at most C measures per block"},
+  {"--out", "FILE", "stdout", "write the table to FILE"},
+  {"--shard", "K/N", "none",
+   "only samples [floor((K-1)S/N), floor(KS/N)) of the S samples;\n"
+   "                     sum the shards' CSVs with fliplab merge"},
+  {"--plot", "FILE.svg", "none", "also draw type-I % against DT % (thesis figure 3.9)"},
+};
+
+static void cli_table34_usage(void) {
+  cli_help(stdout, "usage: fliplab table34 [options]",
+           "Classify the directed flip graphs of random convex pentagons (the thesis's\n"
+           "iteration method in the unit disc) under every (measure x joint) rule and DT:\n"
+           "types I-V and agreement with Delaunay (docs/classification.md, docs/sampling.md).\n",
+           cli_table34_help, CLI_NOPTS(cli_table34_help));
+}
 
 /* --measures: "table34", "all" or NAME,NAME,... into ids[]; count or -1. */
 static int cli_table34_measures(const char *s, int *ids) {
@@ -71,9 +79,14 @@ static int cli_table34_measures(const char *s, int *ids) {
     int id = measure_find(name);
     if (id < 0) {
       char all[2048];
+      const char *near = cli_closest_measure(name);
       measure_names(all, sizeof all);
-      cli_error(CMD, "--measures: unknown measure '%s' (valid: table34, all, or a list of: %s)",
-                name, all);
+      if (near != NULL)
+        cli_error(CMD, "--measures: unknown measure '%s': did you mean '%s'? (fliplab list)", name,
+                  near);
+      else
+        cli_error(CMD, "--measures: unknown measure '%s' (valid: table34, all, or a list of: %s)",
+                  name, all);
       return -1;
     }
     for (int i = 0; i < n; i++)
@@ -112,8 +125,27 @@ typedef struct cli_table34_opts {
   uint64_t samples, seed, threads, shard_k, shard_n, columns;
   double tie_eps;
   report_format format;
+  int has_format, has_columns;
   const char *out, *plot, *measures;
 } cli_table34_opts;
+
+/* The format: --format, else the one --out's extension names, else text;
+** a --format contradicting the extension is refused. */
+static int cli_table34_format(cli_table34_opts *o) {
+  const char *ext = o->out ? cli_format_of_path(o->out) : NULL;
+  report_format f;
+  if (ext == NULL || report_format_parse(ext, &f) != 0) return 0;
+  if (!o->has_format) {
+    o->format = f;
+    return 0;
+  }
+  if (f != o->format) {
+    cli_error(CMD, "--out '%s' names a .%s file but --format is another format", o->out,
+              strrchr(o->out, '.') + 1);
+    return -1;
+  }
+  return 0;
+}
 
 static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
   *o = (cli_table34_opts){.samples = 5000, .seed = 1, .tie_eps = RULE_DEFAULT_TIE_EPS,
@@ -121,7 +153,7 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (cli_is_help(a)) {
-      fputs(cli_table34_usage, stdout);
+      cli_table34_usage();
       return 1;
     }
     if (strcmp(a, "--samples") == 0) {
@@ -146,10 +178,12 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
         cli_error(CMD, "--format must be text, md or csv, got '%s'", v);
         return -1;
       }
+      o->has_format = 1;
     } else if (strcmp(a, "--columns") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
           cli_parse_u64(CMD, a, v, 1, MEASURE_MAX, &o->columns) != 0)
         return -1;
+      o->has_columns = 1;
     } else if (strcmp(a, "--shard") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
           cli_table34_shard(v, &o->shard_k, &o->shard_n) != 0)
@@ -159,12 +193,17 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
     } else if (strcmp(a, "--out") == 0) {
       if ((o->out = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
     } else if (strcmp(a, "--plot") == 0) {
-      if ((o->plot = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
+      if ((o->plot = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_check_out_ext(CMD, a, o->plot, "svg") != 0)
+        return -1;
     } else {
-      cli_error(CMD, "unknown option '%s' (try: fliplab table34 --help)", a);
+      cli_unknown_option(CMD, a, cli_table34_help, CLI_NOPTS(cli_table34_help));
       return -1;
     }
   }
+  if (cli_table34_format(o) != 0) return -1;
+  if (!o->has_columns && o->format == REPORT_TEXT && (o->out == NULL || strcmp(o->out, "-") == 0))
+    o->columns = cli_terminal_columns(20, 8);
   return 0;
 }
 

@@ -28,6 +28,18 @@ static void cli_usage(FILE *out) {
                "       fliplab COMMAND --help | fliplab --version\n\ncommands:\n");
   for (size_t i = 0; i < CLI_NCOMMANDS; i++)
     fprintf(out, "  %-9s %s\n", cli_commands[i].name, cli_commands[i].summary);
+  fprintf(out, "\nglobal options (before or after the command, repeatable):\n"
+               "  --define 'NAME = EXPR'  a badness measure from a formula (muParser syntax);\n"
+               "                          'NAME <= 0 : EXPR' or 'NAME >= 0 : EXPR' declares its sign.\n"
+               "                          Variables, per triangle: a b c (sides, a >= b >= c),\n"
+               "                          alpha beta gamma (angles in radians, ascending; alpha\n"
+               "                          opposite c), A (area), P (perimeter), R (circumradius),\n"
+               "                          r (inradius), h (shortest altitude), rx ry (coordinate\n"
+               "                          ranges), x1 y1 x2 y2 x3 y3 (vertices, lexicographic),\n"
+               "                          and the constant pi.  Small is good.\n"
+               "  --plugin FILE.so        load measures and quadrilateral rules from a plugin\n"
+               "\nRules are MEASURE_JOINT (e.g. P_1, -alpha_inf) or DT; fliplab list shows them.\n"
+               "Definitions, formats and methods: docs/README.md in the source tree.\n");
 }
 
 int main(int argc, char **argv) {
@@ -52,6 +64,7 @@ int main(int argc, char **argv) {
       if (st == 0 && cli_userdefs_failed(cli_commands[i].name)) st = 1;
       return cli_outputs_finish(cli_commands[i].name, st);
     }
-  fprintf(stderr, "fliplab: unknown command '%s' (try: fliplab --help)\n", argv[1]);
-  return 2;
+  const char *names[CLI_NCOMMANDS];
+  for (size_t i = 0; i < CLI_NCOMMANDS; i++) names[i] = cli_commands[i].name;
+  return cli_unknown_command(argv[1], names, CLI_NCOMMANDS);
 }
