@@ -29,21 +29,26 @@
 #define CMD "classify"
 #define CLI_MAX_RULES 1024
 
-static const char cli_classify_usage[] =
-  "usage: fliplab classify --input FILE.csv [--rule R ...] [--tie-eps E] [--out FILE.csv]\n"
-  "Classify the directed flip graph of every pentagon of FILE.csv under every rule.\n"
-  "Input: rows x1,y1,...,x5,y5 (the header line x1,y1,...,y5 is optional), either\n"
-  "orientation: a clockwise row p1..p5 is renumbered v0..v4 = p1,p5,p4,p3,p2.\n"
-  "Output: id,rule,decisions,type,sink,dt per pentagon and rule, where id is the\n"
-  "pentagon's row (1-based, header excluded); decisions = five letters for Q_0..Q_4\n"
-  "(A = diagonal v_{j+1}v_{j+3}, B = v_{j+2}v_{j+4}, E = either); type I..V;\n"
-  "sink = i for the fan T_i (two, space-separated, for type III; empty for IV, V);\n"
-  "dt = 1 if type I with the Delaunay triangulation as sink.\n\n"
-  "  --input FILE   pentagons ('-' for standard input)\n"
-  "  --rule R       a rule (repeatable), e.g. R_inf, -alpha_inf, DT;\n"
-  "                 default: the 120 rules of table 3.4, then DT\n"
-  "  --tie-eps E    tie tolerance (default 1e-12)\n"
-  "  --out FILE     output file (default: stdout)\n";
+static const cli_option cli_classify_opts_help[] = {
+  {"--input", "FILE.csv", "required", "pentagons, one per row ('-': standard input)"},
+  {"--rule", "R", "the 120 rules of table 3.4, then DT",
+   "rules, repeatable or a comma list: R_inf,-alpha_inf,DT"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules"},
+  {"--out", "FILE.csv", "stdout", "output file"},
+};
+
+static void cli_classify_usage(void) {
+  cli_help(stdout, "usage: fliplab classify --input FILE.csv [options]",
+           "Classify the directed flip graph of every pentagon of FILE.csv under every rule.\n"
+           "Input: rows x1,y1,...,x5,y5 (the header line x1,y1,...,y5 is optional), either\n"
+           "orientation: a clockwise row p1..p5 is renumbered v0..v4 = p1,p5,p4,p3,p2.\n"
+           "Output: id,rule,decisions,type,sink,dt per pentagon and rule, where id is the\n"
+           "pentagon's row (1-based, header excluded); decisions = five letters for Q_0..Q_4\n"
+           "(A = diagonal v_{j+1}v_{j+3}, B = v_{j+2}v_{j+4}, E = either); type I..V;\n"
+           "sink = i for the fan T_i (two, space-separated, for type III; empty for IV, V);\n"
+           "dt = 1 if type I with the Delaunay triangulation as sink (docs/formats.md).\n",
+           cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help));
+}
 
 static void cli_classify_row(FILE *out, size_t id, const rule *r, const flipgraph *g) {
   static const char letter[3] = {'A', 'B', 'E'};   /* RULE_AC, RULE_BD, RULE_EITHER */
@@ -68,27 +73,29 @@ typedef struct cli_classify_opts {
 static int cli_classify_parse(int argc, char **argv, cli_classify_opts *o) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *val;
-    char err[1024];
     if (cli_is_help(a)) {
-      fputs(cli_classify_usage, stdout);
+      cli_classify_usage();
       return 1;
     }
     if (strcmp(a, "--input") == 0) {
       if ((o->in = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
     } else if (strcmp(a, "--out") == 0) {
-      if ((o->out = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
+      if ((o->out = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_check_out_ext(CMD, a, o->out, "csv") != 0)
+        return 2;
     } else if (strcmp(a, "--tie-eps") == 0) {
       if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL ||
           cli_parse_double(CMD, a, val, 0, 1, &o->eps) != 0)
         return 2;
     } else if (strcmp(a, "--rule") == 0) {
-      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
-      if (o->nrules == CLI_MAX_RULES) return cli_error(CMD, "at most %d rules", CLI_MAX_RULES);
-      if (rule_parse(val, &o->rules[o->nrules], err, sizeof err) != 0)
-        return cli_error(CMD, "%s", err);
-      o->nrules++;
+      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_parse_rule_list(CMD, val, o->rules, &o->nrules, CLI_MAX_RULES) != 0)
+        return 2;
+    } else if (strncmp(a, "--", 2) != 0) {
+      return cli_error(CMD, "unexpected argument '%s': the pentagons are read with --input %s",
+                       a, a);
     } else {
-      return cli_error(CMD, "unknown option '%s' (try: fliplab classify --help)", a);
+      return cli_unknown_option(CMD, a, cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help));
     }
   }
   if (o->in == NULL)

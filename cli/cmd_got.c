@@ -19,28 +19,35 @@
 #define CLI_GOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
 #define CLI_GOT_PRINT_N 50               /* list triangles by default up to this n */
 
-static const char cli_got_usage[] =
-  "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N [--seed S]\n"
-  "                   [--sampler vector|circle]) [--threads T] [--tie-eps E]\n"
-  "                   [--csv FILE] [--svg FILE [--shade]] [--compare DT]\n"
-  "                   [--print-triangles | --no-triangles]\n"
-  "Globally optimal triangulation GOT(b_f) of a convex polygon: the thesis's\n"
-  "Algorithm 1, Theta(n^3) time and Theta(n^2) memory, ties broken towards the\n"
-  "smallest split vertex k.\n\n"
-  "  --rule RULE        triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2\n"
-  "  --polygon FILE     CSV, one vertex 'x,y' per row (optional header 'x,y'); either\n"
-  "                     orientation (clockwise input is reversed keeping vertex 0;\n"
-  "                     printed indices are always the file's rows, 0-based)\n"
-  "  --random N         a random convex N-gon (anticlockwise)\n"
-  "  --seed S           its seed (default 1)\n"
-  "  --sampler NAME     vector (thesis 6.4, default) or circle (random angles on the\n"
-  "                     unit circle: cocircular up to rounding)\n"
-  "  --threads T        OpenMP threads (default: all); results do not depend on T\n"
-  "  --tie-eps E        relative tolerance under which the runner-up ties (1e-12)\n"
-  "  --csv FILE         write the triangles: i,j,k,badness\n"
-  "  --svg FILE         draw the polygon and its GOT; --shade fills triangles by badness\n"
-  "  --compare DT       diagonals and triangles shared with the Delaunay triangulation\n"
-  "  --print-triangles  list the triangles (default only when n <= 50)\n";
+static const cli_option cli_got_opts[] = {
+  {"--rule", "RULE", "required", "triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2"},
+  {"--polygon", "FILE.csv", "none: give --polygon or --random",
+   "CSV, one vertex 'x,y' per row (optional header 'x,y'; '-':\n"
+   "                     standard input); either orientation (clockwise input is\n"
+   "                     reversed keeping vertex 0; printed indices are always the\n"
+   "                     file's rows, 0-based)"},
+  {"--random", "N", "none", "a random convex N-gon (anticlockwise)"},
+  {"--seed", "S", "1", "the random polygon's seed"},
+  {"--sampler", "NAME", "vector",
+   "vector (thesis 6.4) or circle (random angles on the unit\n"
+   "                     circle: cocircular up to rounding)"},
+  {"--threads", "T", "all cores", "OpenMP threads; results do not depend on T"},
+  {"--tie-eps", "E", "1e-12", "relative tolerance under which the runner-up ties"},
+  {"--csv", "FILE.csv", "none", "write the triangles: i,j,k,badness (docs/formats.md)"},
+  {"--svg", "FILE.svg", "none", "draw the polygon and its GOT"},
+  {"--shade", NULL, NULL, "with --svg: fill the triangles by badness (light = good)"},
+  {"--compare", "DT", "none", "diagonals and triangles shared with the Delaunay triangulation"},
+  {"--print-triangles", NULL, NULL, "list the triangles (the default when n <= 50)"},
+  {"--no-triangles", NULL, NULL, "do not list them (the default when n > 50)"},
+};
+
+static void cli_got_usage(void) {
+  cli_help(stdout, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]",
+           "Globally optimal triangulation GOT(b_f) of a convex polygon: the thesis's\n"
+           "Algorithm 1, Theta(n^3) time and Theta(n^2) memory, ties broken towards the\n"
+           "smallest split vertex k (docs/got.md).\n",
+           cli_got_opts, CLI_NOPTS(cli_got_opts));
+}
 
 typedef struct cli_got_args {
   const char *rule, *polygon, *sampler, *csv, *svg, *compare;
@@ -61,8 +68,11 @@ static int cli_got_parse(int argc, char **argv, cli_got_args *a) {
     if (strcmp(o, "--rule") == 0) a->rule = v;
     else if (strcmp(o, "--polygon") == 0) a->polygon = v;
     else if (strcmp(o, "--sampler") == 0) a->sampler = v;
-    else if (strcmp(o, "--csv") == 0) a->csv = v;
-    else if (strcmp(o, "--svg") == 0) a->svg = v;
+    else if (strcmp(o, "--csv") == 0) {
+      if (cli_check_out_ext(CMD, o, a->csv = v, "csv") != 0) return 2;
+    } else if (strcmp(o, "--svg") == 0) {
+      if (cli_check_out_ext(CMD, o, a->svg = v, "svg") != 0) return 2;
+    }
     else if (strcmp(o, "--compare") == 0) a->compare = v;
     else if (strcmp(o, "--random") == 0) {
       if (cli_parse_u64(CMD, o, v, 3, CLI_GOT_MAX_N, &a->random) != 0) return 2;
@@ -75,7 +85,7 @@ static int cli_got_parse(int argc, char **argv, cli_got_args *a) {
     } else if (strcmp(o, "--shade") == 0) a->shade = 1;
     else if (strcmp(o, "--print-triangles") == 0) a->print = 1;
     else if (strcmp(o, "--no-triangles") == 0) a->print = 0;
-    else return cli_error(CMD, "unknown option '%s' (try: fliplab got --help)", o);
+    else return cli_unknown_option(CMD, o, cli_got_opts, CLI_NOPTS(cli_got_opts));
   }
   if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule P_1)");
   if ((a->polygon != NULL) == (a->random != 0))
@@ -163,7 +173,7 @@ static void cli_got_compare(const geom_point *p, size_t n, const got_result *res
 int cli_cmd_got(int argc, char **argv) {
   for (int i = 1; i < argc; i++)
     if (cli_is_help(argv[i])) {
-      fputs(cli_got_usage, stdout);
+      cli_got_usage();
       return 0;
     }
   cli_got_args a = {0};
@@ -174,7 +184,7 @@ int cli_cmd_got(int argc, char **argv) {
   if (rc != 0) return rc;
   rule r;
   char err[512];
-  if (rule_parse(a.rule, &r, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
   if (r.kind != RULE_TRIANGLE)
     return cli_error(CMD, "rule %s is not triangle-based: GOT needs a measure and a joint "
                      "(MEASURE_JOINT, e.g. R_inf or P_1)", r.name);

@@ -23,16 +23,21 @@
 
 #define CMD "merge"
 
-static const char cli_merge_usage[] =
-  "usage: fliplab merge A.csv B.csv ... [--out FILE] [--format csv|text|md] [--plot FILE.svg]\n"
-  "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`).\n"
-  "They must come from one run: same seed, tie tolerance, samples and measures,\n"
-  "sample ranges that tile without gap or overlap, no file twice (docs/merge.md).\n\n"
-  "  --out FILE       write the merged table to FILE (default: stdout)\n"
-  "  --format F       csv (default), text or md: the table as table34 prints it\n"
-  "  --columns C      text: at most C measures per block (default: all)\n"
-  "  --plot FILE.svg  also draw type-I % against DT % (thesis figure 3.9)\n"
-  "A file name '-' reads standard input.\n";
+static const cli_option cli_merge_help[] = {
+  {"--out", "FILE", "stdout", "write the merged table to FILE"},
+  {"--format", "F", "csv", "csv, text or md: the table as table34 prints it"},
+  {"--columns", "C", "all in one block", "text: at most C measures per block"},
+  {"--plot", "FILE.svg", "none", "also draw type-I % against DT % (thesis figure 3.9)"},
+};
+
+static void cli_merge_usage(void) {
+  cli_help(stdout, "usage: fliplab merge A.csv B.csv ... [options]",
+           "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`).\n"
+           "They must come from one run: same seed, tie tolerance, samples and measures,\n"
+           "sample ranges that tile without gap or overlap, no file twice (docs/merge.md).\n"
+           "A file name '-' reads standard input.\n",
+           cli_merge_help, CLI_NOPTS(cli_merge_help));
+}
 
 typedef struct cli_merge_opts {
   const char *out, *plot;
@@ -47,12 +52,13 @@ static int cli_merge_parse(int argc, char **argv, cli_merge_opts *o) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (cli_is_help(a)) {
-      fputs(cli_merge_usage, stdout);
+      cli_merge_usage();
       return 1;
     }
     if (strcmp(a, "--out") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--format") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
       if (a[2] == 'o') o->out = v;
+      else if (a[2] == 'p' && cli_check_out_ext(CMD, a, v, "svg") != 0) return 2;
       else if (a[2] == 'p') o->plot = v;
       else if (report_format_parse(v, &o->fmt) != 0)
         return cli_error(CMD, "--format must be csv, text or md, got '%s'", v);
@@ -61,7 +67,7 @@ static int cli_merge_parse(int argc, char **argv, cli_merge_opts *o) {
           cli_parse_u64(CMD, a, v, 1, MEASURE_MAX, &o->columns) != 0)
         return 2;
     } else if (a[0] == '-' && a[1] != '\0') {
-      return cli_error(CMD, "unknown option '%s' (try: fliplab merge --help)", a);
+      return cli_unknown_option(CMD, a, cli_merge_help, CLI_NOPTS(cli_merge_help));
     } else {
       o->files[o->nfiles++] = a;
     }

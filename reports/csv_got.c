@@ -63,7 +63,7 @@ int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *
   *out = NULL;
   *n = 0;
   if (reversed) *reversed = 0;
-  FILE *f = fopen(path, "rb");
+  FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");   /* "-": standard input */
   if (f == NULL) {
     snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
     return -1;
@@ -75,7 +75,7 @@ int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *
   err[0] = '\0';
   char perr[256] = "";
   int rc = report_csv_each(f, report_got_record, &r, perr, sizeof perr);
-  fclose(f);
+  if (f != stdin) fclose(f);
   if (rc != 0) {
     if (err[0] == '\0') snprintf(err, errlen, "%s %s", path, perr);
     free(r.pts);

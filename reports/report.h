@@ -182,8 +182,8 @@ int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *
 
 /* ---- fliplab got (reports/csv_got.c, reports/svg_got.c) ---- */
 
-/* Read a polygon from CSV: one vertex per row "x,y", an optional header
-** line "x,y".  The polygon is validated (geom_polygon_check) and made
+/* Read a polygon from CSV (path "-": standard input): one vertex per row
+** "x,y", an optional header line "x,y".  The polygon is validated (geom_polygon_check) and made
 ** anticlockwise; *reversed is 1 when the input was clockwise (it is
 ** reversed keeping vertex 0: vertex v is then input vertex (n - v) mod n).
 ** Errors are one line, "FILE line N: problem", naming the offending row.

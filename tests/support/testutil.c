@@ -66,12 +66,17 @@ void testutil_tmppath(char *buf, size_t len, const char *name) {
 }
 
 int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t errcap) {
+  return testutil_run_in("/dev/null", args, out, outcap, err, errcap);
+}
+
+int testutil_run_in(const char *in, const char *args, char *out, size_t outcap, char *err,
+                    size_t errcap) {
   char o[512], e[512], cmd[8192];
   snprintf(cmd, sizeof cmd, "mkdir -p %s/testtmp", FLIPLAB_BUILD_DIR);
   if (system(cmd) != 0) return -1;
   testutil_tmppath(o, sizeof o, "stdout");
   testutil_tmppath(e, sizeof e, "stderr");
-  snprintf(cmd, sizeof cmd, "%s %s </dev/null >%s 2>%s", FLIPLAB_BIN, args, o, e);
+  snprintf(cmd, sizeof cmd, "%s %s <%s >%s 2>%s", FLIPLAB_BIN, args, in, o, e);
   int st = system(cmd);
   testutil_slurp(o, out, outcap);
   testutil_slurp(e, err, errcap);

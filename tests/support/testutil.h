@@ -40,6 +40,9 @@ int testutil_one_line(const char *s);
 /* Run `fliplab ARGS` through /bin/sh; capture stdout and stderr (each up to
 ** cap bytes, NUL-terminated; either may be NULL).  Returns the exit status. */
 int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t errcap);
+/* The same with standard input read from the file `in`. */
+int testutil_run_in(const char *in, const char *args, char *out, size_t outcap, char *err,
+                    size_t errcap);
 
 /* testutil_run with standard output sent to the file stdout_path (e.g.
 ** /dev/full) instead of being captured. */
