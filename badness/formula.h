@@ -14,6 +14,7 @@
 ** triangle that produced it) and formula_check_errors reports it after the
 ** run.  Plugins record their bad values through the same mechanism.
 */
+/* The variables, sign inference and bad-value policy: docs/measures.md. */
 #ifndef FLIPLAB_FORMULA_H
 #define FLIPLAB_FORMULA_H
 

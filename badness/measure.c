@@ -1,6 +1,6 @@
 /*
 ** measure.c: the measure registry and the 23 built-in measures of
-** ../shared/spec/measures.md (thesis table 3.2).
+** docs/measures.md (thesis table 3.2).
 **
 ** Angles are in radians.  Every joint is positively homogeneous, so the
 ** unit never changes a decision; sigma's 60 degrees is pi/3 here.

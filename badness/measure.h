@@ -2,7 +2,7 @@
 ** measure.h: badness measures (thesis table 3.2).
 **
 ** A measure scores a triangle; small is good.  Measures live in one
-** registry: the 23 built-in ones of ../shared/spec/measures.md first (their
+** registry: the 23 built-in ones of docs/measures.md first (their
 ** indices are the MEASURE_* constants below), then any that a user defines
 ** at run time (formula or plugin) through measure_register.  Everything else
 ** in fliplab refers to a measure by its registry index.

@@ -4,7 +4,7 @@
 ** A flip rule picks a diagonal of a convex quadrilateral ABCD (anticlockwise):
 ** RULE_AC, RULE_BD or RULE_EITHER.  A rule is either triangle-based, b_f
 ** (a registry measure b and a joint f, compared with the tie tolerance of
-** ../shared/spec/classification.md), or a whole-quadrilateral rule: the
+** docs/rules.md), or a whole-quadrilateral rule: the
 ** exact Delaunay rule DT, or one registered at run time (plugins).
 **
 ** Independence of the first vertex, bit for bit: triangle quantities are

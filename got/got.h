@@ -1,5 +1,6 @@
 /*
-** got.h: globally optimal triangulations (GOT) of convex polygons.
+** got.h: globally optimal triangulations (GOT) of convex polygons
+** (docs/got.md).
 **
 ** The thesis's Algorithm 1 (Klincsek's dynamic programme generalised to any
 ** triangle-based rule b_f): Theta(n^3) time, Theta(n^2) memory, backtracking

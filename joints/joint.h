@@ -1,5 +1,5 @@
 /*
-** joint.h: joint functions (thesis table 3.3).
+** joint.h: joint functions (thesis table 3.3; docs/joints.md).
 **
 ** A joint combines two badness values: min, harmonic, product, sum,
 ** root-sum-square, max (the l_p "norms" for p = -inf, -1, 0, 1, 2, inf).

@@ -6,7 +6,7 @@
 ** from stream i alone, so it depends only on (S, i): any thread count and
 ** any split into shards give bit-identical samples.
 **
-** Iteration method (thesis section 6.3, ../shared/spec/classification.md):
+** Iteration method (thesis section 6.3, docs/sampling.md):
 ** points uniform in the unit disc (rejection from the square [-1,1]^2), one
 ** at a time, keeping their convex hull, until the hull has exactly five
 ** vertices.  Adding one point raises the hull size by at most one, so five

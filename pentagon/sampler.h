@@ -11,6 +11,7 @@
 ** uniform in the unit disc, kept when in convex position).
 **
 ** For large n: the vector method (section 6.4) and points on a circle.
+** The methods and the streams: docs/sampling.md.
 */
 #ifndef FLIPLAB_SAMPLER_H
 #define FLIPLAB_SAMPLER_H

@@ -6,6 +6,8 @@
 ** flip graph as a picture (thesis figure 3.7), and the input and output of
 ** `fliplab got` (polygon CSV, triangles as CSV, the SVG of a GOT).
 **
+** Every file format: docs/formats.md.
+**
 ** A report works from rows of names and counts, not from rule structs, so a
 ** table merged from CSV shards prints exactly like one computed here.
 ** Every CSV byte goes through libcsv: fields are quoted by csv_fwrite when
