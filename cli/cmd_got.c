@@ -1,10 +1,11 @@
 /*
-** cmd_got.c: `fliplab got`: the globally optimal triangulation of a convex
-** polygon (thesis Algorithm 1) for a triangle-based rule, from a CSV file
-** or a random polygon; prints the total badness, whether the optimum is
-** unique (the runner-up gap), the time, and the triangles; optionally
-** writes them as CSV and draws an SVG, and compares with the Delaunay
-** triangulation (as Nielson and Franke did).
+** cmd_got.c: `fliplab got`: the globally optimal triangulation of a simple
+** polygon (thesis Algorithm 1, over the valid diagonals when the polygon is
+** not convex) for a triangle-based rule, from a CSV file or a random
+** polygon; prints the total badness, whether the optimum is unique (the
+** runner-up gap), the time, and the triangles; optionally writes them as
+** CSV and draws an SVG, and compares a convex polygon's GOT with its
+** Delaunay triangulation (as Nielson and Franke did).
 */
 #include <math.h>
 #include <stdlib.h>
@@ -23,30 +24,55 @@ static const cli_option cli_got_opts[] = {
   {"--rule", "RULE", "required", "triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2"},
   {"--polygon", "FILE.csv", "none: give --polygon or --random",
    "CSV, one vertex 'x,y' per row (optional header 'x,y'; '-':\n"
-   "                     standard input); either orientation (clockwise input is\n"
-   "                     reversed keeping vertex 0; printed indices are always the\n"
-   "                     file's rows, 0-based)"},
-  {"--random", "N", "none", "a random convex N-gon (anticlockwise)"},
+   "                     standard input): any simple polygon (no repeated vertex,\n"
+   "                     no two edges crossing or touching; collinear vertices\n"
+   "                     allowed), either orientation (clockwise input is reversed\n"
+   "                     keeping vertex 0; printed indices are always the file's\n"
+   "                     rows, 0-based)"},
+  {"--random", "N", "none", "a random N-gon, anticlockwise (see --sampler)"},
   {"--seed", "S", "1", "the random polygon's seed"},
   {"--sampler", "NAME", "vector",
-   "vector (thesis 6.4) or circle (random angles on the unit\n"
-   "                     circle: cocircular up to rounding)"},
+   "convex: vector (thesis 6.4) or circle (random angles on the\n"
+   "                     unit circle: cocircular up to rounding); simple: star\n"
+   "                     (sorted random angles, radii in [0.2, 1]) or monotone\n"
+   "                     (x-monotone, from random points in the unit square)"},
   {"--threads", "T", "all cores", "OpenMP threads; results do not depend on T"},
   {"--tie-eps", "E", "1e-12", "relative tolerance under which the runner-up ties"},
   {"--csv", "FILE.csv", "none", "write the triangles: i,j,k,badness (docs/formats.md)"},
   {"--svg", "FILE.svg", "none", "draw the polygon and its GOT"},
   {"--shade", NULL, NULL, "with --svg: fill the triangles by badness (light = good)"},
-  {"--compare", "DT", "none", "diagonals and triangles shared with the Delaunay triangulation"},
+  {"--compare", "DT", "none", "diagonals and triangles shared with the Delaunay triangulation\n"
+   "                     (convex polygons only)"},
   {"--print-triangles", NULL, NULL, "list the triangles (the default when n <= 50)"},
   {"--no-triangles", NULL, NULL, "do not list them (the default when n > 50)"},
 };
 
 static void cli_got_usage(void) {
   cli_help(stdout, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]",
-           "Globally optimal triangulation GOT(b_f) of a convex polygon: the thesis's\n"
-           "Algorithm 1, Theta(n^3) time and Theta(n^2) memory, ties broken towards the\n"
-           "smallest split vertex k (docs/got.md).\n",
+           "Globally optimal triangulation GOT(b_f) of a simple polygon (convex or not):\n"
+           "the thesis's Algorithm 1 over the polygon's valid diagonals, Theta(n^3) time\n"
+           "and Theta(n^2) memory, ties broken towards the smallest split vertex k\n"
+           "(docs/got.md).\n",
            cli_got_opts, CLI_NOPTS(cli_got_opts));
+}
+
+/* The --random samplers, by name; the first is the default. */
+typedef struct cli_got_sampler {
+  const char *name, *what;
+  int (*fn)(sampler_rng *g, size_t n, geom_point *out);
+} cli_got_sampler;
+
+static const cli_got_sampler cli_got_samplers[] = {
+  {"vector", "a strictly convex", sampler_vector},
+  {"circle", "a strictly convex", sampler_circle},
+  {"star", "a simple star-shaped", sampler_star},
+  {"monotone", "a simple x-monotone", sampler_monotone},
+};
+
+static int cli_got_sampler_find(const char *name) {
+  for (size_t q = 0; q < sizeof cli_got_samplers / sizeof *cli_got_samplers; q++)
+    if (strcmp(name, cli_got_samplers[q].name) == 0) return (int)q;
+  return -1;
 }
 
 typedef struct cli_got_args {
@@ -90,8 +116,9 @@ static int cli_got_parse(int argc, char **argv, cli_got_args *a) {
   if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule P_1)");
   if ((a->polygon != NULL) == (a->random != 0))
     return cli_error(CMD, "give exactly one of --polygon FILE.csv and --random N");
-  if (a->sampler && strcmp(a->sampler, "vector") != 0 && strcmp(a->sampler, "circle") != 0)
-    return cli_error(CMD, "unknown sampler '%s' (valid: vector, circle)", a->sampler);
+  if (a->sampler && cli_got_sampler_find(a->sampler) < 0)
+    return cli_error(CMD, "unknown sampler '%s' (valid: vector, circle, star, monotone)",
+                     a->sampler);
   if (a->sampler && a->polygon)
     return cli_error(CMD, "--sampler applies to --random only");
   if (a->compare && strcmp(a->compare, "DT") != 0)
@@ -123,14 +150,12 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
   if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
   sampler_rng g;
   sampler_seed(&g, a->seed, 0);
-  int circle = a->sampler && strcmp(a->sampler, "circle") == 0;
-  int rc = circle ? sampler_circle(&g, *n, *p) : sampler_vector(&g, *n, *p);
-  if (rc != 0)
-    return cli_error(CMD, "the %s sampler could not make a strictly convex %zu-gon in "
-                     "floating point (points too close); use a smaller N",
-                     circle ? "circle" : "vector", *n);
-  snprintf(desc, desclen, "random %zu-gon (%s sampler, seed %llu)", *n,
-           circle ? "circle" : "vector", (unsigned long long)a->seed);
+  const cli_got_sampler *s = &cli_got_samplers[a->sampler ? cli_got_sampler_find(a->sampler) : 0];
+  if (s->fn(&g, *n, *p) != 0)
+    return cli_error(CMD, "the %s sampler could not make %s %zu-gon in floating point "
+                     "(points too close); use a smaller N", s->name, s->what, *n);
+  snprintf(desc, desclen, "random %zu-gon (%s sampler, seed %llu)", *n, s->name,
+           (unsigned long long)a->seed);
   return 0;
 }
 
@@ -170,32 +195,104 @@ static void cli_got_compare(const geom_point *p, size_t n, const got_result *res
   free(dt);
 }
 
-int cli_cmd_got(int argc, char **argv) {
+/* Strictly convex (exact)?  --compare DT needs it. */
+static int cli_got_is_convex(const geom_point *p, size_t n) {
+  geom_point *q = malloc(n * sizeof *q);
+  if (q == NULL) return 0;
+  memcpy(q, p, n * sizeof *q);
+  int rev = 0, ok = geom_polygon_check(q, n, NULL, &rev) == GEOM_OK && !rev;
+  free(q);
+  return ok;
+}
+
+/* Help, options and the rule; 0 to go on, otherwise the exit code (-1:
+** help printed, exit 0). */
+static int cli_got_setup(int argc, char **argv, cli_got_args *a, rule *r) {
   for (int i = 1; i < argc; i++)
     if (cli_is_help(argv[i])) {
       cli_got_usage();
-      return 0;
+      return -1;
     }
-  cli_got_args a = {0};
-  a.seed = 1;
-  a.tie_eps = RULE_DEFAULT_TIE_EPS;
-  a.print = -1;
-  int rc = cli_got_parse(argc, argv, &a);
+  memset(a, 0, sizeof *a);
+  a->seed = 1;
+  a->tie_eps = RULE_DEFAULT_TIE_EPS;
+  a->print = -1;
+  int rc = cli_got_parse(argc, argv, a);
   if (rc != 0) return rc;
-  rule r;
-  char err[512];
-  if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
-  if (r.kind != RULE_TRIANGLE)
+  if (cli_parse_rule(CMD, a->rule, r) != 0) return 2;
+  if (r->kind != RULE_TRIANGLE)
     return cli_error(CMD, "rule %s is not triangle-based: GOT needs a measure and a joint "
-                     "(MEASURE_JOINT, e.g. R_inf or P_1)", r.name);
+                     "(MEASURE_JOINT, e.g. R_inf or P_1)", r->name);
+  return 0;
+}
 
+/* The header, total, runner-up and time lines. */
+static void cli_got_summary(const cli_got_args *a, const rule *r, const got_result *res,
+                            const char *desc, const char *tot) {
+  const measure *m = measure_get(r->measure);
+  const joint *jt = joint_get(r->joint);
+  printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", r->name,
+         m->name, jt->symbol, res->n, desc, a->tie_eps);
+  if (r->joint == JOINT_PRODUCT)
+    printf("total badness: %s (key %s = %.17g)\n", tot,
+           res->sign >= 0 ? "ln B" : "-ln|B|", res->key);
+  else
+    printf("total badness: %s\n", tot);
+  cli_got_runner_up(res);
+  printf("time: %.4f s (%d thread%s)\n", res->seconds, res->threads,
+         res->threads == 1 ? "" : "s");
+}
+
+static void cli_got_triangles(const cli_got_args *a, const got_result *res, const size_t *map) {
+  int print = a->print < 0 ? res->n <= CLI_GOT_PRINT_N : a->print;
+  printf("triangles: %zu%s\n", res->ntri, print ? " (i j k badness; 0-based vertices of the input)"
+                                                : " (list them with --print-triangles)");
+  if (!print) return;
+  for (size_t q = 0; q < res->ntri; q++) {
+    size_t v[3] = {(size_t)res->tri[q].i, (size_t)res->tri[q].k, (size_t)res->tri[q].j};
+    for (int c = 0; c < 3 && map; c++) v[c] = map[v[c]];
+    printf("%zu %zu %zu %.17g\n", v[0], v[1], v[2], res->tri[q].badness);
+  }
+}
+
+/* --csv and --svg; 0 or the exit code (cli_close_out reports write errors). */
+static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_point *p,
+                           const got_result *res, const size_t *map, const char *tot) {
+  if (a->csv) {
+    FILE *f = cli_open_out(CMD, a->csv);
+    if (f == NULL) return 2;
+    report_got_csv(f, res->tri, res->ntri, map);
+    if (cli_close_out(f) != 0) return 1;
+  }
+  if (a->svg) {
+    FILE *f = cli_open_out(CMD, a->svg);
+    if (f == NULL) return 2;
+    char title[200];
+    snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r->name, res->n, tot,
+             a->shade ? "; shaded by triangle badness" : "");
+    report_got_svg_opts so = {a->shade, title};
+    report_got_svg(f, p, res->n, res->tri, res->ntri, &so);
+    if (cli_close_out(f) != 0) return 1;
+  }
+  return 0;
+}
+
+int cli_cmd_got(int argc, char **argv) {
+  cli_got_args a;
+  rule r;
+  int rc = cli_got_setup(argc, argv, &a, &r);
+  if (rc != 0) return rc < 0 ? 0 : rc;
   geom_point *p = NULL;
   size_t n = 0, *map = NULL;
-  char desc[600];
-  rc = cli_got_polygon(&a, &r, &p, &n, &map, desc, sizeof desc);
+  char desc[600], err[512];
   got_result res;
   memset(&res, 0, sizeof res);
+  rc = cli_got_polygon(&a, &r, &p, &n, &map, desc, sizeof desc);
   if (rc != 0) goto done;
+  if (a.compare && !cli_got_is_convex(p, n)) {
+    rc = cli_error(CMD, "--compare DT needs a convex polygon (this one has reflex vertices)");
+    goto done;
+  }
   got_options opt = {(int)a.threads, a.tie_eps};
   if (got_solve(p, n, &r, &opt, &res, err, sizeof err) != 0) {
     rc = cli_error(CMD, "%s", err);
@@ -205,46 +302,12 @@ int cli_cmd_got(int argc, char **argv) {
     rc = 1;
     goto done;
   }
-  const measure *m = measure_get(r.measure);
-  const joint *jt = joint_get(r.joint);
   char tot[64];
   got_format_total(&res, res.key, tot, sizeof tot);
-  printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", r.name,
-         m->name, jt->symbol, n, desc, a.tie_eps);
-  if (r.joint == JOINT_PRODUCT)
-    printf("total badness: %s (key %s = %.17g)\n", tot,
-           res.sign >= 0 ? "ln B" : "-ln|B|", res.key);
-  else
-    printf("total badness: %s\n", tot);
-  cli_got_runner_up(&res);
-  printf("time: %.4f s (%d thread%s)\n", res.seconds, res.threads, res.threads == 1 ? "" : "s");
+  cli_got_summary(&a, &r, &res, desc, tot);
   if (a.compare) cli_got_compare(p, n, &res);
-  int print = a.print < 0 ? n <= CLI_GOT_PRINT_N : a.print;
-  printf("triangles: %zu%s\n", res.ntri, print ? " (i j k badness; 0-based vertices of the input)"
-                                               : " (list them with --print-triangles)");
-  if (print)
-    for (size_t q = 0; q < res.ntri; q++) {
-      size_t v[3] = {map ? map[res.tri[q].i] : (size_t)res.tri[q].i,
-                     map ? map[res.tri[q].k] : (size_t)res.tri[q].k,
-                     map ? map[res.tri[q].j] : (size_t)res.tri[q].j};
-      printf("%zu %zu %zu %.17g\n", v[0], v[1], v[2], res.tri[q].badness);
-    }
-  if (a.csv) {
-    FILE *f = cli_open_out(CMD, a.csv);
-    if (f == NULL) { rc = 2; goto done; }
-    report_got_csv(f, res.tri, res.ntri, map);
-    if (cli_close_out(f) != 0) rc = 1;
-  }
-  if (a.svg && rc == 0) {
-    FILE *f = cli_open_out(CMD, a.svg);
-    if (f == NULL) { rc = 2; goto done; }
-    char title[200];
-    snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r.name, n, tot,
-             a.shade ? "; shaded by triangle badness" : "");
-    report_got_svg_opts so = {a.shade, title};
-    report_got_svg(f, p, n, res.tri, res.ntri, &so);
-    if (cli_close_out(f) != 0) rc = 1;
-  }
+  cli_got_triangles(&a, &res, map);
+  rc = cli_got_outputs(&a, &r, p, &res, map, tot);
 done:
   got_result_free(&res);
   free(p);

@@ -19,7 +19,7 @@ static const cli_command cli_commands[] = {
   {"merge",    cli_cmd_merge,    "sum table34 CSV shards"},
   {"classify", cli_cmd_classify, "classify the directed flip graphs of given pentagons"},
   {"rule",     cli_cmd_rule,     "test a flip rule: types, intervals, verdicts, witnesses"},
-  {"got",      cli_cmd_got,      "globally optimal triangulation of a convex polygon"},
+  {"got",      cli_cmd_got,      "globally optimal triangulation of a simple polygon"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

@@ -1,5 +1,5 @@
 /*
-** geom.c: triangle quantities and convex polygon validation.
+** geom.c: triangle quantities, convex and simple polygon validation.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -200,6 +200,122 @@ const char *geom_polyerr_str(geom_polyerr e) {
     [GEOM_NOT_CONVEX] = "polygon is not convex",
     [GEOM_OUT_OF_SCALE] = ("outside the supported scale (coordinates within +-1e50, "
                            "edges at least 1e-50 long)"),
+    [GEOM_CROSSING] = "two edges cross or touch (polygon is not simple)",
   };
   return (unsigned)e < sizeof msg / sizeof msg[0] ? msg[e] : "unknown error";
+}
+
+/* ---- simple polygon validation ---------------------------------------- */
+
+/* For collinear a, b, c: is c within the closed segment ab?  Points on a
+** line are ordered lexicographically along it, so comparisons suffice. */
+static int geom_between(geom_point a, geom_point b, geom_point c) {
+  if (geom_less(b, a)) geom_swap(&a, &b);
+  return !geom_less(c, a) && !geom_less(b, c);
+}
+
+int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d) {
+  int o1 = geom_orient(a, b, c), o2 = geom_orient(a, b, d);
+  int o3 = geom_orient(c, d, a), o4 = geom_orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return 1;           /* proper crossing */
+  return (o1 == 0 && geom_between(a, b, c)) || (o2 == 0 && geom_between(a, b, d)) ||
+         (o3 == 0 && geom_between(c, d, a)) || (o4 == 0 && geom_between(c, d, b));
+}
+
+typedef struct geom_span { double lo, hi; size_t e; } geom_span;
+
+static int geom_span_cmp(const void *x, const void *y) {
+  const geom_span *a = x, *b = y;
+  if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+  return a->e < b->e ? -1 : a->e > b->e;
+}
+
+/* Adjacent edges (u, v) and (v, w) meet beyond v only when they fold back:
+** u, v, w collinear with u and w on the same side of v. */
+static int geom_folds(geom_point u, geom_point v, geom_point w) {
+  return geom_orient(u, v, w) == 0 && geom_less(u, v) == geom_less(w, v);
+}
+
+/* Every pair of edges whose x-ranges overlap, found by sorting the edges
+** by their left end and scanning forward while the next left end is within
+** reach: 1 with the pair (smaller index first) for the first meeting pair
+** in that deterministic order. */
+static int geom_find_crossing(const geom_point *p, size_t n, size_t *e1, size_t *e2) {
+  for (size_t v = 0; v < n; v++)
+    if (geom_folds(p[(v + n - 1) % n], p[v], p[(v + 1) % n])) {
+      size_t a = (v + n - 1) % n, b = v;
+      *e1 = a < b ? a : b;
+      *e2 = a < b ? b : a;
+      return 1;
+    }
+  geom_span *s = malloc(n * sizeof *s);
+  if (s == NULL) {                          /* no memory to sort: every pair */
+    for (size_t e = 0; e < n; e++)
+      for (size_t f = e + 2; f < n; f++)
+        if (!(e == 0 && f == n - 1) &&
+            geom_segments_meet(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) {
+          *e1 = e;
+          *e2 = f;
+          return 1;
+        }
+    return 0;
+  }
+  for (size_t e = 0; e < n; e++) {
+    double x0 = p[e].x, x1 = p[(e + 1) % n].x;
+    s[e] = (geom_span){x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0, e};
+  }
+  qsort(s, n, sizeof *s, geom_span_cmp);
+  int found = 0;
+  for (size_t a = 0; a < n && !found; a++)
+    for (size_t b = a + 1; b < n && s[b].lo <= s[a].hi && !found; b++) {
+      size_t e = s[a].e, f = s[b].e;
+      if ((e + 1) % n == f || (f + 1) % n == e) continue;   /* adjacent: folds above */
+      if (geom_segments_meet(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) {
+        *e1 = e < f ? e : f;
+        *e2 = e < f ? f : e;
+        found = 1;
+      }
+    }
+  free(s);
+  return found;
+}
+
+/* After the crossing test the boundary is a Jordan curve, and its
+** lexicographically smallest vertex is a strict convex corner (its
+** neighbours are both lexicographically larger and cannot be collinear
+** with it on opposite sides, nor on the same side: that would fold), so
+** the sign of that one turn is the orientation. */
+geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, size_t *bad2,
+                                       int *reversed) {
+  size_t d1, d2;
+  if (bad == NULL) bad = &d1;
+  if (bad2 == NULL) bad2 = &d2;
+  if (reversed) *reversed = 0;
+  *bad = *bad2 = 0;
+  if (n < 3) return GEOM_TOO_FEW;
+  for (size_t i = 0; i < n; i++)
+    if (!geom_point_finite(p[i])) {
+      *bad = i;
+      return GEOM_NOT_FINITE;
+    }
+  for (size_t i = 0; i < n; i++)
+    if (fabs(p[i].x) > GEOM_MAX_COORD || fabs(p[i].y) > GEOM_MAX_COORD) {
+      *bad = i;
+      return GEOM_OUT_OF_SCALE;
+    }
+  if (geom_find_duplicate(p, n, bad)) return GEOM_DUPLICATE;
+  for (size_t i = 0; i < n; i++)
+    if (geom_dist(p[i], p[(i + 1) % n]) < GEOM_MIN_EDGE) {
+      *bad = (i + 1) % n;
+      return GEOM_OUT_OF_SCALE;
+    }
+  if (geom_find_crossing(p, n, bad, bad2) != 0) return GEOM_CROSSING;
+  size_t lo = 0;
+  for (size_t i = 1; i < n; i++)
+    if (geom_less(p[i], p[lo])) lo = i;
+  if (geom_orient(p[(lo + n - 1) % n], p[lo], p[(lo + 1) % n]) < 0) {
+    geom_reverse_tail(p, n);
+    if (reversed) *reversed = 1;
+  }
+  return GEOM_OK;
 }

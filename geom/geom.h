@@ -51,7 +51,8 @@ typedef enum geom_polyerr {
   GEOM_DUPLICATE,      /* two equal vertices */
   GEOM_COLLINEAR,      /* three consecutive vertices on a line */
   GEOM_NOT_CONVEX,     /* a reflex vertex, or the boundary winds more than once */
-  GEOM_OUT_OF_SCALE    /* |coordinate| > GEOM_MAX_COORD or an edge < GEOM_MIN_EDGE */
+  GEOM_OUT_OF_SCALE,   /* |coordinate| > GEOM_MAX_COORD or an edge < GEOM_MIN_EDGE */
+  GEOM_CROSSING        /* two edges cross, touch or overlap (simple polygons) */
 } geom_polyerr;
 
 /* The scales fliplab accepts.  Measures are products of up to six lengths
@@ -61,6 +62,22 @@ typedef enum geom_polyerr {
 #define GEOM_MIN_EDGE 1e-50
 
 geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed);
+
+/* Simple polygon validation, exact (geom_orient only): finite coordinates
+** within GEOM_MAX_COORD, no repeated vertex, edges at least GEOM_MIN_EDGE,
+** and no two edges meeting except adjacent edges at their shared vertex
+** (crossing, touching and overlapping are all refused; an adjacent pair
+** that folds back onto itself overlaps).  Consecutive collinear vertices
+** are allowed.  Edge e joins vertices e and e+1 (mod n).  On GEOM_CROSSING
+** *bad < *bad2 are the two offending edges; on the other errors *bad is the
+** vertex, as for geom_polygon_check.  A clockwise polygon is reversed in
+** place keeping vertex 0 (the same convention).  O(n log n) to sort the
+** edges plus one exact test per pair of edges whose x-ranges overlap
+** (O(n^2) at worst). */
+geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, size_t *bad2,
+                                       int *reversed);
+/* 1 if the closed segments ab and cd have a point in common (exact). */
+int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d);
 const char *geom_polyerr_str(geom_polyerr e);
 
 #endif

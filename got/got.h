@@ -1,5 +1,5 @@
 /*
-** got.h: globally optimal triangulations (GOT) of convex polygons
+** got.h: globally optimal triangulations (GOT) of simple polygons
 ** (docs/got.md).
 **
 ** The thesis's Algorithm 1 (Klincsek's dynamic programme generalised to any
@@ -12,6 +12,13 @@
 ** peeled off the inner loop.  Ties are broken deterministically: the
 ** smallest k wins, in every cell; each cell is computed by one thread in the
 ** same order whatever the thread count, so results are bit-identical.
+**
+** Simple polygons.  The same programme runs over a simple, non-convex
+** polygon when restricted to its valid diagonals (got_valid_diagonals):
+** cell (i, j) exists when (i, j) is an edge or a valid diagonal, and split
+** k is allowed when (i, k) and (k, j) both are (Klincsek's observation:
+** every chain cut off by a valid diagonal is itself a simple polygon).
+** Strictly convex input keeps the unmasked path, bit for bit.
 **
 ** The runner-up is the second smallest total over all triangulations
 ** distinct from the returned one (equal to the optimum when the optimum is
@@ -64,7 +71,8 @@ typedef struct got_result {
   double tie_eps;
   got_triangle *tri;    /* n - 2 triangles, in backtracking order */
   size_t ntri;
-  double seconds;       /* wall time: precomputation + DP + backtracking */
+  int simple;           /* 1: solved as a simple (non-convex) polygon, masked DP */
+  double seconds;       /* wall time: validation, diagonals, DP, backtracking */
   int threads;          /* threads used */
 } got_result;
 
@@ -74,7 +82,10 @@ size_t got_memory_needed(size_t n, int measure);
 ** one-line message stating the memory needed. */
 int got_check_memory(size_t n, int measure, char *err, size_t errlen);
 
-/* Solve GOT(rule) for the strictly convex anticlockwise polygon p[0..n-1].
+/* Solve GOT(rule) for the simple anticlockwise polygon p[0..n-1] (see
+** geom_simple_polygon_check).  A strictly convex polygon takes the convex
+** path (every diagonal valid, tiled kernels); any other simple polygon the
+** same programme restricted to its valid diagonals (got_valid_diagonals).
 ** The rule must be triangle-based.  0 on success; -1 with a message. */
 int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
               got_result *out, char *err, size_t errlen);
@@ -94,6 +105,13 @@ void got_pairs_eval(const got_pairs *pd, size_t i, size_t j, size_t k0, size_t k
 void got_pairs_free(got_pairs *pd);
 /* 1 if the measure has a specialised kernel, 0 if it uses measure_eval. */
 int got_measure_has_kernel(int measure);
+
+/* The valid diagonals of a simple anticlockwise polygon, exactly:
+** V[i*n + j] = V[j*n + i] = 1 when (i, j) is an edge of the polygon or a
+** diagonal whose open segment lies in the open interior (touching no vertex
+** or edge), else 0.  O(n^2 log n) (a rotational sweep per vertex, OpenMP
+** over vertices).  0, or -1 when out of memory. */
+int got_valid_diagonals(const geom_point *p, size_t n, unsigned char *V, int threads);
 
 /* The Delaunay triangulation of a strictly convex anticlockwise polygon,
 ** exactly (geom_incircle): n - 2 triangles into out (badness left 0).

@@ -85,6 +85,8 @@ typedef struct got_dp {
   got_keyfn keyfn;
   double *M;            /* n x n keys, mirrored */
   int32_t *K;           /* packed upper triangle: argmin k */
+  const unsigned char *V;   /* simple polygons: n x n, 1 = edge or valid diagonal;
+                               NULL for convex ones (everything valid) */
 } got_dp;
 
 static inline size_t got_kidx(size_t n, size_t i, size_t j) {
@@ -151,12 +153,67 @@ GOT_CELL(got_cell_add, GOT_ADD)
 GOT_CELL(got_cell_min, GOT_MIN)
 GOT_CELL(got_cell_max, GOT_MAX)
 
+/* Simple polygons.  Split k is allowed when (i, k) and (k, j) are edges or
+** valid diagonals; cell (i, j) exists only when (i, j) is one (every chain
+** cut off by a valid diagonal is a simple polygon, so it has at least one
+** allowed split).  The triangle keys are computed for runs of allowed k
+** only: a disallowed k may make a degenerate triangle, which a user
+** measure should never see.  Same candidate expressions and the same
+** smallest-k tie rule as GOT_CELL. */
+static size_t got_tri_keys_masked(const got_dp *dp, size_t i, size_t j, double *t) {
+  const size_t n = dp->n;
+  const unsigned char *Vi = dp->V + i * n, *Vj = dp->V + j * n;
+  size_t count = 0;
+  for (size_t k = i + 1; k < j;) {
+    if (!(Vi[k] & Vj[k])) { k++; continue; }
+    size_t k1 = k + 1;
+    while (k1 < j && (Vi[k1] & Vj[k1])) k1++;
+    got_pairs_eval(dp->pd, i, j, k, k1, t + (k - i - 1));
+    got_keys(dp, t + (k - i - 1), k1 - k);
+    count += k1 - k;
+    k = k1;
+  }
+  return count;
+}
+
+#define GOT_CELLM(name, COMB) \
+  static void name(got_dp *dp, size_t i, size_t j, double *t) { \
+    const size_t n = dp->n; \
+    const unsigned char *Vi = dp->V + i * n, *Vj = dp->V + j * n; \
+    if (!Vi[j]) return; \
+    got_tri_keys_masked(dp, i, j, t); \
+    const double *Bi = dp->M + i * n, *Bj = dp->M + j * n, *tk = t - (i + 1); \
+    double best = INFINITY; \
+    size_t bk = 0; \
+    for (size_t k = i + 1; k < j; k++) { \
+      if (!(Vi[k] & Vj[k])) continue; \
+      double c = k == i + 1 ? (k + 1 == j ? tk[k] : COMB(tk[k], Bj[k])) \
+               : k + 1 == j ? COMB(Bi[k], tk[k]) : COMB(COMB(Bi[k], tk[k]), Bj[k]); \
+      if (bk == 0) bk = k; \
+      if (c < best) { best = c; bk = k; } \
+    } \
+    dp->M[i * n + j] = best; \
+    dp->M[j * n + i] = best; \
+    dp->K[got_kidx(n, i, j)] = (int32_t)bk; \
+  }
+
+GOT_CELLM(got_cellm_add, GOT_ADD)
+GOT_CELLM(got_cellm_min, GOT_MIN)
+GOT_CELLM(got_cellm_max, GOT_MAX)
+
 typedef void (*got_cell_fn)(got_dp *dp, size_t i, size_t j, double *t);
+
+static got_cell_fn got_cell_pick(const got_dp *dp) {
+  static const got_cell_fn fn[2][3] = {
+    {got_cell_add, got_cell_min, got_cell_max},
+    {got_cellm_add, got_cellm_min, got_cellm_max}};
+  int o = dp->op == JOINT_KEY_ADD ? 0 : dp->op == JOINT_KEY_MIN ? 1 : 2;
+  return fn[dp->V != NULL][o];
+}
 
 static void got_run(got_dp *dp, int threads, double *tmp) {
   const size_t n = dp->n, T = GOT_TILE, nb = (n + T - 1) / T;
-  got_cell_fn cell = dp->op == JOINT_KEY_ADD ? got_cell_add
-                   : dp->op == JOINT_KEY_MIN ? got_cell_min : got_cell_max;
+  got_cell_fn cell = got_cell_pick(dp);
 #pragma omp parallel num_threads(threads)
   {
     double *t = tmp + (size_t)omp_get_thread_num() * n;
@@ -238,9 +295,11 @@ static void got_runner_up(const got_dp *dp, got_node *node, size_t count, double
     size_t i = c->i, j = c->j;
     double best2 = INFINITY;
     int has = 0;
-    got_tri_keys(dp, i, j, t);
+    const unsigned char *Vi = dp->V ? dp->V + i * dp->n : NULL, *Vj = Vi ? dp->V + j * dp->n : NULL;
+    if (Vi) got_tri_keys_masked(dp, i, j, t);
+    else got_tri_keys(dp, i, j, t);
     for (size_t k = i + 1; k < j; k++) {
-      if (k == c->k) continue;
+      if (k == c->k || (Vi && !(Vi[k] & Vj[k]))) continue;
       double v = got_cand(dp, i, k, j, t[k - i - 1], NULL, NULL);
       if (!has || v < best2) best2 = v;
       has = 1;
@@ -318,9 +377,10 @@ void got_result_free(got_result *res) {
   res->ntri = 0;
 }
 
-int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
-              got_result *out, char *err, size_t errlen) {
-  memset(out, 0, sizeof *out);
+/* ---- got_solve, step by step ---- */
+
+/* The rule and the size: a triangle-based rule, n >= 3, tables that fit. */
+static int got_solve_check(size_t n, const rule *r, char *err, size_t errlen) {
   if (r->kind != RULE_TRIANGLE) {
     snprintf(err, errlen, "rule %s is not triangle-based: GOT needs a measure and a "
              "joint (MEASURE_JOINT, e.g. R_inf)", r->name);
@@ -330,55 +390,87 @@ int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *o
     snprintf(err, errlen, "a polygon needs at least 3 vertices, got %zu", n);
     return -1;
   }
-  if (got_check_memory(n, r->measure, err, errlen) != 0) return -1;
+  return got_check_memory(n, r->measure, err, errlen);
+}
+
+/* Convex (strictly, anticlockwise) polygons take the unmasked fast path;
+** anything else must be a simple anticlockwise polygon, whose valid
+** diagonals go into *V.  Both tests are exact. */
+static int got_solve_shape(const geom_point *p, size_t n, int threads, int force_mask,
+                           unsigned char **V, char *err, size_t errlen) {
+  *V = NULL;
+  geom_point *q = malloc(n * sizeof *q);
+  if (q == NULL) goto oom;
+  memcpy(q, p, n * sizeof *q);
+  size_t bad = 0, bad2 = 0;
+  int rev = 0;
+  geom_polyerr e = geom_polygon_check(q, n, &bad, &rev);
+  if (e == GEOM_OK && !rev && !force_mask) {
+    free(q);
+    return 0;
+  }
+  memcpy(q, p, n * sizeof *q);
+  e = geom_simple_polygon_check(q, n, &bad, &bad2, &rev);
+  free(q);
+  if (e == GEOM_CROSSING) {
+    snprintf(err, errlen, "polygon is not simple: edges %zu-%zu and %zu-%zu meet", bad,
+             (bad + 1) % n, bad2, (bad2 + 1) % n);
+    return -1;
+  }
+  if (e != GEOM_OK || rev) {
+    snprintf(err, errlen, "vertex %zu: %s", bad,
+             e != GEOM_OK ? geom_polyerr_str(e) : "polygon is clockwise (need anticlockwise)");
+    return -1;
+  }
+  *V = malloc(n * n);
+  if (*V == NULL || got_valid_diagonals(p, n, *V, threads) != 0) goto oom;
+  return 0;
+oom:
+  snprintf(err, errlen, "out of memory for the diagonals of n = %zu", n);
+  return -1;
+}
+
+/* Keys and kernels for the rule (sigma-type measures hand out b^2). */
+static int got_dp_init(got_dp *dp, const geom_point *p, size_t n, const rule *r, int threads) {
   const measure *m = measure_get(r->measure);
-  int threads = opt && opt->threads > 0 ? opt->threads : omp_get_max_threads();
-  double t0 = omp_get_wtime();
-
-  got_dp dp = {0};
-  dp.n = n;
-  dp.joint = r->joint;
-  dp.sign = (int)m->sign;
-  dp.op = joint_get(r->joint)->keyop;
-  dp.keyfn = got_keyfn_detect(r->joint, dp.sign);
-  if (got_measure_has_square(r->measure) && dp.sign > 0 &&
-      (dp.keyfn == GOT_KEY_SQ || dp.keyfn == GOT_KEY_LOG)) {
-    dp.keyfn = dp.keyfn == GOT_KEY_SQ ? GOT_KEY_FROM_SQ_IDENT : GOT_KEY_FROM_SQ_HALFLOG;
-    dp.pd = got_pairs_new_sq(p, n, r->measure, threads);
+  dp->n = n;
+  dp->joint = r->joint;
+  dp->sign = (int)m->sign;
+  dp->op = joint_get(r->joint)->keyop;
+  dp->keyfn = got_keyfn_detect(r->joint, dp->sign);
+  if (got_measure_has_square(r->measure) && dp->sign > 0 &&
+      (dp->keyfn == GOT_KEY_SQ || dp->keyfn == GOT_KEY_LOG)) {
+    dp->keyfn = dp->keyfn == GOT_KEY_SQ ? GOT_KEY_FROM_SQ_IDENT : GOT_KEY_FROM_SQ_HALFLOG;
+    dp->pd = got_pairs_new_sq(p, n, r->measure, threads);
   } else {
-    dp.pd = got_pairs_new(p, n, r->measure, threads);
+    dp->pd = got_pairs_new(p, n, r->measure, threads);
   }
-  dp.M = malloc(n * n * sizeof *dp.M);
-  dp.K = malloc((n * (n - 1) / 2) * sizeof *dp.K);
-  double *tmp = malloc((size_t)threads * n * sizeof *tmp);
-  got_node *node = malloc(n * sizeof *node);
-  out->tri = malloc(n * sizeof *out->tri);
-  int rc = -1;
-  if (dp.pd == NULL || dp.M == NULL || dp.K == NULL || tmp == NULL || node == NULL ||
-      out->tri == NULL) {
-    snprintf(err, errlen, "out of memory for n = %zu (%.2f GB)", n,
-             got_memory_needed(n, r->measure) / 1e9);
-    goto done;
-  }
-  got_run(&dp, threads, tmp);
-  if (got_backtrack(&dp, node) != 0) {
-    snprintf(err, errlen, "out of memory while backtracking");
-    goto done;
-  }
-  size_t count = n - 2;
-  got_runner_up(&dp, node, count, tmp);
+  dp->M = malloc(n * n * sizeof *dp->M);
+  dp->K = malloc((n * (n - 1) / 2) * sizeof *dp->K);
+  return dp->pd && dp->M && dp->K ? 0 : -1;
+}
 
+static void got_dp_free(got_dp *dp) {
+  got_pairs_free(dp->pd);
+  free(dp->M);
+  free(dp->K);
+}
+
+/* Totals, runner-up, gap and the triangles (badness from measure_eval). */
+static void got_result_fill(got_result *out, const got_dp *dp, const got_node *node,
+                            const geom_point *p, const rule *r, const got_options *opt) {
+  const size_t n = dp->n, count = n - 2;
   out->n = n;
   out->measure = r->measure;
   out->joint = r->joint;
-  out->sign = dp.sign;
-  out->key = dp.M[n - 1];
-  out->total = joint_unkey(r->joint, dp.sign, out->key);
+  out->sign = dp->sign;
+  out->key = dp->M[n - 1];
+  out->total = joint_unkey(r->joint, dp->sign, out->key);
   out->has_runner_up = node[0].has2;
   out->tie_eps = opt ? opt->tie_eps : RULE_DEFAULT_TIE_EPS;
   if (out->has_runner_up) {
     out->key2 = node[0].second;
-    out->total2 = joint_unkey(r->joint, dp.sign, out->key2);
+    out->total2 = joint_unkey(r->joint, dp->sign, out->key2);
     out->gap = out->total2 - out->total;
     out->rel_gap = got_rel_gap(out);
     out->unique = !(out->rel_gap <= out->tie_eps);
@@ -394,14 +486,48 @@ int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *o
                                  measure_eval(r->measure, &t)};
   }
   out->ntri = count;
+  out->simple = dp->V != NULL;
+}
+
+int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+              got_result *out, char *err, size_t errlen) {
+  return got_solve_ex(p, n, r, opt, 0, out, err, errlen);
+}
+
+int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                 int force_mask, got_result *out, char *err, size_t errlen) {
+  memset(out, 0, sizeof *out);
+  if (got_solve_check(n, r, err, errlen) != 0) return -1;
+  int threads = opt && opt->threads > 0 ? opt->threads : omp_get_max_threads();
+  double t0 = omp_get_wtime();
+  got_dp dp = {0};
+  unsigned char *V = NULL;
+  if (got_solve_shape(p, n, threads, force_mask, &V, err, errlen) != 0) return -1;
+  dp.V = V;
+  int rc = got_dp_init(&dp, p, n, r, threads);
+  double *tmp = malloc((size_t)threads * n * sizeof *tmp);
+  got_node *node = malloc(n * sizeof *node);
+  out->tri = malloc(n * sizeof *out->tri);
+  if (rc != 0 || tmp == NULL || node == NULL || out->tri == NULL) {
+    snprintf(err, errlen, "out of memory for n = %zu (%.2f GB)", n,
+             got_memory_needed(n, r->measure) / 1e9);
+    rc = -1;
+    goto done;
+  }
+  got_run(&dp, threads, tmp);
+  if (got_backtrack(&dp, node) != 0) {
+    snprintf(err, errlen, "out of memory while backtracking");
+    rc = -1;
+    goto done;
+  }
+  got_runner_up(&dp, node, n - 2, tmp);
+  got_result_fill(out, &dp, node, p, r, opt);
   out->threads = threads;
   out->seconds = omp_get_wtime() - t0;
-  rc = 0;
 done:
   if (rc != 0) got_result_free(out);
-  got_pairs_free(dp.pd);
-  free(dp.M);
-  free(dp.K);
+  got_dp_free(&dp);
+  free(V);
   free(tmp);
   free(node);
   return rc;

@@ -16,6 +16,11 @@
 #define GOT_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define GOT_CLONES
+/* got_solve, with force_mask = 1 running the simple-polygon (masked)
+** programme even on convex input (tests and benchmarks compare the two). */
+int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                 int force_mask, got_result *out, char *err, size_t errlen);
+
 #endif
 
 /* Number of n x n double tables the measure's kernel reads (0, 1 or 2). */
@@ -31,5 +36,10 @@ got_pairs *got_pairs_new_sq(const geom_point *p, size_t n, int measure, int thre
 /* Bulk math for the kernels and keys (see got_kernels.c for accuracy). */
 void got_sqrt_inplace(double *t, size_t m);
 void got_log_inplace(double *t, size_t m, double sign);   /* sign * log(sign * t) */
+
+/* got_solve, with force_mask = 1 running the simple-polygon (masked)
+** programme even on convex input (tests and benchmarks compare the two). */
+int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                 int force_mask, got_result *out, char *err, size_t errlen);
 
 #endif

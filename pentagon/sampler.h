@@ -1,5 +1,5 @@
 /*
-** sampler.h: random convex polygons.
+** sampler.h: random convex and simple polygons.
 **
 ** sampler_pentagon is the thesis's iteration method (section 6.3): points
 ** uniform in the unit disc, one at a time, keeping their convex hull, until
@@ -42,5 +42,12 @@ void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 /* Convex n-gons, anticlockwise, strictly convex, n >= 3. 0 on success. */
 int sampler_vector(sampler_rng *g, size_t n, geom_point *out);
 int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
+
+/* Simple (generally non-convex) n-gons, anticlockwise, checked exactly
+** (pentagon/simplepoly.c): star-shaped from sorted random angles and radii,
+** or x-monotone from random points split by the line through the extreme
+** two.  0 on success, -1 when 100 draws all failed the check. */
+int sampler_star(sampler_rng *g, size_t n, geom_point *out);
+int sampler_monotone(sampler_rng *g, size_t n, geom_point *out);
 
 #endif

@@ -4,8 +4,9 @@
 ** libcsv (report_csv_each, report_csv_field).
 **
 ** Every input error names its line: a wrong field count, a field that is
-** not a finite number, and, after reading, the vertex geom_polygon_check
-** rejects (duplicate, collinear, non-convex; too few has no line).
+** not a finite number, and, after reading, what geom_simple_polygon_check
+** rejects: a duplicate vertex (its line), two edges that cross or touch
+** (both edges with their lines); too few has no line.
 */
 #include <errno.h>
 #include <math.h>
@@ -82,11 +83,17 @@ int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *
     free(r.line);
     return -1;
   }
-  size_t bad = 0;
+  size_t bad = 0, bad2 = 0;
   int rev = 0;
-  geom_polyerr e = geom_polygon_check(r.pts, r.n, &bad, &rev);
+  geom_polyerr e = geom_simple_polygon_check(r.pts, r.n, &bad, &bad2, &rev);
   if (e == GEOM_TOO_FEW)
     snprintf(err, errlen, "%s: %zu vertices; a polygon needs at least 3", path, r.n);
+  else if (e == GEOM_CROSSING)
+    snprintf(err, errlen, "%s: polygon is not simple: edge %zu-%zu (lines %llu-%llu) and "
+             "edge %zu-%zu (lines %llu-%llu) cross or touch", path, bad, (bad + 1) % r.n,
+             (unsigned long long)r.line[bad], (unsigned long long)r.line[(bad + 1) % r.n],
+             bad2, (bad2 + 1) % r.n, (unsigned long long)r.line[bad2],
+             (unsigned long long)r.line[(bad2 + 1) % r.n]);
   else if (e != GEOM_OK)
     snprintf(err, errlen, "%s line %llu: %s (vertex %zu)", path,
              (unsigned long long)r.line[bad], geom_polyerr_str(e), bad);

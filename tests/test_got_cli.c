@@ -218,8 +218,9 @@ static void test_bad_input(void **state) {
     {"0,0\n1,0\n1,1,5\n0,1\n", "line 3"},
     {"0,0\n1,0\nnan,1\n0,1\n", "line 3"},
     {"0,0\n1,0\n1,1\n1,0\n", "duplicate"},
-    {"0,0\n1,0\n2,0\n1,1\n", "collinear"},
-    {"0,0\n2,0\n1,0.5\n2,2\n0,2\n", "convex"},
+    {"0,0\n2,0\n1,0\n1,1\n", "edge 0-1 (lines 1-2) and edge 1-2 (lines 2-3)"},
+    {"0,0\n1,1\n1,0\n0,1\n", "edge 0-1 (lines 1-2) and edge 2-3 (lines 3-4) cross"},
+    {"0,0\n4,0\n4,4\n2,0\n0,4\n", "edge 0-1 (lines 1-2) and edge 3-4 (lines 4-5) cross or touch"},
     {"0,0\n1,0\n", "at least 3"},
     {"x,y\n0,0\n1,0\n1,1\n\"0\n", "line"},
   };
