@@ -210,8 +210,8 @@ const char *geom_polyerr_str(geom_polyerr e) {
 /* For collinear a, b, c: is c within the closed segment ab?  Points on a
 ** line are ordered lexicographically along it, so comparisons suffice. */
 static int geom_between(geom_point a, geom_point b, geom_point c) {
-  if (geom_less(b, a)) geom_swap(&a, &b);
-  return !geom_less(c, a) && !geom_less(b, c);
+  if (geom_lexless(b, a)) geom_swap(&a, &b);
+  return !geom_lexless(c, a) && !geom_lexless(b, c);
 }
 
 int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d) {
@@ -233,7 +233,7 @@ static int geom_span_cmp(const void *x, const void *y) {
 /* Adjacent edges (u, v) and (v, w) meet beyond v only when they fold back:
 ** u, v, w collinear with u and w on the same side of v. */
 static int geom_folds(geom_point u, geom_point v, geom_point w) {
-  return geom_orient(u, v, w) == 0 && geom_less(u, v) == geom_less(w, v);
+  return geom_orient(u, v, w) == 0 && geom_lexless(u, v) == geom_lexless(w, v);
 }
 
 /* Every pair of edges whose x-ranges overlap, found by sorting the edges
@@ -312,7 +312,7 @@ geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, siz
   if (geom_find_crossing(p, n, bad, bad2) != 0) return GEOM_CROSSING;
   size_t lo = 0;
   for (size_t i = 1; i < n; i++)
-    if (geom_less(p[i], p[lo])) lo = i;
+    if (geom_lexless(p[i], p[lo])) lo = i;
   if (geom_orient(p[(lo + n - 1) % n], p[lo], p[(lo + 1) % n]) < 0) {
     geom_reverse_tail(p, n);
     if (reversed) *reversed = 1;
