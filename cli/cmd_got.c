@@ -176,6 +176,26 @@ static void cli_got_runner_up(const got_result *res) {
            res->rel_gap);
 }
 
+/* The certified verdict (got_cert.c): gap and bound in key units, which
+** are the totals' units for l_1, l_inf and l_-inf. */
+static void cli_got_certified(const got_result *res) {
+  if (!res->has_runner_up) {
+    printf("certified: unique optimum (the only triangulation)\n");
+    return;
+  }
+  const char *units = res->joint == JOINT_RSS ? "; key units: sums of squares"
+                    : res->joint == JOINT_HARMONIC ? "; key units: -sums of reciprocals" : "";
+  if (res->cert_unique)
+    printf("certified: unique optimum (gap %.3g > error bound %.3g%s)\n", res->cert_gap,
+           res->cert_bound, units);
+  else if (res->cert_why)
+    printf("certified: tie not excluded (gap %.3g <= error bound inf: %s)\n", res->cert_gap,
+           res->cert_why);
+  else
+    printf("certified: tie not excluded (gap %.3g <= error bound %.3g%s)\n", res->cert_gap,
+           res->cert_bound, units);
+}
+
 static void cli_got_compare(const geom_point *p, size_t n, const got_result *res) {
   got_triangle *dt = malloc(n * sizeof *dt);
   got_diff d;
@@ -239,6 +259,7 @@ static void cli_got_summary(const cli_got_args *a, const rule *r, const got_resu
   else
     printf("total badness: %s\n", tot);
   cli_got_runner_up(res);
+  cli_got_certified(res);
   printf("time: %.4f s (%d thread%s)\n", res->seconds, res->threads,
          res->threads == 1 ? "" : "s");
 }

@@ -72,6 +72,16 @@ typedef struct got_result {
   got_triangle *tri;    /* n - 2 triangles, in backtracking order */
   size_t ntri;
   int simple;           /* 1: solved as a simple (non-convex) polygon, masked DP */
+  /* Certified verdict (got_cert.c, docs/got.md): the exact optimal key lies
+  ** in [key - cert_err, key + cert_err], and every other triangulation's
+  ** exact key is at least key2 - cert_err2.  cert_unique is 1 only when
+  ** that proves key2's triangulations all worse: key2 - cert_err2 > key +
+  ** cert_err, i.e. cert_gap = key2 - key > cert_bound = cert_err +
+  ** cert_err2 (both rounded so that the test is safe).  Errors are INFINITY
+  ** when no bound is known (cert_why says why). */
+  double cert_err, cert_err2, cert_gap, cert_bound;
+  int cert_unique;
+  const char *cert_why;
   double seconds;       /* wall time: validation, diagonals, DP, backtracking */
   int threads;          /* threads used */
 } got_result;

@@ -40,12 +40,6 @@
 ** the loops below need them in bulk, so we recognise the common shapes
 ** (checked against joint_key on probe values) and fall back to calling
 ** joint_key per value for anything else. */
-typedef enum got_keyfn {
-  GOT_KEY_IDENT, GOT_KEY_SQ, GOT_KEY_NEGSQ, GOT_KEY_NEGRECIP,
-  GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_GENERIC,
-  GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (see got_internal.h) */
-} got_keyfn;
-
 static double got_keyfn_one(got_keyfn f, double x) {
   switch (f) {
     case GOT_KEY_IDENT: return x;
@@ -522,6 +516,7 @@ int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options
   }
   got_runner_up(&dp, node, n - 2, tmp);
   got_result_fill(out, &dp, node, p, r, opt);
+  got_certify(out, p, n, dp.keyfn, dp.op);
   out->threads = threads;
   out->seconds = omp_get_wtime() - t0;
 done:
