@@ -172,10 +172,38 @@ static void test_runner_up(void **state) {
   testutil_write_file(path, "0,0\n1,0\n1,1\n0,1\n");
   assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "runner-up: tie"));
+  assert_non_null(strstr(tcli_out, "certified: tie not excluded (gap 0 <= error bound "));
   testutil_write_file(path, "0,0\n3,0\n3,1\n0,2\n");
   assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
   assert_non_null(strstr(tcli_out, "the optimum is unique"));
+  assert_non_null(strstr(tcli_out, "certified: unique optimum (gap "));
+  /* a non-convex polygon from a file: a notch, one triangle only */
+  testutil_write_file(path, "0,0\n1,0\n2,0\n1,1\n");
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s", path), 0);
+  assert_non_null(strstr(tcli_out, "certified: unique optimum (the only triangulation)"));
+  testutil_write_file(path, "0,0\n4,0\n4,4\n2,1\n0,4\n");
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s --print-triangles", path), 0);
+  assert_non_null(strstr(tcli_out, "triangles: 3"));
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s --compare DT", path), 2);
+  assert_true(testutil_one_line(tcli_err));
+  assert_non_null(strstr(tcli_err, "convex"));
+  /* no error model: never unique */
+  assert_int_equal(TCLI_RUN("got --rule lambda_1 --random 40 --sampler star"), 0);
+  assert_non_null(strstr(tcli_out, "certified: tie not excluded (gap "));
+  assert_non_null(strstr(tcli_out, "error bound inf: "));
   remove(path);
+}
+
+static void test_simple_samplers(void **state) {
+  (void)state;
+  const char *s[] = {"star", "monotone"};
+  for (int q = 0; q < 2; q++) {
+    assert_int_equal(TCLI_RUN("got --rule P_1 --random 300 --sampler %s --seed 4", s[q]), 0);
+    assert_non_null(strstr(tcli_out, "certified: unique optimum (gap "));
+    assert_non_null(strstr(tcli_out, "triangles: 298"));
+  }
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 30 --sampler spiral"), 2);
+  assert_non_null(strstr(tcli_err, "star, monotone"));
 }
 
 static void test_threads_same_output(void **state) {
@@ -260,6 +288,7 @@ static void test_bad_input(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_totals_and_list),
+    cmocka_unit_test(test_simple_samplers),
     cmocka_unit_test(test_csv_output),
     cmocka_unit_test(test_polygon_file_orientation),
     cmocka_unit_test(test_compare_dt),
