@@ -291,7 +291,7 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
     char title[200];
     snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r->name, res->n, tot,
              a->shade ? "; shaded by triangle badness" : "");
-    report_got_svg_opts so = {a->shade, title};
+    report_got_svg_opts so = {.shade = a->shade, .title = title, .labels = map};
     report_got_svg(f, p, res->n, res->tri, res->ntri, &so);
     if (cli_close_out(f) != 0) return 1;
   }

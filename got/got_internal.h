@@ -16,25 +16,6 @@
 #define GOT_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define GOT_CLONES
-/* How a measure value becomes a key in bulk (got_dp.c recognises the
-** common shapes of joint_key; GENERIC calls joint_key per value). */
-typedef enum got_keyfn {
-  GOT_KEY_IDENT, GOT_KEY_SQ, GOT_KEY_NEGSQ, GOT_KEY_NEGRECIP,
-  GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_GENERIC,
-  GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (see got_internal.h) */
-} got_keyfn;
-
-
-/* The certified verdict (got_cert.c): from the DP's keys, the rule's key
-** shape and the polygon, fill res->cert_* (see got.h). */
-void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
-                 joint_keyop op);
-
-/* got_solve, with force_mask = 1 running the simple-polygon (masked)
-** programme even on convex input (tests and benchmarks compare the two). */
-int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options *opt,
-                 int force_mask, got_result *out, char *err, size_t errlen);
-
 #endif
 
 /* Number of n x n double tables the measure's kernel reads (0, 1 or 2). */
@@ -56,7 +37,7 @@ void got_log_inplace(double *t, size_t m, double sign);   /* sign * log(sign * t
 typedef enum got_keyfn {
   GOT_KEY_IDENT, GOT_KEY_SQ, GOT_KEY_NEGSQ, GOT_KEY_NEGRECIP,
   GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_GENERIC,
-  GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (see got_internal.h) */
+  GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (got_measure_has_square) */
 } got_keyfn;
 
 

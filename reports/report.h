@@ -201,10 +201,13 @@ int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *ma
 typedef struct report_got_svg_opts {
   int shade;            /* fill triangles by badness (light = good, dark = bad) */
   const char *title;    /* one line above the picture, or NULL */
+  const size_t *labels; /* vertex numbers to print (n <= 60), e.g. the input's
+                           rows; NULL: 0..n-1 */
 } report_got_svg_opts;
 
-/* The polygon, its triangulation and (small) vertices, scaled to about
-** 1000 px with thin strokes so that n = 1000 stays readable. */
+/* The polygon (any simple one), its triangulation and (small) vertices,
+** scaled to about 1000 px with thin strokes so that n = 1000 stays
+** readable; vertex numbers up to n = 60. */
 int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
                    size_t ntri, const report_got_svg_opts *o);
 

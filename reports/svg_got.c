@@ -1,13 +1,18 @@
 /*
-** svg_got.c: an SVG picture of a convex polygon and its globally optimal
-** triangulation (`fliplab got --svg`).
+** svg_got.c: an SVG picture of a simple polygon (convex or not) and its
+** globally optimal triangulation (`fliplab got --svg`).
 **
 ** Readable for large n: the polygon is scaled so that its larger side is
 ** 1000 px, diagonals are hairlines (one <path>), the outline is a little
-** heavier and vertices are small dots.  With shading, each triangle is
-** filled on a light-to-dark scale of its badness between the best and the
-** worst triangle (small is good, so dark marks the bad triangles), with a
-** legend giving the two ends.
+** heavier and vertices are small dots.  Up to REPORT_GOT_LABEL_N vertices
+** each dot carries its number (the input's row when a map is given), set
+** off outwards along the bisector of the two edges' outward normals, so a
+** reflex vertex's number sits outside the notch too.  With shading, each
+** triangle is filled on a light-to-dark scale of its badness between the
+** best and the worst triangle (small is good, so dark marks the bad
+** triangles), with a legend giving the two ends.  Nothing assumes
+** convexity: the outline is the polygon itself and every diagonal is the
+** chord (i, j) of exactly one triangle of the programme's tree.
 */
 #include <math.h>
 #include <stdio.h>
@@ -16,16 +21,18 @@
 #define REPORT_GOT_SIZE 1000.0
 #define REPORT_GOT_MARGIN 12.0
 #define REPORT_GOT_TOP 30.0
+#define REPORT_GOT_LABEL_N 60     /* vertex numbers up to this n */
 
 typedef struct report_got_view {
-  double minx, maxy, s;
+  double minx, maxy, s, margin;
+  double width, height, hair, dot;
 } report_got_view;
 
 static double report_got_px(const report_got_view *v, double x) {
-  return REPORT_GOT_MARGIN + (x - v->minx) * v->s;
+  return v->margin + (x - v->minx) * v->s;
 }
 static double report_got_py(const report_got_view *v, double y) {
-  return REPORT_GOT_TOP + (v->maxy - y) * v->s;
+  return REPORT_GOT_TOP + v->margin - REPORT_GOT_MARGIN + (v->maxy - y) * v->s;
 }
 
 /* Light yellow (good) to dark red (bad), piecewise linear through 4 stops. */
@@ -49,9 +56,9 @@ static void report_got_text(FILE *f, double x, double y, int size, const char *s
   fputs("</text>\n", f);
 }
 
-int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
-                   size_t ntri, const report_got_svg_opts *o) {
-  report_got_view v = {p[0].x, p[0].y, 1};
+/* Scale and page size; labels get a wider margin. */
+static report_got_view report_got_fit(const geom_point *p, size_t n, int shade) {
+  report_got_view v = {p[0].x, p[0].y, 1, REPORT_GOT_MARGIN, 0, 0, 0, 0};
   double maxx = p[0].x, miny = p[0].y;
   for (size_t q = 1; q < n; q++) {
     if (p[q].x < v.minx) v.minx = p[q].x;
@@ -59,76 +66,121 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
     if (p[q].y < miny) miny = p[q].y;
     if (p[q].y > v.maxy) v.maxy = p[q].y;
   }
+  if (n <= REPORT_GOT_LABEL_N) v.margin = 2 * REPORT_GOT_MARGIN + 8;
   double w = maxx - v.minx, h = v.maxy - miny, big = w > h ? w : h;
   v.s = big > 0 ? REPORT_GOT_SIZE / big : 1;
-  double width = w * v.s + 2 * REPORT_GOT_MARGIN;
-  double height = h * v.s + REPORT_GOT_TOP + REPORT_GOT_MARGIN + (o && o->shade ? 24 : 0);
-  if (width < 400) width = 400;
-  double hair = n > 300 ? 0.35 : n > 60 ? 0.6 : 1.0;
-  double dot = n > 300 ? 0.8 : n > 60 ? 1.8 : 3.0;
+  v.width = w * v.s + 2 * v.margin;
+  v.height = h * v.s + REPORT_GOT_TOP + 2 * v.margin - REPORT_GOT_MARGIN + (shade ? 24 : 0);
+  if (v.width < 400) v.width = 400;
+  v.hair = n > 300 ? 0.35 : n > 60 ? 0.6 : 1.0;
+  v.dot = n > 300 ? 0.8 : n > 60 ? 1.8 : 3.0;
+  return v;
+}
 
-  fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
-             "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n",
-          width, height, width, height);
-  fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
-  if (o && o->title)
-    report_got_text(f, REPORT_GOT_MARGIN, 20, 14, o->title);
-
-  double bmin = INFINITY, bmax = -INFINITY;
-  if (o && o->shade) {
-    for (size_t q = 0; q < ntri; q++)
-      if (isfinite(t[q].badness)) {
-        if (t[q].badness < bmin) bmin = t[q].badness;
-        if (t[q].badness > bmax) bmax = t[q].badness;
-      }
-    fprintf(f, "<g stroke=\"none\">\n");
-    for (size_t q = 0; q < ntri; q++) {
-      char col[16];
-      double fr = bmax > bmin ? (t[q].badness - bmin) / (bmax - bmin) : 0;
-      if (isfinite(t[q].badness)) report_got_colour(fr, col, sizeof col);
-      else snprintf(col, sizeof col, "#999999");
-      const geom_point *a = &p[t[q].i], *b = &p[t[q].k], *c = &p[t[q].j];
-      fprintf(f, "<polygon fill=\"%s\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", col,
-              report_got_px(&v, a->x), report_got_py(&v, a->y), report_got_px(&v, b->x),
-              report_got_py(&v, b->y), report_got_px(&v, c->x), report_got_py(&v, c->y));
+static void report_got_tri_range(const got_triangle *t, size_t ntri, double *bmin, double *bmax) {
+  *bmin = INFINITY;
+  *bmax = -INFINITY;
+  for (size_t q = 0; q < ntri; q++)
+    if (isfinite(t[q].badness)) {
+      if (t[q].badness < *bmin) *bmin = t[q].badness;
+      if (t[q].badness > *bmax) *bmax = t[q].badness;
     }
-    fprintf(f, "</g>\n");
-  }
+}
 
-  /* Diagonals: every diagonal is the chord (i, j) of exactly one
-  ** triangle (i, k, j) of the DP's tree, so each is drawn once. */
-  fprintf(f, "<path fill=\"none\" stroke=\"#1f4e79\" stroke-width=\"%.2f\" d=\"", hair);
+static void report_got_shade(FILE *f, const report_got_view *v, const geom_point *p,
+                             const got_triangle *t, size_t ntri, double bmin, double bmax) {
+  fprintf(f, "<g stroke=\"none\">\n");
+  for (size_t q = 0; q < ntri; q++) {
+    char col[16];
+    double fr = bmax > bmin ? (t[q].badness - bmin) / (bmax - bmin) : 0;
+    if (isfinite(t[q].badness)) report_got_colour(fr, col, sizeof col);
+    else snprintf(col, sizeof col, "#999999");
+    const geom_point *a = &p[t[q].i], *b = &p[t[q].k], *c = &p[t[q].j];
+    fprintf(f, "<polygon fill=\"%s\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", col,
+            report_got_px(v, a->x), report_got_py(v, a->y), report_got_px(v, b->x),
+            report_got_py(v, b->y), report_got_px(v, c->x), report_got_py(v, c->y));
+  }
+  fprintf(f, "</g>\n");
+}
+
+/* Diagonals: every diagonal is the chord (i, j) of exactly one triangle
+** (i, k, j) of the DP's tree, so each is drawn once. */
+static void report_got_diagonals(FILE *f, const report_got_view *v, const geom_point *p,
+                                 size_t n, const got_triangle *t, size_t ntri) {
+  fprintf(f, "<path fill=\"none\" stroke=\"#1f4e79\" stroke-width=\"%.2f\" d=\"", v->hair);
   for (size_t q = 0; q < ntri; q++) {
     size_t i = (size_t)t[q].i, j = (size_t)t[q].j;
     if (j - i == 1 || (i == 0 && j == n - 1)) continue;
-    fprintf(f, "M%.2f %.2fL%.2f %.2f", report_got_px(&v, p[i].x), report_got_py(&v, p[i].y),
-            report_got_px(&v, p[j].x), report_got_py(&v, p[j].y));
+    fprintf(f, "M%.2f %.2fL%.2f %.2f", report_got_px(v, p[i].x), report_got_py(v, p[i].y),
+            report_got_px(v, p[j].x), report_got_py(v, p[j].y));
   }
   fprintf(f, "\"/>\n");
+}
 
+static void report_got_outline(FILE *f, const report_got_view *v, const geom_point *p, size_t n) {
   fprintf(f, "<polygon fill=\"none\" stroke=\"black\" stroke-width=\"%.2f\" points=\"",
-          hair * 2.5);
+          v->hair * 2.5);
   for (size_t q = 0; q < n; q++)
-    fprintf(f, "%s%.2f,%.2f", q ? " " : "", report_got_px(&v, p[q].x), report_got_py(&v, p[q].y));
+    fprintf(f, "%s%.2f,%.2f", q ? " " : "", report_got_px(v, p[q].x), report_got_py(v, p[q].y));
   fprintf(f, "\"/>\n<g fill=\"black\">\n");
   for (size_t q = 0; q < n; q++)
-    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.1f\"/>\n", report_got_px(&v, p[q].x),
-            report_got_py(&v, p[q].y), dot);
+    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.1f\"/>\n", report_got_px(v, p[q].x),
+            report_got_py(v, p[q].y), v->dot);
   fprintf(f, "</g>\n");
+}
 
-  if (o && o->shade && bmax >= bmin) {
-    double y = height - 18;
-    for (int s = 0; s < 20; s++) {
-      char col[16];
-      report_got_colour(s / 19.0, col, sizeof col);
-      fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
-              REPORT_GOT_MARGIN + 120 + 10 * s, y, col);
+/* Vertex numbers, set off outwards (anticlockwise polygon: the outward
+** normal of edge a -> b is (dy, -dx)), in pixel space (y points down). */
+static void report_got_labels(FILE *f, const report_got_view *v, const geom_point *p, size_t n,
+                              const size_t *labels) {
+  fprintf(f, "<g font-size=\"11\" fill=\"#444\" text-anchor=\"middle\">\n");
+  for (size_t q = 0; q < n; q++) {
+    geom_point a = p[(q + n - 1) % n], b = p[q], c = p[(q + 1) % n];
+    double n1x = b.y - a.y, n1y = -(b.x - a.x), n2x = c.y - b.y, n2y = -(c.x - b.x);
+    double l1 = hypot(n1x, n1y), l2 = hypot(n2x, n2y);
+    double ox = n1x / l1 + n2x / l2, oy = n1y / l1 + n2y / l2, lo = hypot(ox, oy);
+    if (!(lo > 1e-9)) {            /* a spike-free straight angle has lo = 2; a cusp ~0 */
+      ox = n1x / l1;
+      oy = n1y / l1;
+      lo = 1;
     }
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
-            REPORT_GOT_MARGIN, y + 9, bmin);
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
-            REPORT_GOT_MARGIN + 325, y + 9, bmax);
+    double x = report_got_px(v, b.x) + 10 * ox / lo, y = report_got_py(v, b.y) - 10 * oy / lo;
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">%zu</text>\n", x, y + 4,
+            labels ? labels[q] : q);
   }
+  fprintf(f, "</g>\n");
+}
+
+static void report_got_legend(FILE *f, const report_got_view *v, double bmin, double bmax) {
+  double y = v->height - 18;
+  for (int s = 0; s < 20; s++) {
+    char col[16];
+    report_got_colour(s / 19.0, col, sizeof col);
+    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
+            REPORT_GOT_MARGIN + 120 + 10 * s, y, col);
+  }
+  fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
+          REPORT_GOT_MARGIN, y + 9, bmin);
+  fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
+          REPORT_GOT_MARGIN + 325, y + 9, bmax);
+}
+
+int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
+                   size_t ntri, const report_got_svg_opts *o) {
+  int shade = o && o->shade;
+  report_got_view v = report_got_fit(p, n, shade);
+  fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+             "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n",
+          v.width, v.height, v.width, v.height);
+  fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
+  if (o && o->title) report_got_text(f, REPORT_GOT_MARGIN, 20, 14, o->title);
+  double bmin, bmax;
+  report_got_tri_range(t, ntri, &bmin, &bmax);
+  if (shade) report_got_shade(f, &v, p, t, ntri, bmin, bmax);
+  report_got_diagonals(f, &v, p, n, t, ntri);
+  report_got_outline(f, &v, p, n);
+  if (n <= REPORT_GOT_LABEL_N) report_got_labels(f, &v, p, n, o ? o->labels : NULL);
+  if (shade && bmax >= bmin) report_got_legend(f, &v, bmin, bmax);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }

@@ -194,6 +194,32 @@ static void test_runner_up(void **state) {
   remove(path);
 }
 
+/* Vertex numbers on the SVG: the input's rows (a clockwise non-convex
+** file), one per vertex up to n = 60, none above. */
+static void test_svg_labels(void **state) {
+  (void)state;
+  char path[512], svg[512];
+  testutil_tmppath(path, sizeof path, "notch.csv");
+  testutil_tmppath(svg, sizeof svg, "notch.svg");
+  testutil_write_file(path, "0,0\n0,4\n2,1\n4,4\n4,0\n");   /* clockwise */
+  assert_int_equal(TCLI_RUN("got --rule P_1 --polygon %s --svg %s", path, svg), 0);
+  char *s = testutil_read_file(svg);
+  assert_non_null(s);
+  assert_int_equal(testutil_count(s, "<text"), 1 + 5);
+  for (int r = 0; r < 5; r++) {
+    char want[32];
+    snprintf(want, sizeof want, ">%d</text>", r);
+    assert_int_equal(testutil_count(s, want), 1);
+  }
+  free(s);
+  assert_int_equal(TCLI_RUN("got --rule P_1 --random 61 --sampler star --svg %s", svg), 0);
+  s = testutil_read_file(svg);
+  assert_int_equal(testutil_count(s, "<text"), 1);
+  free(s);
+  remove(path);
+  remove(svg);
+}
+
 static void test_simple_samplers(void **state) {
   (void)state;
   const char *s[] = {"star", "monotone"};
@@ -289,6 +315,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_totals_and_list),
     cmocka_unit_test(test_simple_samplers),
+    cmocka_unit_test(test_svg_labels),
     cmocka_unit_test(test_csv_output),
     cmocka_unit_test(test_polygon_file_orientation),
     cmocka_unit_test(test_compare_dt),
