@@ -282,6 +282,13 @@ fail:
 **    f_BD iff s_AC > s_BD (harmonic) or s_AC < s_BD (l_2).  Equal sums
 **    give equal f: a tie.  A vector with any other lane (near ties, zeros,
 **    infinities, NaN, extreme magnitudes) takes the exact path.
+** 5. Range.  The product and the root-sum-square joints can underflow or
+**    overflow a double (joint.h), but not when every magnitude of the slot
+**    lies in [2^-511, 2^511]: then every product, square and sum of two
+**    squares is a normal double below 2^1023, and the plain evaluation is
+**    the split one of joint_compare bit for bit.  A lane with a magnitude
+**    outside (or 0, inf, NaN: rare, extreme triangles) is decided again by
+**    joint_compare, one quadrilateral at a time (flipgraph_lane_code).
 **
 ** Values sit triangle-major (val[t][slot]) so that the loops over slots
 ** (all measures of one joint) run on contiguous memory. */
@@ -295,7 +302,30 @@ typedef struct flipgraph_work {
   double mag[10][FLIPGRAPH_SLOTS];   /* magnitudes: val times the slot's sign */
   double h[10][FLIPGRAPH_SLOTS];     /* 1/mag or mag^2 (harmonic, l_2) */
   long long code[JOINT_COUNT][FLIPGRAPH_SLOTS];   /* decision codes */
+  int wide[FLIPGRAPH_SLOTS];         /* 1: a magnitude outside [2^-511, 2^511] (rewrite 5) */
+  int any_wide;
 } flipgraph_work;
+
+/* The decision code of slot s under joint j from joint_compare (rewrite 5). */
+static long long flipgraph_lane_code(joint_id j, const flipgraph_plan *pl,
+                                     const flipgraph_work *w, int s) {
+  int sign = pl->slot_neg[s] ? -1 : 1;
+  long long code = 0, p3 = 1;
+  for (int q = 0; q < 5; q++, p3 *= 3) {
+    const unsigned char *t = flipgraph_quad_tri[q];
+    int c = joint_compare(j, sign, w->val[t[0]][s], w->val[t[1]][s], w->val[t[2]][s],
+                          w->val[t[3]][s], pl->tie_eps);
+    code += c < 0 ? 0 : c > 0 ? p3 : 2 * p3;
+  }
+  return code;
+}
+
+/* Rewrite 5's fallback for the product and root-sum-square joints. */
+static void flipgraph_wide_codes(joint_id j, const flipgraph_plan *pl, flipgraph_work *w) {
+  if (!w->any_wide || (j != JOINT_PRODUCT && j != JOINT_RSS)) return;
+  for (int s = 0; s < pl->nslots; s++)
+    if (w->wide[s]) w->code[j][s] = flipgraph_lane_code(j, pl, w, s);
+}
 
 /* Padding lanes hold harmless values (never read back). */
 static void flipgraph_work_init(flipgraph_work *w) {
@@ -452,14 +482,31 @@ static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
       + pl->ngroup[JOINT_RSS] > 0)
     for (int t = 0; t < 10; t++)
       for (int s = 0; s < nv; s++) w->mag[t][s] = pl->slot_sign[s] * w->val[t][s];
+  w->any_wide = 0;
+  if (pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_RSS] > 0)
+    for (int s = 0; s < pl->nslots; s++) {
+      int wide = 0;
+      for (int t = 0; t < 10; t++) {
+        double m = w->mag[t][s];
+        wide |= !(m >= 0x1p-511 && m <= 0x1p511);
+      }
+      w->wide[s] = wide;
+      w->any_wide |= wide;
+    }
   for (int j = 0; j < JOINT_COUNT; j++) {
     if (pl->ngroup[j] == 0) continue;
     switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
       case JOINT_MIN: flipgraph_joint_codes(JOINT_MIN, pl, w); break;
       case JOINT_HARMONIC: flipgraph_joint_codes(JOINT_HARMONIC, pl, w); break;
-      case JOINT_PRODUCT: flipgraph_joint_codes(JOINT_PRODUCT, pl, w); break;
+      case JOINT_PRODUCT:
+        flipgraph_joint_codes(JOINT_PRODUCT, pl, w);
+        flipgraph_wide_codes(JOINT_PRODUCT, pl, w);
+        break;
       case JOINT_SUM: flipgraph_joint_codes(JOINT_SUM, pl, w); break;
-      case JOINT_RSS: flipgraph_joint_codes(JOINT_RSS, pl, w); break;
+      case JOINT_RSS:
+        flipgraph_joint_codes(JOINT_RSS, pl, w);
+        flipgraph_wide_codes(JOINT_RSS, pl, w);
+        break;
       default: flipgraph_joint_codes(JOINT_MAX, pl, w); break;
     }
   }

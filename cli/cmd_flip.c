@@ -49,8 +49,10 @@ int cli_cmd_flip(int argc, char **argv) {
   geom_point q[4];
   static const char *const coord[8] = {"x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"};
   for (int k = 0; k < 8; k++) {
-    double v;
-    if (cli_parse_double("flip", coord[k], pos[1 + k], -HUGE_VAL, HUGE_VAL, &v) != 0) return 2;
+    double v = 0;
+    geom_coorderr ce = geom_coord_parse(pos[1 + k], &v);   /* the coordinate contract */
+    if (ce != GEOM_COORD_OK)
+      return cli_error("flip", "%s '%.40s' %s", coord[k], pos[1 + k], geom_coorderr_str(ce));
     if (k % 2 == 0) q[k / 2].x = v;
     else q[k / 2].y = v;
   }

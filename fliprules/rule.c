@@ -137,12 +137,12 @@ const char *rule_choice_str(rule_choice c) {
 ** one: inf - x = inf <= eps * inf would otherwise call it a tie.  NaN (a
 ** measure undefined on a degenerate triangle) gives EITHER, so it shows up
 ** as a type-V graph instead of a silent decision. */
+static rule_choice rule_from_cmp(int c) {
+  return c < 0 ? RULE_AC : c > 0 ? RULE_BD : RULE_EITHER;
+}
+
 rule_choice rule_compare(double ac, double bd, double tie_eps) {
-  if (ac == bd) return RULE_EITHER;
-  if (isnan(ac) || isnan(bd)) return RULE_EITHER;
-  if (!isinf(ac) && !isinf(bd) && fabs(ac - bd) <= tie_eps * fmax(fabs(ac), fabs(bd)))
-    return RULE_EITHER;
-  return ac < bd ? RULE_AC : RULE_BD;
+  return rule_from_cmp(joint_compare_values(ac, bd, tie_eps));
 }
 
 rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri *t_acd,
@@ -150,11 +150,13 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
                            double tie_eps, double *ac, double *bd) {
   const measure *M = measure_get(r->measure);
   int s = M->sign;
-  double fac = joint_apply(r->joint, s, M->fn(t_abc, M->ctx), M->fn(t_acd, M->ctx));
-  double fbd = joint_apply(r->joint, s, M->fn(t_abd, M->ctx), M->fn(t_bcd, M->ctx));
-  if (ac) *ac = fac;
-  if (bd) *bd = fbd;
-  return rule_compare(fac, fbd, tie_eps);
+  double x1 = M->fn(t_abc, M->ctx), y1 = M->fn(t_acd, M->ctx);
+  double x2 = M->fn(t_abd, M->ctx), y2 = M->fn(t_bcd, M->ctx);
+  if (ac) *ac = joint_apply(r->joint, s, x1, y1);
+  if (bd) *bd = joint_apply(r->joint, s, x2, y2);
+  /* Decided in split form: a product or root-sum-square that under- or
+  ** overflows a double still decides (joint_compare). */
+  return rule_from_cmp(joint_compare(r->joint, s, x1, y1, x2, y2, tie_eps));
 }
 
 /* Quadrilateral rules see the rotation of ABCD that starts at its

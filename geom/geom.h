@@ -40,6 +40,58 @@ static inline int geom_lexless(geom_point a, geom_point b) {
 double geom_dist(geom_point p, geom_point q);
 int geom_point_finite(geom_point p);
 
+/* ---- the coordinate contract --------------------------------------------
+**
+** fliplab answers correctly for every point whose coordinates are 0 or of
+** magnitude in [GEOM_COORD_MIN, GEOM_COORD_MAX] = [1e-30, 1e30], and refuses
+** every other coordinate (subnormal, underflowing, overflowing, too small or
+** too large, NaN, infinite) with a one-line error.  Every reader of
+** coordinates (command line, pentagon, polygon and point CSV) goes through
+** geom_coord_parse, every polygon through geom_polygon_check, which apply it.
+**
+** Why these bounds: no quantity a built-in measure or joint computes can
+** underflow or overflow inside them (docs/scale.md has the argument in
+** full).  1e30 < 2^100 and 1e-30 > 2^-100, so every coordinate is a
+** multiple of 2^-152 (its ulp is at least 2^-152) of magnitude below 2^100,
+** and so is every coordinate difference, exact or rounded.  Hence, for a
+** triangle with vertices inside the contract:
+**   side lengths          in [2^-152, 2^101]
+**   twice the area        in [2^-304, 2^203]   (a non-zero multiple of 2^-304)
+**   R = abc / (4A)        at most 2^608, r = 2A/P at least 2^-408,
+**   dimensionless values  (angles, r/R, 4A/P^2, c/a, lambda) in
+**                         [2^-1015, 2^507], the smallest being
+**                         r/R = 8A^2 / (P abc) >= 2^-1014.6,
+** all normal doubles, so each measure is computed with its usual relative
+** error.  Joints: min, max, sum and the harmonic mean of such values stay in
+** range; the product and the root-sum-square do not (R * R > 2^1023,
+** (r/R)^2 < 2^-1022), so they are compared in split form, a mantissa and a
+** binary exponent (joint_compare in joints/joint.h).  There is no bound on
+** edge lengths or heights beyond what the contract implies: the shortest
+** edge is 2^-152 and the flattest triangle has twice the area 2^-304 with
+** sides near 2^100. */
+#define GEOM_COORD_MAX 1e30
+#define GEOM_COORD_MIN 1e-30
+
+typedef enum geom_coorderr {
+  GEOM_COORD_OK = 0,
+  GEOM_COORD_NOT_NUMBER,   /* empty, or not entirely a decimal/hex number */
+  GEOM_COORD_NOT_FINITE,   /* nan, inf */
+  GEOM_COORD_OUT_OF_RANGE  /* overflows, underflows, or outside the contract */
+} geom_coorderr;
+
+/* Is x a coordinate of the contract? */
+geom_coorderr geom_coord_check(double x);
+/* Parse a whole string (strtod syntax, leading blanks allowed, nothing after
+** the number) into *out and check it against the contract. */
+geom_coorderr geom_coord_parse(const char *s, double *out);
+/* "is not a number", "is not finite", "is out of range (coordinates must be
+** 0 or of magnitude between 1e-30 and 1e30)". */
+const char *geom_coorderr_str(geom_coorderr e);
+
+/* Twice the area of triangle p q r, |orientation determinant|, with a
+** relative error below 2^-40 (geom.c explains how). */
+double geom_twice_area(geom_point p, geom_point q, geom_point r);
+
 /* Convex polygon validation, used for every polygon a user hands us.
 ** geom_polygon_check reverses a clockwise polygon in place (the documented
 ** normalisation: fliplab works anticlockwise) and returns GEOM_OK, or an
@@ -51,20 +103,14 @@ typedef enum geom_polyerr {
   GEOM_DUPLICATE,      /* two equal vertices */
   GEOM_COLLINEAR,      /* three consecutive vertices on a line */
   GEOM_NOT_CONVEX,     /* a reflex vertex, or the boundary winds more than once */
-  GEOM_OUT_OF_SCALE,   /* |coordinate| > GEOM_MAX_COORD or an edge < GEOM_MIN_EDGE */
+  GEOM_OUT_OF_SCALE,   /* a coordinate outside the contract (geom_coord_check) */
   GEOM_CROSSING        /* two edges cross, touch or overlap (simple polygons) */
 } geom_polyerr;
-
-/* The scales fliplab accepts.  Measures are products of up to six lengths
-** (abc, joined by a product) evaluated in double precision: beyond these
-** bounds they would overflow or underflow and decide nothing. */
-#define GEOM_MAX_COORD 1e50
-#define GEOM_MIN_EDGE 1e-50
 
 geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed);
 
 /* Simple polygon validation, exact (geom_orient only): finite coordinates
-** within GEOM_MAX_COORD, no repeated vertex, edges at least GEOM_MIN_EDGE,
+** within the contract (geom_coord_check), no repeated vertex,
 ** and no two edges meeting except adjacent edges at their shared vertex
 ** (crossing, touching and overlapping are all refused; an adjacent pair
 ** that folds back onto itself overlaps).  Consecutive collinear vertices

@@ -52,6 +52,25 @@ GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
   return s;
 }
 
+/* |orientation determinant| of p, q, r, computed exactly, rounded toward
+** zero to a double (geom_twice_area's slow path). */
+GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  mpq_t t[5];
+  for (int i = 0; i < 5; i++) mpq_init(t[i]);
+  mpq_set_d(t[0], q.x); mpq_set_d(t[4], p.x); mpq_sub(t[0], t[0], t[4]);  /* qx - px */
+  mpq_set_d(t[1], r.y); mpq_set_d(t[4], p.y); mpq_sub(t[1], t[1], t[4]);  /* ry - py */
+  mpq_set_d(t[2], q.y); mpq_sub(t[2], t[2], t[4]);                        /* qy - py */
+  mpq_set_d(t[3], r.x); mpq_set_d(t[4], p.x); mpq_sub(t[3], t[3], t[4]);  /* rx - px */
+  mpq_mul(t[0], t[0], t[1]);
+  mpq_mul(t[2], t[2], t[3]);
+  mpq_sub(t[0], t[0], t[2]);
+  mpq_abs(t[0], t[0]);
+  double v = mpq_get_d(t[0]);
+  for (int i = 0; i < 5; i++) mpq_clear(t[i]);
+  return v;
+}
+
 /* The incircle determinant of a, b, c, d translated so that d is the origin:
 **   | adx ady adx^2+ady^2 |
 **   | bdx bdy bdx^2+bdy^2 |

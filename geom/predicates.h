@@ -27,6 +27,9 @@ typedef struct geom_point {
 
 int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d);
 int geom_orient_exact(geom_point a, geom_point b, geom_point c);
+/* |orientation determinant| exactly, rounded toward zero (finite input;
+** geom_twice_area's slow path). */
+double geom_twice_area_exact(geom_point a, geom_point b, geom_point c);
 
 /* eps = 2^-53, half an ulp of 1: the relative error of one rounded operation. */
 #define GEOM_EPS 0x1p-53

@@ -56,10 +56,14 @@ struct got_pairs {
   double *len;          /* n x n: |p_i p_k|, or NULL */
   double *dir;          /* n x n: direction of p_i -> p_k in (-pi, pi], or NULL */
   got_kernel_fn fn;
+  int thin_check;       /* recompute thin triangles exactly (got_pairs_eval) */
+  int squared;          /* fn is the kernel of b^2 (got_pairs_new_sq) */
 };
 
-/* Which tables a kernel reads. */
-enum { GOT_NEED_LEN = 1, GOT_NEED_DIR = 2 };
+/* Which tables a kernel reads; GOT_NEED_AREA (no table) marks kernels that
+** use the cross product, which like the angles needs the thin-triangle
+** check of got_pairs_eval. */
+enum { GOT_NEED_LEN = 1, GOT_NEED_DIR = 2, GOT_NEED_AREA = 4 };
 
 static inline double got_min2(double a, double b) { return a < b ? a : b; }
 static inline double got_max2(double a, double b) { return a > b ? a : b; }
@@ -247,22 +251,22 @@ static const got_kernel_entry got_kernels[MEASURE_BUILTIN_COUNT] = {
   [MEASURE_NEG_C] = {got_k_neg_c, GOT_NEED_LEN, NULL},
   [MEASURE_P] = {got_k_p, GOT_NEED_LEN, NULL},
   [MEASURE_ABC] = {got_k_abc, GOT_NEED_LEN, NULL},
-  [MEASURE_NEG_AREA] = {got_k_neg_area, 0, NULL},
-  [MEASURE_R] = {got_k_r, GOT_NEED_LEN, NULL},
-  [MEASURE_NEG_R] = {got_k_neg_r, GOT_NEED_LEN, NULL},
-  [MEASURE_NEG_H] = {got_k_neg_h, GOT_NEED_LEN, NULL},
-  [MEASURE_NEG_R_OVER_R] = {got_k_neg_r_over_r, GOT_NEED_LEN, NULL},
-  [MEASURE_NEG_R2_OVER_A] = {got_k_neg_r2_over_a, GOT_NEED_LEN, NULL},
+  [MEASURE_NEG_AREA] = {got_k_neg_area, GOT_NEED_AREA, NULL},
+  [MEASURE_R] = {got_k_r, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
+  [MEASURE_NEG_R] = {got_k_neg_r, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
+  [MEASURE_NEG_H] = {got_k_neg_h, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
+  [MEASURE_NEG_R_OVER_R] = {got_k_neg_r_over_r, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
+  [MEASURE_NEG_R2_OVER_A] = {got_k_neg_r2_over_a, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
   [MEASURE_NEG_C_OVER_A] = {got_k_neg_c_over_a, GOT_NEED_LEN, NULL},
   [MEASURE_NEG_C_OVER_P] = {got_k_neg_c_over_p, GOT_NEED_LEN, NULL},
   [MEASURE_A_MINUS_C] = {got_k_a_minus_c, GOT_NEED_LEN, NULL},
   [MEASURE_B_OVER_C_MINUS_A] = {got_k_b_over_c_minus_a, GOT_NEED_LEN, NULL},
-  [MEASURE_LAMBDA] = {got_k_lambda, 0, NULL},
-  [MEASURE_D] = {got_k_d, GOT_NEED_LEN, NULL},
+  [MEASURE_LAMBDA] = {got_k_lambda, GOT_NEED_AREA, NULL},
+  [MEASURE_D] = {got_k_d, GOT_NEED_LEN | GOT_NEED_AREA, NULL},
   [MEASURE_SIGMA] = {got_k_sigma, GOT_NEED_DIR, got_k_sigma2},
   [MEASURE_PINF] = {got_k_pinf, 0, NULL},
   [MEASURE_RINF] = {got_k_rinf, 0, NULL},
-  [MEASURE_NEG_RINF] = {got_k_neg_rinf, 0, NULL},
+  [MEASURE_NEG_RINF] = {got_k_neg_rinf, GOT_NEED_AREA, NULL},
 };
 
 int got_measure_has_kernel(int measure) {
@@ -282,7 +286,10 @@ int got_measure_has_square(int measure) {
 
 got_pairs *got_pairs_new_sq(const geom_point *p, size_t n, int measure, int threads) {
   got_pairs *pd = got_pairs_new(p, n, measure, threads);
-  if (pd != NULL && got_measure_has_square(measure)) pd->fn = got_kernels[measure].sq;
+  if (pd != NULL && got_measure_has_square(measure)) {
+    pd->fn = got_kernels[measure].sq;
+    pd->squared = 1;
+  }
   return pd;
 }
 
@@ -298,6 +305,7 @@ got_pairs *got_pairs_new(const geom_point *p, size_t n, int measure, int threads
   if (got_measure_has_kernel(measure)) {
     pd->fn = got_kernels[measure].fn;
     needs = got_kernels[measure].needs;
+    pd->thin_check = (needs & (GOT_NEED_DIR | GOT_NEED_AREA)) != 0;
   } else {
     pd->fn = got_k_generic;
   }
@@ -337,9 +345,36 @@ got_pairs *got_pairs_new(const geom_point *p, size_t n, int measure, int threads
   return pd;
 }
 
+/* Thin triangles.  The kernels' cross product u x w (u = p_j - p_i,
+** w = p_k - p_i) cancels, and their angles are differences of directions
+** good to about 1e-15 rad: on a thin triangle either can be wrong in every
+** digit, or 0, where geom_tri_make is accurate (geom_twice_area, atan2 of
+** the accurate area).  A triangle passes when |fl(u x w)| > 2^-20 (|u|^2 +
+** |w|^2): its longest side a has a^2 <= 2 (|u|^2 + |w|^2), so every angle
+** has a sine 2A/(bc) >= 2A/a^2 > 2^-22 (the kernels' angles are then good to
+** 1e-8 relative), and the cross product's rounding error, below
+** 3 eps (|u|^2 + |w|^2), is under 2^-31 of it.  The others are recomputed
+** through geom_tri_make; inside the coordinate contract they are rare except
+** on flat polygons. */
+static void got_pairs_thin(const got_pairs *pd, size_t i, size_t j, size_t k0, size_t k1,
+                           double *out) {
+  const double *X = pd->x, *Y = pd->y;
+  const double ux = X[j] - X[i], uy = Y[j] - Y[i];
+  const double u2 = ux * ux + uy * uy;
+  for (size_t k = k0; k < k1; k++) {
+    double wx = X[k] - X[i], wy = Y[k] - Y[i];
+    if (fabs(wx * uy - wy * ux) > 0x1p-20 * (u2 + wx * wx + wy * wy)) continue;
+    geom_tri t;
+    geom_tri_make(&t, pd->p[i], pd->p[k], pd->p[j]);
+    double b = measure_eval(pd->measure, &t);
+    out[k - k0] = pd->squared ? b * b : b;
+  }
+}
+
 void got_pairs_eval(const got_pairs *pd, size_t i, size_t j, size_t k0, size_t k1,
                     double *out) {
   pd->fn(pd, i, j, k0, k1, out);
+  if (pd->thin_check) got_pairs_thin(pd, i, j, k0, k1, out);
 }
 
 void got_pairs_free(got_pairs *pd) {

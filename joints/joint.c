@@ -71,6 +71,66 @@ double joint_apply(joint_id j, int s, double x, double y) {
   return -J->g(-x, -y);
 }
 
+/* ---- comparisons ---------------------------------------------------------- */
+
+int joint_compare_values(double a, double b, double tie_eps) {
+  if (a == b || isnan(a) || isnan(b)) return 0;
+  if (!isinf(a) && !isinf(b) && fabs(a - b) <= tie_eps * fmax(fabs(a), fabs(b))) return 0;
+  return a < b ? -1 : 1;
+}
+
+/* g on magnitudes u, v >= 0 in split form, g = m 2^e.
+** Product: u = fu 2^eu, v = fv 2^ev with fu, fv in [1/2, 1) (frexp, exact),
+** so u v = (fu fv) 2^(eu+ev) and fl(fu fv), in [1/4, 1), is normal: it is
+** fl(u v) scaled by 2^-(eu+ev) whenever fl(u v) is normal itself.
+** Root-sum-square: with k the larger binary exponent, su = u 2^-k and
+** sv = v 2^-k are at most 1, the larger at least 1/2, so su^2 + sv^2 is in
+** [1/4, 2]: it cannot overflow, and only a term below 2^-1022 of the other
+** (which no rounding of the sum could see) can underflow.  sqrt scales by
+** exactly 2^-k, so again the result is the plain one scaled, whenever the
+** plain one is computed without underflow or overflow.  Otherwise (an
+** argument inf or NaN, a 0 in a product, both 0): no split (e = 0), the
+** plain arithmetic of joint.c's g. */
+static double joint_split_mag(joint_id j, double u, double v, int *e) {
+  *e = 0;
+  int plain = j == JOINT_PRODUCT ? !(u > 0 && v > 0 && u < INFINITY && v < INFINITY)
+                                 : !(u >= 0 && v >= 0 && u < INFINITY && v < INFINITY && u + v > 0);
+  if (plain) return j == JOINT_PRODUCT ? joint_product(u, v) : joint_rss(u, v);
+  int eu, ev;
+  double fu = frexp(u, &eu), fv = frexp(v, &ev);
+  if (j == JOINT_PRODUCT) {
+    *e = eu + ev;
+    return fu * fv;
+  }
+  int k = u == 0 ? ev : v == 0 ? eu : eu > ev ? eu : ev;   /* frexp(0) gives exponent 0 */
+  double su = ldexp(u, -k), sv = ldexp(v, -k);
+  *e = k;
+  return sqrt(su * su + sv * sv);
+}
+
+double joint_apply_split(joint_id j, int s, double x, double y, int *e) {
+  *e = 0;
+  if (j != JOINT_PRODUCT && j != JOINT_RSS) return joint_apply(j, s, x, y);
+  if (s >= 0) return joint_split_mag(j, x, y, e);
+  return -joint_split_mag(j, -x, -y, e);
+}
+
+/* Both values scaled by 2^-E, E the larger exponent of the finite non-zero
+** ones (0, inf and NaN are unchanged by scaling and keep their own value):
+** exact unless the smaller one falls below 2^-1022 of the larger, where it
+** can no longer tie with it (for tie_eps < 1) nor change the order. */
+int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
+                  double tie_eps) {
+  int e1, e2;
+  double m1 = joint_apply_split(j, s, x1, y1, &e1);
+  double m2 = joint_apply_split(j, s, x2, y2, &e2);
+  int n1 = m1 != 0 && isfinite(m1), n2 = m2 != 0 && isfinite(m2);
+  int E = n1 && n2 ? (e1 > e2 ? e1 : e2) : n1 ? e1 : n2 ? e2 : 0;
+  if (n1) m1 = ldexp(m1, e1 - E);
+  if (n2) m2 = ldexp(m2, e2 - E);
+  return joint_compare_values(m1, m2, tie_eps);
+}
+
 double joint_identity(joint_id j, int s) {
   const joint_impl *J = &joint_table[j];
   if (!J->pub.needs_sign || s >= 0) return J->identity;

@@ -46,6 +46,34 @@ double joint_apply(joint_id j, int s, double x, double y);
 /* The identity e with f(e, x) = x for every x of the domain of sign s. */
 double joint_identity(joint_id j, int s);
 
+/* ---- deciding between two joint values --------------------------------
+**
+** joint_compare_values(a, b, eps): the spec's comparison of two joint
+** values: 0 (a tie) when a == b (equal infinities included), either is NaN,
+** or both are finite with |a - b| <= eps max(|a|, |b|); otherwise -1 when
+** a < b, +1 when a > b.  A finite value never ties with an infinite one.
+**
+** joint_compare(j, s, x1, y1, x2, y2, eps) is joint_compare_values(f(x1,
+** y1), f(x2, y2), eps) for the joint f = joint_apply(j, s, ., .), decided
+** as if f were computed with an unbounded exponent: the product and the
+** root-sum-square of two doubles can underflow or overflow (areas of 1e-170
+** multiply to 0; R = 2^600 squares to inf) and then decide nothing, so
+** those two are computed in split form, a mantissa in [1/4, 2) and a
+** binary exponent (joint_apply_split), and the two values scaled by the
+** same power of two before comparing.  Whenever the plain double
+** evaluation neither underflows nor overflows, scaling by powers of two is
+** exact, so the decision is the plain one bit for bit (the flip-graph
+** engine relies on that: it decides plainly and calls joint_compare only
+** for lanes whose values left the normal range).  The other four joints
+** cannot leave the range for the values of built-in measures inside the
+** coordinate contract (geom.h) and are evaluated plainly. */
+int joint_compare_values(double a, double b, double tie_eps);
+int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
+                  double tie_eps);
+/* f(x, y) = m * 2^*e (m = joint_apply(j, s, x, y) and *e = 0 for the
+** joints that need no split, and whenever an argument is 0, infinite or NaN). */
+double joint_apply_split(joint_id j, int s, double x, double y, int *e);
+
 /* Keys: phi, its inverse, and the identity in key space. */
 double joint_key(joint_id j, int s, double x);
 double joint_unkey(joint_id j, int s, double k);

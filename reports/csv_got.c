@@ -35,10 +35,10 @@ static int report_got_record(char **f, int nf, uint64_t line, void *data) {
   }
   double xy[2];
   for (int q = 0; q < 2; q++) {
-    const char *why = report_number(f[q], &xy[q]);
-    if (why != NULL) {
+    geom_coorderr ce = geom_coord_parse(f[q], &xy[q]);   /* the coordinate contract */
+    if (ce != GEOM_COORD_OK) {
       snprintf(r->err, r->errlen, "%s line %llu: %s '%.40s' %s", r->path, ln, q ? "y" : "x",
-               f[q], why);
+               f[q], geom_coorderr_str(ce));
       return -1;
     }
   }

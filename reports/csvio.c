@@ -554,11 +554,12 @@ static int report_pent_record(char **f, int nf, uint64_t line, void *data) {
   }
   geom_point p[5];
   for (int i = 0; i < 10; i++) {
+    const char *s = f[i];
     double x = 0;
-    const char *why = report_number(f[i], &x);
-    if (why != NULL) {
+    geom_coorderr ce = geom_coord_parse(s, &x);   /* the coordinate contract */
+    if (ce != GEOM_COORD_OK) {
       report_errf(pr->err, pr->errlen, "%s line %llu: %s%d '%.40s' %s", pr->name, ln,
-                  i % 2 ? "y" : "x", i / 2 + 1, f[i], why);
+                  i % 2 ? "y" : "x", i / 2 + 1, s, geom_coorderr_str(ce));
       return -1;
     }
     if (i % 2) p[i / 2].y = x;

@@ -506,17 +506,19 @@ static void test_polygon_check(void **state) {
   }
 
   /* The same strictly convex kite at many scales: every exact orientation
-  ** is +1.  Inside the supported scale (geom.h: coordinates within 1e50,
-  ** edges of at least 1e-50) it must pass; outside it the only acceptable
-  ** answer is the documented GEOM_OUT_OF_SCALE refusal, never "not convex". */
-  const double scales[] = {1e-300, 0x1p-1000, 1e-160, 1e-49, 1e-20, 1, 1e20, 1e49, 1e160, 1e300};
+  ** is +1.  Inside the coordinate contract (geom.h: every coordinate 0 or
+  ** of magnitude in [1e-30, 1e30]) it must pass; outside it the only
+  ** acceptable answer is the documented GEOM_OUT_OF_SCALE refusal, never
+  ** "not convex". */
+  const double scales[] = {1e-300, 0x1p-1000, 1e-160, 1e-31, 1e-30, 1e-20, 1, 1e20,
+                           5e29, 6e29, 1e49, 1e160, 1e300};
   int kite_bad = 0;
   for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
     double k = scales[i];
     geom_point kite[4] = {{0, -k}, {2 * k, 0}, {0, k}, {-k, 0}};
     for (int v = 0; v < 4; v++)
       assert_int_equal(tgeom_orient_exact(kite[v], kite[(v + 1) % 4], kite[(v + 2) % 4]), 1);
-    int inside = k >= GEOM_MIN_EDGE && 2 * k <= GEOM_MAX_COORD;
+    int inside = k >= GEOM_COORD_MIN && 2 * k <= GEOM_COORD_MAX;
     geom_polyerr e = geom_polygon_check(kite, 4, &bad, &rev);
     if (e != (inside ? GEOM_OK : GEOM_OUT_OF_SCALE)) {
       print_error("kite (0,-k) (2k,0) (0,k) (-k,0), k = %g: %s\n", k, geom_polyerr_str(e));
