@@ -9,6 +9,9 @@
 #  - the README's plugin build line works and the installed program loads
 #    the plugin.
 set -eu
+# The compiler the library was built with (a clang-built libfliplab needs
+# clang's OpenMP runtime): CC from ctest, else cc.
+cc=${CC:-cc}
 build=$(cd "$1" && pwd)
 src=$(cd "$2" && pwd)
 tmp=$build/testtmp/install_check
@@ -30,7 +33,7 @@ for f in "$prefix"/include/fliplab/*; do
     *) fail "not a header in include/fliplab: $h" ;;
   esac
   printf '#include <fliplab/%s>\n#include <fliplab/%s>\nint fliplab_header_check;\n' "$h" "$h" |
-    cc -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -x c - \
+    "$cc" -std=c11 -Wall -Wextra -Wpedantic -Werror -fsyntax-only -x c - \
       $(pkg-config --cflags fliplab) || fail "<fliplab/$h> does not compile on its own"
 done
 test -z "$(find "$prefix/include" -type d -empty)" || fail "empty folder installed"
@@ -53,7 +56,7 @@ block api-example-output > "$tmp/expected.txt"
 test -s "$tmp/example.c" && test -s "$tmp/expected.txt" || fail "README example not found"
 
 # Through pkg-config.
-cc -std=c11 -Wall -Wextra -Wpedantic -Werror "$tmp/example.c" \
+"$cc" -std=c11 -Wall -Wextra -Wpedantic -Werror "$tmp/example.c" \
    $(pkg-config --cflags --static --libs fliplab) -o "$tmp/example_pc"
 "$tmp/example_pc" > "$tmp/got_pc.txt"
 diff "$tmp/expected.txt" "$tmp/got_pc.txt" || fail "pkg-config build: output differs from README.md"
@@ -62,7 +65,7 @@ diff "$tmp/expected.txt" "$tmp/got_pc.txt" || fail "pkg-config build: output dif
 mkdir -p "$tmp/cmake_user"
 block api-cmake > "$tmp/cmake_user/CMakeLists.txt"
 cp "$tmp/example.c" "$tmp/cmake_user/example.c"
-cmake -S "$tmp/cmake_user" -B "$tmp/cmake_user/build" -DCMAKE_PREFIX_PATH="$prefix" \
+cmake -S "$tmp/cmake_user" -B "$tmp/cmake_user/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" \
       -DCMAKE_BUILD_TYPE=Release >/dev/null || fail "find_package(fliplab) failed"
 cmake --build "$tmp/cmake_user/build" >/dev/null || fail "CMake build against fliplab::fliplab failed"
 "$tmp/cmake_user/build/example" > "$tmp/got_cmake.txt"
