@@ -20,6 +20,7 @@ static const cli_command cli_commands[] = {
   {"classify", cli_cmd_classify, "classify the directed flip graphs of given pentagons"},
   {"rule",     cli_cmd_rule,     "test a flip rule: types, intervals, verdicts, witnesses"},
   {"got",      cli_cmd_got,      "globally optimal triangulation of a simple polygon"},
+  {"lot",      cli_cmd_lot,      "locally optimal triangulation of a point set, any rule"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

@@ -149,9 +149,13 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
                            const geom_tri *t_abd, const geom_tri *t_bcd,
                            double tie_eps, double *ac, double *bd) {
   const measure *M = measure_get(r->measure);
-  int s = M->sign;
-  double x1 = M->fn(t_abc, M->ctx), y1 = M->fn(t_acd, M->ctx);
-  double x2 = M->fn(t_abd, M->ctx), y2 = M->fn(t_bcd, M->ctx);
+  return rule_eval_badness(r, M->fn(t_abc, M->ctx), M->fn(t_acd, M->ctx), M->fn(t_abd, M->ctx),
+                           M->fn(t_bcd, M->ctx), tie_eps, ac, bd);
+}
+
+rule_choice rule_eval_badness(const rule *r, double x1, double y1, double x2, double y2,
+                              double tie_eps, double *ac, double *bd) {
+  int s = measure_get(r->measure)->sign;
   if (ac) *ac = joint_apply(r->joint, s, x1, y1);
   if (bd) *bd = joint_apply(r->joint, s, x2, y2);
   /* Decided in split form: a product or root-sum-square that under- or

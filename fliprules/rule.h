@@ -75,6 +75,13 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
                            const geom_tri *t_abd, const geom_tri *t_bcd,
                            double tie_eps, double *ac, double *bd);
 
+/* The same from the four triangles' badness values (a triangulation that
+** keeps each triangle's measure, as lot/ does): the decision of
+** rule_eval_tris bit for bit, since a triangle's measure depends only on the
+** triangle (geom_tri_make's canonical order). */
+rule_choice rule_eval_badness(const rule *r, double b_abc, double b_acd, double b_abd,
+                              double b_bcd, double tie_eps, double *ac, double *bd);
+
 /* DT on ABCD directly: exact, so no canonical rotation is needed. */
 rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d);
 

@@ -75,7 +75,8 @@ GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r)
 **   | adx ady adx^2+ady^2 |
 **   | bdx bdy bdx^2+bdy^2 |
 **   | cdx cdy cdx^2+cdy^2 |   (positive when d is inside circle abc, abc anticlockwise) */
-GEOM_COLD static int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
   if (!geom_finite4(a, b, c, d)) return 0;
   geom_point pt[3] = {a, b, c};
   mpq_t x[3], y[3], lift[3], t, u, det;
@@ -103,32 +104,5 @@ GEOM_COLD static int geom_incircle_exact(geom_point a, geom_point b, geom_point 
   return s;
 }
 
-/* ---- filtered predicates ----------------------------------------------- */
-
-/* The lifted 3x3 determinant above.  With permanent = sum of |lift_i| times
-** (|x_j y_k| + |x_k y_j|), |fl(det) - det| <= (10 + 96 eps) eps permanent
-** (Shewchuk's iccerrboundA). */
-int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d) {
-  double adx = a.x - d.x, ady = a.y - d.y;
-  double bdx = b.x - d.x, bdy = b.y - d.y;
-  double cdx = c.x - d.x, cdy = c.y - d.y;
-  double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  double cdxady = cdx * ady, adxcdy = adx * cdy;
-  double adxbdy = adx * bdy, bdxady = bdx * ady;
-  double alift = adx * adx + ady * ady;
-  double blift = bdx * bdx + bdy * bdy;
-  double clift = cdx * cdx + cdy * cdy;
-  double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy)
-             + clift * (adxbdy - bdxady);
-  double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * alift
-                   + (fabs(cdxady) + fabs(adxcdy)) * blift
-                   + (fabs(adxbdy) + fabs(bdxady)) * clift;
-  double bound = (10.0 + 96.0 * GEOM_EPS) * GEOM_EPS * permanent;
-  if (!(geom_filter_tiny(adx) || geom_filter_tiny(ady) || geom_filter_tiny(bdx)
-        || geom_filter_tiny(bdy) || geom_filter_tiny(cdx) || geom_filter_tiny(cdy))) {
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-  }
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  return geom_incircle_exact(a, b, c, d);
-}
+/* The filter of geom_incircle is inline in predicates.h; the function above
+** is its exact half. */

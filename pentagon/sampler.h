@@ -50,4 +50,26 @@ int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
 int sampler_star(sampler_rng *g, size_t n, geom_point *out);
 int sampler_monotone(sampler_rng *g, size_t n, geom_point *out);
 
+/* Point sets for triangulations (pentagon/points.c), by name:
+**   uniform   the unit square [0, 1)^2
+**   normal    standard normal coordinates
+**   disc      the unit disc
+**   grid      the integer grid points (i mod s, i div s), s = ceil(sqrt(n)),
+**             i = 0 .. n-1: every unit square's corners are cocircular
+**   parabola  (i, i^2) for i = n, n-1, ..., 1 in that order (theorem 6's
+**             worst case for the incremental algorithm)
+**   circle    random angles on the unit circle (cocircular up to rounding)
+** The same (kind, seed, n) always gives the same points, bit for bit. */
+typedef enum sampler_points_kind {
+  SAMPLER_UNIFORM, SAMPLER_NORMAL, SAMPLER_DISC, SAMPLER_GRID, SAMPLER_PARABOLA,
+  SAMPLER_CIRCLE, SAMPLER_POINTS_COUNT
+} sampler_points_kind;
+
+/* The kind named s, or -1; the names, comma-separated, for messages. */
+int sampler_points_find(const char *s);
+const char *sampler_points_name(sampler_points_kind k);
+extern const char sampler_points_names[];
+
+void sampler_points(sampler_points_kind k, uint64_t seed, size_t n, geom_point *out);
+
 #endif

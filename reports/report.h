@@ -211,4 +211,40 @@ typedef struct report_got_svg_opts {
 int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
                    size_t ntri, const report_got_svg_opts *o);
 
+/* SVG helpers of svg_got.c shared with svg_lot.c: a <text> line with the
+** XML specials escaped, and the badness colour scale (f in [0, 1]: light
+** yellow = good to dark red = bad) as "#rrggbb". */
+void report_got_text(FILE *f, double x, double y, int size, const char *s);
+void report_got_colour(double f, char *buf, size_t len);
+
+/* ---- fliplab lot (reports/csv_lot.c, reports/svg_lot.c) ---- */
+
+/* Read a point set from CSV: rows "x,y", an optional header line "x,y".
+** Errors are one line naming the file and line: a wrong field count, a
+** field that is not a finite number, no points at all.  0 on success
+** (free *out), -1 on error. */
+int report_lot_read_points(const char *path, geom_point **out, size_t *n, char *err,
+                           size_t errlen);
+
+/* Triangles as CSV, the shape of report_got_csv: header "i,j,k,badness",
+** one row per triangle, vertices anticlockwise (as given), badness empty
+** when NaN (DT and quadrilateral rules). */
+int report_lot_csv(FILE *f, const uint32_t *tri, size_t ntri, const double *badness);
+
+/* One triangulation to draw: triangles (indices into the points), their
+** badness for shading (may be NULL) and a caption. */
+typedef struct report_lot_panel {
+  const uint32_t *tri;
+  size_t ntri;
+  const double *badness;
+  const char *caption;
+} report_lot_panel;
+
+/* The panels side by side (e.g. a LOT and the Delaunay triangulation of
+** the same points), each scaled to about 600 px, edges as hairlines,
+** points as dots; with shade, triangles filled by badness on one scale
+** shared by all panels.  0, or -1 on a write error. */
+int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
+                   int npanels, int shade, const char *title);
+
 #endif

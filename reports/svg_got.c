@@ -36,7 +36,7 @@ static double report_got_py(const report_got_view *v, double y) {
 }
 
 /* Light yellow (good) to dark red (bad), piecewise linear through 4 stops. */
-static void report_got_colour(double f, char *buf, size_t len) {
+void report_got_colour(double f, char *buf, size_t len) {
   static const double stop[4][3] = {
     {255, 247, 214}, {253, 174, 97}, {215, 48, 39}, {103, 0, 13}};
   if (!(f >= 0)) f = 0;
@@ -50,7 +50,7 @@ static void report_got_colour(double f, char *buf, size_t len) {
 }
 
 /* A line of text, with the XML specials escaped. */
-static void report_got_text(FILE *f, double x, double y, int size, const char *s) {
+void report_got_text(FILE *f, double x, double y, int size, const char *s) {
   fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%d\">", x, y, size);
   report_xml_text(f, s);
   fputs("</text>\n", f);

@@ -1,0 +1,373 @@
+/*
+** cmd_lot.c: `fliplab lot`: a locally optimal triangulation of a point set
+** for any rule (built-in, formula or plugin) by the incremental or the
+** flip algorithm; prints the counts, the status (converged, cycle, budget
+** exhausted) and the time; optionally re-checks local optimality from
+** scratch, compares with the Delaunay triangulation or (convex position)
+** the GOT, and writes the triangles as CSV and an SVG.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "got.h"
+#include "lot.h"
+#include "measure.h"
+#include "report.h"
+#include "sampler.h"
+
+#define CMD "lot"
+#define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
+
+static const char cli_lot_usage[] =
+  "usage: fliplab lot --rule RULE (--points FILE.csv | --random N [--sampler NAME]\n"
+  "                   [--seed S]) [--algorithm incremental|flip]\n"
+  "                   [--order input|random|spatial] [--max-flips N] [--check]\n"
+  "                   [--compare DT|GOT] [--out FILE.csv] [--svg FILE [--shade]]\n"
+  "                   [--tie-eps E] [--threads T]\n"
+  "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
+  "edge of a strictly convex quadrilateral is the diagonal the rule keeps.\n\n"
+  "  --rule RULE        DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
+  "                     measure with a joint, or a --plugin quadrilateral rule\n"
+  "  --points FILE      CSV, one point 'x,y' per row (optional header 'x,y');\n"
+  "                     output indices are the file's rows, 0-based\n"
+  "  --random N         N random points from --sampler (default uniform): uniform\n"
+  "                     (unit square), normal, disc, grid (integer grid, row by row),\n"
+  "                     parabola ((i, i^2), i = N..1), circle (unit circle)\n"
+  "  --seed S           the sampler's and the random order's seed (default 1)\n"
+  "  --algorithm A      incremental (default): insert, then flip back to a LOT;\n"
+  "                     flip: sweep triangulation, then Lawson's flip algorithm\n"
+  "  --order O          incremental insertion order: spatial (default: BRIO rounds\n"
+  "                     along a Hilbert curve), random, input\n"
+  "  --max-flips N      stop after N flips: status 'budget exhausted'\n"
+  "                     (default 1000 N + 10^7)\n"
+  "  --check            re-verify every interior edge from scratch\n"
+  "  --compare DT       edges and triangles shared with the exact Delaunay\n"
+  "                     triangulation\n"
+  "  --compare GOT      points in convex position, triangle-based rule: the LOT's\n"
+  "                     total badness against the GOT's\n"
+  "  --out FILE         write the triangles as CSV: i,j,k,badness (anticlockwise;\n"
+  "                     badness empty for DT and quadrilateral rules)\n"
+  "  --svg FILE         draw the triangulation (next to the DT with --compare DT);\n"
+  "                     --shade fills triangles by badness\n"
+  "  --tie-eps E        relative tolerance under which a triangle rule ties (1e-12)\n"
+  "  --threads T        OpenMP threads for --compare GOT (default: all); the LOT\n"
+  "                     itself is sequential and does not depend on T\n"
+  "Exit status: 0 (also for status cycle or budget exhausted), 1 when --check\n"
+  "fails, 2 for bad usage or input.\n";
+
+typedef struct cli_lot_args {
+  const char *rule, *points, *sampler, *algorithm, *order, *compare, *out, *svg;
+  uint64_t random, seed, max_flips, threads;
+  double tie_eps;
+  int check, shade;
+} cli_lot_args;
+
+static int cli_lot_value_opt(const char *o) {
+  static const char *const opts[] = {"--rule", "--points", "--random", "--sampler", "--seed",
+                                     "--algorithm", "--order", "--max-flips", "--compare",
+                                     "--out", "--svg", "--tie-eps", "--threads"};
+  for (size_t i = 0; i < sizeof opts / sizeof opts[0]; i++)
+    if (strcmp(o, opts[i]) == 0) return 1;
+  return 0;
+}
+
+static int cli_lot_parse(int argc, char **argv, cli_lot_args *a) {
+  for (int i = 1; i < argc; i++) {
+    const char *o = argv[i], *v = NULL;
+    if (cli_lot_value_opt(o) && (v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
+    if (strcmp(o, "--rule") == 0) a->rule = v;
+    else if (strcmp(o, "--points") == 0) a->points = v;
+    else if (strcmp(o, "--sampler") == 0) a->sampler = v;
+    else if (strcmp(o, "--algorithm") == 0) a->algorithm = v;
+    else if (strcmp(o, "--order") == 0) a->order = v;
+    else if (strcmp(o, "--compare") == 0) a->compare = v;
+    else if (strcmp(o, "--out") == 0) a->out = v;
+    else if (strcmp(o, "--svg") == 0) a->svg = v;
+    else if (strcmp(o, "--random") == 0) {
+      if (cli_parse_u64(CMD, o, v, 3, CLI_LOT_MAX_N, &a->random) != 0) return 2;
+    } else if (strcmp(o, "--seed") == 0) {
+      if (cli_parse_u64(CMD, o, v, 0, UINT64_MAX, &a->seed) != 0) return 2;
+    } else if (strcmp(o, "--max-flips") == 0) {
+      if (cli_parse_u64(CMD, o, v, 1, UINT64_MAX, &a->max_flips) != 0) return 2;
+    } else if (strcmp(o, "--threads") == 0) {
+      if (cli_parse_u64(CMD, o, v, 1, 1024, &a->threads) != 0) return 2;
+    } else if (strcmp(o, "--tie-eps") == 0) {
+      if (cli_parse_double(CMD, o, v, 0, 1, &a->tie_eps) != 0) return 2;
+    } else if (strcmp(o, "--check") == 0) a->check = 1;
+    else if (strcmp(o, "--shade") == 0) a->shade = 1;
+    else return cli_error(CMD, "unknown option '%s' (try: fliplab lot --help)", o);
+  }
+  return 0;
+}
+
+static int cli_lot_validate(const cli_lot_args *a, lot_options *o) {
+  if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule DT or --rule P_1)");
+  if ((a->points != NULL) == (a->random != 0))
+    return cli_error(CMD, "give exactly one of --points FILE.csv and --random N");
+  if (a->sampler && sampler_points_find(a->sampler) < 0)
+    return cli_error(CMD, "unknown sampler '%s' (valid: %s)", a->sampler, sampler_points_names);
+  if (a->sampler && a->points) return cli_error(CMD, "--sampler applies to --random only");
+  if (a->algorithm && strcmp(a->algorithm, "incremental") != 0 &&
+      strcmp(a->algorithm, "flip") != 0)
+    return cli_error(CMD, "unknown algorithm '%s' (valid: incremental, flip)", a->algorithm);
+  if (a->algorithm && strcmp(a->algorithm, "flip") == 0) o->algorithm = LOT_FLIP;
+  if (a->order) {
+    if (strcmp(a->order, "spatial") == 0) o->order = LOT_ORDER_SPATIAL;
+    else if (strcmp(a->order, "random") == 0) o->order = LOT_ORDER_RANDOM;
+    else if (strcmp(a->order, "input") == 0) o->order = LOT_ORDER_INPUT;
+    else return cli_error(CMD, "unknown order '%s' (valid: input, random, spatial)", a->order);
+    if (o->algorithm == LOT_FLIP)
+      return cli_error(CMD, "--order applies to --algorithm incremental only");
+  }
+  if (a->compare && strcmp(a->compare, "DT") != 0 && strcmp(a->compare, "GOT") != 0)
+    return cli_error(CMD, "unknown --compare '%s' (valid: DT, GOT)", a->compare);
+  if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
+  return 0;
+}
+
+/* The points, read or sampled; desc names them. */
+static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char *desc,
+                          size_t desclen) {
+  char err[512];
+  if (a->points) {
+    if (report_lot_read_points(a->points, p, n, err, sizeof err) != 0)
+      return cli_error(CMD, "%s", err);
+    snprintf(desc, desclen, "%zu points from %s", *n, a->points);
+    return 0;
+  }
+  *n = (size_t)a->random;
+  if (lot_check_memory(*n, err, sizeof err) != 0) return cli_error(CMD, "--random: %s", err);
+  *p = malloc(*n * sizeof **p);
+  if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
+  int k = a->sampler ? sampler_points_find(a->sampler) : SAMPLER_UNIFORM;
+  sampler_points((sampler_points_kind)k, a->seed, *n, *p);
+  snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
+           sampler_points_name((sampler_points_kind)k), (unsigned long long)a->seed);
+  return 0;
+}
+
+static void cli_lot_status(const lot_stats *st) {
+  if (st->status == LOT_CONVERGED) {
+    printf("status: converged\n");
+  } else if (st->status == LOT_CYCLE) {
+    printf("status: cycle of %llu flips (the triangulation repeated, confirmed exactly); "
+           "quadrilaterals:", (unsigned long long)st->cycle_length);
+    for (size_t q = 0; q < st->cycle_quads; q++)
+      printf("%s %u %u %u %u", q ? ";" : "", st->cycle_quad[q][0], st->cycle_quad[q][1],
+             st->cycle_quad[q][2], st->cycle_quad[q][3]);
+    printf("%s\n", st->cycle_length > st->cycle_quads ? " ..." : "");
+  } else {
+    printf("status: budget exhausted after %llu flips (--max-flips %llu); the triangulation "
+           "is not locally optimal\n",
+           (unsigned long long)st->flips, (unsigned long long)st->max_flips);
+  }
+}
+
+/* --check: 0 when every interior edge is locally optimal. */
+static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                         const rule *r, double tie_eps) {
+  lot_check_result c;
+  if (lot_check(p, n, tri, ntri, r, tie_eps, &c) != 0) {
+    printf("check: failed (out of memory)\n");
+    return 1;
+  }
+  if (!c.valid) {
+    printf("check: FAILED: not a valid triangulation\n");
+    return 1;
+  }
+  if (c.not_optimal) {
+    printf("check: FAILED: %zu of %zu interior edges not locally optimal (first %u-%u)\n",
+           c.not_optimal, c.interior_edges, c.bad_edge[0], c.bad_edge[1]);
+    return 1;
+  }
+  printf("check: ok: locally optimal, re-verified from scratch: %zu interior edges, %zu in "
+         "strictly convex quadrilaterals, %s\n", c.interior_edges, c.decided,
+         r->kind == RULE_QUAD && r->quad == RULE_DT
+             ? "every one passes the exact empty-circle test"
+             : "the rule keeps every one");
+  return 0;
+}
+
+/* --compare DT: the Delaunay triangulation of the same points. */
+static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *base,
+                              const uint32_t *tri, size_t ntri, uint32_t **dt, size_t *ndt) {
+  rule d = rule_delaunay();
+  lot_options o;
+  lot_options_init(&o, &d);
+  o.seed = base->seed;
+  lot *L;
+  char err[512];
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  *ndt = lot_get_stats(L)->triangles;
+  *dt = malloc(3 * *ndt * sizeof **dt);
+  lot_diff df;
+  if (*dt == NULL) {
+    lot_free(L);
+    return cli_error(CMD, "out of memory");
+  }
+  lot_get_triangles(L, *dt);
+  lot_free(L);
+  if (lot_compare(tri, ntri, *dt, *ndt, &df) != 0) return cli_error(CMD, "out of memory");
+  printf("compare DT: %zu of %zu edges and %zu of %zu triangles shared with the exact "
+         "Delaunay triangulation (%.2f%% of triangles)\n", df.edges_common, df.edges_a,
+         df.triangles_common, df.triangles_a,
+         100.0 * (double)df.triangles_common / (double)(df.triangles_a ? df.triangles_a : 1));
+  return 0;
+}
+
+/* --compare GOT: convex position only. */
+static int cli_lot_compare_got(const geom_point *p, const lot *L, const rule *r,
+                               const double *bad, size_t ntri, const cli_lot_args *a) {
+  const lot_stats *st = lot_get_stats(L);
+  if (r->kind != RULE_TRIANGLE)
+    return cli_error(CMD, "--compare GOT needs a triangle-based rule (MEASURE_JOINT)");
+  size_t h = st->hull;
+  uint32_t *hull = malloc(h * sizeof *hull);
+  geom_point *poly = malloc(h * sizeof *poly);
+  int rc = 0;
+  char err[512];
+  size_t bad_v;
+  int rev;
+  got_result res;
+  memset(&res, 0, sizeof res);
+  if (hull == NULL || poly == NULL) {
+    rc = cli_error(CMD, "out of memory");
+    goto done;
+  }
+  lot_get_hull(L, hull);
+  for (size_t i = 0; i < h; i++) poly[i] = p[hull[i]];
+  if (h != st->distinct || geom_polygon_check(poly, h, &bad_v, &rev) != GEOM_OK) {
+    rc = cli_error(CMD, "--compare GOT needs points in strictly convex position (%zu of %zu "
+                   "distinct points are hull corners)", h, st->distinct);
+    goto done;
+  }
+  if (got_check_memory(h, r->measure, err, sizeof err) != 0) {
+    rc = cli_error(CMD, "--compare GOT: %s", err);
+    goto done;
+  }
+  got_options go = {(int)a->threads, a->tie_eps};
+  if (got_solve(poly, h, r, &go, &res, err, sizeof err) != 0) {
+    rc = cli_error(CMD, "%s", err);
+    goto done;
+  }
+  int s = measure_get(r->measure)->sign;
+  double key = joint_key_identity(r->joint);
+  for (size_t t = 0; t < ntri; t++)
+    key = joint_key_combine(joint_get(r->joint)->keyop, key, joint_key(r->joint, s, bad[t]));
+  char lt[64], gt[64];
+  got_format_total(&res, key, lt, sizeof lt);
+  got_format_total(&res, res.key, gt, sizeof gt);
+  double rel = fabs(key - res.key) / fmax(fmax(fabs(key), fabs(res.key)), 1e-300);
+  int equal = key == res.key || rel <= 1e-9;
+  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, GOT computed "
+         "to within rounding)\n", lt, gt, equal ? "equal" : "NOT equal", key == res.key ? 0 : rel);
+done:
+  got_result_free(&res);
+  free(hull);
+  free(poly);
+  return rc;
+}
+
+static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
+                         const uint32_t *tri, size_t ntri, const double *bad,
+                         const uint32_t *dt, size_t ndt, const rule *r) {
+  if (a->out) {
+    FILE *f = cli_open_out(CMD, a->out);
+    if (f == NULL) return 2;
+    int bad_w = report_lot_csv(f, tri, ntri, bad) != 0;
+    if (cli_close_out(f) != 0 || bad_w) return cli_error(CMD, "write error on %s", a->out);
+  }
+  if (a->svg) {
+    FILE *f = cli_open_out(CMD, a->svg);
+    if (f == NULL) return 2;
+    char cap[2][160], title[200];
+    snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, ntri);
+    snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
+    snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
+    report_lot_panel pn[2] = {{tri, ntri, bad, cap[0]}, {dt, ndt, NULL, cap[1]}};
+    int bad_w = report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title) != 0;
+    if (cli_close_out(f) != 0 || bad_w) return cli_error(CMD, "write error on %s", a->svg);
+  }
+  return 0;
+}
+
+static const char *const cli_lot_order_name[] = {"spatial", "input", "random"};
+
+int cli_cmd_lot(int argc, char **argv) {
+  for (int i = 1; i < argc; i++)
+    if (cli_is_help(argv[i])) {
+      fputs(cli_lot_usage, stdout);
+      return 0;
+    }
+  cli_lot_args a = {0};
+  a.seed = 1;
+  a.tie_eps = RULE_DEFAULT_TIE_EPS;
+  int rc = cli_lot_parse(argc, argv, &a);
+  if (rc != 0) return rc;
+  rule r = rule_delaunay();
+  char err[512];
+  lot_options o;
+  lot_options_init(&o, &r);
+  if ((rc = cli_lot_validate(&a, &o)) != 0) return rc;
+  if (rule_parse(a.rule, &r, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  o.r = r;
+  o.seed = a.seed;
+  o.max_flips = a.max_flips;
+  o.tie_eps = a.tie_eps;
+
+  geom_point *p = NULL;
+  size_t n = 0;
+  char desc[600];
+  uint32_t *tri = NULL, *dt = NULL;
+  double *bad = NULL;
+  size_t ndt = 0;
+  lot *L = NULL;
+  if ((rc = cli_lot_points(&a, &p, &n, desc, sizeof desc)) != 0) goto done;
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
+    rc = cli_error(CMD, "%s", err);
+    goto done;
+  }
+  if (cli_userdefs_failed(CMD)) {
+    rc = 1;
+    goto done;
+  }
+  const lot_stats *st = lot_get_stats(L);
+  tri = malloc(3 * st->triangles * sizeof *tri);
+  bad = malloc(st->triangles * sizeof *bad);
+  if (tri == NULL || bad == NULL) {
+    rc = cli_error(CMD, "out of memory");
+    goto done;
+  }
+  lot_get_triangles(L, tri);
+  lot_get_badness(p, tri, st->triangles, &r, bad);
+
+  printf("# fliplab lot: rule %s, %s, %s algorithm%s%s, tie-eps %.3g\n", r.name, desc,
+         o.algorithm == LOT_FLIP ? "flip" : "incremental",
+         o.algorithm == LOT_FLIP ? "" : ", order ",
+         o.algorithm == LOT_FLIP ? "" : cli_lot_order_name[o.order], a.tie_eps);
+  printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
+  printf("triangles: %zu\n", st->triangles);
+  printf("flips: %llu\n", (unsigned long long)st->flips);
+  cli_lot_status(st);
+  if (o.algorithm == LOT_FLIP)
+    printf("time: %.4f s (initial triangulation %.4f s, flips %.4f s)\n",
+           st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
+  else
+    printf("time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
+           st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
+  int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r, a.tie_eps) != 0;
+  if (a.compare && strcmp(a.compare, "DT") == 0)
+    rc = cli_lot_compare_dt(p, n, &o, tri, st->triangles, &dt, &ndt);
+  else if (a.compare)
+    rc = cli_lot_compare_got(p, L, &r, bad, st->triangles, &a);
+  if (rc == 0) rc = cli_lot_write(&a, p, n, tri, st->triangles, bad, dt, ndt, &r);
+  if (rc == 0 && check_failed) rc = 1;
+done:
+  lot_free(L);
+  free(p);
+  free(tri);
+  free(bad);
+  free(dt);
+  return rc;
+}

@@ -1,0 +1,559 @@
+/*
+** lot.c: locally optimal triangulations: the incremental and flip
+** algorithms over the structure of mesh.c, the edge queue, the decisions,
+** cycle detection and the flip budget.
+**
+** Why the flip loop ends.
+** - DT: each flip lowers the lifted surface (points lifted to the paraboloid
+**   z = x^2 + y^2), and the decision is exact, so no triangulation repeats
+**   (thesis 2.2.1).
+** - A triangle-based rule b_f: each triangle's badness v(t) is a fixed
+**   number (geom_tri_make is canonical, so the same triangle always gets the
+**   same double), and a flip happens only when rule_compare finds
+**   fl(f(v1', v2')) < fl(f(v1, v2)) strictly.  Rounding is monotone, so the
+**   exact value of the computed formula decreases too, and a potential over
+**   the whole triangulation strictly decreases, so no triangulation repeats
+**   and there are finitely many:
+**     l_1:  sum of v(t)                 (fl(x'+y') < fl(x+y) => x'+y' < x+y);
+**     l_2:  sum of fl(v(t)^2)            (sqrt and the sum are monotone);
+**     l_-1: minus sum of fl(1/v(t))      (1/s is decreasing);
+**     l_0:  sum of log v(t)              (the product is monotone);
+**     l_inf: the values sorted decreasingly, lexicographically (both new
+**            triangles are below the larger removed one);
+**     l_-inf: the values sorted increasingly, lexicographically (the new
+**            smaller triangle is below both removed ones).
+**   Measures of sign <= 0 use |v| and the mirror potentials.  Two cases are
+**   subtle: a value 0 under l_0 or l_-1 (log 0 and 1/0 are infinite; the
+**   joint then ties or decides by the other triangles only) and values that
+**   overflow in the joint (inf ties with inf).  We believe the potentials
+**   extend to them (count of zero or infinite terms first), but rely on the
+**   flip budget there rather than on that argument.
+** - Quadrilateral rules (plugins) have no such potential: a flip sequence
+**   can return to an earlier triangulation (a type-V flip graph, or a
+**   rounding-inconsistent DT as in thesis 7.5).  For them the sum of 64-bit
+**   hashes of the edges is kept up to date at each flip; when it repeats
+**   within a flip phase, the flips in between are checked to cancel exactly
+**   (every edge added as often as removed), and the run stops with status
+**   cycle.  Cycles longer than LOT_CYCLE_WINDOW flips are caught by the
+**   budget instead.
+** Every run stops after max_flips flips in any case (status budget
+** exhausted); the remaining points are still inserted, without flips, so
+** the output is always a triangulation of every point.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+#include "lot_internal.h"
+#include "measure.h"
+#include "splitmix.h"
+
+#define LOT_CYCLE_WINDOW (1u << 20)
+
+struct lot {
+  lot_mesh m;
+  lot_stats st;
+  rule r;
+};
+
+typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
+
+typedef struct lot_entry {
+  uint32_t c, u, v;     /* the edge opposite corner c, from u to v when pushed */
+} lot_entry;
+
+typedef struct lot_run {
+  lot_mesh *m;
+  const lot_options *o;
+  lot_stats *st;
+  lot_kind kind;
+  int star_only;        /* DT insertion: only edges opposite the new point */
+  int stopped;          /* cycle or budget: no more flips */
+  lot_entry *stk;
+  size_t ns, cap;
+  /* cycle detection (quadrilateral rules) */
+  int track;
+  uint64_t H;
+  uint64_t *hkey;
+  uint32_t *hval;
+  size_t hcap, hcount;
+  uint32_t (*log)[4];   /* quadrilateral of each flip of the window: a, b, d, c */
+  size_t nlog, logcap;
+} lot_run;
+
+static double lot_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+uint64_t lot_default_max_flips(size_t n) {
+  return 1000 * (uint64_t)n + 10000000u;
+}
+
+void lot_options_init(lot_options *o, const rule *r) {
+  memset(o, 0, sizeof *o);
+  o->r = *r;
+  o->algorithm = LOT_INCREMENTAL;
+  o->order = LOT_ORDER_SPATIAL;
+  o->seed = 1;
+  o->tie_eps = RULE_DEFAULT_TIE_EPS;
+}
+
+/* ---- the edge queue ---------------------------------------------------- */
+
+static int lot_push(lot_run *R, uint32_t c) {
+  if (R->ns == R->cap) {
+    size_t cap = R->cap ? 2 * R->cap : 1024;
+    lot_entry *s = realloc(R->stk, cap * sizeof *s);
+    if (s == NULL) return -1;
+    R->stk = s;
+    R->cap = cap;
+  }
+  R->stk[R->ns++] = (lot_entry){c, R->m->tv[lot_next3(c)], R->m->tv[lot_prev3(c)]};
+  return 0;
+}
+
+/* ---- cycle detection --------------------------------------------------- */
+
+static uint64_t lot_edge_key(uint32_t u, uint32_t v) {
+  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+}
+
+static uint64_t lot_edge_hash(uint32_t u, uint32_t v) {
+  uint64_t x = lot_edge_key(u, v);
+  return geom_splitmix64(&x);   /* a bijection of the key, well mixed */
+}
+
+/* Find or add H -> index; returns the earlier index, or UINT32_MAX if new. */
+static uint32_t lot_hash_put(lot_run *R, uint64_t H, uint32_t index) {
+  if (2 * (R->hcount + 1) > R->hcap) {
+    size_t cap = R->hcap ? 2 * R->hcap : 1024;
+    uint64_t *k = malloc(cap * sizeof *k);
+    uint32_t *v = malloc(cap * sizeof *v);
+    if (!k || !v) {
+      free(k);
+      free(v);
+      return UINT32_MAX - 1;
+    }
+    for (size_t i = 0; i < cap; i++) v[i] = UINT32_MAX;
+    for (size_t i = 0; i < R->hcap; i++)
+      if (R->hval[i] != UINT32_MAX) {
+        size_t j = R->hkey[i] & (cap - 1);
+        while (v[j] != UINT32_MAX) j = (j + 1) & (cap - 1);
+        k[j] = R->hkey[i];
+        v[j] = R->hval[i];
+      }
+    free(R->hkey);
+    free(R->hval);
+    R->hkey = k;
+    R->hval = v;
+    R->hcap = cap;
+  }
+  size_t j = H & (R->hcap - 1);
+  while (R->hval[j] != UINT32_MAX) {
+    if (R->hkey[j] == H) return R->hval[j];
+    j = (j + 1) & (R->hcap - 1);
+  }
+  R->hkey[j] = H;
+  R->hval[j] = index;
+  R->hcount++;
+  return UINT32_MAX;
+}
+
+static void lot_window_reset(lot_run *R) {
+  for (size_t i = 0; i < R->hcap; i++) R->hval[i] = UINT32_MAX;
+  R->hcount = 0;
+  R->nlog = 0;
+  R->H = 0;
+  lot_hash_put(R, 0, 0);
+}
+
+static int lot_key_cmp(const void *x, const void *y) {
+  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
+  return a < b ? -1 : a > b;
+}
+
+/* Do the flips of log (k0, k1] cancel exactly?  Each flip removes b-c and
+** adds a-d; as keys with the low bit marking additions, sorted, every edge
+** must be added as often as it is removed. */
+static int lot_cancels(const lot_run *R, size_t k0, size_t k1) {
+  size_t n = 2 * (k1 - k0);
+  uint64_t *e = malloc(n * sizeof *e);
+  if (e == NULL) return 0;
+  size_t w = 0;
+  for (size_t k = k0; k < k1; k++) {
+    const uint32_t *q = R->log[k];
+    e[w++] = lot_edge_key(q[0], q[2]) << 1 | 1;   /* keys < 2^63: ids < 2^31 */
+    e[w++] = lot_edge_key(q[1], q[3]) << 1;
+  }
+  qsort(e, n, sizeof *e, lot_key_cmp);
+  int ok = 1;
+  for (size_t i = 0; i < n && ok;) {
+    size_t j = i;
+    long bal = 0;
+    while (j < n && e[j] >> 1 == e[i] >> 1) bal += (e[j++] & 1) ? 1 : -1;
+    ok = bal == 0;
+    i = j;
+  }
+  free(e);
+  return ok;
+}
+
+/* Record a flip of quadrilateral (a, b, d, c): 1 when it closes a cycle. */
+static int lot_track(lot_run *R, uint32_t a, uint32_t b, uint32_t d, uint32_t c) {
+  if (R->nlog == LOT_CYCLE_WINDOW) lot_window_reset(R);
+  if (R->nlog == R->logcap) {
+    size_t cap = R->logcap ? 2 * R->logcap : 1024;
+    void *nl = realloc(R->log, cap * sizeof *R->log);
+    if (nl == NULL) return 0;
+    R->log = nl;
+    R->logcap = cap;
+  }
+  uint32_t *q = R->log[R->nlog++];
+  q[0] = a; q[1] = b; q[2] = d; q[3] = c;
+  R->H += lot_edge_hash(a, d) - lot_edge_hash(b, c);
+  uint32_t k0 = lot_hash_put(R, R->H, (uint32_t)R->nlog);
+  if (k0 >= UINT32_MAX - 1 || !lot_cancels(R, k0, R->nlog)) return 0;
+  lot_stats *st = R->st;
+  st->status = LOT_CYCLE;
+  st->cycle_length = R->nlog - k0;
+  st->cycle_quads = st->cycle_length < LOT_CYCLE_QUADS ? st->cycle_length : LOT_CYCLE_QUADS;
+  for (size_t i = 0; i < st->cycle_quads; i++)
+    for (int j = 0; j < 4; j++) st->cycle_quad[i][j] = R->m->inp[R->log[k0 + i][j]];
+  return 1;
+}
+
+/* ---- decisions and the flip loop --------------------------------------- */
+
+/* Examine the edge opposite corner c; flip it when the rule prefers the
+** other diagonal.  With t = (a, b, c0) and t' = (d, c0, b) the
+** quadrilateral is a b d c0 (anticlockwise), its current diagonal b-c0
+** (RULE_BD), the other a-d (RULE_AC). */
+static int lot_examine(lot_run *R, uint32_t c) {
+  lot_mesh *m = R->m;
+  /* Queued corners are in real triangles; the other side is a ghost when
+  ** its apex d is the ghost vertex (b and c0 are real). */
+  uint32_t cd = m->tn[c], t = c / 3, u = cd / 3, d = m->tv[cd];
+  if (d == LOT_GHOST) return 0;
+  uint32_t a = m->tv[c], b = m->tv[lot_next3(c)], c0 = m->tv[lot_prev3(c)];
+  geom_point pa = m->p[a], pb = m->p[b], pc = m->p[c0], pd = m->p[d];
+  double x1 = 0, x2 = 0;
+  if (R->kind == LOT_K_DT) {
+    /* d strictly inside circle abc makes abdc strictly convex (a and d on
+    ** opposite sides of bc, and the line ab meets the circle only at a and
+    ** b, so b is not on segment ad; likewise c), so no orientation test. */
+    if (geom_incircle(pa, pb, pc, pd) <= 0) return 0;
+  } else {
+    if (geom_orient(pa, pb, pd) <= 0 || geom_orient(pa, pd, pc) <= 0) return 0;
+    const geom_point q[4] = {pa, pb, pd, pc};
+    const lot_options *o = R->o;
+    rule_choice ch;
+    if (R->kind == LOT_K_TRI) {
+      x1 = lot_mesh_badness(m, a, b, d);
+      x2 = lot_mesh_badness(m, a, d, c0);
+      ch = rule_eval_badness(&o->r, x1, x2, m->bad[t], m->bad[u], o->tie_eps, NULL, NULL);
+    } else if (R->kind == LOT_K_QUAD) {
+      ch = rule_eval(&o->r, q, o->tie_eps, NULL, NULL);
+    } else {
+      ch = o->decide(q, RULE_BD, o->decide_ctx);
+    }
+    if (ch != RULE_AC) return 0;
+  }
+  if (R->st->flips >= R->st->max_flips) {
+    R->st->status = LOT_BUDGET;
+    R->stopped = 1;
+    return 0;
+  }
+  lot_mesh_flip(m, c, x1, x2);
+  R->st->flips++;
+  if (R->track && lot_track(R, a, b, d, c0)) R->stopped = 1;
+  return 1;
+}
+
+/* After the flip at corner c (t = (a, b, d) with a at c, t' = (d, c0, a)):
+** queue the edges whose quadrilateral changed. */
+static int lot_push_after(lot_run *R, uint32_t c) {
+  uint32_t j1 = R->m->tn[lot_next3(c)];   /* t's b corner faces t' across a-d: c0's corner */
+  int rc = lot_push(R, c) | lot_push(R, lot_next3(j1));   /* b-d, d-c0: opposite a */
+  if (!R->star_only) rc |= lot_push(R, lot_prev3(c)) | lot_push(R, lot_prev3(j1));   /* a-b, c0-a */
+  if (R->kind >= LOT_K_QUAD) rc |= lot_push(R, lot_next3(c));   /* a-d, for any rule */
+  return rc;
+}
+
+static int lot_drain(lot_run *R) {
+  if (R->track) lot_window_reset(R);
+  while (R->ns > 0 && !R->stopped) {
+    lot_entry e = R->stk[--R->ns];
+    const lot_mesh *m = R->m;
+    if (m->tv[lot_next3(e.c)] != e.u || m->tv[lot_prev3(e.c)] != e.v) continue;   /* stale */
+    if (lot_examine(R, e.c) && lot_push_after(R, e.c) != 0) return -1;
+  }
+  R->ns = 0;
+  return 0;
+}
+
+static int lot_push_all(lot_run *R) {
+  const lot_mesh *m = R->m;
+  for (uint32_t c = 0; c < 3 * m->nt; c++)
+    if (c < m->tn[c] && !lot_is_ghost(m, c / 3) && !lot_is_ghost(m, m->tn[c] / 3))
+      if (lot_push(R, c) != 0) return -1;
+  return 0;
+}
+
+static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
+  memset(R, 0, sizeof *R);
+  R->m = &L->m;
+  R->o = o;
+  R->st = &L->st;
+  R->kind = o->decide ? LOT_K_HOOK
+          : o->r.kind == RULE_TRIANGLE ? LOT_K_TRI
+          : o->r.quad == RULE_DT ? LOT_K_DT : LOT_K_QUAD;
+  R->track = R->kind >= LOT_K_QUAD;
+  L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
+}
+
+static void lot_run_free(lot_run *R) {
+  free(R->stk);
+  free(R->hkey);
+  free(R->hval);
+  free(R->log);
+}
+
+/* ---- building ---------------------------------------------------------- */
+
+static int lot_validate(const geom_point *p, size_t n, char *err, size_t errlen) {
+  if (n > LOT_MAX_POINTS) {
+    snprintf(err, errlen, "%zu points: at most %u are supported", n, (unsigned)LOT_MAX_POINTS);
+    return -1;
+  }
+  for (size_t i = 0; i < n; i++) {
+    if (!geom_point_finite(p[i])) {
+      snprintf(err, errlen, "point %zu (%g, %g) has a non-finite coordinate", i, p[i].x, p[i].y);
+      return -1;
+    }
+    if (fabs(p[i].x) > GEOM_MAX_COORD || fabs(p[i].y) > GEOM_MAX_COORD) {
+      snprintf(err, errlen, "point %zu (%g, %g) is out of scale: |coordinate| > %g", i,
+               p[i].x, p[i].y, GEOM_MAX_COORD);
+      return -1;
+    }
+  }
+  return 0;
+}
+
+/* The insertion order: ord[k] = input index of the k-th point. */
+static int lot_make_order(const geom_point *p, uint32_t n, const lot_options *o, uint32_t *ord) {
+  if (o->algorithm == LOT_FLIP) return lot_order_lexicographic(p, n, ord);
+  if (o->order == LOT_ORDER_SPATIAL) return lot_order_spatial(p, n, o->seed, ord);
+  if (o->order == LOT_ORDER_RANDOM) lot_order_random(n, o->seed, ord);
+  else for (uint32_t i = 0; i < n; i++) ord[i] = i;
+  return 0;
+}
+
+/* The first triangle: vertex 0, the first point different from it, the
+** first point off their line.  0, or -1 with the message. */
+static int lot_first(lot_mesh *m, uint32_t *kb, uint32_t *kc, char *err, size_t errlen) {
+  uint32_t n = m->np, b = 1, c;
+  while (b < n && m->p[b].x == m->p[0].x && m->p[b].y == m->p[0].y) b++;
+  for (c = b + 1; c < n && b < n; c++)
+    if (geom_orient(m->p[0], m->p[b], m->p[c]) != 0) break;
+  if (b >= n || c >= n) {
+    if (b >= n) snprintf(err, errlen, "all %u points are equal: a triangulation needs three "
+                         "non-collinear points", n);
+    else snprintf(err, errlen, "all %u points are collinear: a triangulation needs three "
+                  "non-collinear points", n);
+    return -1;
+  }
+  if (geom_orient(m->p[0], m->p[b], m->p[c]) > 0) lot_mesh_first(m, 0, b, c);
+  else lot_mesh_first(m, 0, c, b);
+  *kb = b;
+  *kc = c;
+  return 0;
+}
+
+/* Insert every point (flipping after each when `flip`); 0 or -1 (memory). */
+static int lot_insert_all(lot *L, lot_run *R, uint32_t kb, uint32_t kc, int flip) {
+  lot_mesh *m = &L->m;
+  uint32_t *cand = NULL;
+  size_t candcap = 0;
+  for (uint32_t k = 1; k < m->np; k++) {
+    if (k == kb || k == kc) continue;
+    uint32_t c;
+    lot_where w = lot_mesh_locate(m, m->p[k], &c);
+    if (w == LOT_ON_VERTEX) {   /* a duplicate: merged into the vertex already there */
+      uint32_t v = m->tv[c];
+      if (m->inp[k] < m->inp[v]) m->inp[v] = m->inp[k];
+      L->st.duplicates++;
+      continue;
+    }
+    long nc = lot_mesh_insert(m, k, w, c, &cand, &candcap);
+    if (nc < 0) goto oom;
+    if (!flip || R->stopped) continue;
+    for (long i = 0; i < nc; i++)
+      if (lot_push(R, cand[i]) != 0) goto oom;
+    if (lot_drain(R) != 0) goto oom;
+  }
+  free(cand);
+  return 0;
+oom:
+  free(cand);
+  return -1;
+}
+
+static void lot_finish_stats(lot *L) {
+  lot_mesh *m = &L->m;
+  size_t ghosts = 0;
+  for (uint32_t t = 0; t < m->nt; t++) ghosts += lot_is_ghost(m, t);
+  L->st.hull = ghosts;
+  L->st.triangles = m->nt - ghosts;
+  L->st.distinct = L->st.n - L->st.duplicates;
+}
+
+int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
+              size_t errlen) {
+  *out = NULL;
+  if (n < 3) {
+    snprintf(err, errlen, "%zu point%s: a triangulation needs at least three non-collinear "
+             "points", n, n == 1 ? "" : "s");
+    return -1;
+  }
+  if (lot_validate(p, n, err, errlen) != 0) return -1;
+  lot *L = calloc(1, sizeof *L);
+  uint32_t *ord = malloc(n * sizeof *ord);
+  lot_run R;
+  if (L == NULL || ord == NULL ||
+      lot_mesh_alloc(&L->m, (uint32_t)n, o->r.kind == RULE_TRIANGLE && !o->decide) != 0)
+    goto oom;
+  L->r = o->r;
+  L->m.r = &L->r;
+  L->st.n = n;
+  lot_run_init(&R, L, o);
+  R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
+  double t0 = lot_now();
+  if (lot_make_order(p, (uint32_t)n, o, ord) != 0) goto oom_run;
+  double tord = lot_now();
+  for (size_t k = 0; k < n; k++) {
+    L->m.p[k] = p[ord[k]];
+    L->m.inp[k] = ord[k];
+  }
+  free(ord);
+  ord = NULL;
+  uint32_t kb, kc;
+  if (lot_first(&L->m, &kb, &kc, err, errlen) != 0) {
+    lot_run_free(&R);
+    lot_free(L);
+    return -1;
+  }
+  if (lot_insert_all(L, &R, kb, kc, o->algorithm == LOT_INCREMENTAL) != 0) goto oom_run;
+  double t1 = lot_now();
+  if (o->algorithm == LOT_FLIP) {
+    L->st.seconds_init = t1 - t0;
+    if (lot_push_all(&R) != 0 || lot_drain(&R) != 0) goto oom_run;
+    L->st.seconds_flip = lot_now() - t1;
+  } else {   /* insertion and flips interleave: the split is ordering | the rest */
+    L->st.seconds_init = tord - t0;
+    L->st.seconds_flip = t1 - tord;
+  }
+  lot_run_free(&R);
+  lot_finish_stats(L);
+  *out = L;
+  return 0;
+oom_run:
+  lot_run_free(&R);
+oom:
+  free(ord);
+  lot_free(L);
+  snprintf(err, errlen, "out of memory for %zu points", n);
+  return -1;
+}
+
+int lot_reflip(lot *L, const lot_options *o) {
+  lot_mesh *m = &L->m;
+  L->r = o->r;
+  int tri = o->r.kind == RULE_TRIANGLE && !o->decide;
+  if (tri && m->bad == NULL && (m->bad = malloc((size_t)m->cap * sizeof *m->bad)) == NULL)
+    return -1;
+  if (!tri) {
+    free(m->bad);
+    m->bad = NULL;
+  }
+  for (uint32_t t = 0; tri && t < m->nt; t++)
+    m->bad[t] = lot_is_ghost(m, t) ? 0
+              : lot_mesh_badness(m, m->tv[3 * t], m->tv[3 * t + 1], m->tv[3 * t + 2]);
+  lot_run R;
+  L->st.flips = 0;
+  L->st.status = LOT_CONVERGED;
+  L->st.cycle_length = 0;
+  L->st.cycle_quads = 0;
+  lot_run_init(&R, L, o);
+  double t0 = lot_now();
+  int rc = lot_push_all(&R) != 0 || lot_drain(&R) != 0 ? -1 : 0;
+  L->st.seconds_init = 0;
+  L->st.seconds_flip = lot_now() - t0;
+  lot_run_free(&R);
+  return rc;
+}
+
+/* Bytes per point: input copy in insertion order (16) and its index (4),
+** the order (4, transient), 2 triangles of 24 bytes of indices and 8 of
+** badness, and a caller's input and output (16 + 2 * 12 + 2 * 8). */
+#define LOT_BYTES_PER_POINT 152u
+
+int lot_check_memory(size_t n, char *err, size_t errlen) {
+  long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  double have = pages > 0 && page > 0 ? (double)pages * (double)page : 0;
+  double need = (double)n * LOT_BYTES_PER_POINT;
+  if (n > LOT_MAX_POINTS || (have > 0 && need > 0.75 * have)) {
+    snprintf(err, errlen, "%zu points need about %.3g GB of memory%s", n, need / 1e9,
+             n > LOT_MAX_POINTS ? " and more than the supported maximum number of points"
+                                : " (more than 3/4 of this machine's memory)");
+    return -1;
+  }
+  return 0;
+}
+
+size_t lot_get_hull(const lot *L, uint32_t *out) {
+  const lot_mesh *m = &L->m;
+  uint32_t x = LOT_NONE;
+  for (uint32_t c = 0; c < 3 * m->nt && x == LOT_NONE; c++)
+    if (m->tv[c] == LOT_GHOST) x = c;
+  size_t h = L->st.hull;
+  for (size_t k = 0; k < h; k++) {   /* ghost edges u -> v run clockwise */
+    out[h - 1 - k] = m->inp[m->tv[lot_next3(x)]];
+    x = lot_next3(m->tn[lot_next3(x)]);
+  }
+  return h;
+}
+
+const lot_stats *lot_get_stats(const lot *L) {
+  return &L->st;
+}
+
+static int lot_tri_cmp(const void *x, const void *y) {
+  const uint32_t *a = x, *b = y;
+  for (int i = 0; i < 3; i++)
+    if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
+void lot_get_triangles(const lot *L, uint32_t *tri) {
+  const lot_mesh *m = &L->m;
+  size_t w = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (lot_is_ghost(m, t)) continue;
+    uint32_t v[3];
+    for (int i = 0; i < 3; i++) v[i] = m->inp[m->tv[3 * t + i]];
+    int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    for (int i = 0; i < 3; i++) tri[3 * w + i] = v[(s + i) % 3];
+    w++;
+  }
+  qsort(tri, w, 3 * sizeof *tri, lot_tri_cmp);
+}
+
+void lot_free(lot *L) {
+  if (L == NULL) return;
+  lot_mesh_free(&L->m);
+  free(L);
+}

@@ -1,0 +1,150 @@
+/*
+** lot.h: locally optimal triangulations (LOT) of planar point sets.
+**
+** A LOT(F) of a point set is a triangulation in which the flip rule F keeps
+** every interior edge whose two triangles form a strictly convex
+** quadrilateral (thesis section 3.1).  Two algorithms make one:
+**
+**   flip         an initial triangulation by a sweep (points sorted by x,
+**                then y, each connected to the hull vertices it sees), then
+**                Lawson's flip algorithm: a queue of edges, each examined
+**                and flipped when F prefers the other diagonal;
+**   incremental  points inserted one at a time (input, random or spatial
+**                order), located by a walk, connected to the triangle that
+**                holds them or to every hull vertex they see, and the
+**                triangulation flipped back to a LOT after each insertion
+**                (theorem 5).
+**
+** Every geometric decision is exact (geom_orient, geom_incircle).  Rules are
+** decided through the rule API (rule.h): DT exactly, triangle-based b_f with
+** each triangle's badness kept per triangle, quadrilateral rules (plugins)
+** on the canonical rotation.  Only strictly convex quadrilaterals are
+** decided; EITHER, non-convex and degenerate ones are left alone.
+**
+** Never a hang: triangle-based rules and DT provably terminate (lot.c says
+** why); for quadrilateral rules a repeated triangulation is detected (an
+** incremental hash of the edge set, confirmed exactly) and reported as a
+** cycle; every run also stops after max_flips flips.
+**
+** Exact duplicate points are merged: every index in the output is the first
+** occurrence's 0-based input index.  Triangles are anticlockwise.
+*/
+#ifndef FLIPLAB_LOT_H
+#define FLIPLAB_LOT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "geom.h"
+#include "rule.h"
+
+typedef enum lot_algorithm { LOT_INCREMENTAL, LOT_FLIP } lot_algorithm;
+typedef enum lot_order { LOT_ORDER_SPATIAL, LOT_ORDER_INPUT, LOT_ORDER_RANDOM } lot_order;
+typedef enum lot_status { LOT_CONVERGED, LOT_CYCLE, LOT_BUDGET } lot_status;
+
+/* At most this many points (indices are 32-bit, with room for the ghost). */
+#define LOT_MAX_POINTS 0x3fffffffu
+
+/* A decision override for experiments and tests: called instead of the rule
+** with the strictly convex anticlockwise quadrilateral q and its current
+** diagonal (RULE_AC for q[0]q[2], RULE_BD for q[1]q[3]). */
+typedef rule_choice (*lot_decide_fn)(const geom_point q[4], rule_choice current, void *ctx);
+
+typedef struct lot_options {
+  rule r;               /* the flip rule */
+  lot_algorithm algorithm;
+  lot_order order;      /* incremental only */
+  uint64_t seed;        /* the random order's seed */
+  uint64_t max_flips;   /* 0: lot_default_max_flips(n) */
+  double tie_eps;       /* triangle-based rules' tie tolerance */
+  lot_decide_fn decide; /* NULL: the rule decides */
+  void *decide_ctx;
+} lot_options;
+
+/* Defaults: incremental, spatial order, seed 1, RULE_DEFAULT_TIE_EPS. */
+void lot_options_init(lot_options *o, const rule *r);
+
+/* The default flip budget for n points: 1000 n + 10^7. */
+uint64_t lot_default_max_flips(size_t n);
+
+#define LOT_CYCLE_QUADS 8     /* quadrilaterals of a cycle kept for the report */
+
+typedef struct lot_stats {
+  size_t n;             /* input points */
+  size_t distinct;      /* after merging duplicates */
+  size_t duplicates;    /* n - distinct */
+  size_t hull;          /* vertices on the convex hull boundary (collinear ones included) */
+  size_t triangles;
+  uint64_t flips;
+  lot_status status;
+  uint64_t cycle_length;              /* LOT_CYCLE: flips in the cycle */
+  size_t cycle_quads;                 /* how many quads below (<= LOT_CYCLE_QUADS) */
+  uint32_t cycle_quad[LOT_CYCLE_QUADS][4];   /* input indices, anticlockwise */
+  uint64_t max_flips;
+  double seconds_init;  /* flip: the sweep triangulation; incremental: ordering the points */
+  double seconds_flip;  /* flip: the flips; incremental: insertion and flips (interleaved) */
+} lot_stats;
+
+typedef struct lot lot;
+
+/* Triangulate p[0 .. n-1] and flip to a LOT of o->r.  0 on success, or -1
+** with a one-line message in err: fewer than three distinct points, all
+** collinear, a non-finite coordinate or one beyond GEOM_MAX_COORD (naming
+** the row), too many points, out of memory. */
+int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
+              char *err, size_t errlen);
+
+/* The flip algorithm from the current triangulation with another rule
+** (o->algorithm and o->order are ignored).  Statistics of this run replace
+** the flip counts; returns 0, or -1 when out of memory. */
+int lot_reflip(lot *L, const lot_options *o);
+
+const lot_stats *lot_get_stats(const lot *L);
+
+/* The triangles, 3 input indices each, anticlockwise, each starting at its
+** smallest index, sorted; tri must hold 3 * stats.triangles entries. */
+void lot_get_triangles(const lot *L, uint32_t *tri);
+
+
+/* The convex hull's boundary vertices (collinear ones included),
+** anticlockwise, as input indices; out holds stats.hull entries. */
+size_t lot_get_hull(const lot *L, uint32_t *out);
+
+/* 0 if n points fit in memory (at most 3/4 of physical memory, about 150
+** bytes per point with a caller's input and output), else -1 and a
+** one-line message. */
+int lot_check_memory(size_t n, char *err, size_t errlen);
+
+void lot_free(lot *L);
+
+/* ---- independent checks (lot/check.c), from a triangle list alone ---- */
+
+typedef struct lot_check_result {
+  size_t interior_edges;    /* edges shared by two triangles */
+  size_t boundary_edges;    /* edges of one triangle */
+  size_t decided;           /* interior edges in a strictly convex quadrilateral */
+  size_t not_optimal;       /* of those, the rule prefers the other diagonal */
+  uint32_t bad_edge[2];     /* the first such edge */
+  int valid;                /* a triangulation: anticlockwise, every edge in <= 2 triangles,
+                               consistently oriented, T = 2n - h - 2 (Euler) */
+} lot_check_result;
+
+/* Re-verify a triangulation of p (indices into p) from scratch: structure,
+** and local optimality of every interior edge for r (DT: the exact
+** empty-circle test).  0, or -1 when out of memory. */
+int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+              const rule *r, double tie_eps, lot_check_result *out);
+
+/* Each triangle's badness for the rule: measure_eval on the triangle of p
+** (NaN for DT and quadrilateral rules). */
+void lot_get_badness(const geom_point *p, const uint32_t *tri, size_t ntri, const rule *r,
+                     double *out);
+
+/* Edges and triangles two triangulations of the same points share
+** (-1 when out of memory). */
+typedef struct lot_diff {
+  size_t edges_a, edges_b, edges_common;
+  size_t triangles_a, triangles_b, triangles_common;
+} lot_diff;
+int lot_compare(const uint32_t *a, size_t na, const uint32_t *b, size_t nb, lot_diff *out);
+
+#endif

@@ -1,0 +1,76 @@
+/*
+** lot_internal.h: the triangulation structure behind lot.h.
+**
+** Triangle-neighbour arrays.  Triangle t has vertices tv[3t..3t+2],
+** anticlockwise; corner c = 3t + i names vertex tv[c] and the edge opposite
+** it, and tn[c] is the corner of the neighbouring triangle opposite the same
+** edge, so tn[tn[c]] == c.  The convex hull is closed by "ghost" triangles
+** (u, v, LOT_GHOST), one per hull edge, the outside lying to the left of
+** u -> v (Shewchuk's ghost triangles): every triangle then has three
+** neighbours, a point outside the hull is "in" the ghost triangles whose
+** edges it sees, and inserting it replaces their ghost vertex by the point.
+** 8 bytes of indices per corner, 2n - 2 triangles (ghosts included) for n
+** vertices: 48 bytes per point, plus 8 per triangle for the badness cache of
+** triangle-based rules.
+**
+** Vertices are numbered in insertion order (p[] is the input permuted),
+** which keeps neighbouring triangles' points close in memory.
+*/
+#ifndef FLIPLAB_LOT_INTERNAL_H
+#define FLIPLAB_LOT_INTERNAL_H
+
+#include <stdint.h>
+#include "lot.h"
+
+#define LOT_GHOST UINT32_MAX
+#define LOT_NONE UINT32_MAX
+
+typedef struct lot_mesh {
+  geom_point *p;        /* vertex k's point (k in insertion order) */
+  uint32_t *inp;        /* vertex k's input index (first occurrence after merging) */
+  uint32_t np;          /* slots in p (input points, duplicates included) */
+  uint32_t *tv, *tn;    /* 3 per triangle */
+  double *bad;          /* per-triangle badness (triangle-based rules) or NULL */
+  uint32_t nt, cap;     /* triangles used, allocated */
+  uint32_t last;        /* a triangle near the last insertion: the walk's start */
+  uint64_t walk;        /* the walk's generator state (deterministic) */
+  const rule *r;        /* for the badness cache */
+} lot_mesh;
+
+static inline uint32_t lot_next3(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+static inline uint32_t lot_prev3(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
+static inline int lot_is_ghost(const lot_mesh *m, uint32_t t) {
+  const uint32_t *v = m->tv + 3 * (size_t)t;
+  return v[0] == LOT_GHOST || v[1] == LOT_GHOST || v[2] == LOT_GHOST;
+}
+
+/* Where a point lies (lot_mesh_locate). */
+typedef enum lot_where { LOT_IN_TRIANGLE, LOT_ON_EDGE, LOT_ON_VERTEX, LOT_OUTSIDE } lot_where;
+
+int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness);
+void lot_mesh_free(lot_mesh *m);
+/* The first triangle a, b, c (anticlockwise) and its three ghosts. */
+void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+/* Locate vertex k's point: *c is a triangle's corner (IN_TRIANGLE: 3t;
+** ON_EDGE: the corner opposite the edge; ON_VERTEX: the vertex's corner;
+** OUTSIDE: a ghost triangle's ghost corner, the point seeing its edge). */
+lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c);
+/* Insert vertex k at a located place.  The corners whose opposite edge
+** is now a candidate for flipping (the edges opposite k, and the halves of
+** a split edge, with a real triangle on both sides) are stored in *cand
+** (grown as needed); returns how many, or -1 when out of memory. */
+long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t **cand,
+                     size_t *candcap);
+/* Flip the edge opposite corner c (both triangles real): t = (a, b, c0)
+** and t' = (d, c0, b) become (a, b, d) and (d, c0, a), keeping a at its
+** corner in t and d at its corner in t'. */
+void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u);
+/* The badness of triangle (a, b, c) for m->r (triangle-based rules). */
+double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+
+/* Insertion orders (lot/order.c): ord[0..n-1] = input indices. */
+int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *ord);
+void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord);
+int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord);
+
+#endif

@@ -1,0 +1,319 @@
+/*
+** mesh.c: the triangle-neighbour structure of lot_internal.h: the first
+** triangle, point location by a walk, insertion (inside a triangle, on an
+** edge, outside the hull) and the flip.
+**
+** All geometric decisions are exact (geom_orient).  The walk is the
+** "remembering stochastic" visibility walk (Devillers, Pion and Teillaud,
+** Walking in a triangulation, 2002): from the current triangle it crosses
+** an edge that separates it from the point, trying the edges from a
+** pseudo-random one; in a triangulation that is not Delaunay a fixed order
+** can cycle, a random start cannot forever.  The generator is seeded per
+** mesh, so runs are reproducible; after far more steps than triangles the
+** walk gives way to a scan of every triangle, so it always ends.
+*/
+#include <stdlib.h>
+#include <string.h>
+#include "lot_internal.h"
+#include "measure.h"
+
+int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness) {
+  memset(m, 0, sizeof *m);
+  m->np = np;
+  m->cap = 2 * np + 4;
+  m->p = malloc((size_t)np * sizeof *m->p);
+  m->inp = malloc((size_t)np * sizeof *m->inp);
+  m->tv = malloc(3 * (size_t)m->cap * sizeof *m->tv);
+  m->tn = malloc(3 * (size_t)m->cap * sizeof *m->tn);
+  if (with_badness) m->bad = malloc((size_t)m->cap * sizeof *m->bad);
+  m->walk = 0x9e3779b97f4a7c15ull;
+  if (!m->p || !m->inp || !m->tv || !m->tn || (with_badness && !m->bad)) {
+    lot_mesh_free(m);
+    return -1;
+  }
+  return 0;
+}
+
+void lot_mesh_free(lot_mesh *m) {
+  free(m->p);
+  free(m->inp);
+  free(m->tv);
+  free(m->tn);
+  free(m->bad);
+  memset(m, 0, sizeof *m);
+}
+
+double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
+  geom_tri t;
+  geom_tri_make(&t, m->p[a], m->p[b], m->p[c]);
+  return measure_eval(m->r->measure, &t);
+}
+
+static void lot_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
+  m->tn[c1] = c2;
+  m->tn[c2] = c1;
+}
+
+static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
+  uint32_t *v = m->tv + 3 * (size_t)t;
+  v[0] = a;
+  v[1] = b;
+  v[2] = c;
+  if (m->bad) m->bad[t] = (a == LOT_GHOST || b == LOT_GHOST || c == LOT_GHOST)
+                              ? 0 : lot_mesh_badness(m, a, b, c);
+}
+
+void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
+  /* t0 = abc; ghosts g1 = (b, a, G), g2 = (c, b, G), g3 = (a, c, G). */
+  lot_set(m, 0, a, b, c);
+  lot_set(m, 1, b, a, LOT_GHOST);
+  lot_set(m, 2, c, b, LOT_GHOST);
+  lot_set(m, 3, a, c, LOT_GHOST);
+  lot_link(m, 0, 3 * 2 + 2);       /* opposite a: bc */
+  lot_link(m, 1, 3 * 3 + 2);       /* opposite b: ca */
+  lot_link(m, 2, 3 * 1 + 2);       /* opposite c: ab */
+  lot_link(m, 3 * 1 + 0, 3 * 3 + 1);
+  lot_link(m, 3 * 1 + 1, 3 * 2 + 0);
+  lot_link(m, 3 * 2 + 1, 3 * 3 + 0);
+  m->nt = 4;
+  m->last = 0;
+}
+
+/* A random edge 0, 1 or 2 (xorshift64; the high word times 3, >> 32). */
+static uint32_t lot_walk_rand3(lot_mesh *m) {
+  uint64_t x = m->walk;
+  x ^= x << 13;
+  x ^= x >> 7;
+  x ^= x << 17;
+  m->walk = x;
+  return (uint32_t)(((x >> 32) * 3) >> 32);
+}
+
+/* Classify q against the real triangle t whose three orientations are o[]
+** (none negative). */
+static lot_where lot_classify(uint32_t t, const int o[3], uint32_t *c) {
+  int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+  if (zeros == 0) {
+    *c = 3 * t;
+    return LOT_IN_TRIANGLE;
+  }
+  if (zeros == 1) {
+    *c = 3 * t + (o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2);
+    return LOT_ON_EDGE;
+  }
+  *c = 3 * t + (o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2);   /* on both other edges: that vertex */
+  return LOT_ON_VERTEX;
+}
+
+/* The last resort of the walk: look at every triangle. */
+static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (lot_is_ghost(m, t)) continue;
+    const uint32_t *v = m->tv + 3 * (size_t)t;
+    int o[3];
+    for (int e = 0; e < 3; e++) o[e] = geom_orient(m->p[v[(e + 1) % 3]], m->p[v[(e + 2) % 3]], q);
+    if (o[0] >= 0 && o[1] >= 0 && o[2] >= 0) return lot_classify(t, o, c);
+  }
+  for (uint32_t t = 0; t < m->nt; t++) {
+    const uint32_t *v = m->tv + 3 * (size_t)t;
+    for (int g = 0; g < 3; g++)
+      if (v[g] == LOT_GHOST && geom_orient(m->p[v[(g + 1) % 3]], m->p[v[(g + 2) % 3]], q) > 0) {
+        *c = 3 * t + (uint32_t)g;
+        return LOT_OUTSIDE;
+      }
+  }
+  *c = 0;
+  return LOT_ON_VERTEX;   /* unreachable for a valid mesh */
+}
+
+lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
+  uint32_t t = m->last, from = 3;   /* from: the edge we entered by (3 = none) */
+  const uint32_t *v = m->tv + 3 * (size_t)t;
+  for (int g = 0; g < 3; g++)
+    if (v[g] == LOT_GHOST) {       /* start from the real triangle next to a ghost */
+      t = m->tn[3 * t + (uint32_t)g] / 3;
+      break;
+    }
+  uint64_t limit = 4 * (uint64_t)m->nt + 64;
+  for (uint64_t step = 0; step < limit; step++) {
+    v = m->tv + 3 * (size_t)t;
+    int o[3] = {1, 1, 1};
+    uint32_t e0 = lot_walk_rand3(m), cross = 3;
+    for (uint32_t k = 0; k < 3; k++) {
+      uint32_t e = (e0 + k) % 3;
+      if (e == from) continue;     /* q is on the inner side of the edge we came through */
+      o[e] = geom_orient(m->p[v[(e + 1) % 3]], m->p[v[(e + 2) % 3]], q);
+      if (o[e] < 0) {
+        cross = e;
+        break;
+      }
+    }
+    if (cross == 3) {
+      if (from != 3) {   /* the edge we came by: q is strictly on its inner side */
+        o[from] = 1;
+      }
+      return lot_classify(t, o, c);
+    }
+    uint32_t nc = m->tn[3 * t + cross], nt = nc / 3;
+    if (lot_is_ghost(m, nt)) {
+      /* the ghost's ghost corner */
+      const uint32_t *w = m->tv + 3 * (size_t)nt;
+      *c = 3 * nt + (w[0] == LOT_GHOST ? 0u : w[1] == LOT_GHOST ? 1u : 2u);
+      return LOT_OUTSIDE;
+    }
+    t = nt;
+    from = nc % 3;
+  }
+  return lot_scan(m, q, c);
+}
+
+/* Split triangle t = (a, b, c) at k: (a, b, k), (b, c, k), (c, a, k). */
+static void lot_split_triangle(lot_mesh *m, uint32_t t, uint32_t k, uint32_t out[3]) {
+  uint32_t a = m->tv[3 * t], b = m->tv[3 * t + 1], c = m->tv[3 * t + 2];
+  uint32_t na = m->tn[3 * t], nb = m->tn[3 * t + 1];
+  uint32_t t1 = m->nt++, t2 = m->nt++;
+  lot_set(m, t, a, b, k);
+  lot_set(m, t1, b, c, k);
+  lot_set(m, t2, c, a, k);
+  lot_link(m, 3 * t + 0, 3 * t1 + 1);
+  lot_link(m, 3 * t + 1, 3 * t2 + 0);
+  lot_link(m, 3 * t1 + 0, 3 * t2 + 1);
+  lot_link(m, 3 * t1 + 2, na);
+  lot_link(m, 3 * t2 + 2, nb);
+  out[0] = 3 * t + 2;
+  out[1] = 3 * t1 + 2;
+  out[2] = 3 * t2 + 2;
+}
+
+/* Split the edge opposite corner c (of t = (a, b, c0), the other side
+** t' = (d, c0, b), possibly a ghost) at k: (a, b, k), (a, k, c0),
+** (d, c0, k), (d, k, b).  out: the corners of k in the four triangles. */
+static void lot_split_edge(lot_mesh *m, uint32_t c, uint32_t k, uint32_t out[4]) {
+  uint32_t t = c / 3, cb = lot_next3(c), cc = lot_next3(cb);
+  uint32_t cd = m->tn[c], u = cd / 3, ud = cd, uc = lot_next3(cd), ub = lot_next3(uc);
+  uint32_t a = m->tv[c], b = m->tv[cb], c0 = m->tv[cc], d = m->tv[ud];
+  uint32_t n_ca = m->tn[cb], n_ab = m->tn[cc], n_bd = m->tn[uc], n_dc = m->tn[ub];
+  uint32_t t1 = m->nt++, t2 = m->nt++;
+  lot_set(m, t, a, b, k);
+  lot_set(m, t1, a, k, c0);
+  lot_set(m, u, d, c0, k);
+  lot_set(m, t2, d, k, b);
+  lot_link(m, 3 * t + 0, 3 * t2 + 0);
+  lot_link(m, 3 * t + 1, 3 * t1 + 2);
+  lot_link(m, 3 * t + 2, n_ab);
+  lot_link(m, 3 * t1 + 0, 3 * u + 0);
+  lot_link(m, 3 * t1 + 1, n_ca);
+  lot_link(m, 3 * u + 1, 3 * t2 + 2);
+  lot_link(m, 3 * u + 2, n_dc);
+  lot_link(m, 3 * t2 + 1, n_bd);
+  out[0] = 3 * t + 2;
+  out[1] = 3 * t1 + 1;
+  out[2] = 3 * u + 2;
+  out[3] = 3 * t2 + 1;
+}
+
+/* k outside the hull, seeing the edge of ghost g (ghost corner gc): every
+** ghost whose edge k sees becomes a real triangle with k in place of the
+** ghost vertex; two new ghosts close the hull at both ends of that chain. */
+static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **cand,
+                               size_t *candcap) {
+  geom_point q = m->p[k];
+  /* Walk back to the first visible ghost.  Ghost corner x: edge
+  ** (tv[next(x)], tv[prev(x)]); the previous ghost is across the edge
+  ** opposite prev(x), the next one across the edge opposite next(x). */
+  uint32_t first = gc;
+  for (uint32_t guard = 0; guard < m->nt; guard++) {
+    /* The previous ghost (z, u, G) faces edge (u, G) with z's corner pc. */
+    uint32_t pc = m->tn[lot_prev3(first)];
+    uint32_t pg = lot_prev3(pc);
+    if (pg == gc || geom_orient(m->p[m->tv[lot_next3(pg)]], m->p[m->tv[lot_prev3(pg)]], q) <= 0)
+      break;
+    first = pg;
+  }
+  size_t nc = 0;
+  uint32_t x = first, last = first;
+  for (uint32_t guard = 0; guard < m->nt; guard++) {
+    if (nc == *candcap) {
+      size_t cap = *candcap * 2 + 16;
+      uint32_t *nw = realloc(*cand, cap * sizeof *nw);
+      if (nw == NULL) return -1;
+      *cand = nw;
+      *candcap = cap;
+    }
+    uint32_t t = x / 3;
+    m->tv[x] = k;
+    if (m->bad) m->bad[t] = lot_mesh_badness(m, m->tv[3 * t], m->tv[3 * t + 1], m->tv[3 * t + 2]);
+    (*cand)[nc++] = x;
+    last = x;
+    /* The next ghost (v, w, G) faces edge (G, v) with w's corner. */
+    uint32_t ng = lot_next3(m->tn[lot_next3(x)]);
+    if (m->tv[ng] != LOT_GHOST) break;       /* it was converted already: wrapped around */
+    if (geom_orient(m->p[m->tv[lot_next3(ng)]], m->p[m->tv[lot_prev3(ng)]], q) <= 0) break;
+    x = ng;
+  }
+  /* Close: first = (u0, v0, k) at corners next, prev of k; last = (um, vm, k). */
+  uint32_t A = m->nt++, B = m->nt++;
+  uint32_t u0 = m->tv[lot_next3(first)], vm = m->tv[lot_prev3(last)];
+  uint32_t prev_in = m->tn[lot_prev3(first)];   /* previous ghost's corner facing edge (u0, G) */
+  uint32_t next_in = m->tn[lot_next3(last)];    /* next ghost's corner facing edge (vm, G) */
+  lot_set(m, A, u0, k, LOT_GHOST);
+  lot_set(m, B, k, vm, LOT_GHOST);
+  lot_link(m, 3 * A + 2, lot_prev3(first));    /* edge u0-k */
+  lot_link(m, 3 * A + 1, prev_in);              /* edge G-u0 */
+  lot_link(m, 3 * B + 2, lot_next3(last));      /* edge k-vm */
+  lot_link(m, 3 * B + 0, next_in);              /* edge vm-G */
+  lot_link(m, 3 * A + 0, 3 * B + 1);            /* edge k-G */
+  return (long)nc;
+}
+
+long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t **cand,
+                     size_t *candcap) {
+  if (*candcap < 6) {
+    uint32_t *nw = realloc(*cand, 16 * sizeof *nw);
+    if (nw == NULL) return -1;
+    *cand = nw;
+    *candcap = 16;
+  }
+  uint32_t out[4];
+  long n = 0;
+  if (w == LOT_OUTSIDE) {
+    n = lot_insert_outside(m, c, k, cand, candcap);
+  } else if (w == LOT_IN_TRIANGLE) {
+    lot_split_triangle(m, c / 3, k, out);
+    for (int i = 0; i < 3; i++) (*cand)[n++] = out[i];
+  } else {
+    /* The halves b-k and k-c0 of the split edge are candidates too: their
+    ** quadrilaterals (a, b, d, k) and (a, k, d, c0) can be strictly convex
+    ** (k-a and k-d are not: b, k, c0 are collinear).  DT never flips them
+    ** (an edge's halves keep its empty circle); other rules may. */
+    lot_split_edge(m, c, k, out);
+    for (int i = 0; i < 4; i++) (*cand)[n++] = out[i];
+    (*cand)[n++] = lot_prev3(lot_prev3(out[0]));   /* a's corner in (a, b, k): edge b-k */
+    (*cand)[n++] = lot_prev3(out[1]);              /* a's corner in (a, k, c0): edge k-c0 */
+  }
+  if (n < 0) return -1;
+  m->last = (*cand)[0] / 3;
+  /* Keep only edges with a real triangle on both sides. */
+  long kept = 0;
+  for (long i = 0; i < n; i++) {
+    uint32_t x = (*cand)[i];
+    if (!lot_is_ghost(m, x / 3) && !lot_is_ghost(m, m->tn[x] / 3)) (*cand)[kept++] = x;
+  }
+  return kept;
+}
+
+void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
+  uint32_t t = c / 3, i1 = lot_next3(c), i2 = lot_next3(i1);
+  uint32_t j0 = m->tn[c], u = j0 / 3, j1 = lot_next3(j0), j2 = lot_next3(j1);
+  uint32_t a = m->tv[c], d = m->tv[j0];
+  uint32_t n_ca = m->tn[i1], n_bd = m->tn[j1];
+  m->tv[i2] = d;
+  m->tv[j2] = a;
+  lot_link(m, c, n_bd);
+  lot_link(m, j0, n_ca);
+  lot_link(m, i1, j1);
+  if (m->bad) {
+    m->bad[t] = bad_t;
+    m->bad[u] = bad_u;
+  }
+}

@@ -1,0 +1,112 @@
+/*
+** svg_lot.c: an SVG picture of triangulations of one point set side by
+** side (`fliplab lot --svg`, with --compare DT the LOT next to the
+** Delaunay triangulation).  Edges are hairlines in one <path> per panel
+** (each interior edge drawn twice, which an SVG viewer does not show);
+** shading fills triangles by badness on one scale for all panels.
+*/
+#include <math.h>
+#include <stdio.h>
+#include "report.h"
+
+#define REPORT_LOT_SIZE 600.0
+#define REPORT_LOT_MARGIN 14.0
+#define REPORT_LOT_TOP 34.0
+#define REPORT_LOT_CAPTION 22.0
+
+typedef struct report_lot_view {
+  double minx, maxy, s, x0;
+} report_lot_view;
+
+static double report_lot_px(const report_lot_view *v, double x) {
+  return v->x0 + (x - v->minx) * v->s;
+}
+static double report_lot_py(const report_lot_view *v, double y) {
+  return REPORT_LOT_TOP + REPORT_LOT_CAPTION + (v->maxy - y) * v->s;
+}
+
+static void report_lot_range(const report_lot_panel *panels, int np, double *lo, double *hi) {
+  *lo = INFINITY;
+  *hi = -INFINITY;
+  for (int k = 0; k < np; k++)
+    for (size_t t = 0; panels[k].badness && t < panels[k].ntri; t++) {
+      double b = panels[k].badness[t];
+      if (isfinite(b) && b < *lo) *lo = b;
+      if (isfinite(b) && b > *hi) *hi = b;
+    }
+}
+
+static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
+                                  const report_lot_panel *pn, const report_lot_view *v,
+                                  int shade, double lo, double hi) {
+  double hair = n > 2000 ? 0.2 : n > 300 ? 0.4 : 0.8;
+  double dot = n > 2000 ? 0.5 : n > 300 ? 1.0 : 2.0;
+  if (pn->caption) report_got_text(f, v->x0, REPORT_LOT_TOP + 12, 13, pn->caption);
+  for (size_t t = 0; shade && pn->badness && t < pn->ntri; t++) {
+    char col[16] = "#dddddd";
+    double b = pn->badness[t];
+    if (isfinite(b)) report_got_colour(hi > lo ? (b - lo) / (hi - lo) : 0, col, sizeof col);
+    const uint32_t *w = pn->tri + 3 * t;
+    fprintf(f, "<polygon fill=\"%s\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", col,
+            report_lot_px(v, p[w[0]].x), report_lot_py(v, p[w[0]].y),
+            report_lot_px(v, p[w[1]].x), report_lot_py(v, p[w[1]].y),
+            report_lot_px(v, p[w[2]].x), report_lot_py(v, p[w[2]].y));
+  }
+  fprintf(f, "<path fill=\"none\" stroke=\"#1f4e79\" stroke-width=\"%.2f\" d=\"", hair);
+  for (size_t t = 0; t < pn->ntri; t++) {
+    const uint32_t *w = pn->tri + 3 * t;
+    fprintf(f, "M%.2f %.2fL%.2f %.2fL%.2f %.2fZ", report_lot_px(v, p[w[0]].x),
+            report_lot_py(v, p[w[0]].y), report_lot_px(v, p[w[1]].x),
+            report_lot_py(v, p[w[1]].y), report_lot_px(v, p[w[2]].x),
+            report_lot_py(v, p[w[2]].y));
+  }
+  fprintf(f, "\"/>\n<g fill=\"black\">\n");
+  for (size_t q = 0; q < n; q++)
+    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.1f\"/>\n", report_lot_px(v, p[q].x),
+            report_lot_py(v, p[q].y), dot);
+  fprintf(f, "</g>\n");
+}
+
+int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
+                   int npanels, int shade, const char *title) {
+  report_lot_view v = {p[0].x, p[0].y, 1, REPORT_LOT_MARGIN};
+  double maxx = p[0].x, miny = p[0].y;
+  for (size_t q = 1; q < n; q++) {
+    if (p[q].x < v.minx) v.minx = p[q].x;
+    if (p[q].x > maxx) maxx = p[q].x;
+    if (p[q].y < miny) miny = p[q].y;
+    if (p[q].y > v.maxy) v.maxy = p[q].y;
+  }
+  double w = maxx - v.minx, h = v.maxy - miny, big = w > h ? w : h;
+  v.s = big > 0 ? REPORT_LOT_SIZE / big : 1;
+  double pw = w * v.s + 2 * REPORT_LOT_MARGIN;
+  double width = pw * npanels, height = h * v.s + REPORT_LOT_TOP + REPORT_LOT_CAPTION +
+                                        REPORT_LOT_MARGIN + (shade ? 26 : 0);
+  if (width < 420) width = 420;
+  fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
+             "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n"
+             "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+          width, height, width, height);
+  if (title) report_got_text(f, REPORT_LOT_MARGIN, 20, 14, title);
+  double lo, hi;
+  report_lot_range(panels, npanels, &lo, &hi);
+  for (int k = 0; k < npanels; k++) {
+    v.x0 = REPORT_LOT_MARGIN + k * pw;
+    report_lot_panel_draw(f, p, n, &panels[k], &v, shade, lo, hi);
+  }
+  if (shade && hi >= lo) {
+    double y = height - 20;
+    for (int s = 0; s < 20; s++) {
+      char col[16];
+      report_got_colour(s / 19.0, col, sizeof col);
+      fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
+              REPORT_LOT_MARGIN + 120 + 10 * s, y, col);
+    }
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
+            REPORT_LOT_MARGIN, y + 9, lo);
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
+            REPORT_LOT_MARGIN + 325, y + 9, hi);
+  }
+  fprintf(f, "</svg>\n");
+  return ferror(f) ? -1 : 0;
+}
