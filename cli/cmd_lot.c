@@ -19,42 +19,49 @@
 #define CMD "lot"
 #define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
 
-static const char cli_lot_usage[] =
-  "usage: fliplab lot --rule RULE (--points FILE.csv | --random N [--sampler NAME]\n"
-  "                   [--seed S]) [--algorithm incremental|flip]\n"
-  "                   [--order input|random|spatial] [--max-flips N] [--check]\n"
-  "                   [--compare DT|GOT] [--out FILE.csv] [--svg FILE [--shade]]\n"
-  "                   [--tie-eps E] [--threads T]\n"
-  "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
-  "edge of a strictly convex quadrilateral is the diagonal the rule keeps.\n\n"
-  "  --rule RULE        DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
-  "                     measure with a joint, or a --plugin quadrilateral rule\n"
-  "  --points FILE      CSV, one point 'x,y' per row (optional header 'x,y');\n"
-  "                     output indices are the file's rows, 0-based\n"
-  "  --random N         N random points from --sampler (default uniform): uniform\n"
-  "                     (unit square), normal, disc, grid (integer grid, row by row),\n"
-  "                     parabola ((i, i^2), i = N..1), circle (unit circle)\n"
-  "  --seed S           the sampler's and the random order's seed (default 1)\n"
-  "  --algorithm A      incremental (default): insert, then flip back to a LOT;\n"
-  "                     flip: sweep triangulation, then Lawson's flip algorithm\n"
-  "  --order O          incremental insertion order: spatial (default: BRIO rounds\n"
-  "                     along a Hilbert curve), random, input\n"
-  "  --max-flips N      stop after N flips: status 'budget exhausted'\n"
-  "                     (default 1000 N + 10^7)\n"
-  "  --check            re-verify every interior edge from scratch\n"
-  "  --compare DT       edges and triangles shared with the exact Delaunay\n"
-  "                     triangulation\n"
-  "  --compare GOT      points in convex position, triangle-based rule: the LOT's\n"
-  "                     total badness against the GOT's\n"
-  "  --out FILE         write the triangles as CSV: i,j,k,badness (anticlockwise;\n"
-  "                     badness empty for DT and quadrilateral rules)\n"
-  "  --svg FILE         draw the triangulation (next to the DT with --compare DT);\n"
-  "                     --shade fills triangles by badness\n"
-  "  --tie-eps E        relative tolerance under which a triangle rule ties (1e-12)\n"
-  "  --threads T        OpenMP threads for --compare GOT (default: all); the LOT\n"
-  "                     itself is sequential and does not depend on T\n"
-  "Exit status: 0 (also for status cycle or budget exhausted), 1 when --check\n"
-  "fails, 2 for bad usage or input.\n";
+static const cli_option cli_lot_opts[] = {
+  {"--rule", "RULE", "required",
+   "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
+   "                     measure with a joint, or a --plugin quadrilateral rule"},
+  {"--points", "FILE.csv", "none: give --points or --random",
+   "CSV, one point 'x,y' per row (optional header 'x,y');\n"
+   "                     output indices are the file's rows, 0-based"},
+  {"--random", "N", "none", "N random points from --sampler"},
+  {"--sampler", "NAME", "uniform",
+   "uniform (unit square), normal, disc, grid (integer grid,\n"
+   "                     row by row), parabola ((i, i^2), i = N..1), circle"},
+  {"--seed", "S", "1", "the sampler's and the random order's seed"},
+  {"--algorithm", "A", "incremental",
+   "incremental: insert, then flip back to a LOT; flip: a\n"
+   "                     sweep triangulation, then Lawson's flip algorithm"},
+  {"--order", "O", "spatial",
+   "insertion order: spatial (BRIO rounds along a Hilbert\n"
+   "                     curve), random, input"},
+  {"--max-flips", "N", "1000 n + 10^7", "stop after N flips: status 'budget exhausted'"},
+  {"--check", NULL, NULL, "re-verify local optimality of every interior edge from scratch"},
+  {"--compare", "DT|GOT", "none",
+   "DT: edges and triangles shared with the exact Delaunay\n"
+   "                     triangulation; GOT (convex position, triangle rule):\n"
+   "                     the LOT's total badness against the GOT's"},
+  {"--out", "FILE.csv", "none",
+   "write the triangles: i,j,k,badness (anticlockwise;\n"
+   "                     badness empty for DT and quadrilateral rules)"},
+  {"--svg", "FILE.svg", "none", "draw the LOT (next to the DT with --compare DT)"},
+  {"--shade", NULL, NULL, "with --svg: fill the triangles by badness (light = good)"},
+  {"--tie-eps", "E", "1e-12", "relative tolerance under which a triangle rule ties"},
+  {"--threads", "T", "all cores",
+   "OpenMP threads for --compare GOT; the LOT itself is\n"
+   "                     sequential and does not depend on T"},
+};
+
+static void cli_lot_usage(void) {
+  cli_help(stdout, "usage: fliplab lot --rule RULE (--points FILE.csv | --random N) [options]",
+           "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
+           "edge of a strictly convex quadrilateral is the diagonal the rule keeps\n"
+           "(docs/lot.md).  Exit status 0 (also for status cycle or budget exhausted),\n"
+           "1 when --check fails, 2 for bad usage or input.\n",
+           cli_lot_opts, CLI_NOPTS(cli_lot_opts));
+}
 
 typedef struct cli_lot_args {
   const char *rule, *points, *sampler, *algorithm, *order, *compare, *out, *svg;
@@ -64,12 +71,8 @@ typedef struct cli_lot_args {
 } cli_lot_args;
 
 static int cli_lot_value_opt(const char *o) {
-  static const char *const opts[] = {"--rule", "--points", "--random", "--sampler", "--seed",
-                                     "--algorithm", "--order", "--max-flips", "--compare",
-                                     "--out", "--svg", "--tie-eps", "--threads"};
-  for (size_t i = 0; i < sizeof opts / sizeof opts[0]; i++)
-    if (strcmp(o, opts[i]) == 0) return 1;
-  return 0;
+  const cli_option *op = cli_option_find(o, cli_lot_opts, CLI_NOPTS(cli_lot_opts));
+  return op != NULL && op->arg != NULL;
 }
 
 static int cli_lot_parse(int argc, char **argv, cli_lot_args *a) {
@@ -82,8 +85,11 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a) {
     else if (strcmp(o, "--algorithm") == 0) a->algorithm = v;
     else if (strcmp(o, "--order") == 0) a->order = v;
     else if (strcmp(o, "--compare") == 0) a->compare = v;
-    else if (strcmp(o, "--out") == 0) a->out = v;
-    else if (strcmp(o, "--svg") == 0) a->svg = v;
+    else if (strcmp(o, "--out") == 0) {
+      if (cli_check_out_ext(CMD, o, a->out = v, "csv") != 0) return 2;
+    } else if (strcmp(o, "--svg") == 0) {
+      if (cli_check_out_ext(CMD, o, a->svg = v, "svg") != 0) return 2;
+    }
     else if (strcmp(o, "--random") == 0) {
       if (cli_parse_u64(CMD, o, v, 3, CLI_LOT_MAX_N, &a->random) != 0) return 2;
     } else if (strcmp(o, "--seed") == 0) {
@@ -96,7 +102,7 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a) {
       if (cli_parse_double(CMD, o, v, 0, 1, &a->tie_eps) != 0) return 2;
     } else if (strcmp(o, "--check") == 0) a->check = 1;
     else if (strcmp(o, "--shade") == 0) a->shade = 1;
-    else return cli_error(CMD, "unknown option '%s' (try: fliplab lot --help)", o);
+    else return cli_unknown_option(CMD, o, cli_lot_opts, CLI_NOPTS(cli_lot_opts));
   }
   return 0;
 }
@@ -275,8 +281,8 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
   if (a->out) {
     FILE *f = cli_open_out(CMD, a->out);
     if (f == NULL) return 2;
-    int bad_w = report_lot_csv(f, tri, ntri, bad) != 0;
-    if (cli_close_out(f) != 0 || bad_w) return cli_error(CMD, "write error on %s", a->out);
+    report_lot_csv(f, tri, ntri, bad);
+    if (cli_close_out(f) != 0) return 1;   /* it said why */
   }
   if (a->svg) {
     FILE *f = cli_open_out(CMD, a->svg);
@@ -286,8 +292,8 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
     snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
     snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
     report_lot_panel pn[2] = {{tri, ntri, bad, cap[0]}, {dt, ndt, NULL, cap[1]}};
-    int bad_w = report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title) != 0;
-    if (cli_close_out(f) != 0 || bad_w) return cli_error(CMD, "write error on %s", a->svg);
+    report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title);
+    if (cli_close_out(f) != 0) return 1;
   }
   return 0;
 }
@@ -297,7 +303,7 @@ static const char *const cli_lot_order_name[] = {"spatial", "input", "random"};
 int cli_cmd_lot(int argc, char **argv) {
   for (int i = 1; i < argc; i++)
     if (cli_is_help(argv[i])) {
-      fputs(cli_lot_usage, stdout);
+      cli_lot_usage();
       return 0;
     }
   cli_lot_args a = {0};
@@ -310,7 +316,7 @@ int cli_cmd_lot(int argc, char **argv) {
   lot_options o;
   lot_options_init(&o, &r);
   if ((rc = cli_lot_validate(&a, &o)) != 0) return rc;
-  if (rule_parse(a.rule, &r, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
   o.r = r;
   o.seed = a.seed;
   o.max_flips = a.max_flips;
