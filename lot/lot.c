@@ -330,13 +330,11 @@ static int lot_validate(const geom_point *p, size_t n, char *err, size_t errlen)
     return -1;
   }
   for (size_t i = 0; i < n; i++) {
-    if (!geom_point_finite(p[i])) {
-      snprintf(err, errlen, "point %zu (%g, %g) has a non-finite coordinate", i, p[i].x, p[i].y);
-      return -1;
-    }
-    if (fabs(p[i].x) > GEOM_MAX_COORD || fabs(p[i].y) > GEOM_MAX_COORD) {
-      snprintf(err, errlen, "point %zu (%g, %g) is out of scale: |coordinate| > %g", i,
-               p[i].x, p[i].y, GEOM_MAX_COORD);
+    geom_coorderr e = geom_coord_check(p[i].x);
+    if (e == GEOM_COORD_OK) e = geom_coord_check(p[i].y);
+    if (e != GEOM_COORD_OK) {
+      snprintf(err, errlen, "point %zu (%g, %g): a coordinate %s", i, p[i].x, p[i].y,
+               geom_coorderr_str(e));
       return -1;
     }
   }

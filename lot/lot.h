@@ -88,8 +88,8 @@ typedef struct lot lot;
 
 /* Triangulate p[0 .. n-1] and flip to a LOT of o->r.  0 on success, or -1
 ** with a one-line message in err: fewer than three distinct points, all
-** collinear, a non-finite coordinate or one beyond GEOM_MAX_COORD (naming
-** the row), too many points, out of memory. */
+** collinear, a coordinate outside the contract of geom.h (geom_coord_check,
+** naming the point), too many points, out of memory. */
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
               char *err, size_t errlen);
 

@@ -29,12 +29,10 @@ static int report_lot_record(char **f, int nf, uint64_t line, void *data) {
   }
   double xy[2];
   for (int q = 0; q < 2; q++) {
-    char *end;
-    errno = 0;
-    xy[q] = strtod(f[q], &end);
-    if (f[q][0] == '\0' || *end != '\0' || errno == ERANGE || !isfinite(xy[q])) {
-      snprintf(r->err, r->errlen, "%s line %llu: '%.40s' is not a finite number", r->path, ln,
-               f[q]);
+    geom_coorderr e = geom_coord_parse(f[q], &xy[q]);
+    if (e != GEOM_COORD_OK) {
+      snprintf(r->err, r->errlen, "%s line %llu: '%.40s' %s", r->path, ln, f[q],
+               geom_coorderr_str(e));
       return -1;
     }
   }

@@ -428,9 +428,12 @@ static void test_bad_input(void **state) {
   geom_point nan[] = {{0, 0}, {1, 0}, {NAN, 1}};
   assert_int_equal(lot_build(&L, nan, 3, &o, err, sizeof err), -1);
   assert_non_null(strstr(err, "point 2"));
-  geom_point big[] = {{0, 0}, {1, 0}, {0, 2 * GEOM_MAX_COORD}};
+  geom_point big[] = {{0, 0}, {1, 0}, {0, 10 * GEOM_COORD_MAX}};
   assert_int_equal(lot_build(&L, big, 3, &o, err, sizeof err), -1);
-  assert_non_null(strstr(err, "out of scale"));
+  assert_non_null(strstr(err, "out of range"));
+  geom_point tiny[] = {{0, 0}, {1, 0}, {0, GEOM_COORD_MIN / 10}};
+  assert_int_equal(lot_build(&L, tiny, 3, &o, err, sizeof err), -1);
+  assert_non_null(strstr(err, "point 2"));
   assert_true(testutil_one_line(err) || strchr(err, '\n') == NULL);
 }
 
