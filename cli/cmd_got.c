@@ -288,11 +288,25 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
   if (a->svg) {
     FILE *f = cli_open_out(CMD, a->svg);
     if (f == NULL) return 2;
-    char title[200];
-    snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s", r->name, res->n, tot,
-             a->shade ? "; shaded by triangle badness" : "");
+    char title[300];
+    snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s%s", r->name, res->n, tot,
+             a->shade ? "; shaded by triangle badness" : "",
+             a->compare ? "; dashed red: Delaunay diagonals not in the GOT" : "");
     report_got_svg_opts so = {.shade = a->shade, .title = title, .labels = map};
-    report_got_svg(f, p, res->n, res->tri, res->ntri, &so);
+    /* --compare DT: the Delaunay diagonals the GOT lacks, dashed on top. */
+    got_triangle *dt = a->compare ? malloc(res->n * sizeof *dt) : NULL;
+    int unique;
+    if (dt != NULL && got_delaunay(p, res->n, dt, &unique) == 0) {
+      so.overlay = dt;
+      so.noverlay = res->n - 2;
+      so.overlay_name = "DT";
+    }
+    int w = report_got_svg(f, p, res->n, res->tri, res->ntri, &so);
+    free(dt);
+    if (w != 0 && !ferror(f)) {
+      cli_abort_out(f);
+      return cli_error(CMD, "out of memory drawing '%s'", a->svg);
+    }
     if (cli_close_out(f) != 0) return 1;
   }
   return 0;

@@ -203,6 +203,9 @@ typedef struct report_got_svg_opts {
   const char *title;    /* one line above the picture, or NULL */
   const size_t *labels; /* vertex numbers to print (n <= 60), e.g. the input's
                            rows; NULL: 0..n-1 */
+  const got_triangle *overlay;  /* another triangulation of the polygon (e.g. DT), or NULL: */
+  size_t noverlay;              /* its diagonals missing from t are drawn dashed red on top */
+  const char *overlay_name;     /* its name in the legend, e.g. "DT" */
 } report_got_svg_opts;
 
 /* The polygon (any simple one), its triangulation and (small) vertices,

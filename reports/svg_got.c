@@ -15,6 +15,7 @@
 ** chord (i, j) of exactly one triangle of the programme's tree.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include "report.h"
 
@@ -117,6 +118,56 @@ static void report_got_diagonals(FILE *f, const report_got_view *v, const geom_p
   fprintf(f, "\"/>\n");
 }
 
+static int report_got_pair_cmp(const void *x, const void *y) {
+  const size_t *a = x, *b = y;
+  return a[0] != b[0] ? (a[0] > b[0]) - (a[0] < b[0]) : (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* The diagonals (i, j), i < j, of a triangulation's triangles (i, k, j),
+** sorted; polygon edges are left out.  *m pairs into a malloc'ed array. */
+static size_t *report_got_chords(const got_triangle *t, size_t ntri, size_t n, size_t *m) {
+  size_t *c = malloc((ntri > 0 ? ntri : 1) * 2 * sizeof *c);
+  *m = 0;
+  if (c == NULL) return NULL;
+  for (size_t q = 0; q < ntri; q++) {
+    size_t i = (size_t)t[q].i, j = (size_t)t[q].j;
+    if (i > j) { size_t s = i; i = j; j = s; }
+    if (j - i == 1 || (i == 0 && j == n - 1)) continue;
+    c[2 * *m] = i;
+    c[2 * *m + 1] = j;
+    (*m)++;
+  }
+  qsort(c, *m, 2 * sizeof *c, report_got_pair_cmp);
+  return c;
+}
+
+/* The overlay's diagonals that the drawn triangulation lacks, dashed red on
+** top (the caller's title says so); -1 if out of memory. */
+static int report_got_overlay(FILE *f, const report_got_view *v, const geom_point *p, size_t n,
+                              const got_triangle *t, size_t ntri, const report_got_svg_opts *o) {
+  size_t ma, mb, shown = 0;
+  size_t *a = report_got_chords(t, ntri, n, &ma), *b = report_got_chords(o->overlay, o->noverlay, n, &mb);
+  if (a == NULL || b == NULL) {
+    free(a);
+    free(b);
+    return -1;
+  }
+  fprintf(f, "<path fill=\"none\" stroke=\"#d62728\" stroke-dasharray=\"%.2f %.2f\" "
+             "stroke-width=\"%.2f\" d=\"", 4 * v->hair, 3 * v->hair, 1.5 * v->hair);
+  for (size_t q = 0; q < mb; q++) {
+    if (bsearch(&b[2 * q], a, ma, 2 * sizeof *a, report_got_pair_cmp) != NULL) continue;
+    size_t i = b[2 * q], j = b[2 * q + 1];
+    fprintf(f, "M%.2f %.2fL%.2f %.2f", report_got_px(v, p[i].x), report_got_py(v, p[i].y),
+            report_got_px(v, p[j].x), report_got_py(v, p[j].y));
+    shown++;
+  }
+  fprintf(f, "\"><title>%zu diagonals of %s not in this triangulation</title></path>\n", shown,
+          o->overlay_name ? o->overlay_name : "the other triangulation");
+  free(a);
+  free(b);
+  return 0;
+}
+
 static void report_got_outline(FILE *f, const report_got_view *v, const geom_point *p, size_t n) {
   fprintf(f, "<polygon fill=\"none\" stroke=\"black\" stroke-width=\"%.2f\" points=\"",
           v->hair * 2.5);
@@ -178,6 +229,7 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
   report_got_tri_range(t, ntri, &bmin, &bmax);
   if (shade) report_got_shade(f, &v, p, t, ntri, bmin, bmax);
   report_got_diagonals(f, &v, p, n, t, ntri);
+  if (o && o->overlay && report_got_overlay(f, &v, p, n, t, ntri, o) != 0) return -1;
   report_got_outline(f, &v, p, n);
   if (n <= REPORT_GOT_LABEL_N) report_got_labels(f, &v, p, n, o ? o->labels : NULL);
   if (shade && bmax >= bmin) report_got_legend(f, &v, bmin, bmax);

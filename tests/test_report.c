@@ -419,6 +419,37 @@ static void test_scatter_legend(void **state) {
   free(s);
 }
 
+/* --compare DT's overlay: exactly the other triangulation's diagonals that
+** the drawn one lacks, dashed red; none when the two are the same. */
+static int trep_red_segments(const geom_point *p, size_t n, const got_triangle *t,
+                             const got_triangle *other) {
+  report_got_svg_opts o = {.overlay = other, .noverlay = n - 2, .overlay_name = "DT"};
+  FILE *f = tmpfile();
+  assert_int_equal(report_got_svg(f, p, n, t, n - 2, &o), 0);
+  char *s = trep_slurp(f);
+  fclose(f);
+  char *red = strstr(s, "stroke=\"#d62728\"");
+  assert_non_null(red);
+  char *d = strstr(red, " d=\""), *end = strchr(d + 4, '"');
+  int m = 0;
+  for (char *c = d + 4; c < end; c++) m += *c == 'M';
+  assert_non_null(strstr(end, "diagonals of DT not in this triangulation"));
+  free(s);
+  return m;
+}
+
+static void test_got_overlay(void **state) {
+  (void)state;
+  const geom_point hex[6] = {{0, 0}, {2, 0}, {3, 1}, {2, 3}, {0, 2}, {-1, 1}};
+  /* Fans at vertex 0 and at vertex 1 share no diagonal; a mixed one shares one. */
+  const got_triangle fan0[4] = {{0, 1, 2, 0}, {0, 2, 3, 0}, {0, 3, 4, 0}, {0, 4, 5, 0}};
+  const got_triangle fan1[4] = {{1, 2, 3, 0}, {1, 3, 4, 0}, {1, 4, 5, 0}, {0, 1, 5, 0}};
+  const got_triangle mix[4] = {{0, 1, 2, 0}, {0, 2, 5, 0}, {2, 3, 5, 0}, {3, 4, 5, 0}};
+  assert_int_equal(trep_red_segments(hex, 6, fan0, fan1), 3);
+  assert_int_equal(trep_red_segments(hex, 6, fan0, fan0), 0);
+  assert_int_equal(trep_red_segments(hex, 6, fan0, mix), 2);   /* (2,5), (3,5) */
+}
+
 /* Pentagons: %.17g reads back bit for bit; clockwise rows are reversed
 ** keeping the first vertex; bad rows name their line and problem. */
 static void test_pentagon_files(void **state) {
@@ -494,6 +525,7 @@ int main(void) {
     cmocka_unit_test(test_md_table),
     cmocka_unit_test(test_scatter),
     cmocka_unit_test(test_scatter_legend),
+    cmocka_unit_test(test_got_overlay),
     cmocka_unit_test(test_pentagon_files),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
