@@ -122,6 +122,10 @@ void cli_progress_finish(cli_progress *p);
 ** status was 0 but some output or stdout could not be written/renamed. */
 FILE *cli_open_out(const char *cmd, const char *path);
 int cli_close_out(FILE *f);
+/* cli_close_out for a stream a writer returning wrc (0 or -1) just filled:
+** 1 after the one-line error (the stream's, or "out of memory" when the
+** writer failed with the stream intact), else 0.  NULL f: 0. */
+int cli_finish_out(const char *cmd, FILE *f, int wrc);
 void cli_abort_out(FILE *f);
 int cli_outputs_finish(const char *cmd, int status);
 

@@ -151,7 +151,9 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
   sampler_rng g;
   sampler_seed(&g, a->seed, 0);
   const cli_got_sampler *s = &cli_got_samplers[a->sampler ? cli_got_sampler_find(a->sampler) : 0];
-  if (s->fn(&g, *n, *p) != 0)
+  int src = s->fn(&g, *n, *p);
+  if (src == SAMPLER_ENOMEM) return cli_error(CMD, "out of memory");
+  if (src != 0)
     return cli_error(CMD, "the %s sampler could not make %s %zu-gon in floating point "
                      "(points too close); use a smaller N", s->name, s->what, *n);
   snprintf(desc, desclen, "random %zu-gon (%s sampler, seed %llu)", *n, s->name,
@@ -282,8 +284,7 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
   if (a->csv) {
     FILE *f = cli_open_out(CMD, a->csv);
     if (f == NULL) return 2;
-    report_got_csv(f, res->tri, res->ntri, map);
-    if (cli_close_out(f) != 0) return 1;
+    if (cli_finish_out(CMD, f, report_got_csv(f, res->tri, res->ntri, map)) != 0) return 1;
   }
   if (a->svg) {
     FILE *f = cli_open_out(CMD, a->svg);
@@ -296,6 +297,7 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
     /* --compare DT: the Delaunay diagonals the GOT lacks, dashed on top. */
     got_triangle *dt = a->compare ? malloc(res->n * sizeof *dt) : NULL;
     int unique;
+    if (a->compare && dt == NULL) return cli_error(CMD, "out of memory");
     if (dt != NULL && got_delaunay(p, res->n, dt, &unique) == 0) {
       so.overlay = dt;
       so.noverlay = res->n - 2;
@@ -303,11 +305,7 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
     }
     int w = report_got_svg(f, p, res->n, res->tri, res->ntri, &so);
     free(dt);
-    if (w != 0 && !ferror(f)) {
-      cli_abort_out(f);
-      return cli_error(CMD, "out of memory drawing '%s'", a->svg);
-    }
-    if (cli_close_out(f) != 0) return 1;
+    if (cli_finish_out(CMD, f, w) != 0) return 1;
   }
   return 0;
 }

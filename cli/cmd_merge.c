@@ -181,9 +181,10 @@ static int cli_merge_write34(const cli_merge_opts *o, const report_row *rows, in
   report_meta meta = {.samples = run->end - run->first, .has_seed = 1, .seed = run->seed,
                       .has_tie_eps = 1, .tie_eps = run->tie_eps, .note = note,
                       .text_columns = (int)o->columns, .run = run};
-  report_write(out, o->fmt, &meta, rows, nrows);
-  if (plot != NULL) report_scatter_svg(plot, &meta, rows, nrows);
-  return cli_close_out(out) != 0 || cli_close_out(plot) != 0 ? 1 : 0;
+  int rc = cli_finish_out(CMD, out, report_write(out, o->fmt, &meta, rows, nrows));
+  if (rc == 0 && plot != NULL)
+    rc = cli_finish_out(CMD, plot, report_scatter_svg(plot, &meta, rows, nrows));
+  return rc;
 }
 
 static int cli_merge_table34(const cli_merge_opts *o, cli_merge_input *in) {

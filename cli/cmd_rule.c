@@ -273,8 +273,7 @@ static int cli_rule_svg(const char *path, const rule *r, const cli_rule_opts *o,
            r->name, flipgraph_type_name(g->type), (unsigned long long)idx,
            (unsigned long long)o->seed, o->tie_eps, p->v[0].x, p->v[0].y, p->v[1].x, p->v[1].y,
            p->v[2].x, p->v[2].y, p->v[3].x, p->v[3].y, p->v[4].x, p->v[4].y);
-  report_flipgraph_svg(f, p, g, cap);
-  return cli_close_out(f) != 0 ? 1 : 0;
+  return cli_finish_out("rule", f, report_flipgraph_svg(f, p, g, cap));
 }
 
 /* Witnesses are re-derived from their index with the one-rule reference

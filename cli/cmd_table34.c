@@ -262,7 +262,7 @@ int cli_cmd_table34(int argc, char **argv) {
                             counts, cli_progress_update, &prog);
     cli_progress_finish(&prog);
     if (t != 0) {
-      cli_error(CMD, "classification failed");
+      cli_error(CMD, "out of memory");   /* the tally fails only to allocate */
       rc = 1;
       goto done;
     }
@@ -288,9 +288,12 @@ int cli_cmd_table34(int argc, char **argv) {
             (unsigned long long)iv);
   /* A failed write sets the stream's error flag, which cli_close_out
   ** reports (once, naming the file). */
-  report_write(out, o.format, &meta, rows, nrules);
-  if (plot != NULL) report_scatter_svg(plot, &meta, rows, nrules);
-  rc = cli_close_out(out) != 0 || cli_close_out(plot) != 0 ? 1 : 0;
+  int w = report_write(out, o.format, &meta, rows, nrules);
+  rc = cli_finish_out(CMD, out, w);
+  if (rc == 0 && plot != NULL)
+    rc = cli_finish_out(CMD, plot, report_scatter_svg(plot, &meta, rows, nrules));
+  else
+    cli_abort_out(plot);
   out = plot = NULL;
 done:
   cli_abort_out(out);     /* only on an early exit: nothing to keep */

@@ -307,6 +307,17 @@ int cli_close_out(FILE *f) {
   return cli_out_close(o, 0);
 }
 
+int cli_finish_out(const char *cmd, FILE *f, int wrc) {
+  if (f == NULL) return 0;
+  if (cli_close_out(f) != 0) return 1;
+  /* The writer failed but the stream did not: it could not allocate. */
+  if (wrc != 0) {
+    cli_error(cmd, "out of memory");
+    return 1;
+  }
+  return 0;
+}
+
 void cli_abort_out(FILE *f) {
   cli_out *o = f == NULL || f == stdout ? NULL : cli_out_of(f);
   if (o == NULL) return;

@@ -94,8 +94,8 @@ int sampler_vector(sampler_rng *g, size_t n, geom_point *out) {
   if (n < 3) return -1;
   sampler_dir *d = malloc(n * sizeof *d);
   double *tmp = malloc(n * sizeof *tmp);
-  int rc = -1;
-  if (d != NULL && tmp != NULL)
+  int rc = d != NULL && tmp != NULL ? -1 : SAMPLER_ENOMEM;
+  if (rc == -1)
     for (int t = 0; t < SAMPLER_TRIES && rc != 0; t++) rc = sampler_vector_once(g, n, out, d, tmp);
   free(d);
   free(tmp);
@@ -110,7 +110,7 @@ static int sampler_cmp_double(const void *a, const void *b) {
 int sampler_circle(sampler_rng *g, size_t n, geom_point *out) {
   if (n < 3) return -1;
   double *th = malloc(n * sizeof *th);
-  if (th == NULL) return -1;
+  if (th == NULL) return SAMPLER_ENOMEM;
   int rc = -1;
   for (int t = 0; t < SAMPLER_TRIES && rc != 0; t++) {
     for (size_t i = 0; i < n; i++) th[i] = SAMPLER_2PI * sampler_uniform(g);

@@ -39,7 +39,10 @@ void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]);
 ** Delaunay-equivalence check of `fliplab rule`, and the tests). */
 void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 
-/* Convex n-gons, anticlockwise, strictly convex, n >= 3. 0 on success. */
+/* Convex n-gons, anticlockwise, strictly convex, n >= 3.  0 on success,
+** SAMPLER_ENOMEM when memory ran out, -1 when no strictly convex n-gon
+** came out in floating point. */
+#define SAMPLER_ENOMEM (-2)
 int sampler_vector(sampler_rng *g, size_t n, geom_point *out);
 int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
 
