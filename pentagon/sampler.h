@@ -49,7 +49,8 @@ int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
 /* Simple (generally non-convex) n-gons, anticlockwise, checked exactly
 ** (pentagon/simplepoly.c): star-shaped from sorted random angles and radii,
 ** or x-monotone from random points split by the line through the extreme
-** two.  0 on success, -1 when 100 draws all failed the check. */
+** two.  0 on success, SAMPLER_ENOMEM when memory ran out, -1 when 100
+** draws all failed the check. */
 int sampler_star(sampler_rng *g, size_t n, geom_point *out);
 int sampler_monotone(sampler_rng *g, size_t n, geom_point *out);
 

@@ -48,7 +48,7 @@ int sampler_star(sampler_rng *g, size_t n, geom_point *out) {
   if (n < 3) return -1;
   double *t = malloc(n * sizeof *t);
   geom_point *scratch = malloc(n * sizeof *scratch);
-  int rc = -1;
+  int rc = t != NULL && scratch != NULL ? -1 : SAMPLER_ENOMEM;
   for (int tries = 0; t && scratch && tries < SAMPLER_SIMPLE_TRIES && rc != 0; tries++) {
     for (size_t i = 0; i < n; i++) t[i] = SAMPLER_SIMPLE_2PI * sampler_uniform(g);
     qsort(t, n, sizeof *t, sampler_double_cmp);
@@ -66,7 +66,7 @@ int sampler_star(sampler_rng *g, size_t n, geom_point *out) {
 int sampler_monotone(sampler_rng *g, size_t n, geom_point *out) {
   if (n < 3) return -1;
   geom_point *q = malloc(n * sizeof *q), *scratch = malloc(n * sizeof *scratch);
-  int rc = -1;
+  int rc = q != NULL && scratch != NULL ? -1 : SAMPLER_ENOMEM;
   for (int tries = 0; q && scratch && tries < SAMPLER_SIMPLE_TRIES && rc != 0; tries++) {
     for (size_t i = 0; i < n; i++) {
       double x = sampler_uniform(g);
