@@ -420,6 +420,8 @@ static int got_solve_shape(const geom_point *p, size_t n, int threads, int force
   if (*V == NULL || got_valid_diagonals(p, n, *V, threads) != 0) goto oom;
   return 0;
 oom:
+  free(*V);                   /* the table may be there when its filling failed */
+  *V = NULL;
   snprintf(err, errlen, "out of memory for the diagonals of n = %zu", n);
   return -1;
 }
