@@ -40,7 +40,7 @@ static const char *const tf_cmds[] = {
   "merge %1$s/s1.csv %1$s/s2.csv --out %1$s/out.csv --plot %1$s/plot.svg",
   "merge %1$s/s1.csv %1$s/s2.csv --format text",
   "classify --input %1$s/pent.csv --rule R_inf --rule DT --out %1$s/out.csv",
-  "got --rule P_1 --random 7 --csv %1$s/out.csv --svg %1$s/plot.svg",
+  "got --rule P_1 --random 7 --csv %1$s/out.csv --svg %1$s/plot.svg --compare DT",
   "got --rule R_inf --polygon %1$s/poly.csv",
   "got --rule P_1 --random 6 --sampler star",
   "rule R_inf --samples 40 --quads 40",
