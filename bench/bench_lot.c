@@ -1,7 +1,7 @@
 /*
 ** bench_lot.c: locally optimal triangulations of many points.
 **
-**   bench_lot [N [RUNS [SEED]]]      (defaults 1000000, 3, 1)
+**   bench_lot [N [RUNS [SEED [RULE_RUNS]]]]      (defaults 1000000, 3, 1, 1)
 **
 ** On N uniform random points in the unit square (sampler "uniform"):
 **   1. the Delaunay triangulation (default algorithm: incremental, BRIO +
@@ -13,7 +13,7 @@
 **   2. peak memory: a child process builds the DT and reports its peak
 **      resident set (getrusage), input points included, in bytes per point;
 **   3. every built-in triangle-based rule with joint l_1: time (median of
-**      RUNS), ratio to fliplab's DT time, flips per point, status.
+**      RULE_RUNS), ratio to fliplab's DT time, flips per point, status.
 ** Times cover the triangulation only (input validation, ordering,
 ** insertion, flips), not sampling or output.
 */
@@ -102,15 +102,16 @@ int main(int argc, char **argv) {
   size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 1000000;
   int runs = argc > 2 ? atoi(argv[2]) : 3;
   uint64_t seed = argc > 3 ? strtoull(argv[3], NULL, 10) : 1;
-  if (n < 3 || runs < 1 || runs > 15) {
-    fprintf(stderr, "usage: bench_lot [N >= 3 [RUNS 1..15 [SEED]]]\n");
+  int rule_runs = argc > 4 ? atoi(argv[4]) : 1;
+  if (n < 3 || runs < 1 || runs > 15 || rule_runs < 1 || rule_runs > 15) {
+    fprintf(stderr, "usage: bench_lot [N >= 3 [RUNS 1..15 [SEED [RULE_RUNS 1..15]]]]\n");
     return 2;
   }
   geom_point *p = malloc(n * sizeof *p);
   if (p == NULL) return 1;
   sampler_points(SAMPLER_UNIFORM, seed, n, p);
-  printf("# bench_lot: %zu uniform points (seed %llu), median of %d runs\n", n,
-         (unsigned long long)seed, runs);
+  printf("# bench_lot: %zu uniform points (seed %llu), DT and CGAL median of %d runs, "
+         "rules median of %d\n", n, (unsigned long long)seed, runs, rule_runs);
   double rss = bench_peak_rss(p, n);
   rule dt = rule_delaunay();
   uint64_t flips;
@@ -130,7 +131,7 @@ int main(int argc, char **argv) {
     rule r;
     char err[256];
     if (rule_triangle(m, JOINT_SUM, &r, err, sizeof err) != 0) continue;
-    double t = bench_rule(p, n, &r, runs, &flips, &status);
+    double t = bench_rule(p, n, &r, rule_runs, &flips, &status);
     printf("| %s | incremental, spatial | %.3f | %.2f | %.3f | %s |\n", r.name, t, t / tdt,
            (double)flips / (double)n,
            status == LOT_CONVERGED ? "converged" : status == LOT_CYCLE ? "cycle" : "budget");
