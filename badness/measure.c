@@ -126,3 +126,8 @@ void measure_names(char *buf, size_t len) {
     used += (size_t)n;
   }
 }
+
+int measure_needs_angles(int id) {
+  return id >= MEASURE_BUILTIN_COUNT || id == MEASURE_NEG_ALPHA || id == MEASURE_BETA ||
+         id == MEASURE_GAMMA || id == MEASURE_SIGMA;
+}

@@ -63,6 +63,11 @@ static inline double measure_eval(int id, const geom_tri *t) {
 ** built-ins are evaluated inline, without a call each (hot paths). */
 void measure_eval_all(const geom_tri *t, double *out);
 
+/* Whether measure id reads a triangle's angles (alpha, beta, gamma): the
+** four angle measures and every user measure (which may); the others can
+** be given geom_tri_make_noangles (tests/test_lot.c checks the list). */
+int measure_needs_angles(int id);
+
 /* Write a comma-separated list of all measure names into buf. */
 void measure_names(char *buf, size_t len);
 

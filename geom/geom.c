@@ -64,7 +64,8 @@ double geom_twice_area(geom_point p, geom_point q, geom_point r) {
 /* Everything below is computed from the canonically ordered vertices
 ** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
 ** the caller listed them in. */
-void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
+/* geom_tri_make with or without the angles (two atan2, most of the cost). */
+static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r, int angles) {
   if (geom_lexless(q, p)) geom_swap(&p, &q);
   if (geom_lexless(r, q)) geom_swap(&q, &r);
   if (geom_lexless(q, p)) geom_swap(&p, &q);
@@ -87,6 +88,8 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   ** keeps its relative accuracy for tiny angles (a needle has two); the
   ** largest angle, at least pi/3, is pi minus their sum to within an ulp
   ** or two of pi, which is a relative error of 1e-16 for it. */
+  t->alpha = t->beta = t->gamma = NAN;
+  if (angles) {
   int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
   int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
   double ang[3];
@@ -98,6 +101,7 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   t->alpha = geom_min3(ang[0], ang[1], ang[2]);
   t->beta = geom_mid3(ang[0], ang[1], ang[2]);
   t->gamma = geom_max3(ang[0], ang[1], ang[2]);
+  }
 
   t->area = 0.5 * twice;
   t->P = t->a + t->b + t->c;
@@ -106,6 +110,14 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   t->h = twice / t->a;
   t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
   t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);
+}
+
+void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
+  geom_tri_fill(t, p, q, r, 1);
+}
+
+void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r) {
+  geom_tri_fill(t, p, q, r, 0);
 }
 
 double geom_dist(geom_point p, geom_point q) {

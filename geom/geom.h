@@ -30,6 +30,10 @@ typedef struct geom_tri {
 
 /* Fill *t from three points, in any order. */
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r);
+/* The same without the angles (alpha, beta, gamma are NaN): every other
+** field bit-identical to geom_tri_make's, for measures that read no angle
+** (measure_needs_angles) on hot paths. */
+void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r);
 
 /* The lexicographic order of points (by x, then y): a triangle's canonical
 ** vertex order, the samplers' collinear tie-break, the plugin rotation. */

@@ -35,6 +35,7 @@ typedef struct lot_mesh {
   uint32_t last;        /* a triangle near the last insertion: the walk's start */
   uint64_t walk;        /* the walk's generator state (deterministic) */
   const rule *r;        /* for the badness cache */
+  int angles;           /* the measure reads angles (measure_needs_angles) */
 } lot_mesh;
 
 static inline uint32_t lot_next3(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }

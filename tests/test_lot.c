@@ -172,6 +172,32 @@ static void test_theorem7_bound(void **state) {
   }
 }
 
+/* measure_needs_angles is right: a measure said not to read angles gives
+** the same value bit for bit when the angles are NaN (geom_tri_make_noangles),
+** on random triangles of every shape. */
+static void test_noangles_list(void **state) {
+  (void)state;
+  testutil_rng g = {77};
+  for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
+    int differs = 0;
+    for (int k = 0; k < 2000; k++) {
+      geom_point p[3];
+      for (int i = 0; i < 3; i++)
+        p[i] = (geom_point){testutil_uniform(&g), (k % 3 ? 1e-3 : 1) * testutil_uniform(&g)};
+      if (geom_orient(p[0], p[1], p[2]) == 0) continue;
+      geom_tri a, b;
+      geom_tri_make(&a, p[0], p[1], p[2]);
+      geom_tri_make_noangles(&b, p[0], p[1], p[2]);
+      double va = measure_eval(m, &a), vb = measure_eval(m, &b);
+      if (!(va == vb || (isnan(va) && isnan(vb))) ||
+          memcmp(&va, &vb, sizeof va) != 0) differs = 1;
+    }
+    if (differs != measure_needs_angles(m))
+      fail_msg("measure %s: needs angles %d, but values %s without them",
+               measure_get(m)->name, measure_needs_angles(m), differs ? "differ" : "agree");
+  }
+}
+
 /* Every built-in measure with every joint it admits, both algorithms, on
 ** small sets: random points, and a grid (exactly collinear points: points
 ** inserted on an edge, whose halves a rule may flip; a bug once left
@@ -443,6 +469,7 @@ int main(void) {
     cmocka_unit_test(test_dt_grid_and_circle),
     cmocka_unit_test(test_theorem6_parabola),
     cmocka_unit_test(test_theorem7_bound),
+    cmocka_unit_test(test_noangles_list),
     cmocka_unit_test(test_every_rule_locally_optimal),
     cmocka_unit_test(test_convex_dt_equivalent),
     cmocka_unit_test(test_always_flip_is_a_cycle),
