@@ -69,9 +69,10 @@ static int report_census_csv(FILE *f, const report_census_row *rows, int nrows) 
     const uint64_t v[7] = {c->samples, c->tie, c->no_sink, c->one_sink, c->multi_sink,
                            c->sink_dt, 0};
     for (int k = 0; k < 6; k++) snprintf(num[5 + k], 40, "%llu", (unsigned long long)v[k]);
-    snprintf(num[11], 40, isnan(ms) ? "" : "%.17g", ms);
+    num[11][0] = num[13][0] = '\0';   /* empty: nothing to average */
+    if (!isnan(ms)) snprintf(num[11], 40, "%.17g", ms);
     snprintf(num[12], 40, "%llu", (unsigned long long)c->max_sinks);
-    snprintf(num[13], 40, isnan(mg) ? "" : "%.17g", mg);
+    if (!isnan(mg)) snprintf(num[13], 40, "%.17g", mg);
     const char *field[REPORT_CENSUS_NCOLS] = {w->measure, w->joint, w->rule, num[3], w->sampler};
     for (int k = 5; k < REPORT_CENSUS_NCOLS; k++) field[k] = num[k];
     for (int k = 0; k < REPORT_CENSUS_NCOLS; k++) {
@@ -102,9 +103,11 @@ static void report_census_cells(const report_census_row *w, char cell[9][100]) {
   report_census_pct(cell[4], 100, c->no_sink, c->samples);
   report_census_pct(cell[5], 100, c->tie, c->samples);
   double ms = report_census_mean_sinks(c), mg = report_census_mean_gap(w);
-  snprintf(cell[6], 100, isnan(ms) ? "-" : "%.4f", ms);
+  snprintf(cell[6], 100, "%.4f", ms);
+  if (isnan(ms)) snprintf(cell[6], 100, "-");
   snprintf(cell[7], 100, "%llu", (unsigned long long)c->max_sinks);
-  snprintf(cell[8], 100, isnan(mg) ? "-" : "%.3g", mg);
+  snprintf(cell[8], 100, "%.3g", mg);
+  if (isnan(mg)) snprintf(cell[8], 100, "-");
 }
 
 static void report_census_title(FILE *f, const report_census_meta *m,
