@@ -20,27 +20,35 @@
 #define CMD "census"
 #define CLI_CENSUS_MAX_SAMPLES 1000000000000ull   /* 1e12 */
 
-static const char cli_census_usage[] =
-  "usage: fliplab census --sites N [--sampler convex|disc|square|normal] [options]\n"
-  "Enumerate every triangulation of random sets of N sites (3 <= N <= 12), direct\n"
-  "their flip graphs by each rule and count: one sink, sink = DT, two or more\n"
-  "sinks, no sink, tie; mean and largest number of sinks; mean worst-sink gap\n"
-  "to the GOT (triangle-based rules).\n\n"
-  "  --sites N        sites per set (default 6)\n"
-  "  --sampler S      convex: convex N-gons by the thesis's iteration method (for\n"
-  "                   N = 5 the very pentagons of table34); disc, square, normal:\n"
-  "                   N independent points (most sets have interior sites)\n"
-  "  --samples S      site sets (default 10000; at most 1e12)\n"
-  "  --seed S         sampler seed (default 1); same seed, same table\n"
-  "  --measures M     table34 (default), all, or NAME,NAME,...: every measure x\n"
-  "                   joint rule of them, then DT\n"
-  "  --rules R        instead: a comma-separated list of rules (e.g. R_1,DT)\n"
-  "  --threads T      threads (default: all cores); the table does not depend on T\n"
-  "  --shard K/N      only samples [floor((K-1)S/N), floor(KS/N)); `fliplab merge`\n"
-  "                   sums the shards' CSVs into the unsharded CSV, byte for byte\n"
-  "  --tie-eps E      tie tolerance of the rules (default 1e-12)\n"
-  "  --format F       text (default), md, or csv\n"
-  "  --out FILE       write the table to FILE (default: stdout)\n";
+static const cli_option cli_census_help[] = {
+  {"--sites", "N", "6", "sites per set, 3 to 12"},
+  {"--sampler", "S", "convex",
+   "convex: convex N-gons by the thesis's iteration method (for\n"
+   "                     N = 5 the very pentagons of table34); disc, square, normal:\n"
+   "                     N independent points (most sets have interior sites)"},
+  {"--samples", "S", "10000", "site sets, at most 1e12"},
+  {"--seed", "S", "1", "sampler seed; same seed, same table"},
+  {"--measures", "M", "table34",
+   "table34, all, or a comma list of measures: every measure x\n"
+   "                     joint rule of them, then DT"},
+  {"--rules", "R", "none", "instead of --measures: a comma list of rules (e.g. R_1,DT)"},
+  {"--threads", "T", "all cores", "threads; the table does not depend on T"},
+  {"--shard", "K/N", "none",
+   "only samples [floor((K-1)S/N), floor(KS/N)); fliplab merge\n"
+   "                     sums the shards' CSVs into the unsharded CSV, byte for byte"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules"},
+  {"--format", "F", "--out's extension, else text", "text, md, or csv (docs/sitesets.md)"},
+  {"--out", "FILE", "stdout", "write the table to FILE"},
+};
+
+static void cli_census_usage(void) {
+  cli_help(stdout, "usage: fliplab census --sites N [--sampler convex|disc|square|normal] [options]",
+           "Table 3.4 for any small site set: enumerate every triangulation of random sets\n"
+           "of N sites, direct their flip graphs by each rule and count one sink, sink = DT,\n"
+           "two or more sinks, no sink, tie; the mean and largest number of sinks; the mean\n"
+           "gap of the worst sink to the GOT (triangle-based rules; docs/sitesets.md).\n",
+           cli_census_help, CLI_NOPTS(cli_census_help));
+}
 
 typedef struct cli_census_opts {
   uint64_t sites, samples, seed, threads, shard_k, shard_n;
@@ -96,23 +104,23 @@ static int cli_census_parse(int argc, char **argv, cli_census_opts *o) {
   *o = (cli_census_opts){.sites = 6, .samples = 10000, .seed = 1, .sampler = SAMPLER_CONVEX,
                          .tie_eps = RULE_DEFAULT_TIE_EPS, .format = REPORT_TEXT,
                          .measures = "table34"};
-  static const char *const known[] = {"--sites", "--samples", "--seed", "--threads",
-                                      "--sampler", "--tie-eps", "--format", "--shard",
-                                      "--measures", "--rules", "--out"};
-  int have_measures = 0;
+  int have_measures = 0, have_format = 0;
   for (int i = 1; i < argc; i++) {
     if (cli_is_help(argv[i])) {
-      fputs(cli_census_usage, stdout);
+      cli_census_usage();
       return 1;
     }
-    int ok = 0;
-    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) ok |= strcmp(argv[i], known[k]) == 0;
-    if (!ok) {
-      cli_error(CMD, "unknown option '%s' (try: fliplab census --help)", argv[i]);
+    if (cli_option_find(argv[i], cli_census_help, CLI_NOPTS(cli_census_help)) == NULL) {
+      cli_unknown_option(CMD, argv[i], cli_census_help, CLI_NOPTS(cli_census_help));
       return -1;
     }
     have_measures |= strcmp(argv[i], "--measures") == 0;
+    have_format |= strcmp(argv[i], "--format") == 0;
     if (cli_census_option(argc, argv, &i, o) != 0) return -1;
+  }
+  if (!have_format && o->out != NULL) {   /* the table format --out's name asks for */
+    const char *f = cli_format_of_path(o->out);
+    if (f != NULL) report_format_parse(f, &o->format);
   }
   if (have_measures && o->rules != NULL) {
     cli_error(CMD, "--measures and --rules exclude each other");
@@ -138,22 +146,9 @@ static int cli_census_rules(const cli_census_opts *o, rule **rules) {
   for (const char *c = o->rules; *c; c++) cap += *c == ',';
   if ((*rules = malloc((size_t)cap * sizeof **rules)) == NULL) return cli_error(CMD, "out of memory"), -1;
   int n = 0;
-  for (const char *p = o->rules;;) {
-    const char *comma = strchr(p, ',');
-    size_t len = comma ? (size_t)(comma - p) : strlen(p);
-    char name[128], err[4096];
-    if (len == 0 || len >= sizeof name) {
-      free(*rules);
-      return cli_error(CMD, "--rules: empty or too long rule name in '%s'", o->rules), -1;
-    }
-    memcpy(name, p, len);
-    name[len] = '\0';
-    if (rule_parse(name, &(*rules)[n++], err, sizeof err) != 0) {
-      free(*rules);
-      return cli_error(CMD, "--rules: %s", err), -1;
-    }
-    if (comma == NULL) break;
-    p = comma + 1;
+  if (cli_parse_rule_list(CMD, o->rules, *rules, &n, cap) != 0) {
+    free(*rules);
+    return -1;
   }
   return n;
 }

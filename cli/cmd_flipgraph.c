@@ -13,18 +13,23 @@
 
 #define CMD "flipgraph"
 
-static const char cli_flipgraph_usage[] =
-  "usage: fliplab flipgraph --rule RULE --points FILE.csv [--svg FILE.svg] [options]\n"
-  "Enumerate every triangulation of a set of 3 to 12 sites (rows x,y; any\n"
-  "position, convex or not), direct the flip graph by RULE and report it:\n"
-  "  triangulations, flip edges, sinks (one line each, triangles as 1-based\n"
-  "  site numbers), sources, ties, cycle, sink is DT, GOT (triangle rules:\n"
-  "  best total by brute force) and the worst sink's relative gap to it.\n\n"
-  "  --rule RULE      DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)\n"
-  "  --points FILE    the sites, CSV rows x,y (optional header x,y)\n"
-  "  --svg FILE       draw the directed flip graph (at most 64 triangulations)\n"
-  "  --tie-eps E      tie tolerance (default 1e-12)\n"
-  "  --out FILE       write the report to FILE (default: stdout)\n";
+static const cli_option cli_flipgraph_help[] = {
+  {"--rule", "RULE", "required", "DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)"},
+  {"--points", "FILE.csv", "required", "the sites: CSV rows x,y (optional header x,y)"},
+  {"--svg", "FILE.svg", "none", "draw the directed flip graph (at most 64 triangulations)"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rule"},
+  {"--out", "FILE", "stdout", "write the report to FILE"},
+};
+
+static void cli_flipgraph_usage(void) {
+  cli_help(stdout, "usage: fliplab flipgraph --rule RULE --points FILE.csv [options]",
+           "Enumerate every triangulation of a set of 3 to 12 sites (any position, convex\n"
+           "or not), direct the flip graph by RULE and report: triangulations, flip edges,\n"
+           "sinks (the LOTs; triangles as 1-based site numbers), sources, ties, cycle,\n"
+           "sink is DT, GOT (triangle-based rules, by brute force) and the worst sink's\n"
+           "relative gap to it (docs/sitesets.md).\n",
+           cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
+}
 
 typedef struct cli_flipgraph_opts {
   const char *rule, *points, *svg, *out;
@@ -36,7 +41,7 @@ static int cli_flipgraph_parse(int argc, char **argv, cli_flipgraph_opts *o) {
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (cli_is_help(a)) {
-      fputs(cli_flipgraph_usage, stdout);
+      cli_flipgraph_usage();
       return 1;
     }
     const char **slot = strcmp(a, "--rule") == 0     ? &o->rule
@@ -51,10 +56,11 @@ static int cli_flipgraph_parse(int argc, char **argv, cli_flipgraph_opts *o) {
           cli_parse_double(CMD, a, v, 0, 1, &o->tie_eps) != 0)
         return -1;
     } else {
-      cli_error(CMD, "unknown option '%s' (try: fliplab flipgraph --help)", a);
+      cli_unknown_option(CMD, a, cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
       return -1;
     }
   }
+  if ((o->svg != NULL && cli_check_out_ext(CMD, "--svg", o->svg, "svg") != 0)) return -1;
   if (o->rule == NULL || o->points == NULL) {
     cli_error(CMD, "--rule and --points are required (try: fliplab flipgraph --help)");
     return -1;
@@ -118,7 +124,7 @@ int cli_cmd_flipgraph(int argc, char **argv) {
   if (st != 0) return st > 0 ? 0 : 2;
   rule r;
   char err[4096];
-  if (rule_parse(o.rule, &r, err, sizeof err) != 0) return cli_error(CMD, "--rule: %s", err);
+  if (cli_parse_rule(CMD, o.rule, &r) != 0) return 2;
   geom_point *p;
   size_t n;
   if (report_sites_read(o.points, &p, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);

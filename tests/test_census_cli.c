@@ -188,12 +188,12 @@ static void test_bad_input_cli(void **state) {
   snprintf(args, sizeof args, "flipgraph --rule R_1 --points %s", many);
   tcc_refused(args, "limited to 12");
   snprintf(args, sizeof args, "flipgraph --rule Q_1 --points %s", dup);
-  tcc_refused(args, "--rule");
+  tcc_refused(args, "unknown measure 'Q'");
   tcc_refused("flipgraph --rule R_1", "--points");
   tcc_refused("census --sampler hexagonal", "unknown sampler 'hexagonal'");
   tcc_refused("census --sites 13", "3 to 12 sites");
   tcc_refused("census --sites 2", "3 to 12 sites");
-  tcc_refused("census --rules R_1,nope_1", "--rules");
+  tcc_refused("census --rules R_1,nope_1", "unknown measure 'nope'");
   tcc_refused("census --shard 4/3", "--shard");
 }
 
