@@ -9,10 +9,15 @@
 ** triangle-based rules the worst sink's gap to the GOT.
 **
 ** Decisions are rule_eval_tris's, bit for bit: the same measure values
-** (measure_eval_all computes the registry's expressions), and the joint and
-** comparison written out below with the same IEEE operations in the same
-** order as joint_apply (joint.c) and rule_compare (rule.c); the tests
-** compare every rule's census with siteflip_direct sample by sample.
+** (measure_eval_all computes the registry's expressions), and in the
+** packed loop the joint and comparison written out with the same IEEE
+** operations in the same order as joint_apply (joint.c) and
+** joint_compare_values; for the product and root-sum-square on slots with
+** magnitudes outside [2^-511, 2^511] (where the plain evaluation could
+** leave the normal range), joint_compare itself, in split form.  Inside
+** that range every product, square and sum of squares is a normal double,
+** so plain and split forms agree bit for bit.  The tests compare every
+** rule's census with siteflip_direct sample by sample.
 **
 ** Sinks.  With at most 64 quadrilaterals the decisions pack into one word
 ** (bit q = 1 for BD); node u is a sink iff (bits & qmask[u]) == want[u],
@@ -70,6 +75,7 @@ typedef struct siteflip_cwork {
   double *val, *mag;          /* values and magnitudes, [triangle][slot] */
   size_t valcap, magcap;
   uint64_t bits[JOINT_COUNT][MEASURE_MAX];      /* BD decisions by quadrilateral */
+  unsigned char wide[MEASURE_MAX];   /* a magnitude outside [2^-511, 2^511] */
   unsigned char tie[JOINT_COUNT][MEASURE_MAX];
   rule_choice *dec;
   size_t deccap;
@@ -202,28 +208,20 @@ static inline rule_choice siteflip_compare(double ac, double bd, double eps) {
   return ac < bd ? RULE_AC : RULE_BD;
 }
 
-/* Every quadrilateral of g under a triangle rule; *bits as above (when
-** nquads <= 64).  Returns 1 if some decision is `either`. */
-static inline int siteflip_decide_tri(joint_id j, const siteflip_graph *g, const double *val,
-                                      int ns, const siteflip_crule *c, double eps,
-                                      rule_choice *dec, uint64_t *bits) {
+/* Every quadrilateral of g under a triangle rule, as rule_eval_tris decides
+** it (joint_compare); *bits as above (when nquads <= 64).  Returns 1 if
+** some decision is `either`. */
+static int siteflip_decide_tri(const siteflip_graph *g, const double *val, int ns,
+                               const siteflip_crule *c, double eps, rule_choice *dec,
+                               uint64_t *bits) {
   uint64_t b = 0;
   for (int q = 0; q < g->nquads; q++) {
     const int *t = g->quad[q].tri;
-    double a0 = val[t[0] * ns + c->slot], a1 = val[t[1] * ns + c->slot];
-    double b0 = val[t[2] * ns + c->slot], b1 = val[t[3] * ns + c->slot];
-    double fa, fb;
-    if (c->neg) {
-      fa = -siteflip_g(j, -a0, -a1);
-      fb = -siteflip_g(j, -b0, -b1);
-    } else {
-      fa = siteflip_g(j, a0, a1);
-      fb = siteflip_g(j, b0, b1);
-    }
-    rule_choice d = siteflip_compare(fa, fb, eps);
-    if (d == RULE_EITHER) return 1;
-    dec[q] = d;
-    if (q < 64) b |= (uint64_t)(d == RULE_BD) << q;
+    int k = joint_compare(c->joint, c->msign, val[t[0] * ns + c->slot], val[t[1] * ns + c->slot],
+                          val[t[2] * ns + c->slot], val[t[3] * ns + c->slot], eps);
+    if (k == 0) return 1;
+    dec[q] = k < 0 ? RULE_AC : RULE_BD;
+    if (q < 64) b |= (uint64_t)(k > 0) << q;
   }
   *bits = b;
   return 0;
@@ -244,15 +242,7 @@ static int siteflip_decide(const siteflip_cplan *pl, int i, const siteflip_graph
     *bits = b;
     return 0;
   }
-  int ns = pl->nslots;
-  switch (c->joint) {   /* one specialised copy of the loop per joint */
-    case JOINT_MIN: return siteflip_decide_tri(JOINT_MIN, g, val, ns, c, pl->eps, dec, bits);
-    case JOINT_HARMONIC: return siteflip_decide_tri(JOINT_HARMONIC, g, val, ns, c, pl->eps, dec, bits);
-    case JOINT_PRODUCT: return siteflip_decide_tri(JOINT_PRODUCT, g, val, ns, c, pl->eps, dec, bits);
-    case JOINT_SUM: return siteflip_decide_tri(JOINT_SUM, g, val, ns, c, pl->eps, dec, bits);
-    case JOINT_RSS: return siteflip_decide_tri(JOINT_RSS, g, val, ns, c, pl->eps, dec, bits);
-    default: return siteflip_decide_tri(JOINT_MAX, g, val, ns, c, pl->eps, dec, bits);
-  }
+  return siteflip_decide_tri(g, val, pl->nslots, c, pl->eps, dec, bits);
 }
 
 /* All slots of joint j at once, for graphs of at most 64 quadrilaterals:
@@ -291,8 +281,13 @@ static inline void siteflip_joint_bits(joint_id j, const siteflip_cplan *pl,
 static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
                               siteflip_cwork *w) {
   const int ns = pl->nslots;
+  for (int s = 0; s < ns; s++) w->wide[s] = 0;
   for (int t = 0; t < g->ntris; t++)
-    for (int s = 0; s < ns; s++) w->mag[t * ns + s] = pl->slot_sign[s] * w->val[t * ns + s];
+    for (int s = 0; s < ns; s++) {
+      double m = pl->slot_sign[s] * w->val[t * ns + s];
+      w->mag[t * ns + s] = m;
+      w->wide[s] |= !(m >= 0x1p-511 && m <= 0x1p511);
+    }
   for (int j = 0; j < JOINT_COUNT; j++) {
     if (!pl->joint_used[j]) continue;
     switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
@@ -375,13 +370,19 @@ static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const si
     const siteflip_crule *cr = &pl->cr[i];
     uint64_t bits = 0;
     c->samples++;
-    int tied = packed && !cr->quad ? w->tie[cr->joint][cr->slot]
-                                   : siteflip_decide(pl, i, g, w->val, w->dec, &bits);
+    /* Packed unless the rule is a quadrilateral rule, or a product or
+    ** root-sum-square on a slot with extreme magnitudes: those the plain
+    ** evaluation of the packed loop could under- or overflow, and
+    ** joint_compare decides them in split form (joint.h). */
+    int fast = packed && !cr->quad &&
+               !(w->wide[cr->slot] && (cr->joint == JOINT_PRODUCT || cr->joint == JOINT_RSS));
+    int tied = fast ? w->tie[cr->joint][cr->slot]
+                    : siteflip_decide(pl, i, g, w->val, w->dec, &bits);
     if (tied) {
       c->tie++;
       continue;
     }
-    if (packed && !cr->quad) bits = w->bits[cr->joint][cr->slot];
+    if (fast) bits = w->bits[cr->joint][cr->slot];
     int ns = siteflip_sinks(w, g, w->dec, bits);
     c->sinks += (uint64_t)ns;
     if ((uint64_t)ns > c->max_sinks) c->max_sinks = (uint64_t)ns;

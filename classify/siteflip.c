@@ -83,12 +83,14 @@ int siteflip_check(const geom_point *p, int n, char *err, size_t errlen) {
              n, SITEFLIP_MAX_SITES);
     return -1;
   }
-  for (int i = 0; i < n; i++)
-    if (!geom_point_finite(p[i]) || fabs(p[i].x) > GEOM_MAX_COORD || fabs(p[i].y) > GEOM_MAX_COORD) {
-      snprintf(err, errlen, "site %d: coordinates must be finite and at most %g in magnitude",
-               i + 1, GEOM_MAX_COORD);
+  for (int i = 0; i < n; i++) {
+    geom_coorderr e = geom_coord_check(p[i].x);
+    if (e == GEOM_COORD_OK) e = geom_coord_check(p[i].y);
+    if (e != GEOM_COORD_OK) {
+      snprintf(err, errlen, "site %d: a coordinate %s", i + 1, geom_coorderr_str(e));
       return -1;
     }
+  }
   for (int i = 0; i < n; i++)
     for (int j = 0; j < i; j++)
       if (p[i].x == p[j].x && p[i].y == p[j].y) {

@@ -56,8 +56,8 @@ typedef struct siteflip_graph {
   int delaunay;          /* the Delaunay triangulation, -1 if not unique */
 } siteflip_graph;
 
-/* Check a site set: 3 <= n <= SITEFLIP_MAX_SITES, finite coordinates of
-** magnitude <= GEOM_MAX_COORD, no two equal sites, not all collinear.  0,
+/* Check a site set: 3 <= n <= SITEFLIP_MAX_SITES, coordinates within the
+** contract (geom_coord_check), no two equal sites, not all collinear.  0,
 ** or -1 with a one-line reason naming the sites (1-based) in err. */
 int siteflip_check(const geom_point *p, int n, char *err, size_t errlen);
 
