@@ -404,7 +404,7 @@ static siteflip_graph *siteflip_sample(siteflip_cwork *w, int sampler, int n, ui
   char err[256];
   sampler_sites(sampler, seed, i, n, p);
   *owned = 0;
-  if (sampler == SAMPLER_CONVEX) {
+  if (sampler == SAMPLER_SITES_CONVEX) {
     if (w->shape == NULL && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL)
       return NULL;
     siteflip_move(w->shape, p);
@@ -444,7 +444,7 @@ static void siteflip_counts_add(siteflip_counts *a, const siteflip_counts *b) {
 
 static int siteflip_census_args(int sampler, int n, uint64_t first, uint64_t count, char *err,
                                 size_t errlen) {
-  if (sampler_kind_name(sampler) == NULL) {
+  if (sampler_sites_name(sampler) == NULL) {
     snprintf(err, errlen, "unknown sampler %d", sampler);
     return -1;
   }

@@ -121,7 +121,7 @@ typedef struct siteflip_counts {
 typedef void (*siteflip_progress_fn)(uint64_t done, uint64_t total, void *ctx);
 
 /* Census of samples first .. first+count-1 of sampler `sampler` (a
-** sampler_kind) with n sites, seed `seed`, under every rule, added to
+** sampler_sites_kind) with n sites, seed `seed`, under every rule, added to
 ** out[0..nrules-1].  threads <= 0: all cores.  0, or -1 with err. */
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
                     uint64_t first, uint64_t count, double tie_eps, int threads,

@@ -80,7 +80,7 @@ static int cli_census_option(int argc, char **argv, int *i, cli_census_opts *o) 
     }
   if ((v = cli_optarg(CMD, argc, argv, i)) == NULL) return -1;
   if (strcmp(a, "--sampler") == 0) {
-    if ((o->sampler = sampler_kind_parse(v)) < 0)
+    if ((o->sampler = sampler_sites_find(v)) < 0)
       return cli_error(CMD, "--sampler: unknown sampler '%s' (valid: convex, disc, square, "
                             "normal)", v), -1;
   } else if (strcmp(a, "--tie-eps") == 0) {
@@ -101,7 +101,7 @@ static int cli_census_option(int argc, char **argv, int *i, cli_census_opts *o) 
 }
 
 static int cli_census_parse(int argc, char **argv, cli_census_opts *o) {
-  *o = (cli_census_opts){.sites = 6, .samples = 10000, .seed = 1, .sampler = SAMPLER_CONVEX,
+  *o = (cli_census_opts){.sites = 6, .samples = 10000, .seed = 1, .sampler = SAMPLER_SITES_CONVEX,
                          .tie_eps = RULE_DEFAULT_TIE_EPS, .format = REPORT_TEXT,
                          .measures = "table34"};
   int have_measures = 0, have_format = 0;
@@ -191,7 +191,7 @@ int cli_cmd_census(int argc, char **argv) {
   }
   for (int r = 0; r < nrules; r++) {
     counts[r].samples = count;
-    report_census_row_from_rule(&rows[r], &rules[r], (int)o.sites, sampler_kind_name(o.sampler),
+    report_census_row_from_rule(&rows[r], &rules[r], (int)o.sites, sampler_sites_name(o.sampler),
                                 &counts[r]);
   }
   report_census_meta meta = {1, o.seed, 1, o.tie_eps, o.shard_k, o.shard_n};

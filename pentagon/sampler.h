@@ -45,16 +45,17 @@ void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 #define SAMPLER_HULL_MAX 16
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v);
 
-/* Site sets for the census (pentagon/sites.c).  SAMPLER_CONVEX is
+/* Site sets for the census (pentagon/sites.c).  SAMPLER_SITES_CONVEX is
 ** sampler_convex; the others draw n independent points (uniform in the unit
 ** disc, uniform in the square [-1, 1)^2, standard normal), redrawing the
 ** whole set from the same stream in the (measure-zero) event of two equal
 ** points or all points on one line.  Sample i depends only on (seed, i). */
-typedef enum sampler_kind {
-  SAMPLER_CONVEX, SAMPLER_DISC, SAMPLER_SQUARE, SAMPLER_NORMAL, SAMPLER_NKINDS
-} sampler_kind;
-const char *sampler_kind_name(int kind);        /* "convex", ... ; NULL if unknown */
-int sampler_kind_parse(const char *name);       /* -1 if unknown */
+typedef enum sampler_sites_kind {
+  SAMPLER_SITES_CONVEX, SAMPLER_SITES_DISC, SAMPLER_SITES_SQUARE, SAMPLER_SITES_NORMAL,
+  SAMPLER_SITES_COUNT
+} sampler_sites_kind;
+const char *sampler_sites_name(int kind);       /* "convex", ... ; NULL if unknown */
+int sampler_sites_find(const char *name);       /* -1 if unknown */
 /* 0, or -1 for an unknown kind or n out of [3, SAMPLER_HULL_MAX). */
 int sampler_sites(int kind, uint64_t seed, uint64_t index, int n, geom_point *out);
 

@@ -6,23 +6,23 @@
 #include <string.h>
 #include "sampler.h"
 
-static const char *const sampler_kind_names[SAMPLER_NKINDS] = {
+static const char *const sampler_sites_names[SAMPLER_SITES_COUNT] = {
   "convex", "disc", "square", "normal"};
 
-const char *sampler_kind_name(int kind) {
-  return kind >= 0 && kind < SAMPLER_NKINDS ? sampler_kind_names[kind] : NULL;
+const char *sampler_sites_name(int kind) {
+  return kind >= 0 && kind < SAMPLER_SITES_COUNT ? sampler_sites_names[kind] : NULL;
 }
 
-int sampler_kind_parse(const char *name) {
-  for (int k = 0; k < SAMPLER_NKINDS; k++)
-    if (strcmp(name, sampler_kind_names[k]) == 0) return k;
+int sampler_sites_find(const char *name) {
+  for (int k = 0; k < SAMPLER_SITES_COUNT; k++)
+    if (strcmp(name, sampler_sites_names[k]) == 0) return k;
   return -1;
 }
 
 static geom_point sampler_point(sampler_rng *g, int kind) {
   switch (kind) {
-    case SAMPLER_DISC: return sampler_disc(g);
-    case SAMPLER_SQUARE: {
+    case SAMPLER_SITES_DISC: return sampler_disc(g);
+    case SAMPLER_SITES_SQUARE: {
       double x = 2 * sampler_uniform(g) - 1;
       return (geom_point){x, 2 * sampler_uniform(g) - 1};
     }
@@ -44,8 +44,8 @@ static int sampler_degenerate(const geom_point *p, int n) {
 }
 
 int sampler_sites(int kind, uint64_t seed, uint64_t index, int n, geom_point *out) {
-  if (kind < 0 || kind >= SAMPLER_NKINDS || n < 3 || n >= SAMPLER_HULL_MAX) return -1;
-  if (kind == SAMPLER_CONVEX) {
+  if (kind < 0 || kind >= SAMPLER_SITES_COUNT || n < 3 || n >= SAMPLER_HULL_MAX) return -1;
+  if (kind == SAMPLER_SITES_CONVEX) {
     sampler_convex(seed, index, n, out);
     return 0;
   }

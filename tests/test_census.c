@@ -50,7 +50,7 @@ static void test_census_equals_direct(void **state) {
   int nr = tc_all_rules(&rules);
   siteflip_counts *c = malloc((size_t)nr * sizeof *c);
   int multi_seen = 0, gaps_seen = 0;
-  for (int kind = 0; kind < SAMPLER_NKINDS; kind++)
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
     for (int n = 4; n <= 7; n++)
       for (uint64_t i = 0; i < 8; i++) {
         tc_census(rules, nr, kind, n, i, 1, 1, c);
@@ -76,7 +76,7 @@ static void test_census_equals_direct(void **state) {
             uint64_t want = (uint64_t)llround(res.worst_gap / SITEFLIP_GAP_UNIT);
             if (c[r].gap_units != want)
               fail_msg("%s, %s %d/%llu: census gap %llu units, brute force %llu", rules[r].name,
-                       sampler_kind_name(kind), n, (unsigned long long)i,
+                       sampler_sites_name(kind), n, (unsigned long long)i,
                        (unsigned long long)c[r].gap_units, (unsigned long long)want);
             gaps_seen += want > 0;
           }
@@ -98,7 +98,7 @@ static void test_census_pentagons_are_table34(void **state) {
   siteflip_counts *c = malloc((size_t)nr * sizeof *c);
   flipgraph_counts *f = calloc((size_t)nr, sizeof *f);
   const uint64_t S = 20000;
-  tc_census(rules, nr, SAMPLER_CONVEX, 5, 0, S, 2, c);
+  tc_census(rules, nr, SAMPLER_SITES_CONVEX, 5, 0, S, 2, c);
   assert_int_equal(flipgraph_tally(rules, nr, 3, 0, S, RULE_DEFAULT_TIE_EPS, 2, f, NULL, NULL), 0);
   uint64_t multi = 0;
   for (int r = 0; r < nr; r++) {
@@ -124,7 +124,7 @@ static void test_census_threads(void **state) {
   int nr = tc_all_rules(&rules);
   siteflip_counts *a = malloc((size_t)nr * sizeof *a), *b = malloc((size_t)nr * sizeof *b);
   siteflip_counts *s = calloc((size_t)nr, sizeof *s);
-  for (int kind = 0; kind < SAMPLER_NKINDS; kind++) {
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++) {
     tc_census(rules, nr, kind, 6, 0, 1500, 1, a);
     tc_census(rules, nr, kind, 6, 0, 1500, 3, b);
     assert_memory_equal(a, b, (size_t)nr * sizeof *a);
@@ -153,7 +153,7 @@ static void test_census_bad_args(void **state) {
   char err[256];
   assert_int_not_equal(siteflip_census(&r, 1, 17, 6, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
   assert_non_null(strstr(err, "unknown sampler"));
-  assert_int_not_equal(siteflip_census(&r, 1, SAMPLER_DISC, 13, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
+  assert_int_not_equal(siteflip_census(&r, 1, SAMPLER_SITES_DISC, 13, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
   assert_non_null(strstr(err, "3 to 12"));
   assert_int_equal(c.samples, 0);
 }

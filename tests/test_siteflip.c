@@ -231,7 +231,7 @@ static void test_dt_equivalent(void **state) {
   rule rules[TSF_NDT];
   for (int i = 0; i < TSF_NDT; i++) rules[i] = tsf_rule(tsf_dt_rules[i]);
   int checked = 0;
-  for (int kind = 0; kind < SAMPLER_NKINDS; kind++)
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
     for (int n = 4; n <= 8; n++)
       for (uint64_t s = 0; s < 40; s++) {
         geom_point p[8];
@@ -245,14 +245,14 @@ static void test_dt_equivalent(void **state) {
           if (res.ties) continue;
           if (res.nsinks != 1 || res.sink_dt != 1)
             fail_msg("%s on %s set %d/%llu: %d sinks, sink is DT %d", tsf_dt_rules[i],
-                     sampler_kind_name(kind), n, (unsigned long long)s, res.nsinks, res.sink_dt);
+                     sampler_sites_name(kind), n, (unsigned long long)s, res.nsinks, res.sink_dt);
           checked++;
         }
         free(dec);
         free(sinks);
         siteflip_free(g);
       }
-  assert_true(checked > SAMPLER_NKINDS * 5 * 40 * TSF_NDT * 9 / 10);
+  assert_true(checked > SAMPLER_SITES_COUNT * 5 * 40 * TSF_NDT * 9 / 10);
 }
 
 /* Every triangle rule on small sets: never a cycle, never no sink; for
@@ -266,7 +266,7 @@ static void test_triangle_rules(void **state) {
   int nr = rule_list_triangle(ids, MEASURE_BUILTIN_COUNT, rules, MEASURE_BUILTIN_COUNT * JOINT_COUNT);
   assert_true(nr >= 120);
   int got_checked = 0;
-  for (int kind = 0; kind < SAMPLER_NKINDS; kind++)
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
     for (int n = 5; n <= 7; n++)
       for (uint64_t s = 0; s < 6; s++) {
         geom_point p[7];
@@ -280,7 +280,7 @@ static void test_triangle_rules(void **state) {
           assert_int_equal(res.cycle, 0);
           assert_true(res.nsinks >= 1);
           assert_true(res.has_got);
-          if (kind != SAMPLER_CONVEX || res.ties) continue;
+          if (kind != SAMPLER_SITES_CONVEX || res.ties) continue;
           /* best sink = GOT */
           double best = INFINITY;
           for (int k = 0; k < res.nsinks; k++) {
