@@ -200,14 +200,6 @@ static inline double siteflip_g(joint_id j, double x, double y) {
   }
 }
 
-/* rule_compare. */
-static inline rule_choice siteflip_compare(double ac, double bd, double eps) {
-  if (ac == bd || isnan(ac) || isnan(bd)) return RULE_EITHER;
-  if (!isinf(ac) && !isinf(bd) && fabs(ac - bd) <= eps * fmax(fabs(ac), fabs(bd)))
-    return RULE_EITHER;
-  return ac < bd ? RULE_AC : RULE_BD;
-}
-
 /* Every quadrilateral of g under a triangle rule, as rule_eval_tris decides
 ** it (joint_compare); *bits as above (when nquads <= 64).  Returns 1 if
 ** some decision is `either`. */
