@@ -109,6 +109,15 @@ void cli_progress_start(cli_progress *p, const char *label);
 void cli_progress_update(uint64_t done, uint64_t total, void *ctx);
 void cli_progress_finish(cli_progress *p);
 
+/* `fliplab rule` beyond pentagons (cli/rule_sites.c): the census of each
+** site set of spec ("disc:5,convex:6", or "none") under r, a verdict line
+** each and the first witness with two or more LOTs (its CSV and SVG into
+** svg_dir when not NULL).  cli_rule_sites_check validates spec (0 or 2). */
+struct rule;
+int cli_rule_sites_check(const char *spec);
+int cli_rule_sites(const struct rule *r, const char *spec, uint64_t samples, uint64_t seed,
+                   double tie_eps, int threads, const char *svg_dir);
+
 /* --measures: "table34" (the thesis's twenty, its order), "all" (those,
 ** then the other registered measures) or NAME,NAME,...: registry ids into
 ** ids[MEASURE_MAX]; the count, or -1 after a one-line error. */

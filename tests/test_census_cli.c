@@ -197,6 +197,63 @@ static void test_bad_input_cli(void **state) {
   tcc_refused("census --shard 4/3", "--shard");
 }
 
+/* fliplab rule catches -R_1 on five-site sets with a figure-3.8 witness
+** that reads back into flipgraph with two sinks; R_1 passes. */
+static void test_rule_catches_neg_R(void **state) {
+  (void)state;
+  char dir[512], args[2048];
+  testutil_tmppath(dir, sizeof dir, "tcc_rule_svg");
+  snprintf(args, sizeof args, "--define 'negR = -R' rule negR_1 --samples 2000 --quads 100 "
+           "--site-samples 3000 --svg-dir %s", dir);
+  assert_int_equal(testutil_run(args, tcc_out, TCC_BUF, tcc_err, TCC_BUF), 0);
+  assert_non_null(strstr(tcc_out, "no counterexample to systematicity in 2000 pentagons"));
+  assert_non_null(strstr(tcc_out, "five-site disc sets (figure 3.8's kind)"));
+  const char *v = strstr(tcc_out, "verdict: not systematic: ");
+  assert_non_null(v);
+  assert_true(strtoull(v + strlen("verdict: not systematic: "), NULL, 10) > 0);
+  /* the witness CSV and SVG */
+  const char *csv = strstr(tcc_out, "      csv: ");
+  assert_non_null(csv);
+  char path[1024];
+  assert_int_equal(sscanf(csv + 11, "%1023s", path), 1);
+  char *flip = malloc(TCC_BUF);
+  assert_int_equal(testutil_runf(flip, TCC_BUF, tcc_err, TCC_BUF,
+                                 "--define 'negR = -R' flipgraph --rule negR_1 --points %s", path), 0);
+  const char *k = strstr(flip, "sinks: ");
+  assert_non_null(k);
+  assert_true(atoi(k + 7) >= 2);
+  assert_non_null(strstr(flip, "sites: 5\n"));
+  /* the printed witness line and the CSV hold the same numbers */
+  const char *w = strstr(tcc_out, "    witness: set #");
+  assert_non_null(w);
+  char *file = testutil_read_file(path);
+  assert_non_null(file);
+  const char *tok = strchr(w, ':') + 1;
+  tok = strchr(tok, ':') + 1;   /* after "set #N:" */
+  for (int i = 0; i < 5; i++) {
+    char pt[128];
+    assert_int_equal(sscanf(tok, " %127s", pt), 1);
+    strcat(pt, "\n");
+    assert_non_null(strstr(file, pt));
+    tok = strchr(tok + 1, ' ');
+    if (tok == NULL) break;
+  }
+  free(file);
+  char svg[1100];
+  snprintf(svg, sizeof svg, "%.*s.svg", (int)(strlen(path) - 4), path);
+  char *s = testutil_read_file(svg);
+  assert_non_null(s);
+  assert_true(testutil_count(s, ">sink</text>") >= 2);
+  free(s);
+  free(flip);
+  assert_int_equal(testutil_run("rule R_1 --samples 1000 --quads 100 --site-samples 1000",
+                                tcc_out, TCC_BUF, tcc_err, TCC_BUF), 0);
+  assert_non_null(strstr(tcc_out, "no counterexample to systematicity in 1000 five-site disc sets"));
+  assert_non_null(strstr(tcc_out, "no counterexample to systematicity in 1000 convex hexagons"));
+  tcc_refused("rule R_1 --sites disc:13", "--sites N");
+  tcc_refused("rule R_1 --sites blob:5", "unknown sampler 'blob'");
+}
+
 static int tcc_setup(void **state) {
   (void)state;
   return testutil_run("--version", NULL, 0, NULL, 0) == 0 ? 0 : -1;   /* makes testtmp/ */
@@ -209,6 +266,7 @@ int main(void) {
     cmocka_unit_test(test_census_pentagons_cli),
     cmocka_unit_test(test_census_bytes),
     cmocka_unit_test(test_bad_input_cli),
+    cmocka_unit_test(test_rule_catches_neg_R),
   };
   return cmocka_run_group_tests(tests, tcc_setup, NULL);
 }
