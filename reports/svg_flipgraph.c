@@ -147,7 +147,7 @@ void report_svg_caption(FILE *f, double x, double y, const char *caption) {
     if (n >= sizeof line) n = sizeof line - 1;
     memcpy(line, s, n);
     line[n] = '\0';
-    fprintf(f, "<text x='%.1f' y='%.1f' font-size='12' font-family='monospace'>", x, y);
+    fprintf(f, "<text x='%g' y='%.1f' font-size='12' font-family='monospace'>", x, y);
     report_xml_text(f, line);
     fprintf(f, "</text>\n");
     y += RFG_LINE;
