@@ -22,6 +22,8 @@ int cli_cmd_classify(int argc, char **argv);
 int cli_cmd_got(int argc, char **argv);
 int cli_cmd_rule(int argc, char **argv);
 int cli_cmd_lot(int argc, char **argv);
+int cli_cmd_flipgraph(int argc, char **argv);
+int cli_cmd_census(int argc, char **argv);
 
 /* Print "fliplab CMD: message" ("fliplab: message" when cmd is NULL) on
 ** stderr, as one line of at most about 1000 bytes (control characters
@@ -106,6 +108,22 @@ void cli_progress_start(cli_progress *p, const char *label);
 /* A flipgraph_progress_fn: ctx is the cli_progress. */
 void cli_progress_update(uint64_t done, uint64_t total, void *ctx);
 void cli_progress_finish(cli_progress *p);
+
+/* `fliplab rule` beyond pentagons (cli/rule_sites.c): the census of each
+** site set of spec ("disc:5,convex:6", or "none") under r, a verdict line
+** each and the first witness with two or more LOTs (its CSV and SVG into
+** svg_dir when not NULL).  cli_rule_sites_check validates spec (0 or 2). */
+struct rule;
+int cli_rule_sites_check(const char *spec);
+int cli_rule_sites(const struct rule *r, const char *spec, uint64_t samples, uint64_t seed,
+                   double tie_eps, int threads, const char *svg_dir);
+
+/* --measures: "table34" (the thesis's twenty, its order), "all" (those,
+** then the other registered measures) or NAME,NAME,...: registry ids into
+** ids[MEASURE_MAX]; the count, or -1 after a one-line error. */
+int cli_measure_list(const char *cmd, const char *s, int *ids);
+/* --shard K/N: 1 <= K <= N <= 10^6; 0, or -1 after a one-line error. */
+int cli_parse_shard(const char *cmd, const char *s, uint64_t *k, uint64_t *n);
 
 /* Output files (cli/output.c).  cli_open_out(cmd, FILE) returns a stream
 ** for FILE ("-" or NULL: stdout) that really writes a temporary file in

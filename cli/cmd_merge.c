@@ -32,7 +32,8 @@ static const cli_option cli_merge_help[] = {
 
 static void cli_merge_usage(void) {
   cli_help(stdout, "usage: fliplab merge A.csv B.csv ... [options]",
-           "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`).\n"
+           "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`),\n"
+           "or census CSV files (`fliplab census --shard K/N --format csv`; no --plot).\n"
            "They must come from one run: same seed, tie tolerance, samples and measures,\n"
            "sample ranges that tile without gap or overlap, no file twice (docs/merge.md).\n"
            "A file name '-' reads standard input.\n",
@@ -207,6 +208,41 @@ static int cli_merge_table34(const cli_merge_opts *o, cli_merge_input *in) {
   return rc;
 }
 
+/* ---- census CSVs ----------------------------------------------------------- */
+
+/* `fliplab census --format csv` files: same rules, sites and sampler in the
+** same order, summed and written by census's own writer (the means read
+** back into exact sums: reports/census.c).  The census CSV records no
+** seed or sample range, so tiling cannot be checked; --plot does not
+** apply. */
+static int cli_merge_census(const cli_merge_opts *o, cli_merge_input *in) {
+  if (o->plot != NULL)
+    return cli_error(CMD, "--plot draws table34 CSVs only; '%s' is a census CSV", in[0].name);
+  report_census_row *acc = NULL, *add = NULL;
+  int nacc = 0, nadd = 0, rc = 2;
+  char err[512];
+  if (report_census_read(in[0].f, in[0].name, &acc, &nacc, err, sizeof err) != 0)
+    return cli_error(CMD, "%s", err);
+  for (int k = 1; k < o->nfiles; k++) {
+    int bad = report_census_read(in[k].f, in[k].name, &add, &nadd, err, sizeof err) != 0 ||
+              report_census_add(acc, nacc, add, nadd, in[k].name, err, sizeof err) != 0;
+    free(add);
+    add = NULL;
+    if (bad) {
+      cli_error(CMD, "%s", err);
+      goto done;
+    }
+  }
+  FILE *out = cli_open_out(CMD, o->out);
+  if (out == NULL) goto done;
+  report_census_meta meta = {0};
+  report_census_write(out, o->fmt, &meta, acc, nacc);   /* errors: cli_close_out */
+  rc = cli_close_out(out) != 0 ? 1 : 0;
+done:
+  free(acc);
+  return rc;
+}
+
 /* ---- kinds -------------------------------------------------------------- */
 
 typedef struct cli_merge_kind {
@@ -216,6 +252,7 @@ typedef struct cli_merge_kind {
 
 static const cli_merge_kind cli_merge_kinds[] = {
   {"measure,joint,rule,samples,", cli_merge_table34},
+  {"measure,joint,rule,sites,sampler,", cli_merge_census},
 };
 #define CLI_MERGE_NKINDS (sizeof cli_merge_kinds / sizeof cli_merge_kinds[0])
 

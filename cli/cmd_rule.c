@@ -38,6 +38,8 @@ typedef struct cli_rule_opts {
   uint64_t samples, seed, witnesses, quads, threads;
   double tie_eps;
   const char *svg_dir;
+  const char *sites;          /* site sets beyond pentagons (cli/rule_sites.c) */
+  uint64_t site_samples;
 } cli_rule_opts;
 
 typedef struct cli_rule_found {
@@ -58,6 +60,10 @@ static const cli_option cli_rule_opts_help[] = {
   {"--quads", "M", "100000", "random convex quadrilaterals for the Delaunay-equivalence check"},
   {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules, at most 1e-3"},
   {"--threads", "T", "all cores", "threads; no output depends on T"},
+  {"--sites", "LIST", "disc:5,convex:6",
+   "also census these site sets (SAMPLER:N, or none): a verdict\n"
+   "                     and a witness set each (docs/sitesets.md)"},
+  {"--site-samples", "S", "20000", "site sets per --sites entry"},
 };
 
 static void cli_rule_usage(FILE *f) {
@@ -329,7 +335,8 @@ static void cli_rule_print(const rule *r, const cli_rule_opts *o, const flipgrap
 /* ---- the command ------------------------------------------------------------- */
 
 static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o, rule *rules, int *nrules) {
-  *o = (cli_rule_opts){100000, 1, 3, 100000, 0, RULE_DEFAULT_TIE_EPS, NULL};
+  *o = (cli_rule_opts){100000, 1, 3, 100000, 0, RULE_DEFAULT_TIE_EPS, NULL,
+                       "disc:5,convex:6", 20000};
   *nrules = 0;
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
@@ -354,6 +361,11 @@ static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o, rule *rules, 
       if (cli_parse_double("rule", a, v, 0, 1e-3, &o->tie_eps)) return 2;
     } else if (strcmp(a, "--svg-dir") == 0) {
       o->svg_dir = v;
+    } else if (strcmp(a, "--sites") == 0) {
+      if (cli_rule_sites_check(v) != 0) return 2;
+      o->sites = v;
+    } else if (strcmp(a, "--site-samples") == 0) {
+      if (cli_parse_u64("rule", a, v, 1, 1ull << 40, &o->site_samples)) return 2;
     } else {
       return cli_unknown_option("rule", a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
     }
@@ -396,7 +408,9 @@ int cli_cmd_rule(int argc, char **argv) {
     cli_rule_print(&rules[r], &o, &counts[r]);
     cli_rule_verdicts(&rules[r], &counts[r]);
     cli_rule_quad_report(&rules[r], &o, &qc[r]);
-    rc = cli_rule_witnesses(&rules[r], &o, &found[(size_t)r * CLI_RULE_WTYPES]);
+    rc = cli_rule_sites(&rules[r], o.sites, o.site_samples, o.seed, o.tie_eps, (int)o.threads,
+                        o.svg_dir);
+    if (rc == 0) rc = cli_rule_witnesses(&rules[r], &o, &found[(size_t)r * CLI_RULE_WTYPES]);
   }
   if (rc == 0 && cli_userdefs_failed("rule")) rc = 1;
 out:

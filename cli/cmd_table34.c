@@ -16,7 +16,6 @@
 #define CMD "table34"
 #define CLI_MAX_SAMPLES 1000000000000ull   /* 1e12 */
 #define CLI_MAX_THREADS 1024
-#define CLI_MAX_SHARDS 1000000ull
 
 static const cli_option cli_table34_help[] = {
   {"--samples", "N", "5000", "pentagons, at most 1e12"},
@@ -44,81 +43,6 @@ static void cli_table34_usage(void) {
            "iteration method in the unit disc) under every (measure x joint) rule and DT:\n"
            "types I-V and agreement with Delaunay (docs/classification.md, docs/sampling.md).\n",
            cli_table34_help, CLI_NOPTS(cli_table34_help));
-}
-
-/* --measures: "table34", "all" or NAME,NAME,... into ids[]; count or -1. */
-static int cli_table34_measures(const char *s, int *ids) {
-  if (strcmp(s, "table34") == 0) {
-    memcpy(ids, measure_table34, sizeof measure_table34);
-    return MEASURE_TABLE34_COUNT;
-  }
-  if (strcmp(s, "all") == 0) {
-    /* The thesis's twenty first, in its order, then the others (beta, d,
-    ** sigma, user-defined ones) in registry order. */
-    int n = MEASURE_TABLE34_COUNT;
-    memcpy(ids, measure_table34, sizeof measure_table34);
-    for (int m = 0; m < measure_count() && n < MEASURE_MAX; m++) {
-      int listed = 0;
-      for (int k = 0; k < MEASURE_TABLE34_COUNT; k++) listed |= measure_table34[k] == m;
-      if (!listed) ids[n++] = m;
-    }
-    return n;
-  }
-  int n = 0;
-  const char *p = s;
-  for (;;) {
-    const char *comma = strchr(p, ',');
-    size_t len = comma ? (size_t)(comma - p) : strlen(p);
-    char name[128];
-    if (len == 0 || len >= sizeof name) {
-      cli_error(CMD, "--measures: empty or too long measure name in '%s'", s);
-      return -1;
-    }
-    memcpy(name, p, len);
-    name[len] = '\0';
-    int id = measure_find(name);
-    if (id < 0) {
-      char all[2048];
-      const char *near = cli_closest_measure(name);
-      measure_names(all, sizeof all);
-      if (near != NULL)
-        cli_error(CMD, "--measures: unknown measure '%s': did you mean '%s'? (fliplab list)", name,
-                  near);
-      else
-        cli_error(CMD, "--measures: unknown measure '%s' (valid: table34, all, or a list of: %s)",
-                  name, all);
-      return -1;
-    }
-    for (int i = 0; i < n; i++)
-      if (ids[i] == id) {
-        cli_error(CMD, "--measures: '%s' is listed twice", name);
-        return -1;
-      }
-    if (n == MEASURE_MAX) return -1;
-    ids[n++] = id;
-    if (comma == NULL) break;
-    p = comma + 1;
-  }
-  return n;
-}
-
-static int cli_table34_shard(const char *s, uint64_t *k, uint64_t *n) {
-  const char *slash = strchr(s, '/');
-  char ks[32];
-  if (slash == NULL || (size_t)(slash - s) >= sizeof ks) {
-    cli_error(CMD, "--shard expects K/N (e.g. 3/8), got '%s'", s);
-    return -1;
-  }
-  memcpy(ks, s, (size_t)(slash - s));
-  ks[slash - s] = '\0';
-  if (cli_parse_u64(CMD, "--shard N", slash + 1, 1, CLI_MAX_SHARDS, n) != 0 ||
-      cli_parse_u64(CMD, "--shard K", ks, 1, CLI_MAX_SHARDS, k) != 0)
-    return -1;
-  if (*k > *n) {
-    cli_error(CMD, "--shard %s: K must be between 1 and N", s);
-    return -1;
-  }
-  return 0;
 }
 
 typedef struct cli_table34_opts {
@@ -186,7 +110,7 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
       o->has_columns = 1;
     } else if (strcmp(a, "--shard") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_table34_shard(v, &o->shard_k, &o->shard_n) != 0)
+          cli_parse_shard(CMD, v, &o->shard_k, &o->shard_n) != 0)
         return -1;
     } else if (strcmp(a, "--measures") == 0) {
       if ((o->measures = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
@@ -211,7 +135,7 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
 ** then DT.  *rules is malloc'ed; count or -1. */
 static int cli_table34_rules(const char *measures, rule **rules) {
   int ids[MEASURE_MAX];
-  int nm = cli_table34_measures(measures, ids);
+  int nm = cli_measure_list(CMD, measures, ids);
   if (nm < 0) return -1;
   int cap = nm * JOINT_COUNT + 1;
   *rules = malloc((size_t)cap * sizeof **rules);

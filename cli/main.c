@@ -21,6 +21,8 @@ static const cli_command cli_commands[] = {
   {"rule",     cli_cmd_rule,     "test a flip rule: types, intervals, verdicts, witnesses"},
   {"got",      cli_cmd_got,      "globally optimal triangulation of a simple polygon"},
   {"lot",      cli_cmd_lot,      "locally optimal triangulation of a point set, any rule"},
+  {"flipgraph", cli_cmd_flipgraph, "every triangulation of a small site set, directed by a rule"},
+  {"census",   cli_cmd_census,   "table 3.4 for any n: flip graphs of random site sets"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

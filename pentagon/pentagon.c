@@ -9,8 +9,8 @@
 ** Iteration method (thesis section 6.3, docs/sampling.md):
 ** points uniform in the unit disc (rejection from the square [-1,1]^2), one
 ** at a time, keeping their convex hull, until the hull has exactly five
-** vertices.  Adding one point raises the hull size by at most one, so five
-** is hit exactly.  Every hull test is exact (geom_orient, whose filter is
+** vertices (sampler_convex: n vertices, 3 <= n <= SAMPLER_HULL_MAX - 1).
+** Adding one point raises the hull size by at most one, so n is hit exactly.  Every hull test is exact (geom_orient, whose filter is
 ** inline), so duplicate, collinear and on-the-boundary draws are handled
 ** without tolerances: a
 ** point on the hull's boundary is not a new vertex, and a vertex left
@@ -118,7 +118,7 @@ static int sampler_hull_small(geom_point *h, int n, geom_point p) {
 ** including one left on a segment between its neighbour and p (a zero
 ** side next to a negative one), and p goes between L and R. */
 static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
-  int side[8], any = 0;   /* n <= 7 */
+  int side[SAMPLER_HULL_MAX], any = 0;   /* n < SAMPLER_HULL_MAX */
   for (int k = 0; k < n; k++) {
     side[k] = geom_orient(h[k], h[(k + 1) % n], p);
     if (side[k] < 0) any = 1;
@@ -131,40 +131,44 @@ static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
     if (side[k] > 0 && prev <= 0) R = k;           /* chain ends at h_k */
   }
   /* New hull: p, then h_R, h_{R+1}, ..., h_L anticlockwise. */
-  geom_point t[8] = {{0, 0}};
+  geom_point t[SAMPLER_HULL_MAX] = {{0, 0}};
   int m = 0;
   t[m++] = p;
   for (int k = R;; k = (k + 1) % n) {
     t[m++] = h[k];
     if (k == L) break;
   }
-  for (int k = 0; k < 8; k++) h[k] = t[k];   /* fixed length: no memmove call */
+  for (int k = 0; k < m; k++) h[k] = t[k];
   return m;
 }
 
 /* Add p to the strictly convex anticlockwise hull h[0..n-1] (h has room
-** for 8 points; n <= 6) and return the new size.  Not in sampler.h:
+** for n + 1 points; n < SAMPLER_HULL_MAX) and return the new size.  Not in sampler.h:
 ** exposed for test_sampler's degenerate cases, which declare it. */
 int sampler_hull_add(geom_point *h, int n, geom_point p);
 int sampler_hull_add(geom_point *h, int n, geom_point p) {
   return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
 }
 
-void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
+void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v) {
   sampler_rng g;
   sampler_seed(&g, seed, index);
-  geom_point h[8];
-  int n = 0;
-  while (n != 5) {
+  geom_point h[SAMPLER_HULL_MAX];
+  int m = 0;
+  while (m != n) {
     geom_point p = sampler_disc(&g);
-    n = sampler_hull_add(h, n, p);
+    m = sampler_hull_add(h, m, p);
   }
   /* Start at the lexicographically smallest vertex, so the labelling
-  ** v0..v4 does not depend on the order the hull was built in. */
+  ** v0..v{n-1} does not depend on the order the hull was built in. */
   int s = 0;
-  for (int k = 1; k < 5; k++)
+  for (int k = 1; k < n; k++)
     if (geom_lexless(h[k], h[s])) s = k;
-  for (int k = 0; k < 5; k++) v[k] = h[(s + k) % 5];
+  for (int k = 0; k < n; k++) v[k] = h[(s + k) % n];
+}
+
+void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
+  sampler_convex(seed, index, 5, v);
 }
 
 /* Quadrilateral i of seed S: four points uniform in the unit disc, drawn

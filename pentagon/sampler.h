@@ -39,6 +39,26 @@ void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]);
 ** Delaunay-equivalence check of `fliplab rule`, and the tests). */
 void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 
+/* The iteration method for convex n-gons, 3 <= n < SAMPLER_HULL_MAX:
+** sample `index` of stream `seed`, anticlockwise from the lexicographically
+** smallest vertex.  For n = 5 it is sampler_pentagon, draw for draw. */
+#define SAMPLER_HULL_MAX 16
+void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v);
+
+/* Site sets for the census (pentagon/sites.c).  SAMPLER_SITES_CONVEX is
+** sampler_convex; the others draw n independent points (uniform in the unit
+** disc, uniform in the square [-1, 1)^2, standard normal), redrawing the
+** whole set from the same stream in the (measure-zero) event of two equal
+** points or all points on one line.  Sample i depends only on (seed, i). */
+typedef enum sampler_sites_kind {
+  SAMPLER_SITES_CONVEX, SAMPLER_SITES_DISC, SAMPLER_SITES_SQUARE, SAMPLER_SITES_NORMAL,
+  SAMPLER_SITES_COUNT
+} sampler_sites_kind;
+const char *sampler_sites_name(int kind);       /* "convex", ... ; NULL if unknown */
+int sampler_sites_find(const char *name);       /* -1 if unknown */
+/* 0, or -1 for an unknown kind or n out of [3, SAMPLER_HULL_MAX). */
+int sampler_sites(int kind, uint64_t seed, uint64_t index, int n, geom_point *out);
+
 /* Convex n-gons, anticlockwise, strictly convex, n >= 3.  0 on success,
 ** SAMPLER_ENOMEM when memory ran out, -1 when no strictly convex n-gon
 ** came out in floating point. */

@@ -134,3 +134,31 @@ int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *ma
   }
   return ferror(f) ? -1 : 0;
 }
+
+/* The same rows as a polygon, unchecked: a site set for `fliplab flipgraph`. */
+int report_sites_read(const char *path, geom_point **out, size_t *n, char *err, size_t errlen) {
+  *out = NULL;
+  *n = 0;
+  FILE *f = fopen(path, "rb");
+  if (f == NULL) {
+    snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    return -1;
+  }
+  report_got_reader r = {0};
+  r.err = err;
+  r.errlen = errlen;
+  r.path = path;
+  err[0] = '\0';
+  char perr[256] = "";
+  int rc = report_csv_each(f, report_got_record, &r, perr, sizeof perr);
+  fclose(f);
+  free(r.line);
+  if (rc != 0) {
+    if (err[0] == '\0') snprintf(err, errlen, "%s %s", path, perr);
+    free(r.pts);
+    return -1;
+  }
+  *out = r.pts;
+  *n = r.n;
+  return 0;
+}

@@ -269,7 +269,7 @@ const char *report_number(const char *s, double *v) {
 }
 
 /* Strict decimal count: digits only, no sign, no overflow. */
-static int report_parse_count(const char *s, uint64_t *out) {
+int report_parse_count(const char *s, uint64_t *out) {
   uint64_t v = 0;
   if (*s == '\0') return -1;
   for (; *s; s++) {

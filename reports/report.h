@@ -22,6 +22,7 @@
 #include "flipgraph.h"
 #include "geom.h"
 #include "got.h"
+#include "siteflip.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
@@ -130,6 +131,9 @@ int report_counts_read(FILE *in, const char *name, report_row **rows, int *nrows
 int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
                     const char *what, char *err, size_t errlen);
 
+/* Strict decimal count: digits only, no sign, no overflow; 0 or -1. */
+int report_parse_count(const char *s, uint64_t *out);
+
 /* Generic CSV records through libcsv.  fn gets each non-empty record with
 ** its 1-based line number; a non-zero return stops the walk and is
 ** returned.  Lines count LF terminators, so quoted newlines shift them.
@@ -181,6 +185,72 @@ int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, in
 ** coordinates...), drawn below.  0, or -1 on a write error. */
 int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *g,
                          const char *caption);
+
+/* Caption lines (separated by '\n') as monospace text from (x, y) down,
+** 17 px apart, escaped by report_xml_text. */
+void report_svg_caption(FILE *f, double x, double y, const char *caption);
+
+/* ---- flip graphs of small site sets (reports/svg_siteflip.c) ---- */
+
+/* The directed flip graph of a site set: a small drawing of every
+** triangulation in columns by flip distance from triangulation 1, an arrow
+** on each flip towards the preferred one (dashed line for `either`),
+** sinks in a thick green frame, sources in a dashed red one, the Delaunay
+** triangulation tagged "DT".  At most REPORT_SITEFLIP_SVG_MAX nodes
+** (returns -2 and writes nothing above); 0, or -1 on a write error. */
+#define REPORT_SITEFLIP_SVG_MAX 64
+int report_siteflip_svg(FILE *f, const siteflip_graph *g, const rule_choice *dec,
+                        const char *caption);
+
+/* Sites from CSV: rows "x,y", optional header "x,y", every error one line
+** naming the file and line; the set itself is checked by siteflip_check.
+** 0 (free *out) or -1. */
+int report_sites_read(const char *path, geom_point **out, size_t *n, char *err, size_t errlen);
+
+/* ---- the census of site sets (reports/census.c) ---- */
+
+/* One rule's census.  measure and joint empty for whole-quadrilateral
+** rules (which have no GOT, so no gap). */
+typedef struct report_census_row {
+  char measure[64];
+  char joint[16];
+  char rule[96];
+  int sites;
+  char sampler[16];
+  siteflip_counts c;
+} report_census_row;
+
+typedef struct report_census_meta {
+  int has_seed;
+  uint64_t seed;
+  int has_tie_eps;
+  double tie_eps;
+  uint64_t shard_k, shard_n;        /* shard_n == 0: not a shard */
+} report_census_meta;
+
+void report_census_row_from_rule(report_census_row *row, const rule *r, int sites,
+                                 const char *sampler, const siteflip_counts *c);
+
+/* CSV, one row per rule:
+**   measure,joint,rule,sites,sampler,samples,tie,no_sink,one_sink,
+**   multi_sink,sink_dt,mean_sinks,max_sinks,mean_worst_gap
+** mean_sinks = sinks / (samples - tie); mean_worst_gap = the mean over the
+** samples with a sink of the worst sink's relative gap to the GOT (empty
+** for rules that are not triangle-based, and both empty with no sample to
+** average).  Both read back into exact integer sums (docs/sitesets.md). */
+#define REPORT_CENSUS_NCOLS 14
+extern const char *const report_census_header[REPORT_CENSUS_NCOLS];
+int report_census_write(FILE *f, report_format fmt, const report_census_meta *m,
+                        const report_census_row *rows, int nrows);
+
+/* Read a census CSV from in (named path in errors): header, field counts,
+** numbers, consistency; every error one line naming the line.  *rows
+** malloc'ed; 0 or -1. */
+int report_census_read(FILE *in, const char *path, report_census_row **rows, int *nrows,
+                       char *err, size_t errlen);
+/* acc += add after checking the same rules, sites and sampler in order. */
+int report_census_add(report_census_row *acc, int nacc, const report_census_row *add,
+                      int nadd, const char *what, char *err, size_t errlen);
 
 /* ---- fliplab got (reports/csv_got.c, reports/svg_got.c) ---- */
 

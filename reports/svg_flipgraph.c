@@ -137,6 +137,25 @@ static void report_flipgraph_edge(FILE *f, const flipgraph *g, int k) {
             (j + 3 + (d == RULE_BD)) % 5);
 }
 
+void report_svg_caption(FILE *f, double x, double y, const char *caption) {
+  if (caption == NULL) return;
+  const char *s = caption;
+  while (*s) {
+    const char *e = strchr(s, '\n');
+    size_t n = e ? (size_t)(e - s) : strlen(s);
+    char line[1024];
+    if (n >= sizeof line) n = sizeof line - 1;
+    memcpy(line, s, n);
+    line[n] = '\0';
+    fprintf(f, "<text x='%g' y='%.1f' font-size='12' font-family='monospace'>", x, y);
+    report_xml_text(f, line);
+    fprintf(f, "</text>\n");
+    y += RFG_LINE;
+    s += n;
+    if (*s == '\n') s++;
+  }
+}
+
 int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *g,
                          const char *caption) {
   int lines = 0;
@@ -164,24 +183,7 @@ int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *
     report_flipgraph_tri(f, p, g, &m, report_flipgraph_cycle[k], source, k);
   fprintf(f, "<text x='%.1f' y='%.1f' font-size='13' text-anchor='middle' fill='#555555'>"
              "type %s</text>\n", RFG_CX, RFG_CY + 5, flipgraph_type_name(g->type));
-  double y = RFG_CY + RFG_RING + RFG_BOX / 2 + 48;
-  if (caption != NULL && *caption != '\0') {
-    const char *s = caption;
-    while (*s) {
-      const char *e = strchr(s, '\n');
-      size_t n = e ? (size_t)(e - s) : strlen(s);
-      char line[1024];
-      if (n >= sizeof line) n = sizeof line - 1;
-      memcpy(line, s, n);
-      line[n] = '\0';
-      fprintf(f, "<text x='12' y='%.1f' font-size='12' font-family='monospace'>", y);
-      report_xml_text(f, line);
-      fprintf(f, "</text>\n");
-      y += RFG_LINE;
-      s += n;
-      if (*s == '\n') s++;
-    }
-  }
+  report_svg_caption(f, 12, RFG_CY + RFG_RING + RFG_BOX / 2 + 48, caption);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }

@@ -1,0 +1,535 @@
+/*
+** sitecensus.c: the census of directed flip graphs over many random site
+** sets and many rules (`fliplab census`), and the search for a witness.
+**
+** Per sample: draw the sites, get the flip graph (convex n-gons all share
+** one shape, built once per thread and moved to each sample; other sets
+** are enumerated afresh), evaluate every measure once per triangle, then
+** per rule decide every quadrilateral once, find the sinks, and for
+** triangle-based rules the worst sink's gap to the GOT.
+**
+** Decisions are rule_eval_tris's, bit for bit: the same measure values
+** (measure_eval_all computes the registry's expressions), and in the
+** packed loop the joint and comparison written out with the same IEEE
+** operations in the same order as joint_apply (joint.c) and
+** joint_compare_values; for the product and root-sum-square on slots with
+** magnitudes outside [2^-511, 2^511] (where the plain evaluation could
+** leave the normal range), joint_compare itself, in split form.  Inside
+** that range every product, square and sum of squares is a normal double,
+** so plain and split forms agree bit for bit.  The tests compare every
+** rule's census with siteflip_direct sample by sample.
+**
+** Sinks.  With at most 64 quadrilaterals the decisions pack into one word
+** (bit q = 1 for BD); node u is a sink iff (bits & qmask[u]) == want[u],
+** where qmask[u] marks the quadrilaterals of u's flips and want[u] those
+** where u holds BD.  Larger graphs walk the edge list.
+**
+** GOT shortcut.  A flip that a triangle rule strictly prefers never
+** raises the total badness: the total is the joint over all triangles, the
+** joint is non-decreasing in each argument, and the flip lowers the joint
+** of the two triangles it replaces.  Flipping from a GOT as the rule says
+** therefore stays at GOT's total and, the rule having no cycles (theorem
+** 1), ends in a sink: some sink attains the GOT.  So with no tie, one sink
+** means gap 0, and with several the GOT is the best sink; no other
+** triangulation's total is needed.  (test_siteflip checks best sink = GOT
+** against brute force and `got`; test_census that census and
+** siteflip_direct agree sample by sample.)
+**
+** Thread and shard independence: each sample depends only on (seed, i),
+** the counts are integers, and each sample's gap is rounded to a multiple
+** of SITEFLIP_GAP_UNIT before it is added.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <omp.h>
+#include "siteflip_internal.h"
+#include "measure.h"
+#include "joint.h"
+#include "sampler.h"
+
+#define SITEFLIP_CHUNK 256
+
+typedef struct siteflip_crule {
+  int quad;              /* whole-quadrilateral rule */
+  int slot;
+  joint_id joint;
+  int neg;               /* finite-p joint on a measure <= 0 */
+  int msign;             /* the measure's sign */
+} siteflip_crule;
+
+typedef struct siteflip_cplan {
+  const rule *rules;
+  int nrules, nslots, eval_all;
+  int slot_measure[MEASURE_MAX];
+  double slot_sign[MEASURE_MAX];   /* -1.0 for measures <= 0, else +1.0 */
+  int slot_neg[MEASURE_MAX];
+  int joint_used[JOINT_COUNT];
+  siteflip_crule *cr;
+  double eps;
+} siteflip_cplan;
+
+typedef struct siteflip_cwork {
+  siteflip_graph *shape;     /* convex: the one shape, moved to each sample */
+  double *val, *mag;          /* values and magnitudes, [triangle][slot] */
+  size_t valcap, magcap;
+  uint64_t bits[JOINT_COUNT][MEASURE_MAX];      /* BD decisions by quadrilateral */
+  unsigned char wide[MEASURE_MAX];   /* a magnitude outside [2^-511, 2^511] */
+  unsigned char tie[JOINT_COUNT][MEASURE_MAX];
+  rule_choice *dec;
+  size_t deccap;
+  uint64_t *qmask, *want;
+  unsigned char *out;
+  double *key;
+  int *sinks;
+  size_t nodecap;
+} siteflip_cwork;
+
+static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
+  memset(pl, 0, sizeof *pl);
+  pl->rules = rules;
+  pl->nrules = nrules;
+  pl->eps = eps;
+  pl->cr = calloc((size_t)nrules + 1, sizeof *pl->cr);
+  if (pl->cr == NULL) return -1;
+  for (int i = 0; i < nrules; i++) {
+    const rule *r = &rules[i];
+    siteflip_crule *c = &pl->cr[i];
+    if (r->kind == RULE_QUAD) {
+      if (r->quad < 0 || r->quad >= rule_quad_count()) return -1;
+      c->quad = 1;
+      continue;
+    }
+    if (r->measure < 0 || r->measure >= measure_count() || (unsigned)r->joint >= JOINT_COUNT)
+      return -1;
+    int s = 0;
+    while (s < pl->nslots && pl->slot_measure[s] != r->measure) s++;
+    if (s == pl->nslots) {
+      pl->slot_neg[s] = measure_get(r->measure)->sign < 0;
+      pl->slot_sign[s] = pl->slot_neg[s] ? -1.0 : 1.0;
+      pl->slot_measure[pl->nslots++] = r->measure;
+    }
+    pl->joint_used[r->joint] = 1;
+    c->slot = s;
+    c->joint = r->joint;
+    c->msign = measure_get(r->measure)->sign;
+    c->neg = joint_get(r->joint)->needs_sign && c->msign < 0;
+  }
+  /* measure_eval_all when it is cheaper than calls: many slots, and no
+  ** unused user measure (maybe a slow formula) would run. */
+  pl->eval_all = pl->nslots > 4;
+  for (int m = MEASURE_BUILTIN_COUNT; m < measure_count(); m++) {
+    int used = 0;
+    for (int k = 0; k < pl->nslots; k++) used |= pl->slot_measure[k] == m;
+    if (!used) pl->eval_all = 0;
+  }
+  return 0;
+}
+
+static void siteflip_cwork_free(siteflip_cwork *w) {
+  siteflip_free(w->shape);
+  free(w->val);
+  free(w->mag);
+  free(w->dec);
+  free(w->qmask);
+  free(w->want);
+  free(w->out);
+  free(w->key);
+  free(w->sinks);
+}
+
+static int siteflip_grow(void **p, size_t *cap, size_t need, size_t size) {
+  if (need <= *cap) return 0;
+  void *q = realloc(*p, need * size);
+  if (q == NULL) return -1;
+  *p = q;
+  *cap = need;
+  return 0;
+}
+
+/* Room for g's values, decisions and per-node arrays. */
+static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g, int nslots) {
+  size_t vc = w->valcap, dc = w->deccap, nn = (size_t)g->nnodes + 1, nc = w->nodecap;
+  size_t mc = w->magcap;
+  if (siteflip_grow((void **)&w->val, &vc, (size_t)g->ntris * (size_t)(nslots + 1), sizeof *w->val) ||
+      siteflip_grow((void **)&w->mag, &mc, (size_t)g->ntris * (size_t)(nslots + 1), sizeof *w->mag) ||
+      siteflip_grow((void **)&w->dec, &dc, (size_t)g->nquads + 1, sizeof *w->dec))
+    return -1;
+  w->valcap = vc;
+  w->magcap = mc;
+  w->deccap = dc;
+  if (nn <= nc) return 0;
+  size_t c1 = nc, c2 = nc, c3 = nc, c4 = nc, c5 = nc;
+  if (siteflip_grow((void **)&w->qmask, &c1, nn, sizeof *w->qmask) ||
+      siteflip_grow((void **)&w->want, &c2, nn, sizeof *w->want) ||
+      siteflip_grow((void **)&w->out, &c3, nn, sizeof *w->out) ||
+      siteflip_grow((void **)&w->key, &c4, nn, sizeof *w->key) ||
+      siteflip_grow((void **)&w->sinks, &c5, nn, sizeof *w->sinks))
+    return -1;
+  w->nodecap = nn;
+  return 0;
+}
+
+static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g) {
+  if (g->nquads > 64) return;
+  memset(w->qmask, 0, (size_t)g->nnodes * sizeof *w->qmask);
+  memset(w->want, 0, (size_t)g->nnodes * sizeof *w->want);
+  for (int e = 0; e < g->nedges; e++) {
+    uint64_t b = 1ull << g->edge[e].quad;
+    w->qmask[g->edge[e].ac] |= b;
+    w->qmask[g->edge[e].bd] |= b;
+    w->want[g->edge[e].bd] |= b;
+  }
+}
+
+/* ---- decisions -------------------------------------------------------------- */
+
+/* joint.c's g, on magnitudes for the finite-p joints. */
+static inline double siteflip_g(joint_id j, double x, double y) {
+  switch (j) {
+    case JOINT_MIN: return x < y ? x : y;
+    case JOINT_MAX: return x > y ? x : y;
+    case JOINT_HARMONIC:
+      if (x == INFINITY) return y;
+      if (y == INFINITY) return x;
+      return 1.0 / (1.0 / x + 1.0 / y);
+    case JOINT_PRODUCT: return x * y;
+    case JOINT_SUM: return x + y;
+    default: return sqrt(x * x + y * y);
+  }
+}
+
+/* Every quadrilateral of g under a triangle rule, as rule_eval_tris decides
+** it (joint_compare); *bits as above (when nquads <= 64).  Returns 1 if
+** some decision is `either`. */
+static int siteflip_decide_tri(const siteflip_graph *g, const double *val, int ns,
+                               const siteflip_crule *c, double eps, rule_choice *dec,
+                               uint64_t *bits) {
+  uint64_t b = 0;
+  for (int q = 0; q < g->nquads; q++) {
+    const int *t = g->quad[q].tri;
+    int k = joint_compare(c->joint, c->msign, val[t[0] * ns + c->slot], val[t[1] * ns + c->slot],
+                          val[t[2] * ns + c->slot], val[t[3] * ns + c->slot], eps);
+    if (k == 0) return 1;
+    dec[q] = k < 0 ? RULE_AC : RULE_BD;
+    if (q < 64) b |= (uint64_t)(k > 0) << q;
+  }
+  *bits = b;
+  return 0;
+}
+
+static int siteflip_decide(const siteflip_cplan *pl, int i, const siteflip_graph *g,
+                           const double *val, rule_choice *dec, uint64_t *bits) {
+  const siteflip_crule *c = &pl->cr[i];
+  if (c->quad) {
+    uint64_t b = 0;
+    for (int q = 0; q < g->nquads; q++) {
+      const unsigned char *v = g->quad[q].v;
+      geom_point pts[4] = {g->p[v[0]], g->p[v[1]], g->p[v[2]], g->p[v[3]]};
+      dec[q] = rule_eval(&pl->rules[i], pts, pl->eps, NULL, NULL);
+      if (dec[q] == RULE_EITHER) return 1;
+      if (q < 64) b |= (uint64_t)(dec[q] == RULE_BD) << q;
+    }
+    *bits = b;
+    return 0;
+  }
+  return siteflip_decide_tri(g, val, pl->nslots, c, pl->eps, dec, bits);
+}
+
+/* All slots of joint j at once, for graphs of at most 64 quadrilaterals:
+** w->bits[j][s] and w->tie[j][s].  The inner loop runs over slots on
+** contiguous memory without branches (selects only), so the compiler can
+** vectorise it; it is siteflip_decide_tri's arithmetic lane by lane: on
+** magnitudes for the finite-p joints, where for a measure <= 0 comparing
+** -u with -v is comparing u with v reversed (negation is exact; ties are
+** unchanged since |-u| = |u| and (-u) - (-v) = -(u - v) exactly). */
+static inline void siteflip_joint_bits(joint_id j, const siteflip_cplan *pl,
+                                       const siteflip_graph *g, siteflip_cwork *w) {
+  const int ns = pl->nslots, finite_p = j != JOINT_MIN && j != JOINT_MAX;
+  const double *src = finite_p ? w->mag : w->val, eps = pl->eps;
+  uint64_t *bits = w->bits[j];
+  unsigned char *tie = w->tie[j];
+  for (int s = 0; s < ns; s++) {
+    bits[s] = 0;
+    tie[s] = 0;
+  }
+  for (int q = 0; q < g->nquads; q++) {
+    const int *t = g->quad[q].tri;
+    const double *a0 = src + t[0] * ns, *a1 = src + t[1] * ns;
+    const double *b0 = src + t[2] * ns, *b1 = src + t[3] * ns;
+    for (int s = 0; s < ns; s++) {
+      double fa = siteflip_g(j, a0[s], a1[s]), fb = siteflip_g(j, b0[s], b1[s]);
+      double aa = fabs(fa), ab = fabs(fb), big = aa > ab ? aa : ab;
+      int te = (fa == fb) | (fa != fa) | (fb != fb) |
+               ((aa != INFINITY) & (ab != INFINITY) & (fabs(fa - fb) <= eps * big));
+      int bd = (fa < fb) == (finite_p & pl->slot_neg[s]);
+      tie[s] |= (unsigned char)te;
+      bits[s] |= (uint64_t)(bd & !te) << q;
+    }
+  }
+}
+
+static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
+                              siteflip_cwork *w) {
+  const int ns = pl->nslots;
+  for (int s = 0; s < ns; s++) w->wide[s] = 0;
+  for (int t = 0; t < g->ntris; t++)
+    for (int s = 0; s < ns; s++) {
+      double m = pl->slot_sign[s] * w->val[t * ns + s];
+      w->mag[t * ns + s] = m;
+      w->wide[s] |= !(m >= 0x1p-511 && m <= 0x1p511);
+    }
+  for (int j = 0; j < JOINT_COUNT; j++) {
+    if (!pl->joint_used[j]) continue;
+    switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
+      case JOINT_MIN: siteflip_joint_bits(JOINT_MIN, pl, g, w); break;
+      case JOINT_HARMONIC: siteflip_joint_bits(JOINT_HARMONIC, pl, g, w); break;
+      case JOINT_PRODUCT: siteflip_joint_bits(JOINT_PRODUCT, pl, g, w); break;
+      case JOINT_SUM: siteflip_joint_bits(JOINT_SUM, pl, g, w); break;
+      case JOINT_RSS: siteflip_joint_bits(JOINT_RSS, pl, g, w); break;
+      default: siteflip_joint_bits(JOINT_MAX, pl, g, w); break;
+    }
+  }
+}
+
+/* ---- one sample ----------------------------------------------------------- */
+
+static int siteflip_sinks(siteflip_cwork *w, const siteflip_graph *g, const rule_choice *dec,
+                          uint64_t bits) {
+  int ns = 0;
+  if (g->nquads <= 64) {
+    for (int u = 0; u < g->nnodes; u++)
+      if ((bits & w->qmask[u]) == w->want[u]) w->sinks[ns++] = u;
+    return ns;
+  }
+  memset(w->out, 0, (size_t)g->nnodes);
+  for (int e = 0; e < g->nedges; e++)
+    w->out[dec[g->edge[e].quad] == RULE_AC ? g->edge[e].bd : g->edge[e].ac] = 1;
+  for (int u = 0; u < g->nnodes; u++)
+    if (!w->out[u]) w->sinks[ns++] = u;
+  return ns;
+}
+
+static double siteflip_ckey(const siteflip_graph *g, const double *val, int nslots,
+                            const siteflip_crule *c, int u) {
+  joint_keyop op = joint_get(c->joint)->keyop;
+  double k = joint_key_identity(c->joint);
+  const int *t = g->node_tri + (size_t)u * (size_t)g->per;
+  for (int f = 0; f < g->per; f++) {
+    double v = val[t[f] * nslots + c->slot];
+    k = joint_key_combine(op, k, op == JOINT_KEY_ADD ? joint_key(c->joint, c->msign, v) : v);
+  }
+  return k;
+}
+
+/* The worst sink's gap, in units; see the GOT shortcut above. */
+static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph *g,
+                                   const double *val, int nslots, const siteflip_crule *c,
+                                   int nsinks) {
+  if (nsinks == 1) return 0;
+  double best = INFINITY, worst = -INFINITY;
+  for (int s = 0; s < nsinks; s++) {
+    double k = siteflip_ckey(g, val, nslots, c, w->sinks[s]);
+    best = fmin(best, k);
+    worst = fmax(worst, k);
+  }
+  double gap = siteflip_gap(c->joint, c->msign, best, worst);
+  if (!(gap > 0)) return 0;
+  return (uint64_t)llround(fmin(gap, 4.0) / SITEFLIP_GAP_UNIT);
+}
+
+static void siteflip_values(const siteflip_cplan *pl, const siteflip_graph *g, double *val) {
+  double all[MEASURE_MAX];
+  for (int t = 0; t < g->ntris; t++) {
+    double *row = val + (size_t)t * (size_t)pl->nslots;
+    if (pl->eval_all) {
+      measure_eval_all(&g->tri[t], all);
+      for (int s = 0; s < pl->nslots; s++) row[s] = all[pl->slot_measure[s]];
+    } else {
+      for (int s = 0; s < pl->nslots; s++) row[s] = measure_eval(pl->slot_measure[s], &g->tri[t]);
+    }
+  }
+}
+
+static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const siteflip_graph *g,
+                           siteflip_counts *out) {
+  siteflip_values(pl, g, w->val);
+  int packed = g->nquads <= 64;
+  if (packed) siteflip_all_bits(pl, g, w);
+  for (int i = 0; i < pl->nrules; i++) {
+    siteflip_counts *c = &out[i];
+    const siteflip_crule *cr = &pl->cr[i];
+    uint64_t bits = 0;
+    c->samples++;
+    /* Packed unless the rule is a quadrilateral rule, or a product or
+    ** root-sum-square on a slot with extreme magnitudes: those the plain
+    ** evaluation of the packed loop could under- or overflow, and
+    ** joint_compare decides them in split form (joint.h). */
+    int fast = packed && !cr->quad &&
+               !(w->wide[cr->slot] && (cr->joint == JOINT_PRODUCT || cr->joint == JOINT_RSS));
+    int tied = fast ? w->tie[cr->joint][cr->slot]
+                    : siteflip_decide(pl, i, g, w->val, w->dec, &bits);
+    if (tied) {
+      c->tie++;
+      continue;
+    }
+    if (fast) bits = w->bits[cr->joint][cr->slot];
+    int ns = siteflip_sinks(w, g, w->dec, bits);
+    c->sinks += (uint64_t)ns;
+    if ((uint64_t)ns > c->max_sinks) c->max_sinks = (uint64_t)ns;
+    if (ns == 0) c->no_sink++;
+    else if (ns > 1) c->multi_sink++;
+    else {
+      c->one_sink++;
+      c->sink_dt += w->sinks[0] == g->delaunay;
+    }
+    if (ns > 0 && !pl->cr[i].quad)
+      c->gap_units += siteflip_gap_units(w, g, w->val, pl->nslots, &pl->cr[i], ns);
+  }
+}
+
+/* The flip graph of sample i: the moved shape, or a new graph (*owned). */
+static siteflip_graph *siteflip_sample(siteflip_cwork *w, int sampler, int n, uint64_t seed,
+                                       uint64_t i, int *owned) {
+  geom_point p[SITEFLIP_MAX_SITES];
+  char err[256];
+  sampler_sites(sampler, seed, i, n, p);
+  *owned = 0;
+  if (sampler == SAMPLER_SITES_CONVEX) {
+    if (w->shape == NULL && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL)
+      return NULL;
+    siteflip_move(w->shape, p);
+    return w->shape;
+  }
+  *owned = 1;
+  return siteflip_build(p, n, err, sizeof err);
+}
+
+static int siteflip_range(const siteflip_cplan *pl, siteflip_cwork *w, int sampler, int n,
+                          uint64_t seed, uint64_t lo, uint64_t hi, siteflip_counts *out) {
+  for (uint64_t i = lo; i < hi; i++) {
+    int owned;
+    siteflip_graph *g = siteflip_sample(w, sampler, n, seed, i, &owned);
+    if (g == NULL || siteflip_cwork_fit(w, g, pl->nslots) != 0) {
+      if (owned) siteflip_free(g);
+      return -1;
+    }
+    if (owned || i == lo) siteflip_cwork_masks(w, g);
+    siteflip_count(pl, w, g, out);
+    if (owned) siteflip_free(g);
+  }
+  return 0;
+}
+
+static void siteflip_counts_add(siteflip_counts *a, const siteflip_counts *b) {
+  a->samples += b->samples;
+  a->tie += b->tie;
+  a->no_sink += b->no_sink;
+  a->one_sink += b->one_sink;
+  a->multi_sink += b->multi_sink;
+  a->sink_dt += b->sink_dt;
+  a->sinks += b->sinks;
+  if (b->max_sinks > a->max_sinks) a->max_sinks = b->max_sinks;
+  a->gap_units += b->gap_units;
+}
+
+static int siteflip_census_args(int sampler, int n, uint64_t first, uint64_t count, char *err,
+                                size_t errlen) {
+  if (sampler_sites_name(sampler) == NULL) {
+    snprintf(err, errlen, "unknown sampler %d", sampler);
+    return -1;
+  }
+  if (n < 3 || n > SITEFLIP_MAX_SITES) {
+    snprintf(err, errlen, "%d sites: the census takes 3 to %d", n, SITEFLIP_MAX_SITES);
+    return -1;
+  }
+  if (first + count < first) {
+    snprintf(err, errlen, "sample range overflows");
+    return -1;
+  }
+  return 0;
+}
+
+int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
+                    uint64_t first, uint64_t count, double tie_eps, int threads,
+                    siteflip_counts *out, siteflip_progress_fn progress, void *ctx,
+                    char *err, size_t errlen) {
+  if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0) return -1;
+  siteflip_cplan pl;
+  if (siteflip_cplan_make(&pl, rules, nrules, tie_eps) != 0) {
+    free(pl.cr);
+    snprintf(err, errlen, "invalid rule list");
+    return -1;
+  }
+  if (threads <= 0) threads = omp_get_max_threads();
+  uint64_t nchunks = (count + SITEFLIP_CHUNK - 1) / SITEFLIP_CHUNK;
+  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
+  size_t nr = nrules > 0 ? (size_t)nrules : 1;
+  siteflip_counts *all = calloc((size_t)threads * nr, sizeof *all);
+  if (all == NULL) {
+    free(pl.cr);
+    snprintf(err, errlen, "out of memory");
+    return -1;
+  }
+  uint64_t done = 0;
+  int failed = 0;
+#pragma omp parallel num_threads(threads)
+  {
+    int me = omp_get_thread_num();
+    siteflip_cwork w;
+    memset(&w, 0, sizeof w);
+#pragma omp for schedule(dynamic, 1)
+    for (uint64_t k = 0; k < nchunks; k++) {
+      uint64_t lo = first + k * SITEFLIP_CHUNK;
+      uint64_t hi = k + 1 == nchunks ? first + count : lo + SITEFLIP_CHUNK;
+      if (failed) continue;
+      if (siteflip_range(&pl, &w, sampler, n, seed, lo, hi, all + (size_t)me * nr) != 0) {
+#pragma omp atomic write
+        failed = 1;
+      }
+      uint64_t now;
+#pragma omp atomic capture
+      now = done += hi - lo;
+      if (progress != NULL && me == 0) progress(now, count, ctx);
+    }
+    siteflip_cwork_free(&w);
+  }
+  if (progress != NULL && !failed) progress(count, count, ctx);
+  for (int t = 0; t < threads && !failed; t++)
+    for (int r = 0; r < nrules; r++) siteflip_counts_add(&out[r], &all[(size_t)t * nr + r]);
+  free(all);
+  free(pl.cr);
+  if (failed) snprintf(err, errlen, "out of memory enumerating triangulations");
+  return failed ? -1 : 0;
+}
+
+int64_t siteflip_find_multi(const rule *r, int sampler, int n, uint64_t seed, uint64_t first,
+                            uint64_t count, double tie_eps, geom_point *p) {
+  char err[256];
+  if (siteflip_census_args(sampler, n, first, count, err, sizeof err) != 0) return -1;
+  siteflip_cplan pl;
+  siteflip_cwork w;
+  memset(&w, 0, sizeof w);
+  int64_t found = -1;
+  if (siteflip_cplan_make(&pl, r, 1, tie_eps) == 0)
+    for (uint64_t i = first; i < first + count && found < 0; i++) {
+      int owned;
+      siteflip_graph *g = siteflip_sample(&w, sampler, n, seed, i, &owned);
+      if (g == NULL || siteflip_cwork_fit(&w, g, pl.nslots) != 0) {
+        if (owned) siteflip_free(g);
+        break;
+      }
+      siteflip_cwork_masks(&w, g);
+      siteflip_counts c = {0};
+      siteflip_count(&pl, &w, g, &c);
+      if (c.multi_sink > 0) {
+        found = (int64_t)i;
+        memcpy(p, g->p, (size_t)n * sizeof *p);
+      }
+      if (owned) siteflip_free(g);
+    }
+  free(pl.cr);
+  siteflip_cwork_free(&w);
+  return found;
+}

@@ -1,0 +1,551 @@
+/*
+** siteflip.c: every triangulation of a small site set and its flip graph.
+**
+** Segments.  A segment i-j may be an edge of a triangulation iff no site
+** lies in its relative interior ("valid").  Two valid segments without a
+** common endpoint can share a point only by crossing properly (touching
+** would put an endpoint of one in the interior of the other), and two with
+** a common endpoint only meet there (overlapping would too).  So a set of
+** valid segments is non-crossing iff no two of them cross properly: two
+** strict orientation tests each, exact.  A maximal non-crossing set of
+** valid segments is a triangulation; the first one is built greedily.
+**
+** Faces.  A triangle with no site inside or on its sides ("empty") whose
+** three sides are edges of a triangulation T is a face of T: an edge of T
+** entering it would cross a side, and no site is there to end one.  So the
+** faces of T are the empty triangles whose side masks lie in T's mask.
+**
+** Flips.  An edge i-j shared by faces ijk and jil is flippable iff ikjl is
+** strictly convex, i.e. iff k-l crosses i-j properly; the flip swaps i-j
+** for k-l.  The flip graph of a planar point set is connected (Lawson), so
+** breadth-first search from the first triangulation, with the edge mask as
+** the canonical key, finds all of them.  Each flip is recorded once, from
+** the triangulation that holds the quadrilateral's diagonal AC.
+*/
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "siteflip_internal.h"
+#include "measure.h"
+#include "joint.h"
+
+#define SITEFLIP_NSEG (SITEFLIP_MAX_SITES * (SITEFLIP_MAX_SITES - 1) / 2)
+#define SITEFLIP_NTRIPLE (SITEFLIP_MAX_SITES * (SITEFLIP_MAX_SITES - 1) * (SITEFLIP_MAX_SITES - 2) / 6)
+
+int siteflip_seg(int n, int i, int j) {
+  if (i > j) {
+    int t = i;
+    i = j;
+    j = t;
+  }
+  return i * n - i * (i + 1) / 2 + (j - i - 1);
+}
+
+static void siteflip_mask_set(siteflip_mask *m, int b) {
+  if (b < 64) m->lo |= 1ull << b;
+  else m->hi |= 1ull << (b - 64);
+}
+
+static void siteflip_mask_clear(siteflip_mask *m, int b) {
+  if (b < 64) m->lo &= ~(1ull << b);
+  else m->hi &= ~(1ull << (b - 64));
+}
+
+static int siteflip_mask_has(const siteflip_mask *m, int b) {
+  return (int)(b < 64 ? (m->lo >> b) & 1 : (m->hi >> (b - 64)) & 1);
+}
+
+static int siteflip_mask_meets(siteflip_mask a, siteflip_mask b) {
+  return ((a.lo & b.lo) | (a.hi & b.hi)) != 0;
+}
+
+static int siteflip_mask_within(siteflip_mask a, siteflip_mask b) {
+  return (a.lo & ~b.lo) == 0 && (a.hi & ~b.hi) == 0;
+}
+
+int siteflip_has_edge(const siteflip_graph *g, int u, int i, int j) {
+  return siteflip_mask_has(&g->node[u], siteflip_seg(g->n, i, j));
+}
+
+/* ---- checking the sites -------------------------------------------------- */
+
+int siteflip_check(const geom_point *p, int n, char *err, size_t errlen) {
+  if (n < 3) {
+    snprintf(err, errlen, "%d site%s: a triangulation needs at least 3", n, n == 1 ? "" : "s");
+    return -1;
+  }
+  if (n > SITEFLIP_MAX_SITES) {
+    snprintf(err, errlen,
+             "%d sites: enumeration is limited to %d sites (the number of triangulations "
+             "grows exponentially: a convex 12-gon already has 16796)",
+             n, SITEFLIP_MAX_SITES);
+    return -1;
+  }
+  for (int i = 0; i < n; i++) {
+    geom_coorderr e = geom_coord_check(p[i].x);
+    if (e == GEOM_COORD_OK) e = geom_coord_check(p[i].y);
+    if (e != GEOM_COORD_OK) {
+      snprintf(err, errlen, "site %d: a coordinate %s", i + 1, geom_coorderr_str(e));
+      return -1;
+    }
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < i; j++)
+      if (p[i].x == p[j].x && p[i].y == p[j].y) {
+        snprintf(err, errlen, "sites %d and %d are equal (%.17g, %.17g)", j + 1, i + 1,
+                 p[i].x, p[i].y);
+        return -1;
+      }
+  for (int k = 2; k < n; k++)
+    if (geom_orient(p[0], p[1], p[k]) != 0) return 0;
+  snprintf(err, errlen, "all %d sites are collinear: there is no triangulation", n);
+  return -1;
+}
+
+/* ---- the build ----------------------------------------------------------- */
+
+typedef struct siteflip_ctx {
+  int n, nseg;
+  unsigned char seg_i[SITEFLIP_NSEG], seg_j[SITEFLIP_NSEG];
+  int valid[SITEFLIP_NSEG];
+  siteflip_mask cross[SITEFLIP_NSEG];    /* segments crossing s properly */
+  int ntri;
+  unsigned char tri_v[SITEFLIP_NTRIPLE][3];
+  siteflip_mask tri_mask[SITEFLIP_NTRIPLE];
+  short tri_id[SITEFLIP_MAX_SITES][SITEFLIP_MAX_SITES][SITEFLIP_MAX_SITES];
+  int qmap[1 << SITEFLIP_MAX_SITES];     /* site set -> quadrilateral, -1 */
+  int *table;                            /* hash: node index + 1, 0 empty */
+  size_t tcap;
+  int ncap, ecap, qcap;
+} siteflip_ctx;
+
+/* Is site k in the relative interior of segment i-j? (exact) */
+static int siteflip_between(const geom_point *p, int i, int j, int k) {
+  geom_point a = p[i], b = p[j], c = p[k];
+  if (geom_orient(a, b, c) != 0) return 0;
+  return fmin(a.x, b.x) <= c.x && c.x <= fmax(a.x, b.x) && fmin(a.y, b.y) <= c.y &&
+         c.y <= fmax(a.y, b.y);
+}
+
+static int siteflip_crosses(const geom_point *p, int a, int b, int c, int d) {
+  if (a == c || a == d || b == c || b == d) return 0;
+  return geom_orient(p[a], p[b], p[c]) * geom_orient(p[a], p[b], p[d]) < 0 &&
+         geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) < 0;
+}
+
+/* Is the triangle ijk proper and free of other sites (inside or on a side)? */
+static int siteflip_empty(const geom_point *p, int n, int i, int j, int k) {
+  int o = geom_orient(p[i], p[j], p[k]);
+  if (o == 0) return 0;
+  for (int m = 0; m < n; m++) {
+    if (m == i || m == j || m == k) continue;
+    if (o * geom_orient(p[i], p[j], p[m]) >= 0 && o * geom_orient(p[j], p[k], p[m]) >= 0 &&
+        o * geom_orient(p[k], p[i], p[m]) >= 0)
+      return 0;
+  }
+  return 1;
+}
+
+static void siteflip_segments(siteflip_ctx *c, const geom_point *p) {
+  int n = c->n;
+  c->nseg = n * (n - 1) / 2;
+  for (int i = 0; i < n; i++)
+    for (int j = i + 1; j < n; j++) {
+      int s = siteflip_seg(n, i, j), ok = 1;
+      c->seg_i[s] = (unsigned char)i;
+      c->seg_j[s] = (unsigned char)j;
+      for (int k = 0; k < n && ok; k++)
+        if (k != i && k != j && siteflip_between(p, i, j, k)) ok = 0;
+      c->valid[s] = ok;
+    }
+  for (int s = 0; s < c->nseg; s++) {
+    c->cross[s] = (siteflip_mask){0, 0};
+    for (int t = 0; t < c->nseg; t++)
+      if (c->valid[t] && siteflip_crosses(p, c->seg_i[s], c->seg_j[s], c->seg_i[t], c->seg_j[t]))
+        siteflip_mask_set(&c->cross[s], t);
+  }
+  c->ntri = 0;
+  for (int i = 0; i < n; i++)
+    for (int j = i + 1; j < n; j++)
+      for (int k = j + 1; k < n; k++) {
+        c->tri_id[i][j][k] = -1;
+        if (!siteflip_empty(p, n, i, j, k)) continue;
+        int t = c->ntri++;
+        c->tri_id[i][j][k] = (short)t;
+        c->tri_v[t][0] = (unsigned char)i;
+        c->tri_v[t][1] = (unsigned char)j;
+        c->tri_v[t][2] = (unsigned char)k;
+        c->tri_mask[t] = (siteflip_mask){0, 0};
+        siteflip_mask_set(&c->tri_mask[t], siteflip_seg(n, i, j));
+        siteflip_mask_set(&c->tri_mask[t], siteflip_seg(n, j, k));
+        siteflip_mask_set(&c->tri_mask[t], siteflip_seg(n, i, k));
+      }
+}
+
+static int siteflip_tri_of(const siteflip_ctx *c, int a, int b, int d) {
+  int v[3] = {a, b, d};
+  for (int x = 0; x < 2; x++)
+    for (int y = 0; y < 2 - x; y++)
+      if (v[y] > v[y + 1]) {
+        int t = v[y];
+        v[y] = v[y + 1];
+        v[y + 1] = t;
+      }
+  return c->tri_id[v[0]][v[1]][v[2]];
+}
+
+static uint64_t siteflip_hash(siteflip_mask m) {
+  uint64_t h = m.lo * 0x9E3779B97F4A7C15ull ^ (m.hi + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+  return h ^ (h >> 29);
+}
+
+/* Node index of mask m, adding it when new (-1 when out of memory). */
+static int siteflip_node_of(siteflip_ctx *c, siteflip_graph *g, siteflip_mask m) {
+  if ((size_t)g->nnodes * 2 >= c->tcap) {
+    size_t cap = c->tcap ? c->tcap * 2 : 1024;
+    int *t = calloc(cap, sizeof *t);
+    if (t == NULL) return -1;
+    for (int u = 0; u < g->nnodes; u++) {
+      size_t h = siteflip_hash(g->node[u]) & (cap - 1);
+      while (t[h] != 0) h = (h + 1) & (cap - 1);
+      t[h] = u + 1;
+    }
+    free(c->table);
+    c->table = t;
+    c->tcap = cap;
+  }
+  size_t h = siteflip_hash(m) & (c->tcap - 1);
+  for (; c->table[h] != 0; h = (h + 1) & (c->tcap - 1)) {
+    siteflip_mask o = g->node[c->table[h] - 1];
+    if (o.lo == m.lo && o.hi == m.hi) return c->table[h] - 1;
+  }
+  if (g->nnodes == c->ncap) {
+    int cap = c->ncap ? c->ncap * 2 : 64;
+    siteflip_mask *nm = realloc(g->node, (size_t)cap * sizeof *nm);
+    if (nm == NULL) return -1;
+    g->node = nm;
+    c->ncap = cap;
+  }
+  g->node[g->nnodes] = m;
+  c->table[h] = g->nnodes + 1;
+  return g->nnodes++;
+}
+
+/* The quadrilateral of the flip i-j <-> k-l, added when new; *is_ac says
+** whether i-j is its diagonal AC.  -1 when out of memory. */
+static int siteflip_quad_of(siteflip_ctx *c, siteflip_graph *g, int i, int j, int k, int l,
+                            int *is_ac) {
+  const geom_point *p = g->p;
+  int cyc[4] = {i, k, j, l};
+  if (geom_orient(p[i], p[k], p[j]) < 0) {
+    cyc[1] = l;
+    cyc[3] = k;
+  }
+  int m = 0;
+  for (int t = 1; t < 4; t++)
+    if (cyc[t] < cyc[m]) m = t;
+  unsigned char v[4];
+  for (int t = 0; t < 4; t++) v[t] = (unsigned char)cyc[(m + t) % 4];
+  *is_ac = (v[0] == i && v[2] == j) || (v[0] == j && v[2] == i);
+  int key = (1 << i) | (1 << j) | (1 << k) | (1 << l);
+  if (c->qmap[key] >= 0) return c->qmap[key];
+  if (g->nquads == c->qcap) {
+    int cap = c->qcap ? c->qcap * 2 : 64;
+    siteflip_quad *nq = realloc(g->quad, (size_t)cap * sizeof *nq);
+    if (nq == NULL) return -1;
+    g->quad = nq;
+    c->qcap = cap;
+  }
+  siteflip_quad *q = &g->quad[g->nquads];
+  memcpy(q->v, v, 4);
+  q->tri[0] = siteflip_tri_of(c, v[0], v[1], v[2]);
+  q->tri[1] = siteflip_tri_of(c, v[0], v[2], v[3]);
+  q->tri[2] = siteflip_tri_of(c, v[0], v[1], v[3]);
+  q->tri[3] = siteflip_tri_of(c, v[1], v[2], v[3]);
+  return c->qmap[key] = g->nquads++;
+}
+
+static int siteflip_add_edge(siteflip_ctx *c, siteflip_graph *g, int ac, int bd, int q) {
+  if (g->nedges == c->ecap) {
+    int cap = c->ecap ? c->ecap * 2 : 64;
+    siteflip_edge *ne = realloc(g->edge, (size_t)cap * sizeof *ne);
+    if (ne == NULL) return -1;
+    g->edge = ne;
+    c->ecap = cap;
+  }
+  g->edge[g->nedges++] = (siteflip_edge){ac, bd, q};
+  return 0;
+}
+
+/* Faces of node u into g->node_tri (grown by the caller), and every flip
+** out of u; new triangulations join the queue (the node array). */
+static int siteflip_expand(siteflip_ctx *c, siteflip_graph *g, int u, int *faces) {
+  siteflip_mask T = g->node[u];
+  int nf = 0, face_of[SITEFLIP_NSEG][2], nfo[SITEFLIP_NSEG];
+  for (int t = 0; t < c->ntri; t++)
+    if (siteflip_mask_within(c->tri_mask[t], T)) faces[nf++] = t;
+  if (nf != g->per) return -2;   /* cannot happen: every triangulation has per faces */
+  memset(nfo, 0, sizeof nfo);
+  for (int f = 0; f < nf; f++) {
+    const unsigned char *v = c->tri_v[faces[f]];
+    int s[3] = {siteflip_seg(c->n, v[0], v[1]), siteflip_seg(c->n, v[1], v[2]),
+                siteflip_seg(c->n, v[0], v[2])};
+    for (int e = 0; e < 3; e++) face_of[s[e]][nfo[s[e]]++] = faces[f];
+  }
+  for (int s = 0; s < c->nseg; s++) {
+    if (nfo[s] != 2) continue;
+    int i = c->seg_i[s], j = c->seg_j[s], k = -1, l = -1;
+    for (int e = 0; e < 3; e++) {
+      int a = c->tri_v[face_of[s][0]][e], b = c->tri_v[face_of[s][1]][e];
+      if (a != i && a != j) k = a;
+      if (b != i && b != j) l = b;
+    }
+    int s2 = siteflip_seg(c->n, k, l);
+    if (!siteflip_mask_has(&c->cross[s], s2)) continue;   /* not strictly convex */
+    siteflip_mask T2 = T;
+    siteflip_mask_clear(&T2, s);
+    siteflip_mask_set(&T2, s2);
+    int w = siteflip_node_of(c, g, T2), is_ac;
+    if (w < 0) return -1;
+    int q = siteflip_quad_of(c, g, i, j, k, l, &is_ac);
+    if (q < 0) return -1;
+    if (is_ac && siteflip_add_edge(c, g, u, w, q) != 0) return -1;
+  }
+  return 0;
+}
+
+static int siteflip_adjacency(siteflip_graph *g) {
+  g->adj_off = calloc((size_t)g->nnodes + 1, sizeof *g->adj_off);
+  g->adj = malloc(((size_t)g->nedges * 2 + 1) * sizeof *g->adj);
+  if (g->adj_off == NULL || g->adj == NULL) return -1;
+  for (int e = 0; e < g->nedges; e++) {
+    g->adj_off[g->edge[e].ac + 1]++;
+    g->adj_off[g->edge[e].bd + 1]++;
+  }
+  for (int u = 0; u < g->nnodes; u++) g->adj_off[u + 1] += g->adj_off[u];
+  int *fill = malloc(((size_t)g->nnodes + 1) * sizeof *fill);
+  if (fill == NULL) return -1;
+  memcpy(fill, g->adj_off, (size_t)g->nnodes * sizeof *fill);
+  for (int e = 0; e < g->nedges; e++) {
+    g->adj[fill[g->edge[e].ac]++] = e;
+    g->adj[fill[g->edge[e].bd]++] = e;
+  }
+  free(fill);
+  return 0;
+}
+
+/* The triangulation all of whose flippable edges are locally Delaunay:
+** the nodes no flip leaves under DT (exact incircle); -1 unless unique. */
+static int siteflip_delaunay_node(const siteflip_graph *g) {
+  rule_choice *d = malloc(((size_t)g->nquads + 1) * sizeof *d);
+  if (d == NULL) return -1;
+  for (int q = 0; q < g->nquads; q++) {
+    const unsigned char *v = g->quad[q].v;
+    d[q] = rule_delaunay_eval(g->p[v[0]], g->p[v[1]], g->p[v[2]], g->p[v[3]]);
+  }
+  int found = -1, count = 0;
+  for (int u = 0; u < g->nnodes && count < 2; u++) {
+    int out = 0;
+    for (int a = g->adj_off[u]; a < g->adj_off[u + 1] && !out; a++) {
+      const siteflip_edge *e = &g->edge[g->adj[a]];
+      out = (d[e->quad] == RULE_AC && e->bd == u) || (d[e->quad] == RULE_BD && e->ac == u);
+    }
+    if (!out) {
+      found = u;
+      count++;
+    }
+  }
+  free(d);
+  return count == 1 ? found : -1;
+}
+
+void siteflip_move(siteflip_graph *g, const geom_point *p) {
+  memcpy(g->p, p, (size_t)g->n * sizeof *p);
+  for (int t = 0; t < g->ntris; t++)
+    geom_tri_make(&g->tri[t], p[g->tri_v[t][0]], p[g->tri_v[t][1]], p[g->tri_v[t][2]]);
+  g->delaunay = siteflip_delaunay_node(g);
+}
+
+static int siteflip_first(siteflip_ctx *c, siteflip_graph *g) {
+  siteflip_mask T = {0, 0};
+  for (int s = 0; s < c->nseg; s++)
+    if (c->valid[s] && !siteflip_mask_meets(c->cross[s], T)) siteflip_mask_set(&T, s);
+  int nf = 0;
+  for (int t = 0; t < c->ntri; t++) nf += siteflip_mask_within(c->tri_mask[t], T);
+  g->per = nf;
+  return siteflip_node_of(c, g, T);
+}
+
+static int siteflip_enumerate(siteflip_ctx *c, siteflip_graph *g) {
+  if (siteflip_first(c, g) != 0) return -1;
+  int cap = 0;
+  for (int u = 0; u < g->nnodes; u++) {
+    if (u == cap) {
+      cap = cap ? cap * 2 : 64;
+      int *nt = realloc(g->node_tri, (size_t)cap * (size_t)g->per * sizeof *nt);
+      if (nt == NULL) return -1;
+      g->node_tri = nt;
+    }
+    if (siteflip_expand(c, g, u, g->node_tri + (size_t)u * (size_t)g->per) != 0) return -1;
+  }
+  return 0;
+}
+
+siteflip_graph *siteflip_build(const geom_point *p, int n, char *err, size_t errlen) {
+  if (siteflip_check(p, n, err, errlen) != 0) return NULL;
+  siteflip_graph *g = calloc(1, sizeof *g);
+  siteflip_ctx *c = malloc(sizeof *c);
+  if (g == NULL || c == NULL) goto oom;
+  memset(c, 0, offsetof(siteflip_ctx, qmap));
+  memset(c->qmap, 0xff, sizeof c->qmap);
+  c->table = NULL;
+  c->tcap = 0;
+  c->ncap = c->ecap = c->qcap = 0;
+  c->n = g->n = n;
+  memcpy(g->p, p, (size_t)n * sizeof *p);
+  siteflip_segments(c, p);
+  if (siteflip_enumerate(c, g) != 0) goto oom;
+  g->ntris = c->ntri;
+  g->tri_v = malloc((size_t)c->ntri * sizeof *g->tri_v);
+  g->tri = malloc((size_t)c->ntri * sizeof *g->tri);
+  if (g->tri_v == NULL || g->tri == NULL || siteflip_adjacency(g) != 0) goto oom;
+  memcpy(g->tri_v, c->tri_v, (size_t)c->ntri * sizeof *g->tri_v);
+  free(c->table);
+  free(c);
+  siteflip_move(g, p);
+  return g;
+oom:
+  if (c != NULL) free(c->table);
+  free(c);
+  siteflip_free(g);
+  snprintf(err, errlen, "out of memory enumerating the triangulations of %d sites", n);
+  return NULL;
+}
+
+void siteflip_free(siteflip_graph *g) {
+  if (g == NULL) return;
+  free(g->node);
+  free(g->node_tri);
+  free(g->tri_v);
+  free(g->tri);
+  free(g->quad);
+  free(g->edge);
+  free(g->adj_off);
+  free(g->adj);
+  free(g);
+}
+
+/* ---- one rule ------------------------------------------------------------- */
+
+static rule_choice siteflip_decide(const siteflip_graph *g, const rule *r, double tie_eps,
+                                   int q) {
+  const siteflip_quad *Q = &g->quad[q];
+  if (r->kind == RULE_QUAD) {
+    geom_point pts[4] = {g->p[Q->v[0]], g->p[Q->v[1]], g->p[Q->v[2]], g->p[Q->v[3]]};
+    return rule_eval(r, pts, tie_eps, NULL, NULL);
+  }
+  return rule_eval_tris(r, &g->tri[Q->tri[0]], &g->tri[Q->tri[1]], &g->tri[Q->tri[2]],
+                        &g->tri[Q->tri[3]], tie_eps, NULL, NULL);
+}
+
+double siteflip_node_key(const siteflip_graph *g, const rule *r, int u) {
+  const measure *M = measure_get(r->measure);
+  joint_keyop op = joint_get(r->joint)->keyop;
+  double k = joint_key_identity(r->joint);
+  for (int f = 0; f < g->per; f++) {
+    const geom_tri *t = &g->tri[g->node_tri[(size_t)u * (size_t)g->per + f]];
+    k = joint_key_combine(op, k, joint_key(r->joint, M->sign, M->fn(t, M->ctx)));
+  }
+  return k;
+}
+
+/* Kahn's algorithm on the strict edges: peel sinks until none is left. */
+static int siteflip_has_cycle(const siteflip_graph *g, const rule_choice *dec, int *outdeg,
+                              int *queue) {
+  int head = 0, tail = 0;
+  for (int u = 0; u < g->nnodes; u++)
+    if (outdeg[u] == 0) queue[tail++] = u;
+  while (head < tail) {
+    int u = queue[head++];
+    for (int a = g->adj_off[u]; a < g->adj_off[u + 1]; a++) {
+      const siteflip_edge *e = &g->edge[g->adj[a]];
+      rule_choice d = dec[e->quad];
+      int from = d == RULE_AC ? e->bd : d == RULE_BD ? e->ac : -1;
+      int to = d == RULE_AC ? e->ac : e->bd;
+      if (from >= 0 && to == u && --outdeg[from] == 0) queue[tail++] = from;
+    }
+  }
+  return tail < g->nnodes;
+}
+
+static void siteflip_got(const siteflip_graph *g, const rule *r, const int *sinkv, int nsinks,
+                         siteflip_result *res) {
+  const measure *M = measure_get(r->measure);
+  double best = 0, worst = 0;
+  for (int u = 0; u < g->nnodes; u++) {
+    double k = siteflip_node_key(g, r, u);
+    if (u == 0 || k < best) {
+      best = k;
+      res->got_node = u;
+    }
+  }
+  res->worst_sink = -1;
+  for (int s = 0; s < nsinks; s++) {
+    double k = siteflip_node_key(g, r, sinkv[s]);
+    if (res->worst_sink < 0 || k > worst) {
+      worst = k;
+      res->worst_sink = sinkv[s];
+    }
+  }
+  res->has_got = 1;
+  res->got_total = joint_unkey(r->joint, M->sign, best);
+  res->worst_gap = res->worst_sink >= 0 ? siteflip_gap(r->joint, M->sign, best, worst) : 0;
+}
+
+double siteflip_gap(joint_id j, int s, double best_key, double worst_key) {
+  double tw = joint_unkey(j, s, worst_key), tg = joint_unkey(j, s, best_key);
+  double den = fmax(fabs(tw), fabs(tg));
+  return tw > tg && den > 0 ? (tw - tg) / den : 0;
+}
+
+int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
+                    rule_choice *dec, int *sinks, siteflip_result *res) {
+  memset(res, 0, sizeof *res);
+  size_t nn = (size_t)g->nnodes;
+  int *outdeg = calloc(nn, sizeof *outdeg), *indeg = calloc(nn, sizeof *indeg);
+  int *queue = malloc(nn * sizeof *queue);
+  if (outdeg == NULL || indeg == NULL || queue == NULL) {
+    free(outdeg);
+    free(indeg);
+    free(queue);
+    return -1;
+  }
+  for (int q = 0; q < g->nquads; q++) {
+    dec[q] = siteflip_decide(g, r, tie_eps, q);
+    res->ties |= dec[q] == RULE_EITHER;
+  }
+  for (int e = 0; e < g->nedges; e++) {
+    rule_choice d = dec[g->edge[e].quad];
+    if (d == RULE_EITHER) continue;
+    int to = d == RULE_AC ? g->edge[e].ac : g->edge[e].bd;
+    int from = d == RULE_AC ? g->edge[e].bd : g->edge[e].ac;
+    outdeg[from]++;
+    indeg[to]++;
+  }
+  for (int u = 0; u < g->nnodes; u++) {
+    if (outdeg[u] == 0) {
+      if (sinks != NULL) sinks[res->nsinks] = u;
+      queue[res->nsinks++] = u;
+    }
+    res->nsources += indeg[u] == 0;
+  }
+  res->sink_dt = res->nsinks == 1 && g->delaunay >= 0 ? queue[0] == g->delaunay : -1;
+  if (r->kind == RULE_TRIANGLE) siteflip_got(g, r, queue, res->nsinks, res);
+  res->cycle = siteflip_has_cycle(g, dec, outdeg, queue);
+  free(outdeg);
+  free(indeg);
+  free(queue);
+  return 0;
+}

@@ -1,0 +1,157 @@
+/*
+** cmd_flipgraph.c: `fliplab flipgraph`: every triangulation of one small
+** site set (convex or not), its flip graph directed by a rule, and what
+** that graph says: sinks (the LOTs), sources, ties, cycles, whether the
+** sink is the Delaunay triangulation, the GOT by brute force.
+*/
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "report.h"
+#include "rule.h"
+#include "siteflip.h"
+
+#define CMD "flipgraph"
+
+static const cli_option cli_flipgraph_help[] = {
+  {"--rule", "RULE", "required", "DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)"},
+  {"--points", "FILE.csv", "required", "the sites: CSV rows x,y (optional header x,y)"},
+  {"--svg", "FILE.svg", "none", "draw the directed flip graph (at most 64 triangulations)"},
+  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rule"},
+  {"--out", "FILE", "stdout", "write the report to FILE"},
+};
+
+static void cli_flipgraph_usage(void) {
+  cli_help(stdout, "usage: fliplab flipgraph --rule RULE --points FILE.csv [options]",
+           "Enumerate every triangulation of a set of 3 to 12 sites (any position, convex\n"
+           "or not), direct the flip graph by RULE and report: triangulations, flip edges,\n"
+           "sinks (the LOTs; triangles as 1-based site numbers), sources, ties, cycle,\n"
+           "sink is DT, GOT (triangle-based rules, by brute force) and the worst sink's\n"
+           "relative gap to it (docs/sitesets.md).\n",
+           cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
+}
+
+typedef struct cli_flipgraph_opts {
+  const char *rule, *points, *svg, *out;
+  double tie_eps;
+} cli_flipgraph_opts;
+
+static int cli_flipgraph_parse(int argc, char **argv, cli_flipgraph_opts *o) {
+  *o = (cli_flipgraph_opts){.tie_eps = RULE_DEFAULT_TIE_EPS};
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i], *v;
+    if (cli_is_help(a)) {
+      cli_flipgraph_usage();
+      return 1;
+    }
+    const char **slot = strcmp(a, "--rule") == 0     ? &o->rule
+                      : strcmp(a, "--points") == 0   ? &o->points
+                      : strcmp(a, "--svg") == 0      ? &o->svg
+                      : strcmp(a, "--out") == 0      ? &o->out
+                                                     : NULL;
+    if (slot != NULL) {
+      if ((*slot = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
+    } else if (strcmp(a, "--tie-eps") == 0) {
+      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
+          cli_parse_double(CMD, a, v, 0, 1, &o->tie_eps) != 0)
+        return -1;
+    } else {
+      cli_unknown_option(CMD, a, cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
+      return -1;
+    }
+  }
+  if ((o->svg != NULL && cli_check_out_ext(CMD, "--svg", o->svg, "svg") != 0)) return -1;
+  if (o->rule == NULL || o->points == NULL) {
+    cli_error(CMD, "--rule and --points are required (try: fliplab flipgraph --help)");
+    return -1;
+  }
+  return 0;
+}
+
+static void cli_flipgraph_tris(FILE *f, const siteflip_graph *g, int u) {
+  for (int t = 0; t < g->per; t++) {
+    const unsigned char *v = g->tri_v[g->node_tri[(size_t)u * (size_t)g->per + t]];
+    fprintf(f, " (%d,%d,%d)", v[0] + 1, v[1] + 1, v[2] + 1);
+  }
+  fputc('\n', f);
+}
+
+static void cli_flipgraph_report(FILE *f, const siteflip_graph *g, const rule *r,
+                                 const siteflip_result *res, const int *sinks) {
+  fprintf(f, "sites: %d\nrule: %s\ntriangulations: %d\nflip edges: %d\nquadrilaterals: %d\n",
+          g->n, r->name, g->nnodes, g->nedges, g->nquads);
+  fprintf(f, "sinks: %d\n", res->nsinks);
+  for (int k = 0; k < res->nsinks; k++) {
+    fprintf(f, "  sink T%d:", sinks[k] + 1);
+    cli_flipgraph_tris(f, g, sinks[k]);
+  }
+  fprintf(f, "sources: %d\nties: %s\ncycle: %s\nsink is DT: %s\n", res->nsources,
+          res->ties ? "yes" : "no", res->cycle ? "yes" : "no",
+          res->sink_dt < 0 ? "-" : res->sink_dt ? "yes" : "no");
+  if (g->delaunay >= 0) {
+    fprintf(f, "  DT T%d:", g->delaunay + 1);
+    cli_flipgraph_tris(f, g, g->delaunay);
+  }
+  if (res->has_got) {
+    fprintf(f, "GOT: %.17g (T%d)\n", res->got_total, res->got_node + 1);
+    fprintf(f, "worst LOT gap: %.6g (T%d)\n", res->worst_gap, res->worst_sink + 1);
+  } else {
+    fprintf(f, "GOT: - (%s is not triangle-based)\n", r->name);
+  }
+}
+
+static int cli_flipgraph_svg(const char *path, const siteflip_graph *g, const rule *r,
+                             const rule_choice *dec, const siteflip_result *res) {
+  if (g->nnodes > REPORT_SITEFLIP_SVG_MAX) {
+    fprintf(stderr, "fliplab flipgraph: note: %d triangulations are too many to draw "
+                    "(at most %d); no SVG written\n", g->nnodes, REPORT_SITEFLIP_SVG_MAX);
+    return 0;
+  }
+  FILE *f = cli_open_out(CMD, path);
+  if (f == NULL) return 2;
+  char cap[512];
+  snprintf(cap, sizeof cap, "rule %s: %d triangulations, %d sink%s, %d source%s%s%s", r->name,
+           g->nnodes, res->nsinks, res->nsinks == 1 ? "" : "s", res->nsources,
+           res->nsources == 1 ? "" : "s", res->ties ? ", ties" : "",
+           res->cycle ? ", a directed cycle" : "");
+  report_siteflip_svg(f, g, dec, cap);   /* a failed write: cli_close_out reports it */
+  return cli_close_out(f) != 0 ? 1 : 0;
+}
+
+int cli_cmd_flipgraph(int argc, char **argv) {
+  cli_flipgraph_opts o;
+  int st = cli_flipgraph_parse(argc, argv, &o);
+  if (st != 0) return st > 0 ? 0 : 2;
+  rule r;
+  char err[4096];
+  if (cli_parse_rule(CMD, o.rule, &r) != 0) return 2;
+  geom_point *p;
+  size_t n;
+  if (report_sites_read(o.points, &p, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  /* siteflip_check refuses more than 12 sites before reading any. */
+  siteflip_graph *g = siteflip_build(p, n > 1000000 ? 1000000 : (int)n, err, sizeof err);
+  free(p);
+  if (g == NULL) return cli_error(CMD, "%s: %s", o.points, err);
+  rule_choice *dec = malloc(((size_t)g->nquads + 1) * sizeof *dec);
+  int *sinks = malloc((size_t)g->nnodes * sizeof *sinks);
+  siteflip_result res;
+  int rc = 1;
+  FILE *out = NULL;
+  if (dec == NULL || sinks == NULL || siteflip_direct(g, &r, o.tie_eps, dec, sinks, &res) != 0) {
+    cli_error(CMD, "out of memory");
+    goto done;
+  }
+  if (cli_userdefs_failed(CMD)) goto done;
+  if ((out = cli_open_out(CMD, o.out)) == NULL) {
+    rc = 2;
+    goto done;
+  }
+  cli_flipgraph_report(out, g, &r, &res, sinks);
+  rc = cli_close_out(out) != 0 ? 1 : 0;
+  if (rc == 0 && o.svg != NULL) rc = cli_flipgraph_svg(o.svg, g, &r, dec, &res);
+done:
+  free(dec);
+  free(sinks);
+  siteflip_free(g);
+  return rc;
+}

@@ -1,0 +1,347 @@
+/*
+** census.c: what `fliplab census` prints and `fliplab merge` reads back:
+** the census CSV (through libcsv), and a table with one row per rule as
+** text or Markdown.
+**
+** Exact merging.  The CSV carries two means; merge turns them back into
+** the integer sums they were divided from: sinks = round(mean_sinks x
+** (samples - tie)) and gap units = round(mean_worst_gap x (one_sink +
+** multi_sink) / SITEFLIP_GAP_UNIT).  A mean is one correctly rounded
+** quotient printed with %.17g, which reads back to the same double, so the
+** product is the sum within a relative 2^-52: exact after rounding while
+** the sum stays below 2^50 (gap units: at most 2^22 per sample, so up to
+** 2^28 samples per file).  Shards therefore merge into the very bytes of
+** the unsharded run.
+*/
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "report.h"
+#include "measure.h"
+#include "joint.h"
+
+const char *const report_census_header[REPORT_CENSUS_NCOLS] = {
+  "measure", "joint", "rule", "sites", "sampler", "samples", "tie", "no_sink",
+  "one_sink", "multi_sink", "sink_dt", "mean_sinks", "max_sinks", "mean_worst_gap"};
+
+void report_census_row_from_rule(report_census_row *row, const rule *r, int sites,
+                                 const char *sampler, const siteflip_counts *c) {
+  memset(row, 0, sizeof *row);
+  if (r->kind == RULE_TRIANGLE) {
+    snprintf(row->measure, sizeof row->measure, "%s", measure_get(r->measure)->name);
+    snprintf(row->joint, sizeof row->joint, "%s", joint_get(r->joint)->name);
+  }
+  snprintf(row->rule, sizeof row->rule, "%s", r->name);
+  snprintf(row->sampler, sizeof row->sampler, "%s", sampler);
+  row->sites = sites;
+  if (c != NULL) row->c = *c;
+}
+
+static uint64_t report_census_with_sink(const siteflip_counts *c) {
+  return c->one_sink + c->multi_sink;
+}
+
+/* The two means; NAN when there is nothing to average (printed empty). */
+static double report_census_mean_sinks(const siteflip_counts *c) {
+  uint64_t d = c->samples - c->tie;
+  return d > 0 ? (double)c->sinks / (double)d : NAN;
+}
+
+static double report_census_mean_gap(const report_census_row *r) {
+  uint64_t d = report_census_with_sink(&r->c);
+  if (r->measure[0] == '\0' || d == 0) return NAN;
+  return (double)r->c.gap_units * SITEFLIP_GAP_UNIT / (double)d;
+}
+
+static int report_census_csv(FILE *f, const report_census_row *rows, int nrows) {
+  for (int i = 0; i < REPORT_CENSUS_NCOLS; i++) {
+    if (i) fputc(',', f);
+    report_csv_field(f, report_census_header[i]);
+  }
+  fputc('\n', f);
+  for (int r = 0; r < nrows; r++) {
+    const report_census_row *w = &rows[r];
+    const siteflip_counts *c = &w->c;
+    char num[REPORT_CENSUS_NCOLS][40];
+    double ms = report_census_mean_sinks(c), mg = report_census_mean_gap(w);
+    snprintf(num[3], 40, "%d", w->sites);
+    const uint64_t v[7] = {c->samples, c->tie, c->no_sink, c->one_sink, c->multi_sink,
+                           c->sink_dt, 0};
+    for (int k = 0; k < 6; k++) snprintf(num[5 + k], 40, "%llu", (unsigned long long)v[k]);
+    num[11][0] = num[13][0] = '\0';   /* empty: nothing to average */
+    if (!isnan(ms)) snprintf(num[11], 40, "%.17g", ms);
+    snprintf(num[12], 40, "%llu", (unsigned long long)c->max_sinks);
+    if (!isnan(mg)) snprintf(num[13], 40, "%.17g", mg);
+    const char *field[REPORT_CENSUS_NCOLS] = {w->measure, w->joint, w->rule, num[3], w->sampler};
+    for (int k = 5; k < REPORT_CENSUS_NCOLS; k++) field[k] = num[k];
+    for (int k = 0; k < REPORT_CENSUS_NCOLS; k++) {
+      if (k) fputc(',', f);
+      report_csv_field(f, field[k]);
+    }
+    fputc('\n', f);
+  }
+  return ferror(f) ? -1 : 0;
+}
+
+static void report_census_pct(char *buf, size_t len, uint64_t k, uint64_t n) {
+  if (n == 0) snprintf(buf, len, "-");
+  else snprintf(buf, len, "%.3f", 100.0 * (double)k / (double)n);
+}
+
+static const char *const report_census_cols[9] = {
+  "rule", "one sink %", "sink=DT %", "2+ sinks %", "no sink %", "tie %",
+  "mean sinks", "max sinks", "mean worst gap"};
+
+/* The cells of one row, as strings. */
+static void report_census_cells(const report_census_row *w, char cell[9][100]) {
+  const siteflip_counts *c = &w->c;
+  snprintf(cell[0], 100, "%s", w->rule);
+  report_census_pct(cell[1], 100, c->one_sink, c->samples);
+  report_census_pct(cell[2], 100, c->sink_dt, c->samples);
+  report_census_pct(cell[3], 100, c->multi_sink, c->samples);
+  report_census_pct(cell[4], 100, c->no_sink, c->samples);
+  report_census_pct(cell[5], 100, c->tie, c->samples);
+  double ms = report_census_mean_sinks(c), mg = report_census_mean_gap(w);
+  snprintf(cell[6], 100, "%.4f", ms);
+  if (isnan(ms)) snprintf(cell[6], 100, "-");
+  snprintf(cell[7], 100, "%llu", (unsigned long long)c->max_sinks);
+  snprintf(cell[8], 100, "%.3g", mg);
+  if (isnan(mg)) snprintf(cell[8], 100, "-");
+}
+
+static void report_census_title(FILE *f, const report_census_meta *m,
+                                 const report_census_row *w, int md) {
+  fprintf(f, "%sCensus of directed flip graphs: %d sites, sampler %s, %llu samples\n%s",
+          md ? "### " : "", w->sites, w->sampler, (unsigned long long)w->c.samples,
+          md ? "\n" : "");
+  const char *sep = "";
+  if (m->has_seed) {
+    fprintf(f, "seed %llu", (unsigned long long)m->seed);
+    sep = ", ";
+  }
+  if (m->has_tie_eps) {
+    fprintf(f, "%stie eps %g", sep, m->tie_eps);
+    sep = ", ";
+  }
+  if (m->shard_n > 0)
+    fprintf(f, "%sshard %llu/%llu", sep, (unsigned long long)m->shard_k,
+            (unsigned long long)m->shard_n);
+  fprintf(f, "%s%% of site sets with one sink (one LOT), whose sink is DT, with two or\n"
+             "more sinks (not systematic), no sink, a tie (counted only there); worst gap:\n"
+             "the worst sink's total badness relative to the GOT's (triangle-based rules)\n\n",
+          m->has_seed || m->has_tie_eps || m->shard_n > 0 ? "\n" : "");
+}
+
+static int report_census_table(FILE *f, const report_census_meta *m,
+                               const report_census_row *rows, int nrows, int md) {
+  if (nrows == 0) return 0;
+  report_census_title(f, m, &rows[0], md);
+  int width[9];
+  for (int k = 0; k < 9; k++) width[k] = (int)strlen(report_census_cols[k]);
+  char cell[9][100];
+  for (int r = 0; r < nrows; r++) {
+    report_census_cells(&rows[r], cell);
+    for (int k = 0; k < 9; k++)
+      if ((int)strlen(cell[k]) > width[k]) width[k] = (int)strlen(cell[k]);
+  }
+  for (int k = 0; k < 9; k++) {
+    if (md) fprintf(f, "| %s ", report_census_cols[k]);
+    else fprintf(f, k ? "  %*s" : "%-*s", width[k], report_census_cols[k]);
+  }
+  fprintf(f, md ? "|\n|:--|--:|--:|--:|--:|--:|--:|--:|--:|\n" : "\n");
+  for (int r = 0; r < nrows; r++) {
+    report_census_cells(&rows[r], cell);
+    for (int k = 0; k < 9; k++) {
+      if (md) {
+        fputs("| ", f);
+        for (const char *s = cell[k]; *s; s++) {   /* Markdown: escape | and * */
+          if (*s == '|' || *s == '*' || *s == '_') fputc('\\', f);
+          fputc(*s, f);
+        }
+        fputc(' ', f);
+      } else {
+        fprintf(f, k ? "  %*s" : "%-*s", width[k], cell[k]);
+      }
+    }
+    fputs(md ? "|\n" : "\n", f);
+  }
+  return ferror(f) ? -1 : 0;
+}
+
+int report_census_write(FILE *f, report_format fmt, const report_census_meta *m,
+                        const report_census_row *rows, int nrows) {
+  if (fmt == REPORT_CSV) return report_census_csv(f, rows, nrows);
+  return report_census_table(f, m, rows, nrows, fmt == REPORT_MD);
+}
+
+/* ---- reading ---------------------------------------------------------------- */
+
+typedef struct report_census_reader {
+  const char *name;
+  report_census_row *rows;
+  int n, cap, header_seen;
+  char *err;
+  size_t errlen;
+} report_census_reader;
+
+static int report_census_mean(const char *s, uint64_t denom, double scale, uint64_t *out) {
+  if (s[0] == '\0') {
+    *out = 0;
+    return 0;   /* nothing averaged (or no gap for this rule) */
+  }
+  char *end;
+  errno = 0;
+  double v = strtod(s, &end);
+  if (*end != '\0' || errno == ERANGE || !(v >= 0) || isinf(v)) return -1;
+  double x = v * (double)denom / scale;
+  if (x >= 0x1p52) return -1;
+  *out = (uint64_t)llround(x);
+  return 0;
+}
+
+static int report_census_fields(report_census_reader *cr, report_census_row *row, char **f,
+                                unsigned long long ln) {
+  if (strlen(f[0]) >= sizeof row->measure || strlen(f[1]) >= sizeof row->joint ||
+      strlen(f[2]) >= sizeof row->rule || f[2][0] == '\0' || strlen(f[4]) >= sizeof row->sampler) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: rule or sampler name empty or too long",
+             cr->name, ln);
+    return -1;
+  }
+  strcpy(row->measure, f[0]);
+  strcpy(row->joint, f[1]);
+  strcpy(row->rule, f[2]);
+  strcpy(row->sampler, f[4]);
+  uint64_t sites;
+  siteflip_counts *c = &row->c;
+  uint64_t *dst[8] = {&c->samples, &c->tie, &c->no_sink, &c->one_sink, &c->multi_sink,
+                      &c->sink_dt};
+  int col[8] = {5, 6, 7, 8, 9, 10};
+  if (report_parse_count(f[3], &sites) != 0 || sites < 3 || sites > SITEFLIP_MAX_SITES) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: sites '%s' is not a site count 3..%d",
+             cr->name, ln, f[3], SITEFLIP_MAX_SITES);
+    return -1;
+  }
+  row->sites = (int)sites;
+  for (int k = 0; k < 6; k++)
+    if (report_parse_count(f[col[k]], dst[k]) != 0) {
+      snprintf(cr->err, cr->errlen, "%s line %llu: %s '%s' is not a count", cr->name, ln,
+               report_census_header[col[k]], f[col[k]]);
+      return -1;
+    }
+  if (report_parse_count(f[12], &c->max_sinks) != 0 ||
+      report_census_mean(f[11], c->samples - (c->tie <= c->samples ? c->tie : 0), 1.0, &c->sinks) != 0 ||
+      report_census_mean(f[13], c->one_sink + c->multi_sink, SITEFLIP_GAP_UNIT, &c->gap_units) != 0) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: bad mean_sinks, max_sinks or mean_worst_gap",
+             cr->name, ln);
+    return -1;
+  }
+  return 0;
+}
+
+static int report_census_consistent(const siteflip_counts *c) {
+  uint64_t parts[4] = {c->tie, c->no_sink, c->one_sink, c->multi_sink}, sum = 0;
+  for (int k = 0; k < 4; k++) {
+    if (parts[k] > c->samples - sum) return 0;
+    sum += parts[k];
+  }
+  return sum == c->samples && c->sink_dt <= c->one_sink;
+}
+
+static int report_census_record(char **f, int nf, uint64_t line, void *data) {
+  report_census_reader *cr = data;
+  unsigned long long ln = (unsigned long long)line;
+  if (!cr->header_seen) {
+    int ok = nf == REPORT_CENSUS_NCOLS;
+    for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_census_header[i]) == 0;
+    if (!ok) {
+      snprintf(cr->err, cr->errlen, "%s line %llu: not a census CSV (bad header)", cr->name, ln);
+      return -1;
+    }
+    cr->header_seen = 1;
+    return 0;
+  }
+  if (nf != REPORT_CENSUS_NCOLS) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: expected %d fields, got %d", cr->name, ln,
+             REPORT_CENSUS_NCOLS, nf);
+    return -1;
+  }
+  if (cr->n == cr->cap) {
+    int cap = cr->cap ? 2 * cr->cap : 64;
+    report_census_row *r = realloc(cr->rows, (size_t)cap * sizeof *r);
+    if (r == NULL) {
+      snprintf(cr->err, cr->errlen, "%s: out of memory", cr->name);
+      return -1;
+    }
+    cr->rows = r;
+    cr->cap = cap;
+  }
+  report_census_row *row = &cr->rows[cr->n];
+  memset(row, 0, sizeof *row);
+  if (report_census_fields(cr, row, f, ln) != 0) return -1;
+  if (!report_census_consistent(&row->c)) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: inconsistent counts (tie + no_sink + one_sink "
+             "+ multi_sink must be samples, sink_dt <= one_sink)", cr->name, ln);
+    return -1;
+  }
+  if (cr->n > 0 && row->c.samples != cr->rows[0].c.samples) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: samples differ from the first row's",
+             cr->name, ln);
+    return -1;
+  }
+  cr->n++;
+  return 0;
+}
+
+int report_census_read(FILE *in, const char *path, report_census_row **rows, int *nrows,
+                       char *err, size_t errlen) {
+  report_census_reader cr = {.name = path, .err = err, .errlen = errlen};
+  char perr[256] = "";
+  err[0] = '\0';
+  int rc = report_csv_each(in, report_census_record, &cr, perr, sizeof perr);
+  if (rc != 0 && err[0] == '\0') snprintf(err, errlen, "%s: %s", path, perr);
+  if (rc == 0 && cr.n == 0) {
+    snprintf(err, errlen, "%s: no rows after the header", path);
+    rc = -1;
+  }
+  if (rc != 0) {
+    free(cr.rows);
+    return -1;
+  }
+  *rows = cr.rows;
+  *nrows = cr.n;
+  return 0;
+}
+
+int report_census_add(report_census_row *acc, int nacc, const report_census_row *add,
+                      int nadd, const char *what, char *err, size_t errlen) {
+  if (nacc != nadd) {
+    snprintf(err, errlen, "%s has %d rules, the first file %d", what, nadd, nacc);
+    return -1;
+  }
+  for (int i = 0; i < nacc; i++)
+    if (strcmp(acc[i].rule, add[i].rule) != 0 || strcmp(acc[i].measure, add[i].measure) != 0 ||
+        strcmp(acc[i].joint, add[i].joint) != 0 || acc[i].sites != add[i].sites ||
+        strcmp(acc[i].sampler, add[i].sampler) != 0) {
+      snprintf(err, errlen, "%s row %d is '%s' (%d sites, %s), the first file has '%s' (%d sites, %s)",
+               what, i + 1, add[i].rule, add[i].sites, add[i].sampler, acc[i].rule,
+               acc[i].sites, acc[i].sampler);
+      return -1;
+    }
+  for (int i = 0; i < nacc; i++) {
+    siteflip_counts *a = &acc[i].c;
+    const siteflip_counts *b = &add[i].c;
+    uint64_t *pa[8] = {&a->samples, &a->tie, &a->no_sink, &a->one_sink, &a->multi_sink,
+                       &a->sink_dt, &a->sinks, &a->gap_units};
+    const uint64_t pb[8] = {b->samples, b->tie, b->no_sink, b->one_sink, b->multi_sink,
+                            b->sink_dt, b->sinks, b->gap_units};
+    for (int k = 0; k < 8; k++)
+      if (*pa[k] > UINT64_MAX - pb[k]) {
+        snprintf(err, errlen, "%s: counts overflow", what);
+        return -1;
+      }
+    for (int k = 0; k < 8; k++) *pa[k] += pb[k];
+    if (b->max_sinks > a->max_sinks) a->max_sinks = b->max_sinks;
+  }
+  return 0;
+}

@@ -1,0 +1,169 @@
+/*
+** test_census.c: the census engine against the one-graph path and against
+** table 3.4's engine.  Sample by sample, siteflip_census must count what
+** siteflip_direct (brute force GOT over every triangulation, rule_eval_tris
+** decisions) sees, for every rule and sampler, so the packed decisions and
+** the GOT shortcut change nothing; for convex pentagons its counts must be
+** table34's (one sink = I + II, several = III, none = IV, tie = V); thread
+** counts change nothing.
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "flipgraph.h"
+#include "measure.h"
+#include "rule.h"
+#include "sampler.h"
+#include "siteflip.h"
+#include "testutil.h"
+
+static int tc_all_rules(rule **rules) {
+  int ids[MEASURE_BUILTIN_COUNT];
+  for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) ids[m] = m;
+  int cap = MEASURE_BUILTIN_COUNT * JOINT_COUNT + 1;
+  *rules = malloc((size_t)cap * sizeof **rules);
+  int n = rule_list_triangle(ids, MEASURE_BUILTIN_COUNT, *rules, cap - 1);
+  (*rules)[n++] = rule_delaunay();
+  return n;
+}
+
+static void tc_census(const rule *rules, int nr, int kind, int n, uint64_t first,
+                      uint64_t count, int threads, siteflip_counts *c) {
+  char err[256];
+  memset(c, 0, (size_t)nr * sizeof *c);
+  if (siteflip_census(rules, nr, kind, n, 3, first, count, RULE_DEFAULT_TIE_EPS, threads, c,
+                      NULL, NULL, err, sizeof err) != 0)
+    fail_msg("siteflip_census: %s", err);
+}
+
+static void test_census_equals_direct(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_all_rules(&rules);
+  siteflip_counts *c = malloc((size_t)nr * sizeof *c);
+  int multi_seen = 0, gaps_seen = 0;
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
+    for (int n = 4; n <= 7; n++)
+      for (uint64_t i = 0; i < 8; i++) {
+        tc_census(rules, nr, kind, n, i, 1, 1, c);
+        geom_point p[7];
+        sampler_sites(kind, 3, i, n, p);
+        char err[256];
+        siteflip_graph *g = siteflip_build(p, n, err, sizeof err);
+        assert_non_null(g);
+        rule_choice *dec = malloc((size_t)(g->nquads + 1) * sizeof *dec);
+        for (int r = 0; r < nr; r++) {
+          siteflip_result res;
+          assert_int_equal(siteflip_direct(g, &rules[r], RULE_DEFAULT_TIE_EPS, dec, NULL, &res), 0);
+          assert_int_equal(c[r].samples, 1);
+          assert_int_equal(c[r].tie, res.ties);
+          if (res.ties) continue;
+          assert_int_equal(c[r].sinks, res.nsinks);
+          assert_int_equal(c[r].no_sink, res.nsinks == 0);
+          assert_int_equal(c[r].one_sink, res.nsinks == 1);
+          assert_int_equal(c[r].multi_sink, res.nsinks > 1);
+          assert_int_equal(c[r].sink_dt, res.sink_dt == 1);
+          multi_seen += res.nsinks > 1;
+          if (res.has_got) {
+            uint64_t want = (uint64_t)llround(res.worst_gap / SITEFLIP_GAP_UNIT);
+            if (c[r].gap_units != want)
+              fail_msg("%s, %s %d/%llu: census gap %llu units, brute force %llu", rules[r].name,
+                       sampler_sites_name(kind), n, (unsigned long long)i,
+                       (unsigned long long)c[r].gap_units, (unsigned long long)want);
+            gaps_seen += want > 0;
+          }
+        }
+        free(dec);
+        siteflip_free(g);
+      }
+  print_message("%d several-sink graphs, %d positive gaps compared\n", multi_seen, gaps_seen);
+  assert_true(multi_seen > 100);
+  assert_true(gaps_seen > 100);
+  free(c);
+  free(rules);
+}
+
+static void test_census_pentagons_are_table34(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_all_rules(&rules);
+  siteflip_counts *c = malloc((size_t)nr * sizeof *c);
+  flipgraph_counts *f = calloc((size_t)nr, sizeof *f);
+  const uint64_t S = 20000;
+  tc_census(rules, nr, SAMPLER_SITES_CONVEX, 5, 0, S, 2, c);
+  assert_int_equal(flipgraph_tally(rules, nr, 3, 0, S, RULE_DEFAULT_TIE_EPS, 2, f, NULL, NULL), 0);
+  uint64_t multi = 0;
+  for (int r = 0; r < nr; r++) {
+    assert_int_equal(c[r].samples, S);
+    assert_int_equal(c[r].one_sink, f[r].type[FLIPGRAPH_I] + f[r].type[FLIPGRAPH_II]);
+    assert_int_equal(c[r].multi_sink, f[r].type[FLIPGRAPH_III]);
+    assert_int_equal(c[r].no_sink, f[r].type[FLIPGRAPH_IV]);
+    assert_int_equal(c[r].tie, f[r].type[FLIPGRAPH_V]);
+    /* table34's DT column also asks for type I; ours any single sink */
+    assert_true(c[r].sink_dt >= f[r].dt);
+    assert_true(c[r].max_sinks <= 2);
+    multi += c[r].multi_sink;
+  }
+  assert_true(multi > 0);
+  free(c);
+  free(f);
+  free(rules);
+}
+
+static void test_census_threads(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_all_rules(&rules);
+  siteflip_counts *a = malloc((size_t)nr * sizeof *a), *b = malloc((size_t)nr * sizeof *b);
+  siteflip_counts *s = calloc((size_t)nr, sizeof *s);
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++) {
+    tc_census(rules, nr, kind, 6, 0, 1500, 1, a);
+    tc_census(rules, nr, kind, 6, 0, 1500, 3, b);
+    assert_memory_equal(a, b, (size_t)nr * sizeof *a);
+    /* two pieces add up to the whole */
+    memset(s, 0, (size_t)nr * sizeof *s);
+    tc_census(rules, nr, kind, 6, 0, 700, 2, b);
+    for (int r = 0; r < nr; r++) s[r] = b[r];
+    tc_census(rules, nr, kind, 6, 700, 800, 2, b);
+    for (int r = 0; r < nr; r++) {
+      assert_int_equal(s[r].tie + b[r].tie, a[r].tie);
+      assert_int_equal(s[r].multi_sink + b[r].multi_sink, a[r].multi_sink);
+      assert_int_equal(s[r].gap_units + b[r].gap_units, a[r].gap_units);
+      assert_int_equal(s[r].sinks + b[r].sinks, a[r].sinks);
+    }
+  }
+  free(a);
+  free(b);
+  free(s);
+  free(rules);
+}
+
+static void test_census_bad_args(void **state) {
+  (void)state;
+  rule r = rule_delaunay();
+  siteflip_counts c = {0};
+  char err[256];
+  assert_int_not_equal(siteflip_census(&r, 1, 17, 6, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
+  assert_non_null(strstr(err, "unknown sampler"));
+  assert_int_not_equal(siteflip_census(&r, 1, SAMPLER_SITES_DISC, 13, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
+  assert_non_null(strstr(err, "3 to 12"));
+  assert_int_equal(c.samples, 0);
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_census_equals_direct),
+    cmocka_unit_test(test_census_pentagons_are_table34),
+    cmocka_unit_test(test_census_threads),
+    cmocka_unit_test(test_census_bad_args),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
