@@ -42,7 +42,8 @@ static void cli_usage(FILE *out) {
                "                          and the constant pi.  Small is good.\n"
                "  --plugin FILE.so        load measures and quadrilateral rules from a plugin\n"
                "\nRules are MEASURE_JOINT (e.g. P_1, -alpha_inf) or DT; fliplab list shows them.\n"
-               "Definitions, formats and methods: docs/README.md in the source tree.\n");
+               "Definitions, formats and methods: docs/README.md in the source tree, installed\n"
+               "as share/doc/fliplab/README.md.\n");
 }
 
 int main(int argc, char **argv) {
