@@ -229,6 +229,31 @@ static void test_thin_random_directions(void **state) {
   assert_int_equal(bad, 0);
 }
 
+/* Found by fuzz/fuzz_quad_dt: a flat triangle whose two longest sides round
+** to the same double while their opposite angles are pi - 5e-20 and 5e-20.
+** geom_tri_make took the tiny one for the largest and computed it as pi
+** minus the others: 0, so -alpha_inf answered BD where DT says AC. */
+static void test_flat_equal_sides(void **state) {
+  (void)state;
+  geom_point q[4] = {{0, 0}, {3.3103697155232625e-28, 0},
+                     {6.1065542931650197e-09, 3.3103697155250992e-28},
+                     {-0.00025941827334463596, 3.921736917071456e-28}};
+  geom_tri t;
+  geom_tri_make(&t, q[0], q[1], q[2]);
+  assert_true(t.alpha > 0 && t.beta > 0);
+  TESTUTIL_NEAR(t.alpha + t.beta + t.gamma, M_PI, 1e-15, 0);
+  /* the angle at A: atan2(height, base), height 3.31e-28 over 6.1e-9 */
+  TESTUTIL_NEAR(fmax(t.alpha, t.beta), atan2(3.3103697155250992e-28, 6.1065542931650197e-09), 1e-12, 0);
+  tscale_parse_rules();
+  rule dt = rule_delaunay();
+  rule_choice d = rule_eval(&dt, q, 0, NULL, NULL);
+  for (int i = 0; i < TSCALE_NRULES; i++) {
+    rule_choice c = rule_eval(&tscale_rules[i], q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+    if (c != RULE_EITHER && c != d) fail_msg("%s says %s, DT %s", tscale_dt_rules[i],
+                                             rule_choice_str(c), rule_choice_str(d));
+  }
+}
+
 /* The product and root-sum-square joints decide beyond the double range,
 ** as the exact values would, and agree bit for bit with the plain
 ** evaluation inside it. */
@@ -406,6 +431,7 @@ int main(void) {
     cmocka_unit_test(test_scaled_measures),
     cmocka_unit_test(test_thin_quads_and_pentagons),
     cmocka_unit_test(test_thin_random_directions),
+    cmocka_unit_test(test_flat_equal_sides),
     cmocka_unit_test(test_readers_refuse),
     cmocka_unit_test(test_got_extremes),
   };
