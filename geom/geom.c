@@ -90,24 +90,24 @@ static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r,
   ** or two of pi, which is a relative error of 1e-16 for it. */
   t->alpha = t->beta = t->gamma = NAN;
   if (angles) {
-  int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
-  int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
-  double ang[3];
-  ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
-  ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
-  ang[big] = M_PI - (ang[i1] + ang[i2]);
-  /* The two longest sides can round to the same double while their
-  ** opposite angles are pi - 5e-20 and 5e-20 (a flat triangle with one
-  ** very short side; found by fuzz/fuzz_quad_dt): then "big" may name the
-  ** tiny angle, and pi minus the others leaves 0 or less.  The largest
-  ** angle is at least pi/3 > 1, so a value below 1 means the guess was
-  ** wrong: compute that angle by atan2 as well. */
-  if (ang[big] < 1.0) ang[big] = geom_angle(t->v[big], t->v[i1], t->v[i2], twice);
-  /* Sorting the angle values themselves (not pairing them with sorted
-  ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
-  t->alpha = geom_min3(ang[0], ang[1], ang[2]);
-  t->beta = geom_mid3(ang[0], ang[1], ang[2]);
-  t->gamma = geom_max3(ang[0], ang[1], ang[2]);
+    int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
+    int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
+    double ang[3];
+    ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
+    ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
+    ang[big] = M_PI - (ang[i1] + ang[i2]);
+    /* The two longest sides can round to the same double while their
+    ** opposite angles are pi - 5e-20 and 5e-20 (a flat triangle with one
+    ** very short side; found by fuzz/fuzz_quad_dt): then "big" may name the
+    ** tiny angle, and pi minus the others leaves 0 or less.  The largest
+    ** angle is at least pi/3 > 1, so a value below 1 means the guess was
+    ** wrong: compute that angle by atan2 as well. */
+    if (ang[big] < 1.0) ang[big] = geom_angle(t->v[big], t->v[i1], t->v[i2], twice);
+    /* Sorting the angle values themselves (not pairing them with sorted
+    ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
+    t->alpha = geom_min3(ang[0], ang[1], ang[2]);
+    t->beta = geom_mid3(ang[0], ang[1], ang[2]);
+    t->gamma = geom_max3(ang[0], ang[1], ang[2]);
   }
 
   t->area = 0.5 * twice;
