@@ -50,7 +50,11 @@ typedef struct got_sweep {
   size_t *heap, *pos;  /* active edges (named by first vertex), positions + 1 */
   size_t nheap;
   size_t *start, *end, *sidx, *eidx;   /* edges per group, CSR */
+  size_t *egs, *ege;   /* per edge: groups of its first and last direction */
+  unsigned char *ef;   /* per edge: GOT_EV_* */
 } got_sweep;
+
+enum { GOT_EV_INIT = 1, GOT_EV_START = 2, GOT_EV_END = 4 };
 
 /* Half of the direction a -> v relative to a -> ref, exactly. */
 static unsigned char got_half(geom_point a, geom_point ref, geom_point v) {
@@ -185,49 +189,52 @@ static size_t got_groups(got_sweep *s, size_t m) {
   return g + 1;
 }
 
-/* Edge events per group (CSR: start[g]..start[g+1] in sidx); edges active
-** at angle 0+ go straight into the heap.  An edge whose open range of
-** directions holds no query group (a group strictly inside the cone, below
-** gend) can never be the nearest edge at a query, so it is left out: from a
-** boundary vertex most edges of a spiky polygon subtend no other vertex,
-** and the heap stays small. */
+/* Edge events per group (CSR: start[g]..start[g+1] in sidx, likewise end
+** in eidx); edges active at angle 0+ go straight into the heap.  Edge s -> e
+** (anticlockwise around a, less than pi) covers the open range of angles
+** from s's to e's.  When that range passes through angle 0 it has two
+** pieces inside the cone: (0, e), active from the start and leaving at e,
+** and (s, end of the cone), entering at s and never leaving.  A piece that
+** holds no query group (a group strictly inside it and below gend) can
+** never be the nearest edge at a query, so it is left out: from a boundary
+** vertex most edges of a spiky polygon subtend no other vertex, and the heap
+** stays small. */
 static void got_events(got_sweep *s, size_t ng, size_t gend) {
   const size_t n = s->n, i = s->i;
   memset(s->start, 0, (ng + 1) * sizeof *s->start);
   memset(s->end, 0, (ng + 1) * sizeof *s->end);
-  for (int pass = 0; pass < 2; pass++) {
-    for (size_t e = 0; e < n; e++) {
-      size_t u = e, v = (e + 1) % n;
-      if (u == i || v == i) continue;
-      int o = geom_orient(s->a, s->p[u], s->p[v]);
-      if (o == 0) continue;
-      size_t gs = o > 0 ? s->grp[u] : s->grp[v], ge = o > 0 ? s->grp[v] : s->grp[u];
-      if (gs > ge && ge == 0) continue;            /* ends at angle 0: never active */
-      size_t lo = gs > ge ? 1 : gs + 1, hi = ge < gend ? ge : gend;
-      if (lo >= hi) continue;                      /* covers no query group */
-      if (pass == 0) {
-        if (gs > ge) {                             /* wraps through angle 0 */
-          got_heap_push(s, e);
-        } else {
-          s->start[gs + 1]++;
-        }
-        s->end[ge + 1]++;
-      } else {
-        if (gs <= ge) s->sidx[s->start[gs]++] = e;
-        s->eidx[s->end[ge]++] = e;
-      }
+  for (size_t e = 0; e < n; e++) {             /* classify once, count */
+    size_t u = e, v = (e + 1) % n;
+    s->ef[e] = 0;
+    if (u == i || v == i) continue;
+    int o = geom_orient(s->a, s->p[u], s->p[v]);
+    if (o == 0) continue;
+    size_t gs = o > 0 ? s->grp[u] : s->grp[v], ge = o > 0 ? s->grp[v] : s->grp[u];
+    size_t hi = ge < gend ? ge : gend;
+    s->egs[e] = gs;
+    s->ege[e] = ge;
+    if (gs < ge) {                             /* one piece (gs, ge) */
+      if (gs + 1 < hi) s->ef[e] = GOT_EV_START | GOT_EV_END;
+    } else {                                   /* wraps: (0, ge) and (gs, end) */
+      if (1 < hi) s->ef[e] |= GOT_EV_INIT | GOT_EV_END;
+      if (gs + 1 < gend) s->ef[e] |= GOT_EV_START;
     }
-    if (pass == 0) {
-      for (size_t g = 0; g < ng; g++) {
-        s->start[g + 1] += s->start[g];
-        s->end[g + 1] += s->end[g];
-      }
-    } else {   /* the fill advanced each start to the next group's: shift back */
-      memmove(s->start + 1, s->start, ng * sizeof *s->start);
-      memmove(s->end + 1, s->end, ng * sizeof *s->end);
-      s->start[0] = s->end[0] = 0;
-    }
+    if (s->ef[e] & GOT_EV_INIT) got_heap_push(s, e);
+    if (s->ef[e] & GOT_EV_START) s->start[gs + 1]++;
+    if (s->ef[e] & GOT_EV_END) s->end[ge + 1]++;
   }
+  for (size_t g = 0; g < ng; g++) {
+    s->start[g + 1] += s->start[g];
+    s->end[g + 1] += s->end[g];
+  }
+  for (size_t e = 0; e < n; e++) {             /* fill */
+    if (s->ef[e] & GOT_EV_START) s->sidx[s->start[s->egs[e]]++] = e;
+    if (s->ef[e] & GOT_EV_END) s->eidx[s->end[s->ege[e]]++] = e;
+  }
+  /* the fill advanced each group's offset to the next group's: shift back */
+  memmove(s->start + 1, s->start, ng * sizeof *s->start);
+  memmove(s->end + 1, s->end, ng * sizeof *s->end);
+  s->start[0] = s->end[0] = 0;
 }
 
 /* Row i of the visibility table: V[i*n + j] = 1 for valid diagonals. */
@@ -286,8 +293,11 @@ int got_valid_diagonals(const geom_point *p, size_t n, unsigned char *V, int thr
     s.end = malloc((n + 1) * sizeof *s.end);
     s.sidx = malloc(n * sizeof *s.sidx);
     s.eidx = malloc(n * sizeof *s.eidx);
+    s.egs = malloc(n * sizeof *s.egs);
+    s.ege = malloc(n * sizeof *s.ege);
+    s.ef = malloc(n);
     int ok = s.ord && s.tmp && s.key && s.half && s.grp && s.heap && s.pos && s.start && s.end &&
-             s.sidx && s.eidx;
+             s.sidx && s.eidx && s.egs && s.ege && s.ef;
     fail |= !ok;
     long ln = (long)n;
 #pragma omp for schedule(dynamic, 8)
@@ -295,6 +305,7 @@ int got_valid_diagonals(const geom_point *p, size_t n, unsigned char *V, int thr
       if (ok) got_sweep_vertex(&s, (size_t)li, V + (size_t)li * n);
     free(s.ord); free(s.tmp); free(s.key); free(s.half); free(s.grp); free(s.heap); free(s.pos);
     free(s.start); free(s.end); free(s.sidx); free(s.eidx);
+    free(s.egs); free(s.ege); free(s.ef);
   }
   if (fail) return -1;
   /* Symmetric in exact arithmetic; keep a pair only if both sweeps agree,

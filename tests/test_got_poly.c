@@ -138,6 +138,53 @@ static size_t tp_grid_polygon(testutil_rng *g, size_t want, geom_point *p) {
   }
 }
 
+/* Arbitrary simple polygons: random points untangled by 2-opt moves (a
+** crossing pair of edges is replaced by the two other ways of joining
+** their ends, which shortens the tour), on a coarse grid so that
+** collinear triples occur, or with random coordinates.  Not star-shaped in
+** general: spirals and lobes that wrap around a reflex vertex appear. */
+static size_t tp_twoopt_polygon(testutil_rng *g, size_t n, int grid, geom_point *p) {
+  for (;;) {
+    for (size_t i = 0; i < n; i++)
+      p[i] = grid ? (geom_point){(double)(testutil_next(g) % 13), (double)(testutil_next(g) % 13)}
+                  : (geom_point){testutil_uniform(g), testutil_uniform(g)};
+    int moved = 1;
+    for (int it = 0; it < 2000 && moved; it++) {
+      moved = 0;
+      for (size_t e = 0; e < n && !moved; e++)
+        for (size_t f = e + 2; f < n && !moved; f++) {
+          if (e == 0 && f == n - 1) continue;
+          if (geom_segments_meet(p[e], p[e + 1], p[f], p[(f + 1) % n])) {
+            for (size_t a = e + 1, b = f; a < b; a++, b--) {   /* reverse e+1..f */
+              geom_point tmp = p[a];
+              p[a] = p[b];
+              p[b] = tmp;
+            }
+            moved = 1;
+          }
+        }
+    }
+    geom_point c[64];
+    memcpy(c, p, n * sizeof *p);
+    int rev;
+    if (geom_simple_polygon_check(c, n, NULL, NULL, &rev) == GEOM_OK) {
+      memcpy(p, c, n * sizeof *p);
+      return n;
+    }
+  }
+}
+
+static void test_diagonals_twoopt(void **state) {
+  (void)state;
+  testutil_rng g = {4242};
+  geom_point p[64];
+  for (int t = 0; t < 300; t++) {
+    size_t n = 5 + (size_t)t % 20;
+    tp_twoopt_polygon(&g, n, t % 2, p);
+    tp_check_diagonals(p, n, 1);
+  }
+}
+
 static void test_diagonals_oracle(void **state) {
   (void)state;
   testutil_rng g = {12345};
@@ -416,6 +463,7 @@ int main(void) {
     cmocka_unit_test(test_validation),
     cmocka_unit_test(test_diagonals_hand),
     cmocka_unit_test(test_diagonals_oracle),
+    cmocka_unit_test(test_diagonals_twoopt),
     cmocka_unit_test(test_single_triangulation),
     cmocka_unit_test(test_brute_force_hand),
     cmocka_unit_test(test_brute_force_star),
