@@ -63,13 +63,19 @@
 **   root near 0), and every measure with the area in a denominator (R, -r,
 **   -a', -r/R, -r^2/A, lambda, d, -rinf, b/(c-a): a thin triangle's area has
 **   no relative accuracy a priori): no bound.
+** Thin triangles, which got_pairs_eval recomputes through geom_tri_make
+** (an exactly rounded twice-area, angles from atan2 of it and of a dot
+** product, the largest as pi minus the others), are within these bounds
+** too: their angles are within about 8u + 2 atan2 errors < 2^-48, the
+** area within u |A|, sigma^2 = (sqrt(x))^2 within 3u of 2.2.
 ** Keys: square, x^2 (1 + u): relative (1 + rho)^2 (1 + u) - 1; absolute
 ** 2 b_max alpha + alpha^2 + u (b_max + alpha)^2.  -1/x: relative rho + 2u;
 ** absolute errors: no bound.
 **
 ** Scale guard.  The relative bounds assume no underflow: see
 ** got_cert_scale (non-zero coordinates at least 2^-118 in magnitude, ranges
-** at most 2^169); otherwise E = infinity.  An overflowed key is infinite,
+** at most 2^169: always true inside the coordinate contract, 0 or
+** magnitudes in [1e-30, 1e30]); otherwise E = infinity.  An overflowed key is infinite,
 ** and an infinite key gets E = infinity too.
 **
 ** Rounding of the bound itself: E is computed from positive terms in round
