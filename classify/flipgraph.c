@@ -483,16 +483,18 @@ static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
     for (int t = 0; t < 10; t++)
       for (int s = 0; s < nv; s++) w->mag[t][s] = pl->slot_sign[s] * w->val[t][s];
   w->any_wide = 0;
-  if (pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_RSS] > 0)
-    for (int s = 0; s < pl->nslots; s++) {
-      int wide = 0;
-      for (int t = 0; t < 10; t++) {
+  if (pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_RSS] > 0) {
+    /* Triangle-major, so the inner loop runs over contiguous slots. */
+    int any = 0;
+    for (int s = 0; s < nv; s++) w->wide[s] = 0;
+    for (int t = 0; t < 10; t++)
+      for (int s = 0; s < nv; s++) {
         double m = w->mag[t][s];
-        wide |= !(m >= 0x1p-511 && m <= 0x1p511);
+        w->wide[s] |= !(m >= 0x1p-511) | !(m <= 0x1p511);
       }
-      w->wide[s] = wide;
-      w->any_wide |= wide;
-    }
+    for (int s = 0; s < pl->nslots; s++) any |= w->wide[s];
+    w->any_wide = any;
+  }
   for (int j = 0; j < JOINT_COUNT; j++) {
     if (pl->ngroup[j] == 0) continue;
     switch ((joint_id)j) {   /* one specialised copy of the loops per joint */

@@ -49,16 +49,19 @@ static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_
 ** zero (relative error below 2^-52): cancellation would otherwise leave
 ** thin triangles with an area that is wrong in every digit, or 0.  Out of
 ** line and rare: random triangles pass the filter 99.9% of the time. */
-double geom_twice_area(geom_point p, geom_point q, geom_point r) {
+static inline double geom_twice_area_inline(geom_point p, geom_point q, geom_point r) {
   double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
   double l = bax * cay, rr = bay * cax;
-  double det = fabs(l - rr);
-  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(rr));
-  if (det > 0x1p40 * bound && !(geom_filter_tiny(bax) || geom_filter_tiny(bay)
-                                || geom_filter_tiny(cax) || geom_filter_tiny(cay)))
-    return det;
+  double det = fabs(l - rr), perm = fabs(l) + fabs(rr);
+  /* perm >= 2^-900: the few absolute errors of 2^-1075 that underflow can
+  ** add (geom_filter_tiny's argument) are far below 2^-40 eps perm. */
+  if (det > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900) return det;
   if (!(geom_point_finite(p) && geom_point_finite(q) && geom_point_finite(r))) return det;
   return geom_twice_area_exact(p, q, r);
+}
+
+double geom_twice_area(geom_point p, geom_point q, geom_point r) {
+  return geom_twice_area_inline(p, q, r);
 }
 
 /* Everything below is computed from the canonically ordered vertices
@@ -76,7 +79,7 @@ static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r,
   double e01x = q.x - p.x, e01y = q.y - p.y;
   double e02x = r.x - p.x, e02y = r.y - p.y;
   double e12x = r.x - q.x, e12y = r.y - q.y;
-  double twice = geom_twice_area(p, q, r);
+  double twice = geom_twice_area_inline(p, q, r);
   double side[3] = {sqrt(e12x * e12x + e12y * e12y),   /* opposite v0 */
                     sqrt(e02x * e02x + e02y * e02y),   /* opposite v1 */
                     sqrt(e01x * e01x + e01y * e01y)};  /* opposite v2 */
