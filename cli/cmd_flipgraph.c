@@ -127,7 +127,7 @@ int cli_cmd_flipgraph(int argc, char **argv) {
   if (cli_parse_rule(CMD, o.rule, &r) != 0) return 2;
   geom_point *p;
   size_t n;
-  if (report_sites_read(o.points, &p, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (report_points_read(o.points, &p, NULL, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
   /* siteflip_check refuses more than 12 sites before reading any. */
   siteflip_graph *g = siteflip_build(p, n > 1000000 ? 1000000 : (int)n, err, sizeof err);
   free(p);

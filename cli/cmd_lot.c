@@ -137,7 +137,7 @@ static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char
                           size_t desclen) {
   char err[512];
   if (a->points) {
-    if (report_lot_read_points(a->points, p, n, err, sizeof err) != 0)
+    if (report_points_read(a->points, p, NULL, n, err, sizeof err) != 0)
       return cli_error(CMD, "%s", err);
     snprintf(desc, desclen, "%zu points from %s", *n, a->points);
     return 0;

@@ -202,11 +202,6 @@ void report_svg_caption(FILE *f, double x, double y, const char *caption);
 int report_siteflip_svg(FILE *f, const siteflip_graph *g, const rule_choice *dec,
                         const char *caption);
 
-/* Sites from CSV: rows "x,y", optional header "x,y", every error one line
-** naming the file and line; the set itself is checked by siteflip_check.
-** 0 (free *out) or -1. */
-int report_sites_read(const char *path, geom_point **out, size_t *n, char *err, size_t errlen);
-
 /* ---- the census of site sets (reports/census.c) ---- */
 
 /* One rule's census.  measure and joint empty for whole-quadrilateral
@@ -252,6 +247,18 @@ int report_census_read(FILE *in, const char *path, report_census_row **rows, int
 int report_census_add(report_census_row *acc, int nacc, const report_census_row *add,
                       int nadd, const char *what, char *err, size_t errlen);
 
+/* ---- point files (reports/csv_points.c) ---- */
+
+/* Read points from CSV (path "-": standard input): rows "x,y", an optional
+** header line "x,y", every coordinate under the contract of
+** geom_coord_parse.  Errors are one line naming the file and line: a wrong
+** field count, a coordinate that is not a number or out of range, no points
+** at all.  *lines (when lines is not NULL) receives each point's 1-based
+** file line.  0 on success (free *out and *lines), -1 on error.  The
+** caller checks what its input must be (a simple polygon, a site set). */
+int report_points_read(const char *path, geom_point **out, uint64_t **lines, size_t *n,
+                       char *err, size_t errlen);
+
 /* ---- fliplab got (reports/csv_got.c, reports/svg_got.c) ---- */
 
 /* Read a polygon from CSV (path "-": standard input): one vertex per row
@@ -292,12 +299,6 @@ void report_got_colour(double f, char *buf, size_t len);
 
 /* ---- fliplab lot (reports/csv_lot.c, reports/svg_lot.c) ---- */
 
-/* Read a point set from CSV: rows "x,y", an optional header line "x,y".
-** Errors are one line naming the file and line: a wrong field count, a
-** field that is not a finite number, no points at all.  0 on success
-** (free *out), -1 on error. */
-int report_lot_read_points(const char *path, geom_point **out, size_t *n, char *err,
-                           size_t errlen);
 
 /* Triangles as CSV, the shape of report_got_csv: header "i,j,k,badness",
 ** one row per triangle, vertices anticlockwise (as given), badness empty

@@ -208,7 +208,7 @@ static void test_bad_input(void **state) {
     {"x,y\n1,2\n", "", "1 point"},
     {"0,0\n1,1\n2,2\n3,3\n", "", "collinear"},
     {"0,0\n1,0\nnan,1\n", "", "line 3"},
-    {"0,0\n1,0\n0,1e300\n", "", "line 3: '1e300' is out of range"},
+    {"0,0\n1,0\n0,1e300\n", "", "line 3: y '1e300' is out of range"},
     {"0,0\n1,0\n1e-40,1\n", "", "line 3"},
     {"0,0\n1,0\n0,1,2\n", "", "line 3"},
     {NULL, "--random 10 --sampler spiral", "unknown sampler 'spiral'"},
