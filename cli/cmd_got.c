@@ -198,15 +198,17 @@ static void cli_got_certified(const got_result *res) {
            res->cert_bound, units);
 }
 
-static void cli_got_compare(const geom_point *p, size_t n, const got_result *res) {
+/* 0, or 1 after the one-line error: a comparison that could not be made
+** fails the run rather than print a line of "failed" with status 0. */
+static int cli_got_compare(const geom_point *p, size_t n, const got_result *res) {
   got_triangle *dt = malloc(n * sizeof *dt);
   got_diff d;
   int unique = 1;
   if (dt == NULL || got_delaunay(p, n, dt, &unique) != 0 ||
       got_compare(res->tri, dt, n, &d) != 0) {
-    printf("compare DT: failed (out of memory)\n");
     free(dt);
-    return;
+    cli_error(CMD, "out of memory");
+    return 1;
   }
   printf("compare DT: %zu of %zu diagonals differ; %zu of %zu triangles in common (%.2f%%)%s\n",
          d.diagonals_differ, d.diagonals, d.triangles_common, d.triangles,
@@ -215,12 +217,14 @@ static void cli_got_compare(const geom_point *p, size_t n, const got_result *res
                 : "; the Delaunay triangulation is NOT unique (4+ cocircular vertices): "
                   "compared with the one of smallest split vertices");
   free(dt);
+  return 0;
 }
 
 /* Strictly convex (exact)?  --compare DT needs it. */
+/* 1 convex, 0 not, -1 out of memory. */
 static int cli_got_is_convex(const geom_point *p, size_t n) {
   geom_point *q = malloc(n * sizeof *q);
-  if (q == NULL) return 0;
+  if (q == NULL) return -1;
   memcpy(q, p, n * sizeof *q);
   int rev = 0, ok = geom_polygon_check(q, n, NULL, &rev) == GEOM_OK && !rev;
   free(q);
@@ -322,7 +326,12 @@ int cli_cmd_got(int argc, char **argv) {
   memset(&res, 0, sizeof res);
   rc = cli_got_polygon(&a, &r, &p, &n, &map, desc, sizeof desc);
   if (rc != 0) goto done;
-  if (a.compare && !cli_got_is_convex(p, n)) {
+  int convex = a.compare ? cli_got_is_convex(p, n) : 1;
+  if (convex < 0) {
+    rc = cli_error(CMD, "out of memory");
+    goto done;
+  }
+  if (!convex) {
     rc = cli_error(CMD, "--compare DT needs a convex polygon (this one has reflex vertices)");
     goto done;
   }
@@ -338,7 +347,10 @@ int cli_cmd_got(int argc, char **argv) {
   char tot[64];
   got_format_total(&res, res.key, tot, sizeof tot);
   cli_got_summary(&a, &r, &res, desc, tot);
-  if (a.compare) cli_got_compare(p, n, &res);
+  if (a.compare && cli_got_compare(p, n, &res) != 0) {
+    rc = 1;
+    goto done;
+  }
   cli_got_triangles(&a, &res, map);
   rc = cli_got_outputs(&a, &r, p, &res, map, tot);
 done:
