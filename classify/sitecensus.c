@@ -86,13 +86,14 @@ typedef struct siteflip_cwork {
   size_t nodecap;
 } siteflip_cwork;
 
+/* 0, -1 for a rule the plan cannot hold, -2 when memory ran out. */
 static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
   memset(pl, 0, sizeof *pl);
   pl->rules = rules;
   pl->nrules = nrules;
   pl->eps = eps;
   pl->cr = calloc((size_t)nrules + 1, sizeof *pl->cr);
-  if (pl->cr == NULL) return -1;
+  if (pl->cr == NULL) return -2;   /* out of memory, told apart from a bad rule */
   for (int i = 0; i < nrules; i++) {
     const rule *r = &rules[i];
     siteflip_crule *c = &pl->cr[i];
@@ -457,9 +458,10 @@ int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t 
                     char *err, size_t errlen) {
   if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0) return -1;
   siteflip_cplan pl;
-  if (siteflip_cplan_make(&pl, rules, nrules, tie_eps) != 0) {
+  int rc = siteflip_cplan_make(&pl, rules, nrules, tie_eps);
+  if (rc != 0) {
     free(pl.cr);
-    snprintf(err, errlen, "invalid rule list");
+    snprintf(err, errlen, "%s", rc == -2 ? "out of memory" : "invalid rule list");
     return -1;
   }
   if (threads <= 0) threads = omp_get_max_threads();
