@@ -574,6 +574,7 @@ typedef struct flipgraph_range {
   int thread;
   unsigned char *codes;     /* nrules */
   flipgraph *graphs;        /* nrules, when the run has a hook */
+  int *failed;              /* set when run->sampler fails (out of memory) */
 } flipgraph_range;
 
 static void flipgraph_hook(const flipgraph_range *t, uint64_t i, const flipgraph_pentagon *p) {
@@ -595,7 +596,13 @@ static void flipgraph_tally_range(const flipgraph_range *t, uint64_t lo, uint64_
   geom_point v[5];
   flipgraph_work_init(&w);
   for (uint64_t i = lo; i < hi; i++) {
-    sampler_pentagon(t->run->seed, i, v);
+    if (t->run->sampler == NULL) {
+      sampler_pentagon(t->run->seed, i, v);
+    } else if (t->run->sampler(t->run->seed, i, v) != 0) {
+#pragma omp atomic write
+      *t->failed = 1;
+      return;
+    }
     int dt_code = flipgraph_prepare_code(&p, v);
     flipgraph_plan_codes(pl, &p, dt_code, &w, t->codes);
     for (int r = 0; r < pl->nrules; r++) {
@@ -627,15 +634,16 @@ static void flipgraph_tally_sum(const flipgraph_counts *all, int threads, int nr
     }
 }
 
-static void flipgraph_tally_loop(const flipgraph_plan *pl, const flipgraph_run *run, int threads,
-                                 flipgraph_counts *all, unsigned char *codes, flipgraph *graphs) {
+static int flipgraph_tally_loop(const flipgraph_plan *pl, const flipgraph_run *run, int threads,
+                                flipgraph_counts *all, unsigned char *codes, flipgraph *graphs) {
+  int failed = 0;
   size_t nr = pl->nrules > 0 ? (size_t)pl->nrules : 1;
   uint64_t nchunks = (run->count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK, done = 0;
 #pragma omp parallel num_threads(threads)
   {
     int me = omp_get_thread_num();
     flipgraph_range t = {pl, run, me, codes + (size_t)me * nr,
-                         graphs ? graphs + (size_t)me * nr : NULL};
+                         graphs ? graphs + (size_t)me * nr : NULL, &failed};
 #pragma omp for schedule(dynamic, 1)
     for (uint64_t k = 0; k < nchunks; k++) {
       uint64_t lo = run->first + k * FLIPGRAPH_CHUNK;
@@ -648,6 +656,7 @@ static void flipgraph_tally_loop(const flipgraph_plan *pl, const flipgraph_run *
     }
   }
   if (run->progress != NULL) run->progress(run->count, run->count, run->progress_ctx);
+  return failed ? -1 : 0;
 }
 
 int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
@@ -662,9 +671,10 @@ int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
   flipgraph *graphs = run->each ? malloc((size_t)threads * nr * sizeof *graphs) : NULL;
   int rc = -1;
   if (all != NULL && codes != NULL && (run->each == NULL || graphs != NULL)) {
-    flipgraph_tally_loop(pl, run, threads, all, codes, graphs);
-    flipgraph_tally_sum(all, threads, nrules, out);
-    rc = 0;
+    if (flipgraph_tally_loop(pl, run, threads, all, codes, graphs) == 0) {
+      flipgraph_tally_sum(all, threads, nrules, out);
+      rc = 0;
+    }
   }
   free(all);
   free(codes);
@@ -676,6 +686,6 @@ int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
                     flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx) {
-  flipgraph_run run = {seed, first, count, tie_eps, threads, progress, ctx, NULL, NULL};
+  flipgraph_run run = {seed, first, count, tie_eps, threads, progress, ctx, NULL, NULL, NULL};
   return flipgraph_tally_run(rules, nrules, &run, out);
 }

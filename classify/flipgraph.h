@@ -13,6 +13,7 @@
 #include <stdint.h>
 #include "geom.h"
 #include "rule.h"
+#include "sampler.h"
 
 typedef enum flipgraph_type {
   FLIPGRAPH_I, FLIPGRAPH_II, FLIPGRAPH_III, FLIPGRAPH_IV, FLIPGRAPH_V,
@@ -66,7 +67,9 @@ int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first
 ** handed out in chunks of ascending indices, in no fixed order between
 ** threads: a hook that wants "the first K" keeps each thread's first K and
 ** merges them afterwards (the first K of the union are the first K).
-** flipgraph_tally is flipgraph_tally_run without a hook. */
+** flipgraph_tally is flipgraph_tally_run without a hook.  run->sampler
+** draws the pentagons (NULL: sampler_pentagon); when it runs out of memory
+** the tally returns -1. */
 typedef void (*flipgraph_sample_fn)(void *ctx, int thread, uint64_t index,
                                     const flipgraph_pentagon *p, const flipgraph *g);
 typedef struct flipgraph_run {
@@ -77,6 +80,7 @@ typedef struct flipgraph_run {
   void *progress_ctx;
   flipgraph_sample_fn each;           /* may be NULL */
   void *each_ctx;
+  sampler_pentagon_fn sampler;        /* NULL: sampler_pentagon (iteration) */
 } flipgraph_run;
 int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
                         flipgraph_counts *out);

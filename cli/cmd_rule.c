@@ -127,7 +127,7 @@ static int cli_rule_pentagons(const rule *rules, int nrules, const cli_rule_opts
   cli_progress prog;
   cli_progress_start(&prog, "rule");
   flipgraph_run run = {o->seed, 0, o->samples, o->tie_eps, threads, cli_progress_update, &prog,
-                       cli_rule_each, &h};
+                       cli_rule_each, &h, NULL};
   int rc = flipgraph_tally_run(rules, nrules, &run, counts);
   cli_progress_finish(&prog);
   for (int t = 0; t < threads && rc == 0; t++)

@@ -2,7 +2,8 @@
 ** cmd_table34.c: `fliplab table34`: regenerate the thesis's table 3.4, the
 ** % of directed flip graphs of each type for the 120 (measure x joint)
 ** rules over random pentagons, with DT alongside; or a shard of it, to be
-** summed by `fliplab merge`.
+** summed by `fliplab merge`.  --sampler picks the pentagons
+** (sampler_pentagons_table; docs/sampling.md).
 */
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "rule.h"
 #include "joint.h"
 #include "report.h"
+#include "sampler.h"
 
 #define CMD "table34"
 #define CLI_MAX_SAMPLES 1000000000000ull   /* 1e12 */
@@ -20,6 +22,9 @@
 static const cli_option cli_table34_help[] = {
   {"--samples", "N", "5000", "pentagons, at most 1e12"},
   {"--seed", "S", "1", "sampler seed; same seed, same table"},
+  {"--sampler", "NAME", "iteration",
+   "the pentagons: iteration (the thesis's), vector, circle or\n"
+   "                     disc-hull (docs/sampling.md); merge refuses all but iteration"},
   {"--threads", "T", "all cores", "threads; the table does not depend on T"},
   {"--measures", "M", "table34",
    "table34 (the thesis's 20 columns), all (those, then beta, d,\n"
@@ -51,6 +56,7 @@ typedef struct cli_table34_opts {
   report_format format;
   int has_format, has_columns;
   const char *out, *plot, *measures;
+  const sampler_pentagons *sampler;
 } cli_table34_opts;
 
 /* The format: --format, else the one --out's extension names, else text;
@@ -71,9 +77,25 @@ static int cli_table34_format(cli_table34_opts *o) {
   return 0;
 }
 
+/* --sampler NAME: one of sampler_pentagons_table, else a one-line error
+** with the closest name. */
+static int cli_table34_sampler(const char *v, cli_table34_opts *o) {
+  if ((o->sampler = sampler_pentagons_find(v)) != NULL) return 0;
+  const char *names[SAMPLER_PENTAGONS_COUNT];
+  for (int k = 0; k < SAMPLER_PENTAGONS_COUNT; k++) names[k] = sampler_pentagons_table[k].name;
+  const char *near = cli_closest(v, names, SAMPLER_PENTAGONS_COUNT);
+  if (near != NULL)
+    cli_error(CMD, "--sampler: unknown sampler '%s': did you mean '%s'?", v, near);
+  else
+    cli_error(CMD, "--sampler: unknown sampler '%s' (valid: iteration, vector, circle, "
+                   "disc-hull)", v);
+  return -1;
+}
+
 static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
   *o = (cli_table34_opts){.samples = 5000, .seed = 1, .tie_eps = RULE_DEFAULT_TIE_EPS,
-                          .format = REPORT_TEXT, .measures = "table34"};
+                          .format = REPORT_TEXT, .measures = "table34",
+                          .sampler = &sampler_pentagons_table[0]};
   for (int i = 1; i < argc; i++) {
     const char *a = argv[i], *v;
     if (cli_is_help(a)) {
@@ -111,6 +133,9 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
     } else if (strcmp(a, "--shard") == 0) {
       if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
           cli_parse_shard(CMD, v, &o->shard_k, &o->shard_n) != 0)
+        return -1;
+    } else if (strcmp(a, "--sampler") == 0) {
+      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL || cli_table34_sampler(v, o) != 0)
         return -1;
     } else if (strcmp(a, "--measures") == 0) {
       if ((o->measures = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
@@ -182,8 +207,13 @@ int cli_cmd_table34(int argc, char **argv) {
   if (count > 0) {
     cli_progress prog;
     cli_progress_start(&prog, "table34");
-    int t = flipgraph_tally(rules, nrules, o.seed, first, count, o.tie_eps, (int)o.threads,
-                            counts, cli_progress_update, &prog);
+    /* The iteration method is the tally's own default (sampler NULL). */
+    flipgraph_run run = {.seed = o.seed, .first = first, .count = count, .tie_eps = o.tie_eps,
+                         .threads = (int)o.threads, .progress = cli_progress_update,
+                         .progress_ctx = &prog,
+                         .sampler = o.sampler == &sampler_pentagons_table[0] ? NULL
+                                                                             : o.sampler->draw};
+    int t = flipgraph_tally_run(rules, nrules, &run, counts);
     cli_progress_finish(&prog);
     if (t != 0) {
       cli_error(CMD, "out of memory");   /* the tally fails only to allocate */
@@ -199,12 +229,14 @@ int cli_cmd_table34(int argc, char **argv) {
     counts[r].samples = count;
     report_row_from_rule(&rows[r], &rules[r], &counts[r]);
   }
+  const char *sampler = o.sampler == &sampler_pentagons_table[0] ? NULL : o.sampler->name;
   report_run run = {.known = 1, .seed = o.seed, .tie_eps = o.tie_eps, .first = first,
-                    .end = first + count, .total = o.samples, .rules = (uint64_t)nrules};
+                    .end = first + count, .total = o.samples, .rules = (uint64_t)nrules,
+                    .sampler = sampler};
   report_meta meta = {.samples = count, .has_seed = 1, .seed = o.seed, .has_tie_eps = 1,
                       .tie_eps = o.tie_eps, .shard_k = o.shard_k, .shard_n = o.shard_n,
                       .shard_first = first, .shard_total = o.samples,
-                      .text_columns = (int)o.columns, .run = &run};
+                      .text_columns = (int)o.columns, .run = &run, .sampler = sampler};
   uint64_t iv = report_type_iv(rows, nrules);
   if (iv > 0)
     fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "

@@ -18,6 +18,7 @@
 ** convex and anticlockwise throughout.
 */
 #include <math.h>
+#include <string.h>
 #include "sampler.h"
 #include "splitmix.h"
 
@@ -150,6 +151,15 @@ int sampler_hull_add(geom_point *h, int n, geom_point p) {
   return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
 }
 
+/* v = h rotated to start at the lexicographically smallest vertex, so the
+** labelling v0..v{n-1} does not depend on the order the hull was built in. */
+static void sampler_lexfirst(const geom_point *h, int n, geom_point *v) {
+  int s = 0;
+  for (int k = 1; k < n; k++)
+    if (geom_lexless(h[k], h[s])) s = k;
+  for (int k = 0; k < n; k++) v[k] = h[(s + k) % n];
+}
+
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v) {
   sampler_rng g;
   sampler_seed(&g, seed, index);
@@ -159,12 +169,7 @@ void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v) {
     geom_point p = sampler_disc(&g);
     m = sampler_hull_add(h, m, p);
   }
-  /* Start at the lexicographically smallest vertex, so the labelling
-  ** v0..v{n-1} does not depend on the order the hull was built in. */
-  int s = 0;
-  for (int k = 1; k < n; k++)
-    if (geom_lexless(h[k], h[s])) s = k;
-  for (int k = 0; k < n; k++) v[k] = h[(s + k) % n];
+  sampler_lexfirst(h, n, v);
 }
 
 void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
@@ -207,4 +212,62 @@ void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]) {
     for (int k = 0; k < 4; k++) ok &= geom_orient(q[k], q[(k + 1) % 4], q[(k + 2) % 4]) > 0;
     if (ok) return;
   }
+}
+
+/* ---- pentagon samplers for table34 --sampler ---------------------------- */
+
+static int sampler_pentagon_iteration(uint64_t seed, uint64_t index, geom_point v[5]) {
+  sampler_pentagon(seed, index, v);
+  return 0;
+}
+
+/* sampler_vector and sampler_circle fail (-1) only when 100 draws in a row
+** are spoilt by rounding, which for n = 5 never happens in practice; the
+** stream simply goes on then. */
+static int sampler_pentagon_polygon(uint64_t seed, uint64_t index, geom_point v[5],
+                                    int (*draw)(sampler_rng *, size_t, geom_point *)) {
+  sampler_rng g;
+  geom_point h[5];
+  int rc;
+  sampler_seed(&g, seed, index);
+  while ((rc = draw(&g, 5, h)) == -1) {}
+  if (rc != 0) return rc;
+  sampler_lexfirst(h, 5, v);
+  return 0;
+}
+
+static int sampler_pentagon_vector(uint64_t seed, uint64_t index, geom_point v[5]) {
+  return sampler_pentagon_polygon(seed, index, v, sampler_vector);
+}
+
+static int sampler_pentagon_circle(uint64_t seed, uint64_t index, geom_point v[5]) {
+  return sampler_pentagon_polygon(seed, index, v, sampler_circle);
+}
+
+/* Five points at once; their hull (exact, sampler_hull_add) has five
+** vertices exactly when all five are in strictly convex position. */
+static int sampler_pentagon_dischull(uint64_t seed, uint64_t index, geom_point v[5]) {
+  sampler_rng g;
+  geom_point h[SAMPLER_HULL_MAX];
+  int m;
+  sampler_seed(&g, seed, index);
+  do {
+    m = 0;
+    for (int k = 0; k < 5; k++) m = sampler_hull_add(h, m, sampler_disc(&g));
+  } while (m != 5);
+  sampler_lexfirst(h, 5, v);
+  return 0;
+}
+
+const sampler_pentagons sampler_pentagons_table[SAMPLER_PENTAGONS_COUNT] = {
+  {"iteration", sampler_pentagon_iteration},
+  {"vector", sampler_pentagon_vector},
+  {"circle", sampler_pentagon_circle},
+  {"disc-hull", sampler_pentagon_dischull},
+};
+
+const sampler_pentagons *sampler_pentagons_find(const char *s) {
+  for (int k = 0; k < SAMPLER_PENTAGONS_COUNT; k++)
+    if (strcmp(s, sampler_pentagons_table[k].name) == 0) return &sampler_pentagons_table[k];
+  return NULL;
 }

@@ -34,6 +34,25 @@ geom_point sampler_disc(sampler_rng *g);
 /* Pentagon number `index` of the stream `seed`, anticlockwise. */
 void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]);
 
+/* Other pentagon samplers for `table34 --sampler` (docs/sampling.md), each
+** drawing pentagon `index` from the stream (seed, index), strictly convex,
+** anticlockwise from the lexicographically smallest vertex:
+**   iteration  sampler_pentagon (the thesis's, the default)
+**   vector     sampler_vector with n = 5
+**   circle     sampler_circle with n = 5
+**   disc-hull  five points uniform in the unit disc, all five drawn again
+**              until each is a vertex of their convex hull (exact test)
+** draw returns 0, or SAMPLER_ENOMEM. */
+typedef int (*sampler_pentagon_fn)(uint64_t seed, uint64_t index, geom_point v[5]);
+typedef struct sampler_pentagons {
+  const char *name;
+  sampler_pentagon_fn draw;
+} sampler_pentagons;
+#define SAMPLER_PENTAGONS_COUNT 4
+extern const sampler_pentagons sampler_pentagons_table[SAMPLER_PENTAGONS_COUNT];
+/* The entry named s, or NULL. */
+const sampler_pentagons *sampler_pentagons_find(const char *s);
+
 /* Quadrilateral number `index` of the stream `seed`: four points uniform
 ** in the unit disc in strictly convex position, anticlockwise (the
 ** Delaunay-equivalence check of `fliplab rule`, and the tests). */

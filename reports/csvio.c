@@ -66,6 +66,7 @@ int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const repor
     if (i > 0) fputc(',', f);
     report_csv_field(f, report_csv_header[i]);
   }
+  if (run != NULL && run->sampler != NULL) fputs(",sampler", f);
   fputc('\n', f);
   for (int r = 0; r < nrows; r++) {
     const flipgraph_counts *c = &rows[r].c;
@@ -89,6 +90,10 @@ int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const repor
       fprintf(f, ",%llu,%s,%llu,%llu,%llu,%d", (unsigned long long)run->seed, eps,
               (unsigned long long)run->first, (unsigned long long)run->end,
               (unsigned long long)run->total, nrows);
+      if (run->sampler != NULL) {
+        fputc(',', f);
+        report_csv_field(f, run->sampler);
+      }
     }
     fputc('\n', f);
   }
@@ -296,6 +301,12 @@ typedef struct report_countsread {
 } report_countsread;
 
 static int report_counts_header(report_countsread *cr, char **f, int nf, uint64_t line) {
+  if (nf == REPORT_CSV_NCOLS + 1 && strcmp(f[nf - 1], "sampler") == 0) {
+    report_errf(cr->err, cr->errlen,
+                "%s: made by table34 --sampler other than iteration; merge sums only "
+                "iteration-method runs (docs/merge.md)", cr->name);
+    return -1;
+  }
   int ok = nf == 10 || nf == REPORT_CSV_NCOLS;
   for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_csv_header[i]) == 0;
   if (!ok) {

@@ -41,6 +41,8 @@ typedef struct report_run {
   uint64_t first, end;    /* sample range [first, end) counted */
   uint64_t total;         /* the run's samples (--samples) */
   uint64_t rules;         /* rows of the file */
+  const char *sampler;    /* table34 --sampler other than iteration: written as a
+                          ** 17th column `sampler`, which merge refuses; else NULL */
 } report_run;
 
 /* What the table header says about the run.  Fields a merged CSV does not

@@ -447,7 +447,7 @@ static void test_tally_hook(void **state) {
   h.seen = calloc(h.count, 1);
   flipgraph_counts out[TFG_MAXRULES];
   memset(out, 0, sizeof out);
-  flipgraph_run run = {7, h.first, h.count, TFG_EPS, TFG_HOOK_THREADS, NULL, NULL, tfg_each, &h};
+  flipgraph_run run = {7, h.first, h.count, TFG_EPS, TFG_HOOK_THREADS, NULL, NULL, tfg_each, &h, NULL};
   assert_int_equal(flipgraph_tally_run(rules, n, &run, out), 0);
   assert_int_equal(h.bad, 0);
   for (uint64_t i = 0; i < h.count; i++) assert_int_equal(h.seen[i], 1);
