@@ -37,6 +37,10 @@ for f in "$prefix"/include/fliplab/*; do
       $(pkg-config --cflags fliplab) || fail "<fliplab/$h> does not compile on its own"
 done
 test -z "$(find "$prefix/include" -type d -empty)" || fail "empty folder installed"
+# The documentation the headers point to (docs/*.md) is installed with them.
+for ref in $(grep -ho 'docs/[A-Za-z0-9_-]*\.md' "$prefix"/include/fliplab/*.h | sort -u); do
+  test -f "$prefix/share/doc/fliplab/${ref#docs/}" || fail "$ref named in a header, not installed"
+done
 pkg-config --cflags fliplab | grep -q -- -fopenmp && fail "-fopenmp in Cflags"
 
 # The README's blocks: the fenced block after a marker, or its indented lines.

@@ -1,0 +1,39 @@
+#!/bin/sh
+# docs_check.sh SOURCE_DIR: the repository explains itself.
+#  - every relative link of README.md and docs/*.md leads to a file;
+#  - every docs/NAME.md named in a source comment, a help text or the README exists;
+#  - every docs/*.md is listed in the index docs/README.md;
+#  - nothing refers to material outside the repository (../shared).
+set -eu
+src=$(cd "$1" && pwd)
+cd "$src"
+bad=0
+say() { echo "docs_check: $*" >&2; bad=1; }
+
+for md in README.md docs/*.md; do
+  dir=$(dirname "$md")
+  for link in $(grep -o '\]([^)#]*' "$md" | sed 's/^](//' | grep -v '^[a-z]*:' || true); do
+    [ -n "$link" ] || continue
+    [ -e "$dir/$link" ] || say "$md links to $link, which does not exist"
+  done
+done
+
+for ref in $(grep -rhoE 'docs/[A-Za-z0-9_-]+\.md' --include='*.c' --include='*.h' \
+               --include='*.md' --include='*.sh' --include='CMakeLists.txt' \
+               --exclude-dir='build*' --exclude-dir='.git' --exclude=docs_check.sh . | sort -u); do
+  [ -e "$ref" ] || say "$ref is named in the sources but does not exist"
+done
+
+for f in docs/*.md; do
+  n=$(basename "$f")
+  [ "$n" = README.md ] && continue
+  grep -q "($n)" docs/README.md || say "docs/$n is not listed in docs/README.md"
+done
+
+if grep -rnE '\.\./shared|/work/shared' --include='*.c' --include='*.h' --include='*.md' \
+     --include='*.txt' --include='*.sh' --include='CMakeLists.txt' --include='*.in' \
+     --exclude-dir='build*' --exclude-dir='.git' --exclude=docs_check.sh . ; then
+  say "the lines above refer to files outside the repository"
+fi
+[ $bad -eq 0 ] && echo "docs_check: ok"
+exit $bad
