@@ -200,6 +200,17 @@ static int report_census_mean(const char *s, uint64_t denom, double scale, uint6
   return 0;
 }
 
+/* A triangle-based row's rule is MEASURE_JOINT; a quadrilateral rule's row
+** has neither measure nor joint, and no gap (it has no GOT).  Anything else
+** would not survive being written back (the writer derives the gap column
+** from the measure). */
+static int report_census_named(const report_census_row *row, const char *gap) {
+  if (row->measure[0] == '\0') return row->joint[0] == '\0' && gap[0] == '\0';
+  char want[sizeof row->measure + sizeof row->joint + 1];
+  snprintf(want, sizeof want, "%s_%s", row->measure, row->joint);
+  return strcmp(want, row->rule) == 0;
+}
+
 static int report_census_fields(report_census_reader *cr, report_census_row *row, char **f,
                                 unsigned long long ln) {
   if (strlen(f[0]) >= sizeof row->measure || strlen(f[1]) >= sizeof row->joint ||
@@ -212,6 +223,12 @@ static int report_census_fields(report_census_reader *cr, report_census_row *row
   strcpy(row->joint, f[1]);
   strcpy(row->rule, f[2]);
   strcpy(row->sampler, f[4]);
+  if (!report_census_named(row, f[13])) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: rule '%.40s' does not match measure '%.40s' "
+             "and joint '%.16s' (or has a gap without a measure)", cr->name, ln, row->rule,
+             row->measure, row->joint);
+    return -1;
+  }
   uint64_t sites;
   siteflip_counts *c = &row->c;
   uint64_t *dst[8] = {&c->samples, &c->tie, &c->no_sink, &c->one_sink, &c->multi_sink,
@@ -264,6 +281,11 @@ static int report_census_record(char **f, int nf, uint64_t line, void *data) {
   if (nf != REPORT_CENSUS_NCOLS) {
     snprintf(cr->err, cr->errlen, "%s line %llu: expected %d fields, got %d", cr->name, ln,
              REPORT_CENSUS_NCOLS, nf);
+    return -1;
+  }
+  if (cr->n >= REPORT_CENSUS_MAX_ROWS) {
+    snprintf(cr->err, cr->errlen, "%s line %llu: more than %d rules", cr->name, ln,
+             REPORT_CENSUS_MAX_ROWS);
     return -1;
   }
   if (cr->n == cr->cap) {

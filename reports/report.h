@@ -236,6 +236,9 @@ void report_census_row_from_rule(report_census_row *row, const rule *r, int site
 ** for rules that are not triangle-based, and both empty with no sample to
 ** average).  Both read back into exact integer sums (docs/sitesets.md). */
 #define REPORT_CENSUS_NCOLS 14
+/* The most rows a census CSV may hold: every measure with every joint, and
+** every quadrilateral rule. */
+#define REPORT_CENSUS_MAX_ROWS (MEASURE_MAX * JOINT_COUNT + RULE_QUAD_MAX)
 extern const char *const report_census_header[REPORT_CENSUS_NCOLS];
 int report_census_write(FILE *f, report_format fmt, const report_census_meta *m,
                         const report_census_row *rows, int nrows);
