@@ -222,11 +222,9 @@ static int geom_half(geom_point from, geom_point to) {
 ** winds twice).  With every turn strictly between 0 and pi, the edge
 ** direction changes half (see geom_half) exactly twice per winding, so the
 ** winding number is exact too: no angle sums, no atan2, any scale. */
-geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed) {
-  size_t dummy;
-  if (bad == NULL) bad = &dummy;
-  if (reversed) *reversed = 0;
-  *bad = 0;
+/* What every polygon's vertices must be, convex or simple: at least three,
+** finite, inside the coordinate contract, no two equal (*bad: the vertex). */
+static geom_polyerr geom_polygon_points_check(const geom_point *p, size_t n, size_t *bad) {
   if (n < 3) return GEOM_TOO_FEW;
   for (size_t i = 0; i < n; i++)
     if (!geom_point_finite(p[i])) {
@@ -239,6 +237,16 @@ geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *rever
       return GEOM_OUT_OF_SCALE;
     }
   if (geom_find_duplicate(p, n, bad)) return GEOM_DUPLICATE;
+  return GEOM_OK;
+}
+
+geom_polyerr geom_polygon_check(geom_point *p, size_t n, size_t *bad, int *reversed) {
+  size_t dummy;
+  if (bad == NULL) bad = &dummy;
+  if (reversed) *reversed = 0;
+  *bad = 0;
+  geom_polyerr e = geom_polygon_points_check(p, n, bad);
+  if (e != GEOM_OK) return e;
   int sign = 0;
   size_t changes = 0;
   for (size_t i = 0; i < n; i++) {
@@ -368,18 +376,8 @@ geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, siz
   if (bad2 == NULL) bad2 = &d2;
   if (reversed) *reversed = 0;
   *bad = *bad2 = 0;
-  if (n < 3) return GEOM_TOO_FEW;
-  for (size_t i = 0; i < n; i++)
-    if (!geom_point_finite(p[i])) {
-      *bad = i;
-      return GEOM_NOT_FINITE;
-    }
-  for (size_t i = 0; i < n; i++)
-    if (geom_coord_check(p[i].x) != GEOM_COORD_OK || geom_coord_check(p[i].y) != GEOM_COORD_OK) {
-      *bad = i;
-      return GEOM_OUT_OF_SCALE;
-    }
-  if (geom_find_duplicate(p, n, bad)) return GEOM_DUPLICATE;
+  geom_polyerr e = geom_polygon_points_check(p, n, bad);
+  if (e != GEOM_OK) return e;
   if (geom_find_crossing(p, n, bad, bad2) != 0) return GEOM_CROSSING;
   size_t lo = 0;
   for (size_t i = 1; i < n; i++)
