@@ -140,6 +140,7 @@ typedef struct report_csvstate {
   char *fields[REPORT_CSV_MAXFIELDS];
   int nfields;       /* fields seen in the current record */
   uint64_t line;
+  int after_cr;      /* the last record ended with a CR (a CRLF's LF is no new line) */
   int stop;          /* non-zero: the callback's verdict, ignore the rest */
   int oom, toomany;
   report_record_fn fn;
@@ -177,8 +178,12 @@ static void report_csv_cb_record(int c, void *data) {
     int blank = st->nfields == 0 || (st->nfields == 1 && st->fields[0][0] == '\0');
     if (!blank) st->stop = st->fn(st->fields, st->nfields, st->line, st->ctx);
   }
+  /* Lines end with LF, CRLF or a lone CR (libcsv ends a record at each);
+  ** the LF of a CRLF arrives as an empty record of its own. */
+  int crlf = c == '\n' && st->after_cr && st->nfields == 0;
+  if ((c == '\n' && !crlf) || c == '\r') st->line++;
+  st->after_cr = c == '\r';
   report_csv_clear(st);
-  if (c == '\n') st->line++;
 }
 
 /* The message for a libcsv failure at the current line. */

@@ -211,6 +211,9 @@ static void test_bad_input(void **state) {
     {"0,0\n1,0\n0,1e300\n", "", "line 3: y '1e300' is out of range"},
     {"0,0\n1,0\n1e-40,1\n", "", "line 3"},
     {"0,0\n1,0\n0,1,2\n", "", "line 3"},
+    /* Lines end with LF, CRLF or a lone CR, and every error names the right one. */
+    {"x,y\r\n\r\n0,0\r\n1,0,5\r\n", "", "line 4: expected 2 fields"},
+    {"x,y\r0,0\r1,0,5\r", "", "line 3: expected 2 fields"},
     {NULL, "--random 10 --sampler spiral", "unknown sampler 'spiral'"},
     {NULL, "--random 1e12", "memory"},
     {NULL, "--random 10 --order sideways", "unknown order"},
