@@ -301,6 +301,9 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
 ** yellow = good to dark red = bad) as "#rrggbb". */
 void report_got_text(FILE *f, double x, double y, int size, const char *s);
 void report_got_colour(double f, char *buf, size_t len);
+/* The badness colour scale of a shaded drawing (got, lot): 20 swatches from
+** lo to hi, labelled, with its left edge at x0 and its top at y. */
+void report_got_legend(FILE *f, double x0, double y, double lo, double hi);
 
 /* ---- fliplab lot (reports/csv_lot.c, reports/svg_lot.c) ---- */
 

@@ -202,18 +202,17 @@ static void report_got_labels(FILE *f, const report_got_view *v, const geom_poin
   fprintf(f, "</g>\n");
 }
 
-static void report_got_legend(FILE *f, const report_got_view *v, double bmin, double bmax) {
-  double y = v->height - 18;
+void report_got_legend(FILE *f, double x0, double y, double lo, double hi) {
   for (int s = 0; s < 20; s++) {
     char col[16];
     report_got_colour(s / 19.0, col, sizeof col);
     fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
-            REPORT_GOT_MARGIN + 120 + 10 * s, y, col);
+            x0 + 120 + 10 * s, y, col);
   }
   fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
-          REPORT_GOT_MARGIN, y + 9, bmin);
+          x0, y + 9, lo);
   fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
-          REPORT_GOT_MARGIN + 325, y + 9, bmax);
+          x0 + 325, y + 9, hi);
 }
 
 int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
@@ -232,7 +231,7 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
   if (o && o->overlay && report_got_overlay(f, &v, p, n, t, ntri, o) != 0) return -1;
   report_got_outline(f, &v, p, n);
   if (n <= REPORT_GOT_LABEL_N) report_got_labels(f, &v, p, n, o ? o->labels : NULL);
-  if (shade && bmax >= bmin) report_got_legend(f, &v, bmin, bmax);
+  if (shade && bmax >= bmin) report_got_legend(f, REPORT_GOT_MARGIN, v.height - 18, bmin, bmax);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }

@@ -94,19 +94,7 @@ int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_pane
     v.x0 = REPORT_LOT_MARGIN + k * pw;
     report_lot_panel_draw(f, p, n, &panels[k], &v, shade, lo, hi);
   }
-  if (shade && hi >= lo) {
-    double y = height - 20;
-    for (int s = 0; s < 20; s++) {
-      char col[16];
-      report_got_colour(s / 19.0, col, sizeof col);
-      fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
-              REPORT_LOT_MARGIN + 120 + 10 * s, y, col);
-    }
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
-            REPORT_LOT_MARGIN, y + 9, lo);
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
-            REPORT_LOT_MARGIN + 325, y + 9, hi);
-  }
+  if (shade && hi >= lo) report_got_legend(f, REPORT_LOT_MARGIN, height - 20, lo, hi);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }
