@@ -19,6 +19,7 @@
 #ifndef FLIPLAB_PREDICATES_H
 #define FLIPLAB_PREDICATES_H
 
+#include <math.h>
 #include "fliplab_config.h"
 
 typedef struct geom_point {
@@ -45,24 +46,30 @@ int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d);
 ** makes the determinant or the bound infinite or NaN, the comparisons fail,
 ** and the exact path decides. */
 static inline int geom_filter_tiny(double d) {
-  return d != 0 && (d < 0 ? -d : d) < 0x1p-200;
+  return (d != 0) & (fabs(d) < 0x1p-200);
 }
 
 /* det = (bx-ax)(cy-ay) - (by-ay)(cx-ax).  With l, r the two products,
 ** |fl(det) - det| <= (3 + 16 eps) eps (|l| + |r|) (ccwerrboundA), so a larger
 ** |fl(det)| has the true sign.  Inline: hot loops (hull updates, polygon
-** checks) decide nearly every test here without a call. */
-static inline int geom_orient(geom_point a, geom_point b, geom_point c) {
+** checks) decide nearly every test here without a call.  `tiny` = 0 skips
+** the tiny-difference test (geom_orient_valid below says when that is safe);
+** it is a constant at every call, so each caller gets one specialised copy. */
+static inline int geom_orient_filtered(geom_point a, geom_point b, geom_point c, int tiny) {
   double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
   double l = bax * cay, r = bay * cax;
   double det = l - r;
-  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * ((l < 0 ? -l : l) + (r < 0 ? -r : r));
-  if (!(geom_filter_tiny(bax) | geom_filter_tiny(bay) | geom_filter_tiny(cax)
-        | geom_filter_tiny(cay))) {
+  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
+  if (!tiny || !(geom_filter_tiny(bax) | geom_filter_tiny(bay) | geom_filter_tiny(cax)
+                 | geom_filter_tiny(cay))) {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
   return geom_orient_exact(a, b, c);
+}
+
+static inline int geom_orient(geom_point a, geom_point b, geom_point c) {
+  return geom_orient_filtered(a, b, c, 1);
 }
 
 /* The incircle determinant of a, b, c, d translated so that d is the origin:
@@ -77,7 +84,8 @@ static inline int geom_orient(geom_point a, geom_point b, geom_point c) {
 ** millions of these tests, nearly all decided here without a call.  The
 ** tiny tests are combined with | rather than ||: six cheap comparisons beat
 ** six unpredictable branches. */
-static inline int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d) {
+static inline int geom_incircle_filtered(geom_point a, geom_point b, geom_point c, geom_point d,
+                                         int tiny) {
   double adx = a.x - d.x, ady = a.y - d.y;
   double bdx = b.x - d.x, bdy = b.y - d.y;
   double cdx = c.x - d.x, cdy = c.y - d.y;
@@ -89,16 +97,37 @@ static inline int geom_incircle(geom_point a, geom_point b, geom_point c, geom_p
   double clift = cdx * cdx + cdy * cdy;
   double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy)
              + clift * (adxbdy - bdxady);
-  double permanent = ((bdxcdy < 0 ? -bdxcdy : bdxcdy) + (cdxbdy < 0 ? -cdxbdy : cdxbdy)) * alift
-                   + ((cdxady < 0 ? -cdxady : cdxady) + (adxcdy < 0 ? -adxcdy : adxcdy)) * blift
-                   + ((adxbdy < 0 ? -adxbdy : adxbdy) + (bdxady < 0 ? -bdxady : bdxady)) * clift;
+  double permanent = (fabs(bdxcdy) + fabs(cdxbdy)) * alift
+                   + (fabs(cdxady) + fabs(adxcdy)) * blift
+                   + (fabs(adxbdy) + fabs(bdxady)) * clift;
   double bound = (10.0 + 96.0 * GEOM_EPS) * GEOM_EPS * permanent;
-  if (!(geom_filter_tiny(adx) | geom_filter_tiny(ady) | geom_filter_tiny(bdx)
-        | geom_filter_tiny(bdy) | geom_filter_tiny(cdx) | geom_filter_tiny(cdy))) {
+  if (!tiny || !(geom_filter_tiny(adx) | geom_filter_tiny(ady) | geom_filter_tiny(bdx)
+                 | geom_filter_tiny(bdy) | geom_filter_tiny(cdx) | geom_filter_tiny(cdy))) {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
   return geom_incircle_exact(a, b, c, d);
+}
+
+static inline int geom_incircle(geom_point a, geom_point b, geom_point c, geom_point d) {
+  return geom_incircle_filtered(a, b, c, d, 1);
+}
+
+/* The same predicates for points known to obey the coordinate contract
+** (every coordinate 0 or of magnitude in [1e-30, 1e30]; geom_coord_check in
+** geom.h), as lot/ knows after validating its input: there the tiny test
+** cannot fire.  1e-30 > 2^-100, so two distinct coordinates are multiples of
+** 2^-152 and differ by at least 2^-152 > 2^-200 (a difference with 0 is the
+** other coordinate, at least 2^-100); and no difference, product or lift of
+** such points over- or underflows (docs/scale.md), so the bounds above hold
+** as they stand.  The tiny test is a tenth of the instructions of a
+** Delaunay triangulation, which is why these exist. */
+static inline int geom_orient_valid(geom_point a, geom_point b, geom_point c) {
+  return geom_orient_filtered(a, b, c, 0);
+}
+
+static inline int geom_incircle_valid(geom_point a, geom_point b, geom_point c, geom_point d) {
+  return geom_incircle_filtered(a, b, c, d, 0);
 }
 
 /* Counts of predicate calls that needed the exact fallback (diagnostics). */

@@ -236,7 +236,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
   lot_mesh *m = R->m;
   /* Queued corners are in real triangles; the other side is a ghost when
   ** its apex d is the ghost vertex (b and c0 are real). */
-  uint32_t cd = m->tn[c], t = c / 3, u = cd / 3, d = m->tv[cd];
+  uint32_t cd = m->tn[c], t = lot_tri_of(c), u = lot_tri_of(cd), d = m->tv[cd];
   if (d == LOT_GHOST) return 0;
   uint32_t a = m->tv[c], b = m->tv[lot_next3(c)], c0 = m->tv[lot_prev3(c)];
   geom_point pa = m->p[a], pb = m->p[b], pc = m->p[c0], pd = m->p[d];
@@ -245,9 +245,9 @@ static int lot_examine(lot_run *R, uint32_t c) {
     /* d strictly inside circle abc makes abdc strictly convex (a and d on
     ** opposite sides of bc, and the line ab meets the circle only at a and
     ** b, so b is not on segment ad; likewise c), so no orientation test. */
-    if (geom_incircle(pa, pb, pc, pd) <= 0) return 0;
+    if (geom_incircle_valid(pa, pb, pc, pd) <= 0) return 0;
   } else {
-    if (geom_orient(pa, pb, pd) <= 0 || geom_orient(pa, pd, pc) <= 0) return 0;
+    if (geom_orient_valid(pa, pb, pd) <= 0 || geom_orient_valid(pa, pd, pc) <= 0) return 0;
     const geom_point q[4] = {pa, pb, pd, pc};
     const lot_options *o = R->o;
     rule_choice ch;
@@ -297,8 +297,9 @@ static int lot_drain(lot_run *R) {
 
 static int lot_push_all(lot_run *R) {
   const lot_mesh *m = R->m;
-  for (uint32_t c = 0; c < 3 * m->nt; c++)
-    if (c < m->tn[c] && !lot_is_ghost(m, c / 3) && !lot_is_ghost(m, m->tn[c] / 3))
+  for (uint32_t c = 0; c < LOT_CORNER(m->nt, 0); c++)
+    if (lot_slot(c) < 3 && c < m->tn[c] && !lot_is_ghost(m, lot_tri_of(c)) &&
+        !lot_is_ghost(m, lot_tri_of(m->tn[c])))
       if (lot_push(R, c) != 0) return -1;
   return 0;
 }
@@ -356,7 +357,7 @@ static int lot_first(lot_mesh *m, uint32_t *kb, uint32_t *kc, char *err, size_t 
   uint32_t n = m->np, b = 1, c;
   while (b < n && m->p[b].x == m->p[0].x && m->p[b].y == m->p[0].y) b++;
   for (c = b + 1; c < n && b < n; c++)
-    if (geom_orient(m->p[0], m->p[b], m->p[c]) != 0) break;
+    if (geom_orient_valid(m->p[0], m->p[b], m->p[c]) != 0) break;
   if (b >= n || c >= n) {
     if (b >= n) snprintf(err, errlen, "all %u points are equal: a triangulation needs three "
                          "non-collinear points", n);
@@ -364,7 +365,7 @@ static int lot_first(lot_mesh *m, uint32_t *kb, uint32_t *kc, char *err, size_t 
                   "non-collinear points", n);
     return -1;
   }
-  if (geom_orient(m->p[0], m->p[b], m->p[c]) > 0) lot_mesh_first(m, 0, b, c);
+  if (geom_orient_valid(m->p[0], m->p[b], m->p[c]) > 0) lot_mesh_first(m, 0, b, c);
   else lot_mesh_first(m, 0, c, b);
   *kb = b;
   *kc = c;
@@ -481,7 +482,8 @@ int lot_reflip(lot *L, const lot_options *o) {
   }
   for (uint32_t t = 0; tri && t < m->nt; t++)
     m->bad[t] = lot_is_ghost(m, t) ? 0
-              : lot_mesh_badness(m, m->tv[3 * t], m->tv[3 * t + 1], m->tv[3 * t + 2]);
+              : lot_mesh_badness(m, m->tv[LOT_CORNER(t, 0)], m->tv[LOT_CORNER(t, 1)],
+                                 m->tv[LOT_CORNER(t, 2)]);
   lot_run R;
   L->st.flips = 0;
   L->st.status = LOT_CONVERGED;
@@ -497,9 +499,9 @@ int lot_reflip(lot *L, const lot_options *o) {
 }
 
 /* Bytes per point: input copy in insertion order (16) and its index (4),
-** the order (4, transient), 2 triangles of 24 bytes of indices and 8 of
+** the order (4, transient), 2 triangles of 32 bytes of indices and 8 of
 ** badness, and a caller's input and output (16 + 2 * 12 + 2 * 8). */
-#define LOT_BYTES_PER_POINT 152u
+#define LOT_BYTES_PER_POINT 168u
 
 int lot_check_memory(size_t n, char *err, size_t errlen) {
   long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
@@ -517,8 +519,8 @@ int lot_check_memory(size_t n, char *err, size_t errlen) {
 size_t lot_get_hull(const lot *L, uint32_t *out) {
   const lot_mesh *m = &L->m;
   uint32_t x = LOT_NONE;
-  for (uint32_t c = 0; c < 3 * m->nt && x == LOT_NONE; c++)
-    if (m->tv[c] == LOT_GHOST) x = c;
+  for (uint32_t c = 0; c < LOT_CORNER(m->nt, 0) && x == LOT_NONE; c++)
+    if (lot_slot(c) < 3 && m->tv[c] == LOT_GHOST) x = c;
   size_t h = L->st.hull;
   for (size_t k = 0; k < h; k++) {   /* ghost edges u -> v run clockwise */
     out[h - 1 - k] = m->inp[m->tv[lot_next3(x)]];
@@ -544,7 +546,7 @@ void lot_get_triangles(const lot *L, uint32_t *tri) {
   for (uint32_t t = 0; t < m->nt; t++) {
     if (lot_is_ghost(m, t)) continue;
     uint32_t v[3];
-    for (int i = 0; i < 3; i++) v[i] = m->inp[m->tv[3 * t + i]];
+    for (int i = 0; i < 3; i++) v[i] = m->inp[m->tv[LOT_CORNER(t, i)]];
     int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
     for (int i = 0; i < 3; i++) tri[3 * w + i] = v[(s + i) % 3];
     w++;

@@ -1,17 +1,20 @@
 /*
 ** lot_internal.h: the triangulation structure behind lot.h.
 **
-** Triangle-neighbour arrays.  Triangle t has vertices tv[3t..3t+2],
-** anticlockwise; corner c = 3t + i names vertex tv[c] and the edge opposite
-** it, and tn[c] is the corner of the neighbouring triangle opposite the same
-** edge, so tn[tn[c]] == c.  The convex hull is closed by "ghost" triangles
-** (u, v, LOT_GHOST), one per hull edge, the outside lying to the left of
-** u -> v (Shewchuk's ghost triangles): every triangle then has three
+** Triangle-neighbour arrays.  Triangle t has vertices tv[4t..4t+2],
+** anticlockwise; corner c = 4t + i (i < 3) names vertex tv[c] and the edge
+** opposite it, and tn[c] is the corner of the neighbouring triangle opposite
+** the same edge, so tn[tn[c]] == c.  The convex hull is closed by "ghost"
+** triangles (u, v, LOT_GHOST), one per hull edge, the outside lying to the
+** left of u -> v (Shewchuk's ghost triangles): every triangle then has three
 ** neighbours, a point outside the hull is "in" the ghost triangles whose
 ** edges it sees, and inserting it replaces their ghost vertex by the point.
-** 8 bytes of indices per corner, 2n - 2 triangles (ghosts included) for n
-** vertices: 48 bytes per point, plus 8 per triangle for the badness cache of
-** triangle-based rules.
+** Why a stride of 4 (slot 3 unused): corner arithmetic is then shifts and
+** masks; with 3t + i every step of the walk and every examined edge paid
+** several divisions by 3, a tenth of the Delaunay triangulation's
+** instructions.  16 bytes of indices per corner slot pair, 2n - 2 triangles
+** (ghosts included) for n vertices: 64 bytes per point, plus 8 per triangle
+** for the badness cache of triangle-based rules.
 **
 ** Vertices are numbered in insertion order (p[] is the input permuted),
 ** which keeps neighbouring triangles' points close in memory.
@@ -29,7 +32,7 @@ typedef struct lot_mesh {
   geom_point *p;        /* vertex k's point (k in insertion order) */
   uint32_t *inp;        /* vertex k's input index (first occurrence after merging) */
   uint32_t np;          /* slots in p (input points, duplicates included) */
-  uint32_t *tv, *tn;    /* 3 per triangle */
+  uint32_t *tv, *tn;    /* 4 per triangle (LOT_CORNER), the last unused */
   double *bad;          /* per-triangle badness (triangle-based rules) or NULL */
   uint32_t nt, cap;     /* triangles used, allocated */
   uint32_t last;        /* a triangle near the last insertion: the walk's start */
@@ -38,10 +41,15 @@ typedef struct lot_mesh {
   int angles;           /* the measure reads angles (measure_needs_angles) */
 } lot_mesh;
 
-static inline uint32_t lot_next3(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
-static inline uint32_t lot_prev3(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
+/* Corner i of triangle t, the triangle of corner c, and the next and
+** previous corners of the same triangle (anticlockwise). */
+#define LOT_CORNER(t, i) (4 * (t) + (i))
+static inline uint32_t lot_tri_of(uint32_t c) { return c >> 2; }
+static inline uint32_t lot_slot(uint32_t c) { return c & 3; }
+static inline uint32_t lot_next3(uint32_t c) { return (c & 3) == 2 ? c - 2 : c + 1; }
+static inline uint32_t lot_prev3(uint32_t c) { return (c & 3) == 0 ? c + 2 : c - 1; }
 static inline int lot_is_ghost(const lot_mesh *m, uint32_t t) {
-  const uint32_t *v = m->tv + 3 * (size_t)t;
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
   return v[0] == LOT_GHOST || v[1] == LOT_GHOST || v[2] == LOT_GHOST;
 }
 

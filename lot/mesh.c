@@ -3,7 +3,8 @@
 ** triangle, point location by a walk, insertion (inside a triangle, on an
 ** edge, outside the hull) and the flip.
 **
-** All geometric decisions are exact (geom_orient).  The walk is the
+** All geometric decisions are exact (geom_orient_valid: lot_build has
+** checked every point against the coordinate contract).  The walk is the
 ** "remembering stochastic" visibility walk (Devillers, Pion and Teillaud,
 ** Walking in a triangulation, 2002): from the current triangle it crosses
 ** an edge that separates it from the point, trying the edges from a
@@ -23,8 +24,8 @@ int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness) {
   m->cap = 2 * np + 4;
   m->p = malloc((size_t)np * sizeof *m->p);
   m->inp = malloc((size_t)np * sizeof *m->inp);
-  m->tv = malloc(3 * (size_t)m->cap * sizeof *m->tv);
-  m->tn = malloc(3 * (size_t)m->cap * sizeof *m->tn);
+  m->tv = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tv);
+  m->tn = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tn);
   if (with_badness) m->bad = malloc((size_t)m->cap * sizeof *m->bad);
   m->walk = 0x9e3779b97f4a7c15ull;
   if (!m->p || !m->inp || !m->tv || !m->tn || (with_badness && !m->bad)) {
@@ -56,7 +57,7 @@ static void lot_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
 }
 
 static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
-  uint32_t *v = m->tv + 3 * (size_t)t;
+  uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
   v[0] = a;
   v[1] = b;
   v[2] = c;
@@ -70,15 +71,18 @@ void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   lot_set(m, 1, b, a, LOT_GHOST);
   lot_set(m, 2, c, b, LOT_GHOST);
   lot_set(m, 3, a, c, LOT_GHOST);
-  lot_link(m, 0, 3 * 2 + 2);       /* opposite a: bc */
-  lot_link(m, 1, 3 * 3 + 2);       /* opposite b: ca */
-  lot_link(m, 2, 3 * 1 + 2);       /* opposite c: ab */
-  lot_link(m, 3 * 1 + 0, 3 * 3 + 1);
-  lot_link(m, 3 * 1 + 1, 3 * 2 + 0);
-  lot_link(m, 3 * 2 + 1, 3 * 3 + 0);
+  lot_link(m, 0, LOT_CORNER(2, 2));       /* opposite a: bc */
+  lot_link(m, 1, LOT_CORNER(3, 2));       /* opposite b: ca */
+  lot_link(m, 2, LOT_CORNER(1, 2));       /* opposite c: ab */
+  lot_link(m, LOT_CORNER(1, 0), LOT_CORNER(3, 1));
+  lot_link(m, LOT_CORNER(1, 1), LOT_CORNER(2, 0));
+  lot_link(m, LOT_CORNER(2, 1), LOT_CORNER(3, 0));
   m->nt = 4;
   m->last = 0;
 }
+
+/* i mod 3 for i < 6, by table: the walk's edge arithmetic without divisions. */
+static const uint8_t lot_mod3[6] = {0, 1, 2, 0, 1, 2};
 
 /* A random edge 0, 1 or 2 (xorshift64; the high word times 3, >> 32). */
 static uint32_t lot_walk_rand3(lot_mesh *m) {
@@ -95,14 +99,14 @@ static uint32_t lot_walk_rand3(lot_mesh *m) {
 static lot_where lot_classify(uint32_t t, const int o[3], uint32_t *c) {
   int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
   if (zeros == 0) {
-    *c = 3 * t;
+    *c = LOT_CORNER(t, 0);
     return LOT_IN_TRIANGLE;
   }
   if (zeros == 1) {
-    *c = 3 * t + (o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2);
+    *c = LOT_CORNER(t, o[0] == 0 ? 0u : o[1] == 0 ? 1u : 2u);
     return LOT_ON_EDGE;
   }
-  *c = 3 * t + (o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2);   /* on both other edges: that vertex */
+  *c = LOT_CORNER(t, o[0] != 0 ? 0u : o[1] != 0 ? 1u : 2u);   /* on both other edges: that vertex */
   return LOT_ON_VERTEX;
 }
 
@@ -110,16 +114,18 @@ static lot_where lot_classify(uint32_t t, const int o[3], uint32_t *c) {
 static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
   for (uint32_t t = 0; t < m->nt; t++) {
     if (lot_is_ghost(m, t)) continue;
-    const uint32_t *v = m->tv + 3 * (size_t)t;
+    const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
     int o[3];
-    for (int e = 0; e < 3; e++) o[e] = geom_orient(m->p[v[(e + 1) % 3]], m->p[v[(e + 2) % 3]], q);
+    for (int e = 0; e < 3; e++)
+      o[e] = geom_orient_valid(m->p[v[lot_mod3[e + 1]]], m->p[v[lot_mod3[e + 2]]], q);
     if (o[0] >= 0 && o[1] >= 0 && o[2] >= 0) return lot_classify(t, o, c);
   }
   for (uint32_t t = 0; t < m->nt; t++) {
-    const uint32_t *v = m->tv + 3 * (size_t)t;
+    const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
     for (int g = 0; g < 3; g++)
-      if (v[g] == LOT_GHOST && geom_orient(m->p[v[(g + 1) % 3]], m->p[v[(g + 2) % 3]], q) > 0) {
-        *c = 3 * t + (uint32_t)g;
+      if (v[g] == LOT_GHOST &&
+          geom_orient_valid(m->p[v[lot_mod3[g + 1]]], m->p[v[lot_mod3[g + 2]]], q) > 0) {
+        *c = LOT_CORNER(t, g);
         return LOT_OUTSIDE;
       }
   }
@@ -129,21 +135,21 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
 
 lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
   uint32_t t = m->last, from = 3;   /* from: the edge we entered by (3 = none) */
-  const uint32_t *v = m->tv + 3 * (size_t)t;
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
   for (int g = 0; g < 3; g++)
     if (v[g] == LOT_GHOST) {       /* start from the real triangle next to a ghost */
-      t = m->tn[3 * t + (uint32_t)g] / 3;
+      t = lot_tri_of(m->tn[LOT_CORNER(t, g)]);
       break;
     }
   uint64_t limit = 4 * (uint64_t)m->nt + 64;
   for (uint64_t step = 0; step < limit; step++) {
-    v = m->tv + 3 * (size_t)t;
+    v = m->tv + LOT_CORNER((size_t)t, 0);
     int o[3] = {1, 1, 1};
     uint32_t e0 = lot_walk_rand3(m), cross = 3;
     for (uint32_t k = 0; k < 3; k++) {
-      uint32_t e = (e0 + k) % 3;
+      uint32_t e = lot_mod3[e0 + k];
       if (e == from) continue;     /* q is on the inner side of the edge we came through */
-      o[e] = geom_orient(m->p[v[(e + 1) % 3]], m->p[v[(e + 2) % 3]], q);
+      o[e] = geom_orient_valid(m->p[v[lot_mod3[e + 1]]], m->p[v[lot_mod3[e + 2]]], q);
       if (o[e] < 0) {
         cross = e;
         break;
@@ -155,43 +161,43 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
       }
       return lot_classify(t, o, c);
     }
-    uint32_t nc = m->tn[3 * t + cross], nt = nc / 3;
+    uint32_t nc = m->tn[LOT_CORNER(t, cross)], nt = lot_tri_of(nc);
     if (lot_is_ghost(m, nt)) {
       /* the ghost's ghost corner */
-      const uint32_t *w = m->tv + 3 * (size_t)nt;
-      *c = 3 * nt + (w[0] == LOT_GHOST ? 0u : w[1] == LOT_GHOST ? 1u : 2u);
+      const uint32_t *w = m->tv + LOT_CORNER((size_t)nt, 0);
+      *c = LOT_CORNER(nt, w[0] == LOT_GHOST ? 0u : w[1] == LOT_GHOST ? 1u : 2u);
       return LOT_OUTSIDE;
     }
     t = nt;
-    from = nc % 3;
+    from = lot_slot(nc);
   }
   return lot_scan(m, q, c);
 }
 
 /* Split triangle t = (a, b, c) at k: (a, b, k), (b, c, k), (c, a, k). */
 static void lot_split_triangle(lot_mesh *m, uint32_t t, uint32_t k, uint32_t out[3]) {
-  uint32_t a = m->tv[3 * t], b = m->tv[3 * t + 1], c = m->tv[3 * t + 2];
-  uint32_t na = m->tn[3 * t], nb = m->tn[3 * t + 1];
+  uint32_t a = m->tv[LOT_CORNER(t, 0)], b = m->tv[LOT_CORNER(t, 1)], c = m->tv[LOT_CORNER(t, 2)];
+  uint32_t na = m->tn[LOT_CORNER(t, 0)], nb = m->tn[LOT_CORNER(t, 1)];
   uint32_t t1 = m->nt++, t2 = m->nt++;
   lot_set(m, t, a, b, k);
   lot_set(m, t1, b, c, k);
   lot_set(m, t2, c, a, k);
-  lot_link(m, 3 * t + 0, 3 * t1 + 1);
-  lot_link(m, 3 * t + 1, 3 * t2 + 0);
-  lot_link(m, 3 * t1 + 0, 3 * t2 + 1);
-  lot_link(m, 3 * t1 + 2, na);
-  lot_link(m, 3 * t2 + 2, nb);
-  out[0] = 3 * t + 2;
-  out[1] = 3 * t1 + 2;
-  out[2] = 3 * t2 + 2;
+  lot_link(m, LOT_CORNER(t, 0), LOT_CORNER(t1, 1));
+  lot_link(m, LOT_CORNER(t, 1), LOT_CORNER(t2, 0));
+  lot_link(m, LOT_CORNER(t1, 0), LOT_CORNER(t2, 1));
+  lot_link(m, LOT_CORNER(t1, 2), na);
+  lot_link(m, LOT_CORNER(t2, 2), nb);
+  out[0] = LOT_CORNER(t, 2);
+  out[1] = LOT_CORNER(t1, 2);
+  out[2] = LOT_CORNER(t2, 2);
 }
 
 /* Split the edge opposite corner c (of t = (a, b, c0), the other side
 ** t' = (d, c0, b), possibly a ghost) at k: (a, b, k), (a, k, c0),
 ** (d, c0, k), (d, k, b).  out: the corners of k in the four triangles. */
 static void lot_split_edge(lot_mesh *m, uint32_t c, uint32_t k, uint32_t out[4]) {
-  uint32_t t = c / 3, cb = lot_next3(c), cc = lot_next3(cb);
-  uint32_t cd = m->tn[c], u = cd / 3, ud = cd, uc = lot_next3(cd), ub = lot_next3(uc);
+  uint32_t t = lot_tri_of(c), cb = lot_next3(c), cc = lot_next3(cb);
+  uint32_t cd = m->tn[c], u = lot_tri_of(cd), ud = cd, uc = lot_next3(cd), ub = lot_next3(uc);
   uint32_t a = m->tv[c], b = m->tv[cb], c0 = m->tv[cc], d = m->tv[ud];
   uint32_t n_ca = m->tn[cb], n_ab = m->tn[cc], n_bd = m->tn[uc], n_dc = m->tn[ub];
   uint32_t t1 = m->nt++, t2 = m->nt++;
@@ -199,18 +205,18 @@ static void lot_split_edge(lot_mesh *m, uint32_t c, uint32_t k, uint32_t out[4])
   lot_set(m, t1, a, k, c0);
   lot_set(m, u, d, c0, k);
   lot_set(m, t2, d, k, b);
-  lot_link(m, 3 * t + 0, 3 * t2 + 0);
-  lot_link(m, 3 * t + 1, 3 * t1 + 2);
-  lot_link(m, 3 * t + 2, n_ab);
-  lot_link(m, 3 * t1 + 0, 3 * u + 0);
-  lot_link(m, 3 * t1 + 1, n_ca);
-  lot_link(m, 3 * u + 1, 3 * t2 + 2);
-  lot_link(m, 3 * u + 2, n_dc);
-  lot_link(m, 3 * t2 + 1, n_bd);
-  out[0] = 3 * t + 2;
-  out[1] = 3 * t1 + 1;
-  out[2] = 3 * u + 2;
-  out[3] = 3 * t2 + 1;
+  lot_link(m, LOT_CORNER(t, 0), LOT_CORNER(t2, 0));
+  lot_link(m, LOT_CORNER(t, 1), LOT_CORNER(t1, 2));
+  lot_link(m, LOT_CORNER(t, 2), n_ab);
+  lot_link(m, LOT_CORNER(t1, 0), LOT_CORNER(u, 0));
+  lot_link(m, LOT_CORNER(t1, 1), n_ca);
+  lot_link(m, LOT_CORNER(u, 1), LOT_CORNER(t2, 2));
+  lot_link(m, LOT_CORNER(u, 2), n_dc);
+  lot_link(m, LOT_CORNER(t2, 1), n_bd);
+  out[0] = LOT_CORNER(t, 2);
+  out[1] = LOT_CORNER(t1, 1);
+  out[2] = LOT_CORNER(u, 2);
+  out[3] = LOT_CORNER(t2, 1);
 }
 
 /* k outside the hull, seeing the edge of ghost g (ghost corner gc): every
@@ -227,7 +233,8 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     /* The previous ghost (z, u, G) faces edge (u, G) with z's corner pc. */
     uint32_t pc = m->tn[lot_prev3(first)];
     uint32_t pg = lot_prev3(pc);
-    if (pg == gc || geom_orient(m->p[m->tv[lot_next3(pg)]], m->p[m->tv[lot_prev3(pg)]], q) <= 0)
+    if (pg == gc ||
+        geom_orient_valid(m->p[m->tv[lot_next3(pg)]], m->p[m->tv[lot_prev3(pg)]], q) <= 0)
       break;
     first = pg;
   }
@@ -241,15 +248,17 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
       *cand = nw;
       *candcap = cap;
     }
-    uint32_t t = x / 3;
+    uint32_t t = lot_tri_of(x);
     m->tv[x] = k;
-    if (m->bad) m->bad[t] = lot_mesh_badness(m, m->tv[3 * t], m->tv[3 * t + 1], m->tv[3 * t + 2]);
+    const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+    if (m->bad) m->bad[t] = lot_mesh_badness(m, v[0], v[1], v[2]);
     (*cand)[nc++] = x;
     last = x;
     /* The next ghost (v, w, G) faces edge (G, v) with w's corner. */
     uint32_t ng = lot_next3(m->tn[lot_next3(x)]);
     if (m->tv[ng] != LOT_GHOST) break;       /* it was converted already: wrapped around */
-    if (geom_orient(m->p[m->tv[lot_next3(ng)]], m->p[m->tv[lot_prev3(ng)]], q) <= 0) break;
+    if (geom_orient_valid(m->p[m->tv[lot_next3(ng)]], m->p[m->tv[lot_prev3(ng)]], q) <= 0)
+      break;
     x = ng;
   }
   /* Close: first = (u0, v0, k) at corners next, prev of k; last = (um, vm, k). */
@@ -259,11 +268,11 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
   uint32_t next_in = m->tn[lot_next3(last)];    /* next ghost's corner facing edge (vm, G) */
   lot_set(m, A, u0, k, LOT_GHOST);
   lot_set(m, B, k, vm, LOT_GHOST);
-  lot_link(m, 3 * A + 2, lot_prev3(first));    /* edge u0-k */
-  lot_link(m, 3 * A + 1, prev_in);              /* edge G-u0 */
-  lot_link(m, 3 * B + 2, lot_next3(last));      /* edge k-vm */
-  lot_link(m, 3 * B + 0, next_in);              /* edge vm-G */
-  lot_link(m, 3 * A + 0, 3 * B + 1);            /* edge k-G */
+  lot_link(m, LOT_CORNER(A, 2), lot_prev3(first));    /* edge u0-k */
+  lot_link(m, LOT_CORNER(A, 1), prev_in);              /* edge G-u0 */
+  lot_link(m, LOT_CORNER(B, 2), lot_next3(last));      /* edge k-vm */
+  lot_link(m, LOT_CORNER(B, 0), next_in);              /* edge vm-G */
+  lot_link(m, LOT_CORNER(A, 0), LOT_CORNER(B, 1));            /* edge k-G */
   return (long)nc;
 }
 
@@ -280,7 +289,7 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
   if (w == LOT_OUTSIDE) {
     n = lot_insert_outside(m, c, k, cand, candcap);
   } else if (w == LOT_IN_TRIANGLE) {
-    lot_split_triangle(m, c / 3, k, out);
+    lot_split_triangle(m, lot_tri_of(c), k, out);
     for (int i = 0; i < 3; i++) (*cand)[n++] = out[i];
   } else {
     /* The halves b-k and k-c0 of the split edge are candidates too: their
@@ -293,19 +302,20 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
     (*cand)[n++] = lot_prev3(out[1]);              /* a's corner in (a, k, c0): edge k-c0 */
   }
   if (n < 0) return -1;
-  m->last = (*cand)[0] / 3;
+  m->last = lot_tri_of((*cand)[0]);
   /* Keep only edges with a real triangle on both sides. */
   long kept = 0;
   for (long i = 0; i < n; i++) {
     uint32_t x = (*cand)[i];
-    if (!lot_is_ghost(m, x / 3) && !lot_is_ghost(m, m->tn[x] / 3)) (*cand)[kept++] = x;
+    if (!lot_is_ghost(m, lot_tri_of(x)) && !lot_is_ghost(m, lot_tri_of(m->tn[x])))
+      (*cand)[kept++] = x;
   }
   return kept;
 }
 
 void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
-  uint32_t t = c / 3, i1 = lot_next3(c), i2 = lot_next3(i1);
-  uint32_t j0 = m->tn[c], u = j0 / 3, j1 = lot_next3(j0), j2 = lot_next3(j1);
+  uint32_t t = lot_tri_of(c), i1 = lot_next3(c), i2 = lot_next3(i1);
+  uint32_t j0 = m->tn[c], u = lot_tri_of(j0), j1 = lot_next3(j0), j2 = lot_next3(j1);
   uint32_t a = m->tv[c], d = m->tv[j0];
   uint32_t n_ca = m->tn[i1], n_bd = m->tn[j1];
   m->tv[i2] = d;

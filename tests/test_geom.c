@@ -392,6 +392,55 @@ static void test_predicates_random(void **state) {
   assert_true(zeros_o > 100 && zeros_i > 100);
 }
 
+/* geom_orient_valid and geom_incircle_valid (no tiny-difference test) on
+** points at the edges of the coordinate contract: 0, magnitudes near 1e-30
+** a few ulps apart (the smallest differences the contract allows), near
+** 1e30, and both at once; against the GMP oracle.  Every point is checked
+** against the contract first, so the test exercises exactly the promise
+** the two predicates rely on. */
+static double tgeom_contract_coord(testutil_rng *g) {
+  static const double base[] = {0, 1e-30, -1e-30, 3e-30, 1e30, -1e30, 7e29, 1.0};
+  double b = base[testutil_next(g) % (sizeof base / sizeof base[0])];
+  int ulps = (int)(testutil_next(g) % 5);
+  /* Inwards: small magnitudes grow, large ones shrink. */
+  double to = fabs(b) > 1 ? 0 : b < 0 ? -INFINITY : INFINITY;
+  for (int k = 0; k < ulps && b != 0; k++) b = nextafter(b, to);
+  return b;
+}
+
+static void test_predicates_contract(void **state) {
+  (void)state;
+  testutil_rng g = {2026};
+  int zeros_o = 0, zeros_i = 0;
+  for (int n = 0; n < 60000; n++) {
+    geom_point p[4];
+    for (int k = 0; k < 4; k++) {
+      p[k] = tgeom_pt(tgeom_contract_coord(&g), tgeom_contract_coord(&g));
+      assert_int_equal(geom_coord_check(p[k].x), GEOM_COORD_OK);
+      assert_int_equal(geom_coord_check(p[k].y), GEOM_COORD_OK);
+    }
+    int eo = tgeom_orient_exact(p[0], p[1], p[2]);
+    zeros_o += eo == 0;
+    if (geom_orient_valid(p[0], p[1], p[2]) != eo) {
+      print_error("orient_valid (%a,%a) (%a,%a) (%a,%a): exact %d\n", p[0].x, p[0].y, p[1].x,
+                  p[1].y, p[2].x, p[2].y, eo);
+      fail();
+    }
+    if (eo == 0) continue;
+    if (eo < 0) { geom_point t = p[1]; p[1] = p[2]; p[2] = t; }
+    int ei = tgeom_incircle_exact(p[0], p[1], p[2], p[3]);
+    zeros_i += ei == 0;
+    if (geom_incircle_valid(p[0], p[1], p[2], p[3]) != ei) {
+      print_error("incircle_valid (%a,%a) (%a,%a) (%a,%a) (%a,%a): exact %d\n", p[0].x, p[0].y,
+                  p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y, ei);
+      fail();
+    }
+  }
+  print_message("contract predicates: %d exact collinear, %d exact cocircular cases\n", zeros_o,
+                zeros_i);
+  assert_true(zeros_o > 100 && zeros_i > 100);
+}
+
 /* Extreme magnitudes: products that underflow into subnormals (where a
 ** relative error bound no longer covers the absolute rounding error) or
 ** overflow to infinity.  Coordinates stay normal doubles. */
@@ -539,6 +588,7 @@ int main(void) {
     cmocka_unit_test(test_incircle_easy),
     cmocka_unit_test(test_orient_near_degenerate),
     cmocka_unit_test(test_incircle_near_degenerate),
+    cmocka_unit_test(test_predicates_contract),
     cmocka_unit_test(test_predicates_random),
     cmocka_unit_test(test_predicates_extreme),
     cmocka_unit_test(test_dist_finite),
