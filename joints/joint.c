@@ -126,8 +126,10 @@ int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
   double m2 = joint_apply_split(j, s, x2, y2, &e2);
   int n1 = m1 != 0 && isfinite(m1), n2 = m2 != 0 && isfinite(m2);
   int E = n1 && n2 ? (e1 > e2 ? e1 : e2) : n1 ? e1 : n2 ? e2 : 0;
-  if (n1) m1 = ldexp(m1, e1 - E);
-  if (n2) m2 = ldexp(m2, e2 - E);
+  /* ldexp by 0 is the identity: skip the call (every joint but the product
+  ** and the root-sum-square has e1 = e2 = 0, and those are the hot ones). */
+  if (n1 && e1 != E) m1 = ldexp(m1, e1 - E);
+  if (n2 && e2 != E) m2 = ldexp(m2, e2 - E);
   return joint_compare_values(m1, m2, tie_eps);
 }
 
