@@ -12,38 +12,25 @@
 */
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 #include <omp.h>
+#include "benchutil.h"
 #include "measure.h"
 #include "sampler.h"
 #include "siteflip.h"
 
 #define BENCH_RUNS 3
 
-static double bench_clock(clockid_t id) {
-  struct timespec ts;
-  clock_gettime(id, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-typedef struct bench_time { double wall, cpu; } bench_time;
-
-static int bench_cmp(const void *a, const void *b) {
-  double x = ((const bench_time *)a)->wall, y = ((const bench_time *)b)->wall;
-  return (x > y) - (x < y);
-}
-
 static bench_time bench_run(const rule *rules, int nrules, int sampler, int n, uint64_t count) {
   siteflip_counts *c = calloc((size_t)nrules, sizeof *c);
   char err[256];
   if (c == NULL) exit(1);
-  double t0 = bench_clock(CLOCK_MONOTONIC), c0 = bench_clock(CLOCK_PROCESS_CPUTIME_ID);
+  double t0 = bench_wall(), c0 = bench_cpu();
   if (siteflip_census(rules, nrules, sampler, n, 1, 0, count, 1e-12, 0, c, NULL, NULL, err,
                       sizeof err) != 0 || c[0].samples != count) {
     fprintf(stderr, "bench_census: %s\n", err);
     exit(1);
   }
-  bench_time t = {bench_clock(CLOCK_MONOTONIC) - t0, bench_clock(CLOCK_PROCESS_CPUTIME_ID) - c0};
+  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
   free(c);
   return t;
 }
@@ -54,8 +41,7 @@ static void bench_line(const char *what, const rule *rules, int nrules, int samp
   if (count < 100) count = 100;
   bench_time t[BENCH_RUNS];
   for (int k = 0; k < BENCH_RUNS; k++) t[k] = bench_run(rules, nrules, sampler, n, count);
-  qsort(t, BENCH_RUNS, sizeof t[0], bench_cmp);
-  bench_time m = t[BENCH_RUNS / 2];
+  bench_time m = bench_median_time(t, BENCH_RUNS);
   double f = (double)target / (double)count;
   printf("%-44s %9llu samples: %7.2f s wall, %7.2f cpu-s (%.0f samples/s; target %s)\n", what,
          (unsigned long long)target, m.wall * f, m.cpu * f, (double)count / m.wall, goal);

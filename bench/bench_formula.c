@@ -14,7 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include "benchutil.h"
 #include "formula.h"
 #include "measure.h"
 #include "flipgraph.h"
@@ -22,22 +22,6 @@
 #include "sampler.h"
 
 #define BENCH_RUNS 5
-
-static double bench_now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int bench_cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double bench_median(double *v) {
-  qsort(v, BENCH_RUNS, sizeof *v, bench_cmp);
-  return v[BENCH_RUNS / 2];
-}
 
 /* ns per pentagon of flipgraph_tally over the six joints of measure m. */
 static double bench_tally(int m, uint64_t n) {
@@ -52,11 +36,11 @@ static double bench_tally(int m, uint64_t n) {
   for (int k = -1; k < BENCH_RUNS; k++) {   /* k = -1: warm-up, not timed */
     flipgraph_counts c[JOINT_COUNT];
     memset(c, 0, sizeof c);
-    double t0 = bench_now();
+    double t0 = bench_wall();
     flipgraph_tally(rules, JOINT_COUNT, 1, 0, n, RULE_DEFAULT_TIE_EPS, 1, c, NULL, NULL);
-    if (k >= 0) t[k] = (bench_now() - t0) * 1e9 / (double)n;
+    if (k >= 0) t[k] = (bench_wall() - t0) * 1e9 / (double)n;
   }
-  return bench_median(t);
+  return bench_median(t, BENCH_RUNS);
 }
 
 /* ns per pentagon of classification alone (pentagons sampled and their
@@ -71,17 +55,17 @@ static double bench_plan(int m, const flipgraph_pentagon *pent, int npent, int r
   volatile int sink = 0;
   for (int k = 0; k < BENCH_RUNS; k++) {
     flipgraph g[JOINT_COUNT];
-    double t0 = bench_now();
+    double t0 = bench_wall();
     for (int r = 0; r < reps; r++)
       for (int i = 0; i < npent; i++) {
         flipgraph_plan_run(pl, &pent[i], g);
         sink += g[0].type;
       }
-    t[k] = (bench_now() - t0) * 1e9 / ((double)reps * npent);
+    t[k] = (bench_wall() - t0) * 1e9 / ((double)reps * npent);
   }
   (void)sink;
   flipgraph_plan_free(pl);
-  return bench_median(t);
+  return bench_median(t, BENCH_RUNS);
 }
 
 /* ns per evaluation of measure m alone, over a fixed set of triangles. */
@@ -89,14 +73,14 @@ static double bench_eval(int m, const geom_tri *tri, int ntri, int reps) {
   double t[BENCH_RUNS];
   volatile double sink = 0;
   for (int k = 0; k < BENCH_RUNS; k++) {
-    double t0 = bench_now(), s = 0;
+    double t0 = bench_wall(), s = 0;
     for (int r = 0; r < reps; r++)
       for (int i = 0; i < ntri; i++) s += measure_eval(m, &tri[i]);
     sink += s;
-    t[k] = (bench_now() - t0) * 1e9 / ((double)reps * ntri);
+    t[k] = (bench_wall() - t0) * 1e9 / ((double)reps * ntri);
   }
   (void)sink;
-  return bench_median(t);
+  return bench_median(t, BENCH_RUNS);
 }
 
 int main(int argc, char **argv) {

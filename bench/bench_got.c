@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
+#include "benchutil.h"
 #include "measure.h"
 #include "got.h"
 #include "sampler.h"
@@ -60,11 +61,6 @@ static double bench_baseline(const geom_point *p, size_t n, bench_cost_fn cost) 
   return r;
 }
 
-static int bench_cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
 static double bench_ours(const geom_point *p, size_t n, const char *rname, int threads,
                          int runs, double *key) {
   rule r;
@@ -77,17 +73,16 @@ static double bench_ours(const geom_point *p, size_t n, const char *rname, int t
   for (int q = 0; q < runs; q++) {
     got_options o = {threads, RULE_DEFAULT_TIE_EPS};
     got_result res;
-    double t0 = omp_get_wtime();
+    double t0 = bench_wall();
     if (got_solve(p, n, &r, &o, &res, err, sizeof err) != 0) {
       fprintf(stderr, "bench_got: %s\n", err);
       exit(1);
     }
-    t[q] = omp_get_wtime() - t0;
+    t[q] = bench_wall() - t0;
     if (key) *key = res.key;
     got_result_free(&res);
   }
-  qsort(t, (size_t)runs, sizeof t[0], bench_cmp);
-  return t[runs / 2];
+  return bench_median(t, runs);
 }
 
 static geom_point *bench_polygon(size_t n) {
@@ -103,13 +98,8 @@ static geom_point *bench_polygon(size_t n) {
 
 /* The machine's load average (Linux), printed with the tables: the
 ** targets are wall-clock times on 2 cores, which other processes skew. */
-static void bench_load(const char *when) {
-  FILE *f = fopen("/proc/loadavg", "r");
-  double l1 = -1;
-  if (f != NULL) {
-    if (fscanf(f, "%lf", &l1) != 1) l1 = -1;
-    fclose(f);
-  }
+static void bench_print_load(const char *when) {
+  double l1 = bench_load();
   if (l1 >= 0) printf("(load average %s: %.2f on %d cores)\n", when, l1, omp_get_num_procs());
 }
 
@@ -122,7 +112,7 @@ int main(int argc, char **argv) {
 
   printf("GOT dynamic programme vs textbook O(n^3) DP (random convex polygons, vector sampler, seed 1)\n");
   printf("ours: median of 5 runs; baseline: single-threaded, one run; speed-up = baseline / ours(2 threads)\n");
-  bench_load("at start");
+  bench_print_load("at start");
   printf("\n");
   printf("| rule    |    n | ours 1 thr (s) | ours 2 thr (s) | baseline (s) | speed-up |\n");
   printf("|---------|-----:|---------------:|---------------:|-------------:|---------:|\n");
@@ -140,9 +130,9 @@ int main(int argc, char **argv) {
       if (est) {
         tb = last_base * pow((double)n / (double)last_n, 3);
       } else {
-        double t0 = omp_get_wtime();
+        double t0 = bench_wall();
         vb = bench_baseline(p, n, costs[rr]);
-        tb = omp_get_wtime() - t0;
+        tb = bench_wall() - t0;
         last_base = tb;
         last_n = n;
         /* sanity: the baseline's optimum is ours (in key space) */
@@ -176,7 +166,7 @@ int main(int argc, char **argv) {
     fflush(stdout);
   }
   printf("\nall targets %s\n", allok ? "met" : "NOT met (if the load average is above 0: rerun on a quiet machine)");
-  bench_load("at end");
+  bench_print_load("at end");
   free(p1);
   free(p2);
   return 0;

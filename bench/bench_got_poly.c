@@ -16,23 +16,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <omp.h>
+#include "benchutil.h"
 #include "got.h"
 #include "got_internal.h"
 #include "sampler.h"
 
 #define BENCH_RUNS 3
 
-static int bench_cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-static double bench_median(double *t, int m) {
-  qsort(t, (size_t)m, sizeof *t, bench_cmp);
-  return t[m / 2];
-}
 
 typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
 
@@ -47,14 +38,6 @@ static geom_point *bench_polygon(bench_sampler fn, size_t n) {
   return p;
 }
 
-/* CPU seconds of the whole process (all threads): on a loaded machine,
-** CPU / 2 is what the wall time would be on 2 idle cores. */
-static double bench_cpu(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static double bench_last_cpu;
 
 static double bench_solve(const geom_point *p, size_t n, const char *rname, int mask,
@@ -64,12 +47,12 @@ static double bench_solve(const geom_point *p, size_t n, const char *rname, int 
   if (rule_parse(rname, &r, err, sizeof err) != 0) exit(1);
   got_options o = {2, RULE_DEFAULT_TIE_EPS};
   got_result res;
-  double c0 = bench_cpu(), t0 = omp_get_wtime();
+  double c0 = bench_cpu(), t0 = bench_wall();
   if (got_solve_ex(p, n, &r, &o, mask, &res, err, sizeof err) != 0) {
     fprintf(stderr, "bench_got_poly: %s\n", err);
     exit(1);
   }
-  double t = omp_get_wtime() - t0;
+  double t = bench_wall() - t0;
   bench_last_cpu = bench_cpu() - c0;
   if (keep) *keep = res;
   else got_result_free(&res);
@@ -83,12 +66,12 @@ static void bench_phases(const geom_point *p, size_t n, double *tval, double *td
   unsigned char *V = malloc(n * n);
   for (int r = 0; r < BENCH_RUNS; r++) {
     memcpy(q, p, n * sizeof *q);
-    double t0 = omp_get_wtime();
+    double t0 = bench_wall();
     geom_simple_polygon_check(q, n, NULL, NULL, NULL);
-    double t1 = omp_get_wtime();
+    double t1 = bench_wall();
     got_valid_diagonals(p, n, V, 2);
     a[r] = t1 - t0;
-    b[r] = omp_get_wtime() - t1;
+    b[r] = bench_wall() - t1;
   }
   *tval = bench_median(a, BENCH_RUNS);
   *tdiag = bench_median(b, BENCH_RUNS);
@@ -152,9 +135,9 @@ static void bench_table_cert(int quick) {
       for (int k = 0; k < BENCH_RUNS; k++) t[k] = bench_solve(p, n, R[r], 0, k == 0 ? &res : NULL);
       got_keyfn kf = r == 0 ? GOT_KEY_IDENT : GOT_KEY_FROM_SQ_IDENT;
       for (int k = 0; k < 51; k++) {
-        double t0 = omp_get_wtime();
+        double t0 = bench_wall();
         got_certify(&res, p, n, kf, JOINT_KEY_ADD);
-        c[k] = omp_get_wtime() - t0;
+        c[k] = bench_wall() - t0;
       }
       double tm = bench_median(t, BENCH_RUNS), cm = bench_median(c, 51);
       printf("| star | %zu | %s | %.3f s | %.2g s | %.4f%% |\n", n, R[r], tm, cm, 100 * cm / tm);
@@ -184,13 +167,11 @@ static void bench_table_convex(void) {
 
 int main(int argc, char **argv) {
   int quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
-  double load[3] = {0, 0, 0};
-  if (getloadavg(load, 3) < 0) load[0] = -1;
   printf("# bench_got_poly: 2 threads, medians of %d runs; load average %.2f at start\n\n",
-         BENCH_RUNS, load[0]);
+         BENCH_RUNS, bench_load());
   bench_table_simple(quick);
   bench_table_cert(quick);
   if (!quick) bench_table_convex();
-  if (getloadavg(load, 3) >= 0) printf("\n# load average %.2f at the end\n", load[0]);
+  printf("\n# load average %.2f at the end\n", bench_load());
   return 0;
 }

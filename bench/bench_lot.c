@@ -25,33 +25,11 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
+#include "benchutil.h"
 #include "lot.h"
 #include "measure.h"
 #include "sampler.h"
-
-static double bench_now(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int bench_cmp(const void *a, const void *b) {
-  double x = *(const double *)a, y = *(const double *)b;
-  return x < y ? -1 : x > y;
-}
-
-static double bench_cpu(void) {
-  struct timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static double bench_median(double *t, int n) {
-  qsort(t, (size_t)n, sizeof *t, bench_cmp);
-  return t[n / 2];
-}
 
 /* One build: wall and CPU seconds, flips, status. */
 static void bench_once(const geom_point *p, size_t n, const rule *r, double *wall, double *cpu,
@@ -60,12 +38,12 @@ static void bench_once(const geom_point *p, size_t n, const rule *r, double *wal
   lot_options_init(&o, r);
   lot *L;
   char err[256];
-  double c0 = bench_cpu(), t0 = bench_now();
+  double c0 = bench_cpu(), t0 = bench_wall();
   if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
     fprintf(stderr, "bench_lot: %s\n", err);
     exit(1);
   }
-  *wall = bench_now() - t0;
+  *wall = bench_wall() - t0;
   *cpu = bench_cpu() - c0;
   *flips = lot_get_stats(L)->flips;
   *status = lot_get_stats(L)->status;
@@ -116,16 +94,6 @@ static void bench_cgal(const char *argv0, size_t n, uint64_t seed, double *wall,
     sscanf(line, "cgal_cpu_seconds %lf", cpu);
   }
   pclose(f);
-}
-
-static double bench_load(void) {
-  double l = NAN;
-  FILE *f = fopen("/proc/loadavg", "r");
-  if (f) {
-    if (fscanf(f, "%lf", &l) != 1) l = NAN;
-    fclose(f);
-  }
-  return l;
 }
 
 int main(int argc, char **argv) {

@@ -11,50 +11,34 @@
 */
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 #include <omp.h>
+#include "benchutil.h"
 #include "measure.h"
 #include "flipgraph.h"
 
 #define BENCH_RUNS 5
-
-static double bench_clock(clockid_t id) {
-  struct timespec ts;
-  clock_gettime(id, &ts);
-  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* Wall and CPU seconds of one run (CPU time shows how much of the machine
-** the run actually got when other processes compete for the cores). */
-typedef struct bench_time { double wall, cpu; } bench_time;
-
-static int bench_cmp(const void *a, const void *b) {
-  double x = ((const bench_time *)a)->wall, y = ((const bench_time *)b)->wall;
-  return (x > y) - (x < y);
-}
 
 /* Seconds for one tally of n pentagons; the counts are checked so the
 ** work cannot be optimised away or silently fail. */
 static bench_time bench_run(const rule *rules, int nrules, uint64_t seed, uint64_t n, int threads) {
   flipgraph_counts *c = calloc((size_t)nrules, sizeof *c);
   if (c == NULL) exit(1);
-  double t0 = bench_clock(CLOCK_MONOTONIC), c0 = bench_clock(CLOCK_PROCESS_CPUTIME_ID);
+  double t0 = bench_wall(), c0 = bench_cpu();
   if (flipgraph_tally(rules, nrules, seed, 0, n, 1e-12, threads, c, NULL, NULL) != 0
       || c[0].samples != n) {
     fprintf(stderr, "bench_table34: tally failed\n");
     exit(1);
   }
-  bench_time t = {bench_clock(CLOCK_MONOTONIC) - t0, bench_clock(CLOCK_PROCESS_CPUTIME_ID) - c0};
+  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
   free(c);
   return t;
 }
 
 /* The run of median wall time. */
-static bench_time bench_median(const rule *rules, int nrules, uint64_t seed, uint64_t n, int threads) {
+static bench_time bench_repeat(const rule *rules, int nrules, uint64_t seed, uint64_t n, int threads) {
   bench_time t[BENCH_RUNS];
   for (int k = 0; k < BENCH_RUNS; k++) t[k] = bench_run(rules, nrules, seed, n, threads);
-  qsort(t, BENCH_RUNS, sizeof t[0], bench_cmp);
-  return t[BENCH_RUNS / 2];
+  return bench_median_time(t, BENCH_RUNS);
 }
 
 int main(int argc, char **argv) {
@@ -78,7 +62,7 @@ int main(int argc, char **argv) {
          "pentagons/s/thread", "pentagons/cpu-s", "wall s / 1e6 pent.");
   int tcount[2] = {1, all};
   for (int k = 0; k < (all > 1 ? 2 : 1); k++) {
-    bench_time t = bench_median(rules, n, seed, samples, tcount[k]);
+    bench_time t = bench_repeat(rules, n, seed, samples, tcount[k]);
     double rate = (double)samples / t.wall;
     printf("%-8d %9.3f %9.3f %13.0f %19.0f %17.0f %20.3f\n", tcount[k], t.wall, t.cpu, rate,
            rate / tcount[k], (double)samples / t.cpu, 1e6 / rate);

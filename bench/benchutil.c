@@ -1,0 +1,48 @@
+/*
+** benchutil.c: clocks, medians and the load average for bench/ (see
+** benchutil.h).
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "benchutil.h"
+
+static double bench_clock(clockid_t id) {
+  struct timespec ts;
+  clock_gettime(id, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+double bench_wall(void) { return bench_clock(CLOCK_MONOTONIC); }
+
+double bench_cpu(void) { return bench_clock(CLOCK_PROCESS_CPUTIME_ID); }
+
+static int bench_cmp(const void *a, const void *b) {
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+double bench_median(double *v, int n) {
+  qsort(v, (size_t)n, sizeof *v, bench_cmp);
+  return v[n / 2];
+}
+
+static int bench_cmp_time(const void *a, const void *b) {
+  return bench_cmp(&((const bench_time *)a)->wall, &((const bench_time *)b)->wall);
+}
+
+bench_time bench_median_time(bench_time *t, int n) {
+  qsort(t, (size_t)n, sizeof *t, bench_cmp_time);
+  return t[n / 2];
+}
+
+double bench_load(void) {
+  double l = NAN;
+  FILE *f = fopen("/proc/loadavg", "r");
+  if (f != NULL) {
+    if (fscanf(f, "%lf", &l) != 1) l = NAN;
+    fclose(f);
+  }
+  return l;
+}
