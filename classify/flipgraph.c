@@ -21,17 +21,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#include "fliplab_config.h"
-#if FLIPLAB_HAVE_SSE2
-#include <emmintrin.h>
-#endif
 #include "flipgraph.h"
 #include "measure.h"
+#include "quadvec_internal.h"
 #include "sampler.h"
 
 #define FLIPGRAPH_NCODES 243
 #define FLIPGRAPH_CHUNK 1024      /* pentagons per scheduling unit of tally */
-#define FLIPGRAPH_SLOTS_ALLOC (MEASURE_MAX + 8)   /* slot arrays, padded for vectors */
 
 /* Triangle index of each 3-subset of {0..4}, by bit mask. */
 static const signed char flipgraph_mask_tri[32] = {
@@ -41,8 +37,10 @@ static const signed char flipgraph_mask_tri[32] = {
 /* The four triangles of Q_j as {ABC, ACD, ABD, BCD}.  (test_flipgraph
 ** checks it: flipgraph_classify, which reads this table, must agree with
 ** rule_eval on the quadrilateral's own points for every rule.) */
-static const unsigned char flipgraph_quad_tri[5][4] = {
-  {6, 8, 7, 9}, {9, 4, 3, 5}, {5, 1, 8, 2}, {2, 7, 4, 0}, {0, 3, 1, 6}};
+#define FLIPGRAPH_QUADS(X) \
+  X(6, 8, 7, 9), X(9, 4, 3, 5), X(5, 1, 8, 2), X(2, 7, 4, 0), X(0, 3, 1, 6)
+#define FLIPGRAPH_ROWS(a, b, c, d) {a, b, c, d}
+static const int flipgraph_quad_tri[5][4] = {FLIPGRAPH_QUADS(FLIPGRAPH_ROWS)};
 
 int flipgraph_tri_index(int i, int j, int k) {
   i = ((i % 5) + 5) % 5;
@@ -140,7 +138,7 @@ void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_e
       for (int k = 0; k < 4; k++) q[k] = p->v[(j + 1 + k) % 5];
       dec[j] = rule_eval(r, q, tie_eps, NULL, NULL);
     } else {
-      const unsigned char *t = flipgraph_quad_tri[j];
+      const int *t = flipgraph_quad_tri[j];
       dec[j] = rule_eval_tris(r, &p->tri[t[0]], &p->tri[t[1]], &p->tri[t[2]],
                               &p->tri[t[3]], tie_eps, NULL, NULL);
     }
@@ -161,12 +159,9 @@ struct flipgraph_plan {
   rule *rules;                       /* copy */
   int nslots, slot_measure[MEASURE_MAX];
   int eval_all;                      /* use measure_eval_all (see plan_new) */
-  int filter_ok;                     /* the division/sqrt filter applies */
-  double filter_k;                   /* its relative gap, 4 tie_eps + 2^-45 */
-  double slot_sign[FLIPGRAPH_SLOTS_ALLOC];        /* -1.0 for measures <= 0, else +1.0 */
-  int slot_neg[FLIPGRAPH_SLOTS_ALLOC];            /* 1 for measures <= 0 */
-  long long slot_negmask[FLIPGRAPH_SLOTS_ALLOC];  /* -1 for measures <= 0, else 0 */
+  double slot_sign[QUADVEC_PAD(MEASURE_MAX)];   /* -1.0 for measures <= 0, else 1.0 */
   int ngroup[JOINT_COUNT];           /* triangle rules grouped by joint */
+  int joint_used[JOINT_COUNT];       /* ngroup[j] > 0 */
   flipgraph_item *group[JOINT_COUNT];
   int ndt, *dt;                      /* DT rules */
   int nquad, *quad;                  /* other quadrilateral rules */
@@ -190,8 +185,7 @@ flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps
   if (pl == NULL) return NULL;
   pl->nrules = nrules;
   pl->tie_eps = tie_eps;
-  pl->filter_ok = tie_eps >= 0 && tie_eps <= 0.125;
-  pl->filter_k = 4 * tie_eps + 0x1p-45;
+  for (int s = 0; s < QUADVEC_PAD(MEASURE_MAX); s++) pl->slot_sign[s] = 1.0;
   size_t n = nrules > 0 ? (size_t)nrules : 1;
   pl->rules = malloc(n * sizeof *pl->rules);
   pl->dt = malloc(n * sizeof *pl->dt);
@@ -217,13 +211,12 @@ flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps
     if (slot == pl->nslots) {
       int neg = measure_get(r->measure)->sign == MEASURE_NONPOS;
       pl->slot_measure[slot] = r->measure;
-      pl->slot_neg[slot] = neg;
       pl->slot_sign[slot] = neg ? -1.0 : 1.0;
-      pl->slot_negmask[slot] = neg ? -1 : 0;
       pl->nslots++;
     }
     flipgraph_item it = {i, slot};
     pl->group[r->joint][pl->ngroup[r->joint]++] = it;
+    pl->joint_used[r->joint] = 1;
   }
   for (int code = 0; code < FLIPGRAPH_NCODES; code++) {
     rule_choice dec[5];
@@ -247,85 +240,22 @@ fail:
   return NULL;
 }
 
-/* ---- the hot loop: every rule of one joint at once ------------------------
-**
-** The plan must decide exactly as rule_eval_tris does, bit for bit (the
-** tests compare the two on every rule and many pentagons), while doing far
-** less work.  Four rewrites make that possible; each is exact:
-**
-** 1. Sign.  joint_apply gives g(x, y) for min, max and measures >= 0, and
-**    -g(-x, -y) for the four finite-p joints on measures <= 0 (g being the
-**    joint on magnitudes).  Negation is exact, so g is computed here on the
-**    magnitudes m = sign * x (multiplying by -1.0 is exact).  Comparing
-**    -g_AC with -g_BD: equality, NaN and infinity tests are unchanged,
-**    (-u) - (-v) rounds to exactly -(u - v) (round-to-nearest is
-**    symmetric) so the tie test is unchanged, and -u < -v iff u > v, which
-**    for non-tied, non-NaN values is !(u < v): the decision is flipped.
-** 2. Shared per-triangle work.  g(x, y) = c(h(x), h(y)) with h(x) = 1/x,
-**    c(a, b) = 1/(a + b) for the harmonic joint and h(x) = x*x,
-**    c(a, b) = sqrt(a + b) for the root-sum-square: the same operations in
-**    the same order as joint.c, so the same bits, but h runs once per
-**    triangle instead of once per (triangle, quad) pair.
-** 3. rule_compare inlined: fmax(|ac|, |bd|) is a plain maximum once NaN
-**    has been sent to EITHER; isinf(v) is |v| == inf.
-** 4. A filter saves the final division (harmonic, f = 1/s) or square root
-**    (l_2, f = sqrt(s)) of the sums s_AC, s_BD when their order alone
-**    decides.  Let u = 2^-53, 0 <= tie_eps <= 1/8, K = 4 tie_eps + 2^-45,
-**    both sums in [2^-1000, 2^1000] (so every quantity below is normal and
-**    each rounded operation has relative error <= u) and, say, s_lo <
-**    s_hi with fl(s_hi - s_lo) > K s_hi.  Then s_lo/s_hi < 1 - k, k =
-**    K/(1 + u), and the exact values satisfy f_small/f_big < 1 - k/2
-**    (sqrt(1 - k) <= 1 - k/2; for 1/s the ratio is < 1 - k itself).  After
-**    rounding f_small/f_big < (1 - k/2)(1 + 3u), so fl(f_big - f_small) >
-**    f_big (k/2 - 3u)(1 - u) > tie_eps f_big (1 + u) >= fl(tie_eps f_big):
-**    no tie, and since correctly rounded 1/s and sqrt are monotone, f_AC <
-**    f_BD iff s_AC > s_BD (harmonic) or s_AC < s_BD (l_2).  Equal sums
-**    give equal f: a tie.  A vector with any other lane (near ties, zeros,
-**    infinities, NaN, extreme magnitudes) takes the exact path.
-** 5. Range.  The product and the root-sum-square joints can underflow or
-**    overflow a double (joint.h), but not when every magnitude of the slot
-**    lies in [2^-511, 2^511]: then every product, square and sum of two
-**    squares is a normal double below 2^1023, and the plain evaluation is
-**    the split one of joint_compare bit for bit.  A lane with a magnitude
-**    outside (or 0, inf, NaN: rare, extreme triangles) is decided again by
-**    joint_compare, one quadrilateral at a time (flipgraph_lane_code).
-**
-** Values sit triangle-major (val[t][slot]) so that the loops over slots
-** (all measures of one joint) run on contiguous memory. */
+/* ---- the hot loop: every rule at once (quadvec.c) ------------------------ */
 
-/* Slot lanes are processed FLIPGRAPH_LANES at a time; arrays are padded. */
-#define FLIPGRAPH_LANES 4
-#define FLIPGRAPH_SLOTS ((MEASURE_MAX + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES)
+/* Weights of the decision code: 3^q for BD, 2 * 3^q for a tie. */
+static const unsigned long long flipgraph_bd_weight[5] = {1, 3, 9, 27, 81};
+static const unsigned long long flipgraph_tie_weight[5] = {2, 6, 18, 54, 162};
+
+#define FLIPGRAPH_SLOTS QUADVEC_PAD(MEASURE_MAX)
 
 typedef struct flipgraph_work {
   double val[10][FLIPGRAPH_SLOTS];   /* measure of slot s on triangle t */
-  double mag[10][FLIPGRAPH_SLOTS];   /* magnitudes: val times the slot's sign */
-  double h[10][FLIPGRAPH_SLOTS];     /* 1/mag or mag^2 (harmonic, l_2) */
-  long long code[JOINT_COUNT][FLIPGRAPH_SLOTS];   /* decision codes */
-  int wide[FLIPGRAPH_SLOTS];         /* 1: a magnitude outside [2^-511, 2^511] (rewrite 5) */
-  int any_wide;
+  double mag[10][FLIPGRAPH_SLOTS];   /* scratch of quadvec_run */
+  double h[10][FLIPGRAPH_SLOTS];
+  long long flags[FLIPGRAPH_SLOTS];
+  unsigned long long code[JOINT_COUNT][FLIPGRAPH_SLOTS];   /* decision codes */
+  long long tie[JOINT_COUNT][FLIPGRAPH_SLOTS];
 } flipgraph_work;
-
-/* The decision code of slot s under joint j from joint_compare (rewrite 5). */
-static long long flipgraph_lane_code(joint_id j, const flipgraph_plan *pl,
-                                     const flipgraph_work *w, int s) {
-  int sign = pl->slot_neg[s] ? -1 : 1;
-  long long code = 0, p3 = 1;
-  for (int q = 0; q < 5; q++, p3 *= 3) {
-    const unsigned char *t = flipgraph_quad_tri[q];
-    int c = joint_compare(j, sign, w->val[t[0]][s], w->val[t[1]][s], w->val[t[2]][s],
-                          w->val[t[3]][s], pl->tie_eps);
-    code += c < 0 ? 0 : c > 0 ? p3 : 2 * p3;
-  }
-  return code;
-}
-
-/* Rewrite 5's fallback for the product and root-sum-square joints. */
-static void flipgraph_wide_codes(joint_id j, const flipgraph_plan *pl, flipgraph_work *w) {
-  if (!w->any_wide || (j != JOINT_PRODUCT && j != JOINT_RSS)) return;
-  for (int s = 0; s < pl->nslots; s++)
-    if (w->wide[s]) w->code[j][s] = flipgraph_lane_code(j, pl, w, s);
-}
 
 /* Padding lanes hold harmless values (never read back). */
 static void flipgraph_work_init(flipgraph_work *w) {
@@ -333,185 +263,22 @@ static void flipgraph_work_init(flipgraph_work *w) {
     for (int s = 0; s < FLIPGRAPH_SLOTS; s++) w->val[t][s] = w->mag[t][s] = 1.0;
 }
 
-#if FLIPLAB_HAVE_VECTORS && !defined(FLIPGRAPH_SCALAR)
-/* GCC/Clang generic vectors: one lane per slot, 64-bit lanes throughout
-** (doubles, and comparison masks of -1 / 0), no branches. */
-#define FLIPGRAPH_INLINE static inline __attribute__((always_inline))
-typedef double flipgraph_vd __attribute__((vector_size(8 * FLIPGRAPH_LANES)));
-typedef long long flipgraph_vi __attribute__((vector_size(8 * FLIPGRAPH_LANES)));
+/* flipgraph_quad_tri as offsets into the rows of flipgraph_work. */
+#define FLIPGRAPH_OFF(a, b, c, d) \
+  {(a) * FLIPGRAPH_SLOTS, (b) * FLIPGRAPH_SLOTS, (c) * FLIPGRAPH_SLOTS, (d) * FLIPGRAPH_SLOTS}
+static const int flipgraph_quad_off[5][4] = {FLIPGRAPH_QUADS(FLIPGRAPH_OFF)};
 
-/* Lane helpers are macros or take pointers: a vector passed by value would
-** draw GCC's psABI note about 32-byte arguments without AVX. */
-#define FLIPGRAPH_VSEL(m, a, b) \
-  ((flipgraph_vd)(((m) & (flipgraph_vi)(a)) | (~(m) & (flipgraph_vi)(b))))
-#define FLIPGRAPH_VABS(x) ((flipgraph_vd)((flipgraph_vi)(x) & 0x7fffffffffffffffLL))
-
-/* *out = the joint on magnitudes of the lanes at pa and pb (after h). */
-FLIPGRAPH_INLINE void flipgraph_vc(joint_id j, const double *pa, const double *pb,
-                                   flipgraph_vd *out) {
-  flipgraph_vd a, b, r;
-  memcpy(&a, pa, sizeof a);
-  memcpy(&b, pb, sizeof b);
-  switch (j) {
-    case JOINT_MIN: r = FLIPGRAPH_VSEL(a < b, a, b); break;
-    case JOINT_MAX: r = FLIPGRAPH_VSEL(a > b, a, b); break;
-    case JOINT_HARMONIC: r = 1.0 / (a + b); break;
-    case JOINT_PRODUCT: r = a * b; break;
-    case JOINT_RSS: {
-      /* sqrt() must keep errno semantics, which stops GCC vectorising it;
-      ** SSE2's sqrtpd is the same correctly rounded IEEE square root. */
-      double x[FLIPGRAPH_LANES];
-      r = a + b;
-      memcpy(x, &r, sizeof x);
-#if FLIPLAB_HAVE_SSE2
-      for (int k = 0; k < FLIPGRAPH_LANES; k += 2)
-        _mm_storeu_pd(&x[k], _mm_sqrt_pd(_mm_loadu_pd(&x[k])));
-#else
-      for (int k = 0; k < FLIPGRAPH_LANES; k++) x[k] = sqrt(x[k]);
-#endif
-      memcpy(&r, x, sizeof r);
-      break;
-    }
-    default: r = a + b; break;
-  }
-  *out = r;
-}
-
-/* Codes of every slot under joint j; see the comment above for why each
-** step is rule_compare's arithmetic. */
-FLIPGRAPH_INLINE void flipgraph_joint_codes(joint_id j, const flipgraph_plan *pl,
-                                             flipgraph_work *w) {
-  const int nv = (pl->nslots + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES;
-  const int finite_p = j != JOINT_MIN && j != JOINT_MAX;
-  const double eps = pl->tie_eps;
-  /* The per-triangle inputs: raw values for min and max, magnitudes for
-  ** sum and product, h(magnitude) for the harmonic and l_2 joints. */
-  double (*src)[FLIPGRAPH_SLOTS] = finite_p ? w->mag : w->val;
-  if (j == JOINT_HARMONIC || j == JOINT_RSS) {
-    for (int t = 0; t < 10; t++)
-      for (int s = 0; s < nv; s++) {
-        double x = w->mag[t][s];
-        w->h[t][s] = j == JOINT_HARMONIC ? 1.0 / x : x * x;
-      }
-    src = w->h;
-  }
-  for (int s = 0; s < nv; s += FLIPGRAPH_LANES) {
-    flipgraph_vi negm, code = {0};
-    memcpy(&negm, &pl->slot_negmask[s], sizeof negm);
-    if (!finite_p) negm = (flipgraph_vi){0};
-    long long p3 = 1;
-    for (int q = 0; q < 5; q++, p3 *= 3) {
-      const unsigned char *t = flipgraph_quad_tri[q];
-      flipgraph_vd fa, fb;
-      if ((j == JOINT_HARMONIC || j == JOINT_RSS) && pl->filter_ok) {
-        flipgraph_vd a0, a1, b0, b1;
-        memcpy(&a0, &src[t[0]][s], sizeof a0);
-        memcpy(&a1, &src[t[1]][s], sizeof a1);
-        memcpy(&b0, &src[t[2]][s], sizeof b0);
-        memcpy(&b1, &src[t[3]][s], sizeof b1);
-        flipgraph_vd sa = a0 + a1, sb = b0 + b1;
-        flipgraph_vd hi = FLIPGRAPH_VSEL(sa > sb, sa, sb), lo = FLIPGRAPH_VSEL(sa > sb, sb, sa);
-        flipgraph_vi eq = sa == sb;
-        flipgraph_vi sure = eq | ((hi <= 0x1p1000) & (lo >= 0x1p-1000)
-                                  & (FLIPGRAPH_VABS(sa - sb) > pl->filter_k * hi));
-        int all_sure = 1;
-        for (int k = 0; k < FLIPGRAPH_LANES; k++) all_sure &= sure[k] != 0;
-        if (all_sure) {
-          /* fa < fb iff sa > sb (harmonic: 1/s decreases) or sa < sb (l_2). */
-          flipgraph_vi lt = j == JOINT_HARMONIC ? sa > sb : sa < sb;
-          flipgraph_vi ac = lt ^ negm;
-          code += (eq & (2 * p3)) | (~eq & ~ac & p3);
-          continue;
-        }
-      }
-      flipgraph_vc(j, &src[t[0]][s], &src[t[1]][s], &fa);
-      flipgraph_vc(j, &src[t[2]][s], &src[t[3]][s], &fb);
-      flipgraph_vd aa = FLIPGRAPH_VABS(fa), ab = FLIPGRAPH_VABS(fb);
-      flipgraph_vd big = FLIPGRAPH_VSEL(aa > ab, aa, ab);
-      flipgraph_vi tie = (fa == fb) | (fa != fa) | (fb != fb)
-                       | ((aa != INFINITY) & (ab != INFINITY) & (FLIPGRAPH_VABS(fa - fb) <= eps * big));
-      flipgraph_vi ac = (fa < fb) ^ negm;
-      code += (tie & (2 * p3)) | (~tie & ~ac & p3);
-    }
-    memcpy(&w->code[j][s], &code, sizeof code);
-  }
-}
-#else
-/* Portable scalar version of the same arithmetic. */
-static inline void flipgraph_joint_codes(joint_id j, const flipgraph_plan *pl,
-                                         flipgraph_work *w) {
-  const int finite_p = j != JOINT_MIN && j != JOINT_MAX;
-  for (int s = 0; s < pl->nslots; s++) {
-    double h[10];
-    for (int t = 0; t < 10; t++) {
-      double x = finite_p ? w->mag[t][s] : w->val[t][s];
-      h[t] = j == JOINT_HARMONIC ? 1.0 / x : j == JOINT_RSS ? x * x : x;
-    }
-    long long code = 0, p3 = 1;
-    for (int q = 0; q < 5; q++, p3 *= 3) {
-      const unsigned char *t = flipgraph_quad_tri[q];
-      double a0 = h[t[0]], a1 = h[t[1]], b0 = h[t[2]], b1 = h[t[3]], fa, fb;
-      switch (j) {
-        case JOINT_MIN: fa = a0 < a1 ? a0 : a1; fb = b0 < b1 ? b0 : b1; break;
-        case JOINT_MAX: fa = a0 > a1 ? a0 : a1; fb = b0 > b1 ? b0 : b1; break;
-        case JOINT_HARMONIC: fa = 1.0 / (a0 + a1); fb = 1.0 / (b0 + b1); break;
-        case JOINT_PRODUCT: fa = a0 * a1; fb = b0 * b1; break;
-        case JOINT_RSS: fa = sqrt(a0 + a1); fb = sqrt(b0 + b1); break;
-        default: fa = a0 + a1; fb = b0 + b1; break;
-      }
-      double aa = fabs(fa), ab = fabs(fb), big = aa > ab ? aa : ab;
-      int tie = fa == fb || isnan(fa) || isnan(fb)
-             || (!isinf(fa) && !isinf(fb) && fabs(fa - fb) <= pl->tie_eps * big);
-      int ac = (fa < fb) != (finite_p && pl->slot_neg[s]);
-      code += tie ? 2 * p3 : ac ? 0 : p3;
-    }
-    w->code[j][s] = code;
-  }
-}
-#endif
-
-/* Codes of every (joint, slot) in use.  On x86-64 with GCC an AVX2 clone is
-** chosen at load time where the CPU has it; every operation is an IEEE
-** basic operation on doubles, so both clones give the same bits. */
-#if FLIPLAB_HAVE_CLONES && !defined(FLIPGRAPH_NO_CLONES)
+/* Codes of every (joint, slot) in use.  The batch's constants (five
+** quadrilaterals, rows, weights) fold into the inlined loops. */
+#if FLIPLAB_HAVE_CLONES
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
-  const int nv = (pl->nslots + FLIPGRAPH_LANES - 1) / FLIPGRAPH_LANES * FLIPGRAPH_LANES;
-  if (pl->ngroup[JOINT_HARMONIC] + pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_SUM]
-      + pl->ngroup[JOINT_RSS] > 0)
-    for (int t = 0; t < 10; t++)
-      for (int s = 0; s < nv; s++) w->mag[t][s] = pl->slot_sign[s] * w->val[t][s];
-  w->any_wide = 0;
-  if (pl->ngroup[JOINT_PRODUCT] + pl->ngroup[JOINT_RSS] > 0) {
-    /* Triangle-major, so the inner loop runs over contiguous slots. */
-    int any = 0;
-    for (int s = 0; s < nv; s++) w->wide[s] = 0;
-    for (int t = 0; t < 10; t++)
-      for (int s = 0; s < nv; s++) {
-        double m = w->mag[t][s];
-        w->wide[s] |= !(m >= 0x1p-511) | !(m <= 0x1p511);
-      }
-    for (int s = 0; s < pl->nslots; s++) any |= w->wide[s];
-    w->any_wide = any;
-  }
-  for (int j = 0; j < JOINT_COUNT; j++) {
-    if (pl->ngroup[j] == 0) continue;
-    switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
-      case JOINT_MIN: flipgraph_joint_codes(JOINT_MIN, pl, w); break;
-      case JOINT_HARMONIC: flipgraph_joint_codes(JOINT_HARMONIC, pl, w); break;
-      case JOINT_PRODUCT:
-        flipgraph_joint_codes(JOINT_PRODUCT, pl, w);
-        flipgraph_wide_codes(JOINT_PRODUCT, pl, w);
-        break;
-      case JOINT_SUM: flipgraph_joint_codes(JOINT_SUM, pl, w); break;
-      case JOINT_RSS:
-        flipgraph_joint_codes(JOINT_RSS, pl, w);
-        flipgraph_wide_codes(JOINT_RSS, pl, w);
-        break;
-      default: flipgraph_joint_codes(JOINT_MAX, pl, w); break;
-    }
-  }
+  const quadvec_batch b = {pl->nslots, FLIPGRAPH_SLOTS, 10, 5, flipgraph_quad_off,
+                     flipgraph_bd_weight, flipgraph_tie_weight, pl->slot_sign, pl->tie_eps,
+                     pl->joint_used, &w->val[0][0], &w->mag[0][0], &w->h[0][0], w->flags,
+                     &w->code[0][0], &w->tie[0][0]};
+  quadvec_run(&b);
 }
 
 /* Decision codes of every rule of the plan for one prepared pentagon whose
