@@ -24,6 +24,9 @@
 #define QUADVEC_LANES 4
 #define QUADVEC_PAD(n) (((n) + QUADVEC_LANES - 1) / QUADVEC_LANES * QUADVEC_LANES)
 
+/* Quadrilaterals per batch, at most (the census's BD bits fill a word). */
+#define QUADVEC_MAX_QUADS 64
+
 /* One batch: every quadrilateral of one site set (or pentagon) under every
 ** used joint and every slot.  Tables are [row][stride]; lanes from nslots
 ** up to QUADVEC_PAD(nslots) are padding: the caller keeps val and sign 1.0

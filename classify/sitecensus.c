@@ -47,24 +47,28 @@
 #include "siteflip_internal.h"
 #include "measure.h"
 #include "joint.h"
+#include "quadvec_internal.h"
 #include "sampler.h"
 
 #define SITEFLIP_CHUNK 256
+#define SITEFLIP_SLOTS QUADVEC_PAD(MEASURE_MAX)
 
 typedef struct siteflip_crule {
   int quad;              /* whole-quadrilateral rule */
+  int dt;                /* the DT rule */
   int slot;
   joint_id joint;
-  int neg;               /* finite-p joint on a measure <= 0 */
   int msign;             /* the measure's sign */
+  joint_keyop keyop;     /* how keys of triangles combine */
+  double key0;           /* the identity of keyop */
 } siteflip_crule;
 
 typedef struct siteflip_cplan {
   const rule *rules;
-  int nrules, nslots, eval_all;
+  int nrules, nslots, nv, eval_all;   /* nv: slots padded to whole vectors */
+  int has_dt;                         /* some rule is DT */
   int slot_measure[MEASURE_MAX];
-  double slot_sign[MEASURE_MAX];   /* -1.0 for measures <= 0, else +1.0 */
-  int slot_neg[MEASURE_MAX];
+  double slot_sign[SITEFLIP_SLOTS];   /* -1.0 for measures <= 0, else 1.0 (padding too) */
   int joint_used[JOINT_COUNT];
   siteflip_crule *cr;
   double eps;
@@ -72,19 +76,30 @@ typedef struct siteflip_cplan {
 
 typedef struct siteflip_cwork {
   siteflip_graph *shape;     /* convex: the one shape, moved to each sample */
-  double *val, *mag;          /* values and magnitudes, [triangle][slot] */
-  size_t valcap, magcap;
-  uint64_t bits[JOINT_COUNT][MEASURE_MAX];      /* BD decisions by quadrilateral */
-  unsigned char wide[MEASURE_MAX];   /* a magnitude outside [2^-511, 2^511] */
-  unsigned char tie[JOINT_COUNT][MEASURE_MAX];
-  rule_choice *dec;
-  size_t deccap;
+  double *val, *mag, *h;     /* values, magnitudes, scratch: [triangle][nv] */
+  size_t valcap, magcap, hcap;
+  long long flags[SITEFLIP_SLOTS];
+  unsigned long long bits[JOINT_COUNT * SITEFLIP_SLOTS];  /* [joint][nv]: BD decisions by quadrilateral */
+  long long tie[JOINT_COUNT * SITEFLIP_SLOTS];            /* [joint][nv]: non-zero: some tie */
+  int qoff[QUADVEC_MAX_QUADS][4];    /* quadrilaterals' triangle rows, times nv */
+  rule_choice *dec, *dtdec;          /* one rule's decisions; DT's */
+  size_t deccap, dtcap;
   uint64_t *qmask, *want;
+  uint64_t *rbits, *smask;           /* per rule: BD bits, sink mask */
+  unsigned char *rtied;              /* per rule: some tie */
   unsigned char *out;
   double *key;
   int *sinks;
   size_t nodecap;
 } siteflip_cwork;
+
+/* Census weights of quadvec: bit q for BD, nothing for a tie (the tie flag
+** says it). */
+#define SITEFLIP_W4(q) 1ull << (q), 1ull << ((q) + 1), 1ull << ((q) + 2), 1ull << ((q) + 3)
+#define SITEFLIP_W16(q) SITEFLIP_W4(q), SITEFLIP_W4((q) + 4), SITEFLIP_W4((q) + 8), SITEFLIP_W4((q) + 12)
+static const unsigned long long siteflip_bd_weight[QUADVEC_MAX_QUADS] = {
+  SITEFLIP_W16(0), SITEFLIP_W16(16), SITEFLIP_W16(32), SITEFLIP_W16(48)};
+static const unsigned long long siteflip_tie_weight[QUADVEC_MAX_QUADS];
 
 /* 0, -1 for a rule the plan cannot hold, -2 when memory ran out. */
 static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
@@ -94,12 +109,15 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
   pl->eps = eps;
   pl->cr = calloc((size_t)nrules + 1, sizeof *pl->cr);
   if (pl->cr == NULL) return -2;   /* out of memory, told apart from a bad rule */
+  for (int s = 0; s < SITEFLIP_SLOTS; s++) pl->slot_sign[s] = 1.0;
   for (int i = 0; i < nrules; i++) {
     const rule *r = &rules[i];
     siteflip_crule *c = &pl->cr[i];
     if (r->kind == RULE_QUAD) {
       if (r->quad < 0 || r->quad >= rule_quad_count()) return -1;
       c->quad = 1;
+      c->dt = r->quad == RULE_DT;
+      pl->has_dt |= c->dt;
       continue;
     }
     if (r->measure < 0 || r->measure >= measure_count() || (unsigned)r->joint >= JOINT_COUNT)
@@ -107,16 +125,17 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
     int s = 0;
     while (s < pl->nslots && pl->slot_measure[s] != r->measure) s++;
     if (s == pl->nslots) {
-      pl->slot_neg[s] = measure_get(r->measure)->sign < 0;
-      pl->slot_sign[s] = pl->slot_neg[s] ? -1.0 : 1.0;
+      pl->slot_sign[s] = measure_get(r->measure)->sign < 0 ? -1.0 : 1.0;
       pl->slot_measure[pl->nslots++] = r->measure;
     }
     pl->joint_used[r->joint] = 1;
     c->slot = s;
     c->joint = r->joint;
     c->msign = measure_get(r->measure)->sign;
-    c->neg = joint_get(r->joint)->needs_sign && c->msign < 0;
+    c->keyop = joint_get(r->joint)->keyop;
+    c->key0 = joint_key_identity(r->joint);
   }
+  pl->nv = QUADVEC_PAD(pl->nslots);
   /* measure_eval_all when it is cheaper than calls: many slots, and no
   ** unused user measure (maybe a slow formula) would run. */
   pl->eval_all = pl->nslots > 4;
@@ -132,8 +151,13 @@ static void siteflip_cwork_free(siteflip_cwork *w) {
   siteflip_free(w->shape);
   free(w->val);
   free(w->mag);
+  free(w->h);
   free(w->dec);
+  free(w->dtdec);
   free(w->qmask);
+  free(w->rbits);
+  free(w->smask);
+  free(w->rtied);
   free(w->want);
   free(w->out);
   free(w->key);
@@ -150,16 +174,32 @@ static int siteflip_grow(void **p, size_t *cap, size_t need, size_t size) {
 }
 
 /* Room for g's values, decisions and per-node arrays. */
-static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g, int nslots) {
+static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g,
+                              const siteflip_cplan *pl) {
+  const int nv = pl->nv;
+  if (w->rbits == NULL || w->smask == NULL || w->rtied == NULL) {   /* per rule, once */
+    size_t nr = (size_t)pl->nrules + 1;
+    free(w->rbits);
+    free(w->smask);
+    free(w->rtied);
+    w->rbits = malloc(nr * sizeof *w->rbits);
+    w->smask = malloc(nr * sizeof *w->smask);
+    w->rtied = malloc(nr);
+    if (w->rbits == NULL || w->smask == NULL || w->rtied == NULL) return -1;
+  }
   size_t vc = w->valcap, dc = w->deccap, nn = (size_t)g->nnodes + 1, nc = w->nodecap;
-  size_t mc = w->magcap;
-  if (siteflip_grow((void **)&w->val, &vc, (size_t)g->ntris * (size_t)(nslots + 1), sizeof *w->val) ||
-      siteflip_grow((void **)&w->mag, &mc, (size_t)g->ntris * (size_t)(nslots + 1), sizeof *w->mag) ||
-      siteflip_grow((void **)&w->dec, &dc, (size_t)g->nquads + 1, sizeof *w->dec))
+  size_t mc = w->magcap, hc = w->hcap, tc = w->dtcap, rows = (size_t)g->ntris * (size_t)(nv + 1);
+  if (siteflip_grow((void **)&w->val, &vc, rows, sizeof *w->val) ||
+      siteflip_grow((void **)&w->mag, &mc, rows, sizeof *w->mag) ||
+      siteflip_grow((void **)&w->h, &hc, rows, sizeof *w->h) ||
+      siteflip_grow((void **)&w->dec, &dc, (size_t)g->nquads + 1, sizeof *w->dec) ||
+      siteflip_grow((void **)&w->dtdec, &tc, (size_t)g->nquads + 1, sizeof *w->dtdec))
     return -1;
   w->valcap = vc;
   w->magcap = mc;
+  w->hcap = hc;
   w->deccap = dc;
+  w->dtcap = tc;
   if (nn <= nc) return 0;
   size_t c1 = nc, c2 = nc, c3 = nc, c4 = nc, c5 = nc;
   if (siteflip_grow((void **)&w->qmask, &c1, nn, sizeof *w->qmask) ||
@@ -172,8 +212,11 @@ static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g, int ns
   return 0;
 }
 
-static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g) {
+/* What depends on g's shape only: sink masks and quadrilateral rows. */
+static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g, int nv) {
   if (g->nquads > 64) return;
+  for (int q = 0; q < g->nquads; q++)
+    for (int k = 0; k < 4; k++) w->qoff[q][k] = g->quad[q].tri[k] * nv;
   memset(w->qmask, 0, (size_t)g->nnodes * sizeof *w->qmask);
   memset(w->want, 0, (size_t)g->nnodes * sizeof *w->want);
   for (int e = 0; e < g->nedges; e++) {
@@ -185,21 +228,6 @@ static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g) {
 }
 
 /* ---- decisions -------------------------------------------------------------- */
-
-/* joint.c's g, on magnitudes for the finite-p joints. */
-static inline double siteflip_g(joint_id j, double x, double y) {
-  switch (j) {
-    case JOINT_MIN: return x < y ? x : y;
-    case JOINT_MAX: return x > y ? x : y;
-    case JOINT_HARMONIC:
-      if (x == INFINITY) return y;
-      if (y == INFINITY) return x;
-      return 1.0 / (1.0 / x + 1.0 / y);
-    case JOINT_PRODUCT: return x * y;
-    case JOINT_SUM: return x + y;
-    default: return sqrt(x * x + y * y);
-  }
-}
 
 /* Every quadrilateral of g under a triangle rule, as rule_eval_tris decides
 ** it (joint_compare); *bits as above (when nquads <= 64).  Returns 1 if
@@ -220,90 +248,45 @@ static int siteflip_decide_tri(const siteflip_graph *g, const double *val, int n
   return 0;
 }
 
+/* Rule i on every quadrilateral of g; DT's decisions are dtdec (the exact
+** in-circle test gives rule_eval's answer whatever the vertex order). */
 static int siteflip_decide(const siteflip_cplan *pl, int i, const siteflip_graph *g,
-                           const double *val, rule_choice *dec, uint64_t *bits) {
+                           const double *val, const rule_choice *dtdec, rule_choice *dec,
+                           uint64_t *bits) {
   const siteflip_crule *c = &pl->cr[i];
   if (c->quad) {
     uint64_t b = 0;
     for (int q = 0; q < g->nquads; q++) {
       const unsigned char *v = g->quad[q].v;
       geom_point pts[4] = {g->p[v[0]], g->p[v[1]], g->p[v[2]], g->p[v[3]]};
-      dec[q] = rule_eval(&pl->rules[i], pts, pl->eps, NULL, NULL);
+      dec[q] = c->dt ? dtdec[q] : rule_eval(&pl->rules[i], pts, pl->eps, NULL, NULL);
       if (dec[q] == RULE_EITHER) return 1;
       if (q < 64) b |= (uint64_t)(dec[q] == RULE_BD) << q;
     }
     *bits = b;
     return 0;
   }
-  return siteflip_decide_tri(g, val, pl->nslots, c, pl->eps, dec, bits);
+  return siteflip_decide_tri(g, val, pl->nv, c, pl->eps, dec, bits);
 }
 
-/* All slots of joint j at once, for graphs of at most 64 quadrilaterals:
-** w->bits[j][s] and w->tie[j][s].  The inner loop runs over slots on
-** contiguous memory without branches (selects only), so the compiler can
-** vectorise it; it is siteflip_decide_tri's arithmetic lane by lane: on
-** magnitudes for the finite-p joints, where for a measure <= 0 comparing
-** -u with -v is comparing u with v reversed (negation is exact; ties are
-** unchanged since |-u| = |u| and (-u) - (-v) = -(u - v) exactly). */
-static inline void siteflip_joint_bits(joint_id j, const siteflip_cplan *pl,
-                                       const siteflip_graph *g, siteflip_cwork *w) {
-  const int ns = pl->nslots, finite_p = j != JOINT_MIN && j != JOINT_MAX;
-  const double *src = finite_p ? w->mag : w->val, eps = pl->eps;
-  uint64_t *bits = w->bits[j];
-  unsigned char *tie = w->tie[j];
-  for (int s = 0; s < ns; s++) {
-    bits[s] = 0;
-    tie[s] = 0;
-  }
-  for (int q = 0; q < g->nquads; q++) {
-    const int *t = g->quad[q].tri;
-    const double *a0 = src + t[0] * ns, *a1 = src + t[1] * ns;
-    const double *b0 = src + t[2] * ns, *b1 = src + t[3] * ns;
-    for (int s = 0; s < ns; s++) {
-      double fa = siteflip_g(j, a0[s], a1[s]), fb = siteflip_g(j, b0[s], b1[s]);
-      double aa = fabs(fa), ab = fabs(fb), big = aa > ab ? aa : ab;
-      int te = (fa == fb) | (fa != fa) | (fb != fb) |
-               ((aa != INFINITY) & (ab != INFINITY) & (fabs(fa - fb) <= eps * big));
-      int bd = (fa < fb) == (finite_p & pl->slot_neg[s]);
-      tie[s] |= (unsigned char)te;
-      bits[s] |= (uint64_t)(bd & !te) << q;
-    }
-  }
-}
-
+/* Every triangle rule on a graph of at most 64 quadrilaterals: w->bits
+** and w->tie (quadvec_internal.h), cloned for AVX2 where possible. */
+#if FLIPLAB_HAVE_CLONES
+__attribute__((target_clones("avx2", "default")))
+#endif
 static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
                               siteflip_cwork *w) {
-  const int ns = pl->nslots;
-  for (int s = 0; s < ns; s++) w->wide[s] = 0;
-  for (int t = 0; t < g->ntris; t++)
-    for (int s = 0; s < ns; s++) {
-      double m = pl->slot_sign[s] * w->val[t * ns + s];
-      w->mag[t * ns + s] = m;
-      w->wide[s] |= !(m >= 0x1p-511 && m <= 0x1p511);
-    }
-  for (int j = 0; j < JOINT_COUNT; j++) {
-    if (!pl->joint_used[j]) continue;
-    switch ((joint_id)j) {   /* one specialised copy of the loops per joint */
-      case JOINT_MIN: siteflip_joint_bits(JOINT_MIN, pl, g, w); break;
-      case JOINT_HARMONIC: siteflip_joint_bits(JOINT_HARMONIC, pl, g, w); break;
-      case JOINT_PRODUCT: siteflip_joint_bits(JOINT_PRODUCT, pl, g, w); break;
-      case JOINT_SUM: siteflip_joint_bits(JOINT_SUM, pl, g, w); break;
-      case JOINT_RSS: siteflip_joint_bits(JOINT_RSS, pl, g, w); break;
-      default: siteflip_joint_bits(JOINT_MAX, pl, g, w); break;
-    }
-  }
+  const quadvec_batch b = {pl->nslots, pl->nv, g->ntris, g->nquads, (const int (*)[4])w->qoff,
+                           siteflip_bd_weight, siteflip_tie_weight, pl->slot_sign, pl->eps,
+                           pl->joint_used, w->val, w->mag, w->h, w->flags, w->bits, w->tie};
+  quadvec_run(&b);
 }
 
 /* ---- one sample ----------------------------------------------------------- */
 
-static int siteflip_sinks(siteflip_cwork *w, const siteflip_graph *g, const rule_choice *dec,
-                          uint64_t bits) {
+/* Sinks from the decisions, walking the edges (graphs the masks cannot hold). */
+static int siteflip_sinks(siteflip_cwork *w, const siteflip_graph *g, const rule_choice *dec) {
   int ns = 0;
-  if (g->nquads <= 64) {
-    for (int u = 0; u < g->nnodes; u++)
-      if ((bits & w->qmask[u]) == w->want[u]) w->sinks[ns++] = u;
-    return ns;
-  }
   memset(w->out, 0, (size_t)g->nnodes);
   for (int e = 0; e < g->nedges; e++)
     w->out[dec[g->edge[e].quad] == RULE_AC ? g->edge[e].bd : g->edge[e].ac] = 1;
@@ -312,26 +295,53 @@ static int siteflip_sinks(siteflip_cwork *w, const siteflip_graph *g, const rule
   return ns;
 }
 
-static double siteflip_ckey(const siteflip_graph *g, const double *val, int nslots,
+/* Node masks of the sinks of every rule with packed decisions (nquads and
+** nnodes <= 64): node u is a sink iff (bits & qmask[u]) == want[u].
+** Node by node over all rules, branch-free, so the AVX2 clone handles
+** four rules at a time. */
+#if FLIPLAB_HAVE_CLONES
+__attribute__((target_clones("avx2", "default")))
+#endif
+static void siteflip_sink_masks(siteflip_cwork *w, int nnodes, int nrules) {
+  const uint64_t *bits = w->rbits;
+  uint64_t *m = w->smask;
+  for (int i = 0; i < nrules; i++) m[i] = 0;
+  for (int u = 0; u < nnodes; u++) {
+    const uint64_t qm = w->qmask[u], want = w->want[u];
+    for (int i = 0; i < nrules; i++) m[i] |= (uint64_t)((bits[i] & qm) == want) << u;
+  }
+}
+
+static int siteflip_ctz(uint64_t m) {   /* m != 0 */
+#if defined(__GNUC__)
+  return __builtin_ctzll(m);
+#else
+  int n = 0;
+  for (; !(m & 1); m >>= 1) n++;
+  return n;
+#endif
+}
+
+static double siteflip_ckey(const siteflip_graph *g, const double *val, int nv,
                             const siteflip_crule *c, int u) {
-  joint_keyop op = joint_get(c->joint)->keyop;
-  double k = joint_key_identity(c->joint);
+  double k = c->key0;
   const int *t = g->node_tri + (size_t)u * (size_t)g->per;
   for (int f = 0; f < g->per; f++) {
-    double v = val[t[f] * nslots + c->slot];
-    k = joint_key_combine(op, k, op == JOINT_KEY_ADD ? joint_key(c->joint, c->msign, v) : v);
+    double v = val[t[f] * nv + c->slot];
+    k = joint_key_combine(c->keyop, k,
+                          c->keyop == JOINT_KEY_ADD ? joint_key(c->joint, c->msign, v) : v);
   }
   return k;
 }
 
 /* The worst sink's gap, in units; see the GOT shortcut above. */
 static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph *g,
-                                   const double *val, int nslots, const siteflip_crule *c,
+                                   const double *val, int nv, const siteflip_crule *c,
                                    int nsinks) {
   if (nsinks == 1) return 0;
   double best = INFINITY, worst = -INFINITY;
   for (int s = 0; s < nsinks; s++) {
-    double k = siteflip_ckey(g, val, nslots, c, w->sinks[s]);
+    double k = siteflip_ckey(g, val, nv, c, w->sinks[s]);
     best = fmin(best, k);
     worst = fmax(worst, k);
   }
@@ -340,83 +350,124 @@ static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph
   return (uint64_t)llround(fmin(gap, 4.0) / SITEFLIP_GAP_UNIT);
 }
 
+/* Measure values, rows of nv with the padding lanes 1.0 (quadvec). */
 static void siteflip_values(const siteflip_cplan *pl, const siteflip_graph *g, double *val) {
   double all[MEASURE_MAX];
   for (int t = 0; t < g->ntris; t++) {
-    double *row = val + (size_t)t * (size_t)pl->nslots;
+    double *row = val + (size_t)t * (size_t)pl->nv;
     if (pl->eval_all) {
       measure_eval_all(&g->tri[t], all);
       for (int s = 0; s < pl->nslots; s++) row[s] = all[pl->slot_measure[s]];
     } else {
       for (int s = 0; s < pl->nslots; s++) row[s] = measure_eval(pl->slot_measure[s], &g->tri[t]);
     }
+    for (int s = pl->nslots; s < pl->nv; s++) row[s] = 1.0;
   }
+}
+
+/* Rule i's decisions: 1 if some quadrilateral is a tie, else 0 with the
+** BD bits (packed graphs) or w->dec.  Triangle rules on packed graphs come
+** from quadvec (siteflip_all_bits). */
+static int siteflip_rule_bits(const siteflip_cplan *pl, siteflip_cwork *w,
+                              const siteflip_graph *g, int i, uint64_t *bits) {
+  const siteflip_crule *cr = &pl->cr[i];
+  if (g->nquads <= 64 && !cr->quad) {
+    *bits = w->bits[cr->joint * pl->nv + cr->slot];
+    return w->tie[cr->joint * pl->nv + cr->slot] != 0;
+  }
+  *bits = 0;
+  return siteflip_decide(pl, i, g, w->val, w->dtdec, w->dec, bits);
+}
+
+/* Adds one untied sample whose ns sinks are w->sinks[0..ns-1] to c. */
+static void siteflip_tally(const siteflip_cplan *pl, const siteflip_cwork *w,
+                           const siteflip_graph *g, int i, int ns, siteflip_counts *c) {
+  c->sinks += (uint64_t)ns;
+  if ((uint64_t)ns > c->max_sinks) c->max_sinks = (uint64_t)ns;
+  if (ns == 0) c->no_sink++;
+  else if (ns > 1) c->multi_sink++;
+  else {
+    c->one_sink++;
+    c->sink_dt += w->sinks[0] == g->delaunay;
+  }
+  if (ns > 1 && !pl->cr[i].quad)
+    c->gap_units += siteflip_gap_units(w, g, w->val, pl->nv, &pl->cr[i], ns);
+}
+
+/* Sinks of packed decisions on a graph of more than 64 nodes. */
+static int siteflip_sinks_packed(siteflip_cwork *w, const siteflip_graph *g, uint64_t bits) {
+  int ns = 0;
+  for (int u = 0; u < g->nnodes; u++)
+    if ((bits & w->qmask[u]) == w->want[u]) w->sinks[ns++] = u;
+  return ns;
 }
 
 static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const siteflip_graph *g,
                            siteflip_counts *out) {
   siteflip_values(pl, g, w->val);
-  int packed = g->nquads <= 64;
+  int packed = g->nquads <= 64, masks = packed && g->nnodes <= 64;
   if (packed) siteflip_all_bits(pl, g, w);
   for (int i = 0; i < pl->nrules; i++) {
-    siteflip_counts *c = &out[i];
-    const siteflip_crule *cr = &pl->cr[i];
-    uint64_t bits = 0;
-    c->samples++;
-    /* Packed unless the rule is a quadrilateral rule, or a product or
-    ** root-sum-square on a slot with extreme magnitudes: those the plain
-    ** evaluation of the packed loop could under- or overflow, and
-    ** joint_compare decides them in split form (joint.h). */
-    int fast = packed && !cr->quad &&
-               !(w->wide[cr->slot] && (cr->joint == JOINT_PRODUCT || cr->joint == JOINT_RSS));
-    int tied = fast ? w->tie[cr->joint][cr->slot]
-                    : siteflip_decide(pl, i, g, w->val, w->dec, &bits);
-    if (tied) {
-      c->tie++;
-      continue;
-    }
-    if (fast) bits = w->bits[cr->joint][cr->slot];
-    int ns = siteflip_sinks(w, g, w->dec, bits);
-    c->sinks += (uint64_t)ns;
-    if ((uint64_t)ns > c->max_sinks) c->max_sinks = (uint64_t)ns;
-    if (ns == 0) c->no_sink++;
-    else if (ns > 1) c->multi_sink++;
-    else {
-      c->one_sink++;
-      c->sink_dt += w->sinks[0] == g->delaunay;
-    }
-    if (ns > 0 && !pl->cr[i].quad)
-      c->gap_units += siteflip_gap_units(w, g, w->val, pl->nslots, &pl->cr[i], ns);
+    uint64_t bits;
+    out[i].samples++;
+    w->rtied[i] = (unsigned char)siteflip_rule_bits(pl, w, g, i, &bits);
+    w->rbits[i] = bits;
+    if (w->rtied[i]) out[i].tie++;
+    if (masks || w->rtied[i]) continue;
+    /* Now, while w->dec holds rule i's decisions. */
+    int ns = packed ? siteflip_sinks_packed(w, g, bits) : siteflip_sinks(w, g, w->dec);
+    siteflip_tally(pl, w, g, i, ns, &out[i]);
+  }
+  if (!masks) return;
+  siteflip_sink_masks(w, g->nnodes, pl->nrules);
+  for (int i = 0; i < pl->nrules; i++) {
+    if (w->rtied[i]) continue;
+    int ns = 0;
+    for (uint64_t m = w->smask[i]; m != 0; m &= m - 1) w->sinks[ns++] = siteflip_ctz(m);
+    siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
 }
 
-/* The flip graph of sample i: the moved shape, or a new graph (*owned). */
-static siteflip_graph *siteflip_sample(siteflip_cwork *w, int sampler, int n, uint64_t seed,
-                                       uint64_t i, int *owned) {
+/* The flip graph of sample i, ready for siteflip_count: the moved shape
+** (convex: one shape per thread), or a new graph (*owned, to be freed).
+** NULL when memory ran out. */
+static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork *w, int sampler,
+                                       int n, uint64_t seed, uint64_t i, int *owned) {
   geom_point p[SITEFLIP_MAX_SITES];
   char err[256];
+  siteflip_graph *g;
   sampler_sites(sampler, seed, i, n, p);
-  *owned = 0;
-  if (sampler == SAMPLER_SITES_CONVEX) {
-    if (w->shape == NULL && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL)
-      return NULL;
-    siteflip_move(w->shape, p);
-    return w->shape;
+  *owned = sampler != SAMPLER_SITES_CONVEX;
+  if (*owned) {
+    g = siteflip_build(p, n, err, sizeof err);
+  } else {
+    int fresh = w->shape == NULL;
+    if (fresh && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL) return NULL;
+    g = w->shape;
+    if (fresh && siteflip_cwork_fit(w, g, pl) == 0) siteflip_cwork_masks(w, g, pl->nv);
   }
-  *owned = 1;
-  return siteflip_build(p, n, err, sizeof err);
+  if (g == NULL || siteflip_cwork_fit(w, g, pl) != 0) {
+    if (*owned) siteflip_free(g);
+    return NULL;
+  }
+  if (*owned) {
+    siteflip_cwork_masks(w, g, pl->nv);
+    if (pl->has_dt) siteflip_dt_decisions(g, w->dtdec);
+  } else {
+    /* siteflip_move, keeping DT's decisions for the DT rule. */
+    siteflip_move_tris(g, p);
+    siteflip_dt_decisions(g, w->dtdec);
+    g->delaunay = siteflip_delaunay_of(g, w->dtdec);
+  }
+  return g;
 }
 
 static int siteflip_range(const siteflip_cplan *pl, siteflip_cwork *w, int sampler, int n,
                           uint64_t seed, uint64_t lo, uint64_t hi, siteflip_counts *out) {
   for (uint64_t i = lo; i < hi; i++) {
     int owned;
-    siteflip_graph *g = siteflip_sample(w, sampler, n, seed, i, &owned);
-    if (g == NULL || siteflip_cwork_fit(w, g, pl->nslots) != 0) {
-      if (owned) siteflip_free(g);
-      return -1;
-    }
-    if (owned || i == lo) siteflip_cwork_masks(w, g);
+    siteflip_graph *g = siteflip_sample(pl, w, sampler, n, seed, i, &owned);
+    if (g == NULL) return -1;
     siteflip_count(pl, w, g, out);
     if (owned) siteflip_free(g);
   }
@@ -517,12 +568,8 @@ int64_t siteflip_find_multi(const rule *r, int sampler, int n, uint64_t seed, ui
   if (siteflip_cplan_make(&pl, r, 1, tie_eps) == 0)
     for (uint64_t i = first; i < first + count && found < 0; i++) {
       int owned;
-      siteflip_graph *g = siteflip_sample(&w, sampler, n, seed, i, &owned);
-      if (g == NULL || siteflip_cwork_fit(&w, g, pl.nslots) != 0) {
-        if (owned) siteflip_free(g);
-        break;
-      }
-      siteflip_cwork_masks(&w, g);
+      siteflip_graph *g = siteflip_sample(&pl, &w, sampler, n, seed, i, &owned);
+      if (g == NULL) break;
       siteflip_counts c = {0};
       siteflip_count(&pl, &w, g, &c);
       if (c.multi_sink > 0) {

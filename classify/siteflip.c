@@ -336,15 +336,16 @@ static int siteflip_adjacency(siteflip_graph *g) {
   return 0;
 }
 
-/* The triangulation all of whose flippable edges are locally Delaunay:
-** the nodes no flip leaves under DT (exact incircle); -1 unless unique. */
-static int siteflip_delaunay_node(const siteflip_graph *g) {
-  rule_choice *d = malloc(((size_t)g->nquads + 1) * sizeof *d);
-  if (d == NULL) return -1;
+void siteflip_dt_decisions(const siteflip_graph *g, rule_choice *d) {
   for (int q = 0; q < g->nquads; q++) {
     const unsigned char *v = g->quad[q].v;
     d[q] = rule_delaunay_eval(g->p[v[0]], g->p[v[1]], g->p[v[2]], g->p[v[3]]);
   }
+}
+
+/* The triangulation all of whose flippable edges are locally Delaunay:
+** the nodes no flip leaves under DT; -1 unless unique. */
+int siteflip_delaunay_of(const siteflip_graph *g, const rule_choice *d) {
   int found = -1, count = 0;
   for (int u = 0; u < g->nnodes && count < 2; u++) {
     int out = 0;
@@ -357,15 +358,23 @@ static int siteflip_delaunay_node(const siteflip_graph *g) {
       count++;
     }
   }
-  free(d);
   return count == 1 ? found : -1;
 }
 
-void siteflip_move(siteflip_graph *g, const geom_point *p) {
+void siteflip_move_tris(siteflip_graph *g, const geom_point *p) {
   memcpy(g->p, p, (size_t)g->n * sizeof *p);
   for (int t = 0; t < g->ntris; t++)
     geom_tri_make(&g->tri[t], p[g->tri_v[t][0]], p[g->tri_v[t][1]], p[g->tri_v[t][2]]);
-  g->delaunay = siteflip_delaunay_node(g);
+}
+
+void siteflip_move(siteflip_graph *g, const geom_point *p) {
+  siteflip_move_tris(g, p);
+  rule_choice *d = malloc(((size_t)g->nquads + 1) * sizeof *d);
+  g->delaunay = -1;   /* out of memory: as if not unique */
+  if (d == NULL) return;
+  siteflip_dt_decisions(g, d);
+  g->delaunay = siteflip_delaunay_of(g, d);
+  free(d);
 }
 
 static int siteflip_first(siteflip_ctx *c, siteflip_graph *g) {
