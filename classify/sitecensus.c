@@ -322,19 +322,24 @@ static int siteflip_ctz(uint64_t m) {   /* m != 0 */
 #endif
 }
 
+/* Node u's total in key space (siteflip_node_key's arithmetic, with the
+** plan's values). */
 static double siteflip_ckey(const siteflip_graph *g, const double *val, int nv,
                             const siteflip_crule *c, int u) {
   double k = c->key0;
   const int *t = g->node_tri + (size_t)u * (size_t)g->per;
-  for (int f = 0; f < g->per; f++) {
-    double v = val[t[f] * nv + c->slot];
-    k = joint_key_combine(c->keyop, k,
-                          c->keyop == JOINT_KEY_ADD ? joint_key(c->joint, c->msign, v) : v);
+  if (c->keyop == JOINT_KEY_ADD) {
+    for (int f = 0; f < g->per; f++) k += joint_key(c->joint, c->msign, val[t[f] * nv + c->slot]);
+  } else {
+    for (int f = 0; f < g->per; f++)
+      k = joint_key_combine(c->keyop, k, val[t[f] * nv + c->slot]);
   }
   return k;
 }
 
-/* The worst sink's gap, in units; see the GOT shortcut above. */
+/* The worst sink's gap, in units; see the GOT shortcut above.  Plain
+** comparisons pick the extreme keys: a NaN key is skipped as fmin and fmax
+** would skip it, and the sign of a zero total cannot change the gap. */
 static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph *g,
                                    const double *val, int nv, const siteflip_crule *c,
                                    int nsinks) {
@@ -342,8 +347,8 @@ static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph
   double best = INFINITY, worst = -INFINITY;
   for (int s = 0; s < nsinks; s++) {
     double k = siteflip_ckey(g, val, nv, c, w->sinks[s]);
-    best = fmin(best, k);
-    worst = fmax(worst, k);
+    best = k < best ? k : best;
+    worst = k > worst ? k : worst;
   }
   double gap = siteflip_gap(c->joint, c->msign, best, worst);
   if (!(gap > 0)) return 0;
