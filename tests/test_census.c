@@ -5,7 +5,8 @@
 ** decisions) sees, for every rule and sampler, so the packed decisions and
 ** the GOT shortcut change nothing; for convex pentagons its counts must be
 ** table34's (one sink = I + II, several = III, none = IV, tie = V); thread
-** counts change nothing.
+** counts change nothing; the vector and the portable decision engines
+** (quadvec) count the same, also on measures with extreme values.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -20,6 +21,7 @@
 
 #include "flipgraph.h"
 #include "measure.h"
+#include "quadvec_internal.h"
 #include "rule.h"
 #include "sampler.h"
 #include "siteflip.h"
@@ -35,25 +37,40 @@ static int tc_all_rules(rule **rules) {
   return n;
 }
 
-static void tc_census(const rule *rules, int nr, int kind, int n, uint64_t first,
-                      uint64_t count, int threads, siteflip_counts *c) {
+/* The rules of the three extreme test measures (testutil), then DT. */
+static int tc_extreme_rules(rule **rules) {
+  int ids[3];
+  assert_int_equal(testutil_extreme_measures(ids), 0);
+  int cap = 3 * JOINT_COUNT + 1;
+  *rules = malloc((size_t)cap * sizeof **rules);
+  int n = rule_list_triangle(ids, 3, *rules, cap - 1);
+  (*rules)[n++] = rule_delaunay();
+  return n;
+}
+
+static void tc_census_eps(const rule *rules, int nr, int kind, int n, uint64_t first,
+                          uint64_t count, int threads, double eps, siteflip_counts *c) {
   char err[256];
   memset(c, 0, (size_t)nr * sizeof *c);
-  if (siteflip_census(rules, nr, kind, n, 3, first, count, RULE_DEFAULT_TIE_EPS, threads, c,
-                      NULL, NULL, err, sizeof err) != 0)
+  if (siteflip_census(rules, nr, kind, n, 3, first, count, eps, threads, c, NULL, NULL, err,
+                      sizeof err) != 0)
     fail_msg("siteflip_census: %s", err);
 }
 
-static void test_census_equals_direct(void **state) {
-  (void)state;
-  rule *rules;
-  int nr = tc_all_rules(&rules);
+static void tc_census(const rule *rules, int nr, int kind, int n, uint64_t first,
+                      uint64_t count, int threads, siteflip_counts *c) {
+  tc_census_eps(rules, nr, kind, n, first, count, threads, RULE_DEFAULT_TIE_EPS, c);
+}
+
+/* Census against siteflip_direct on samples 0..per-1 of every sampler and
+** n = 4..7; adds the several-sink graphs and positive gaps seen. */
+static void tc_against_direct(const rule *rules, int nr, double eps, uint64_t per,
+                              int *multi_seen, int *gaps_seen) {
   siteflip_counts *c = malloc((size_t)nr * sizeof *c);
-  int multi_seen = 0, gaps_seen = 0;
   for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
     for (int n = 4; n <= 7; n++)
-      for (uint64_t i = 0; i < 8; i++) {
-        tc_census(rules, nr, kind, n, i, 1, 1, c);
+      for (uint64_t i = 0; i < per; i++) {
+        tc_census_eps(rules, nr, kind, n, i, 1, 1, eps, c);
         geom_point p[7];
         sampler_sites(kind, 3, i, n, p);
         char err[256];
@@ -62,7 +79,7 @@ static void test_census_equals_direct(void **state) {
         rule_choice *dec = malloc((size_t)(g->nquads + 1) * sizeof *dec);
         for (int r = 0; r < nr; r++) {
           siteflip_result res;
-          assert_int_equal(siteflip_direct(g, &rules[r], RULE_DEFAULT_TIE_EPS, dec, NULL, &res), 0);
+          assert_int_equal(siteflip_direct(g, &rules[r], eps, dec, NULL, &res), 0);
           assert_int_equal(c[r].samples, 1);
           assert_int_equal(c[r].tie, res.ties);
           if (res.ties) continue;
@@ -71,24 +88,84 @@ static void test_census_equals_direct(void **state) {
           assert_int_equal(c[r].one_sink, res.nsinks == 1);
           assert_int_equal(c[r].multi_sink, res.nsinks > 1);
           assert_int_equal(c[r].sink_dt, res.sink_dt == 1);
-          multi_seen += res.nsinks > 1;
+          *multi_seen += res.nsinks > 1;
           if (res.has_got) {
             uint64_t want = (uint64_t)llround(res.worst_gap / SITEFLIP_GAP_UNIT);
             if (c[r].gap_units != want)
               fail_msg("%s, %s %d/%llu: census gap %llu units, brute force %llu", rules[r].name,
                        sampler_sites_name(kind), n, (unsigned long long)i,
                        (unsigned long long)c[r].gap_units, (unsigned long long)want);
-            gaps_seen += want > 0;
+            *gaps_seen += want > 0;
           }
         }
         free(dec);
         siteflip_free(g);
       }
+  free(c);
+}
+
+static void test_census_equals_direct(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_all_rules(&rules), multi_seen = 0, gaps_seen = 0;
+  tc_against_direct(rules, nr, RULE_DEFAULT_TIE_EPS, 8, &multi_seen, &gaps_seen);
   print_message("%d several-sink graphs, %d positive gaps compared\n", multi_seen, gaps_seen);
   assert_true(multi_seen > 100);
   assert_true(gaps_seen > 100);
-  free(c);
+  /* Coarse tolerances make near-ties common; 0 leaves exact equality. */
+  const double eps[] = {0, 1e-4, 0.05};
+  for (size_t e = 0; e < sizeof eps / sizeof eps[0]; e++)
+    tc_against_direct(rules, nr, eps[e], 3, &multi_seen, &gaps_seen);
   free(rules);
+}
+
+/* Products and squares that under- or overflow, +inf and 0 values: the
+** slots quadvec hands to joint_compare. */
+static void test_census_extremes_equal_direct(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_extreme_rules(&rules), multi_seen = 0, gaps_seen = 0;
+  const double eps[] = {RULE_DEFAULT_TIE_EPS, 0, 1e-4};
+  for (size_t e = 0; e < sizeof eps / sizeof eps[0]; e++)
+    tc_against_direct(rules, nr, eps[e], 8, &multi_seen, &gaps_seen);
+  print_message("%d several-sink graphs, %d positive gaps compared\n", multi_seen, gaps_seen);
+  assert_true(multi_seen > 10);
+  free(rules);
+  measure_unregister_user();
+}
+
+/* The vector engine and the portable one count the same, for every sampler,
+** tie tolerance, built-in and extreme measure (so the census CSVs are
+** byte-identical), on packed graphs (n <= 7) and the others (n = 8). */
+static void test_census_vector_equals_scalar(void **state) {
+  (void)state;
+  rule *b, *x;
+  int nb = tc_all_rules(&b), nx = tc_extreme_rules(&x), nr = nb + nx;
+  rule *rules = malloc((size_t)nr * sizeof *rules);
+  memcpy(rules, b, (size_t)nb * sizeof *b);
+  memcpy(rules + nb, x, (size_t)nx * sizeof *x);
+  siteflip_counts *v = malloc((size_t)nr * sizeof *v), *s = malloc((size_t)nr * sizeof *s);
+  const double eps[] = {RULE_DEFAULT_TIE_EPS, 0, 1e-4, 0.05};
+  for (size_t e = 0; e < sizeof eps / sizeof eps[0]; e++)
+    for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
+      for (int n = 5; n <= 8; n++) {
+        uint64_t count = n == 8 ? 20 : 150;
+        quadvec_use_scalar(0);
+        tc_census_eps(rules, nr, kind, n, 0, count, 2, eps[e], v);
+        quadvec_use_scalar(1);
+        tc_census_eps(rules, nr, kind, n, 0, count, 2, eps[e], s);
+        quadvec_use_scalar(0);
+        for (int r = 0; r < nr; r++)
+          if (memcmp(&v[r], &s[r], sizeof v[r]) != 0)
+            fail_msg("%s, %s %d sites, tie_eps %g: vector and scalar engines differ", rules[r].name,
+                     sampler_sites_name(kind), n, eps[e]);
+      }
+  free(v);
+  free(s);
+  free(rules);
+  free(b);
+  free(x);
+  measure_unregister_user();
 }
 
 static void test_census_pentagons_are_table34(void **state) {
@@ -161,6 +238,8 @@ static void test_census_bad_args(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_census_equals_direct),
+    cmocka_unit_test(test_census_extremes_equal_direct),
+    cmocka_unit_test(test_census_vector_equals_scalar),
     cmocka_unit_test(test_census_pentagons_are_table34),
     cmocka_unit_test(test_census_threads),
     cmocka_unit_test(test_census_bad_args),

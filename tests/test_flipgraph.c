@@ -8,7 +8,9 @@
 **   triangles all have empty circumcircles (brute force);
 ** - the fast path (flipgraph_plan_run, flipgraph_tally) decides exactly as
 **   flipgraph_classify and rule_eval do, for every rule, on sampled
-**   pentagons and on integer-grid pentagons full of exact ties;
+**   pentagons and on integer-grid pentagons full of exact ties, also for
+**   measures with extreme values (under- and overflowing products, +inf,
+**   0), with the vector engine and the portable one (quadvec);
 ** - no triangle-based rule gives type IV; types I, II, III and V are all
 **   reached by triangle rules, and type IV by a hand-made quadrilateral rule.
 */
@@ -25,6 +27,7 @@
 
 #include "measure.h"
 #include "flipgraph.h"
+#include "quadvec_internal.h"
 #include "rule.h"
 #include "sampler.h"
 #include "testutil.h"
@@ -368,6 +371,39 @@ static void test_fast_path_equals_rule_eval(void **state) {
   }
 }
 
+/* Extreme measures take quadvec's exact fallbacks; the vector and the
+** portable engines tally the same. */
+static void test_extremes_and_engines(void **state) {
+  (void)state;
+  int ids[3];
+  assert_int_equal(testutil_extreme_measures(ids), 0);
+  rule rules[TFG_MAXRULES];
+  int n = tfg_all_rules(rules);
+  const double eps[] = {TFG_EPS, 0, 1e-4};
+  geom_point v[5];
+  for (int scalar = 0; scalar < 2; scalar++)
+    for (size_t e = 0; e < sizeof eps / sizeof eps[0]; e++) {
+      flipgraph_plan *pl = flipgraph_plan_new(rules, n, eps[e]);
+      assert_non_null(pl);
+      quadvec_use_scalar(scalar);
+      for (uint64_t i = 0; i < 1500; i++) {
+        sampler_pentagon(17 + e, i, v);
+        tfg_check_pentagon(pl, rules, n, v, i < 50, eps[e]);
+      }
+      quadvec_use_scalar(0);
+      flipgraph_plan_free(pl);
+    }
+  static flipgraph_counts vec[TFG_MAXRULES], sca[TFG_MAXRULES];
+  memset(vec, 0, sizeof vec);
+  memset(sca, 0, sizeof sca);
+  assert_int_equal(flipgraph_tally(rules, n, 5, 0, 20000, TFG_EPS, 2, vec, NULL, NULL), 0);
+  quadvec_use_scalar(1);
+  assert_int_equal(flipgraph_tally(rules, n, 5, 0, 20000, TFG_EPS, 2, sca, NULL, NULL), 0);
+  quadvec_use_scalar(0);
+  assert_memory_equal(vec, sca, (size_t)n * sizeof vec[0]);
+  measure_unregister_user();
+}
+
 /* flipgraph_tally equals a plain loop over flipgraph_classify. */
 static void test_tally_equals_loop(void **state) {
   (void)state;
@@ -556,6 +592,7 @@ int main(void) {
     cmocka_unit_test(test_dt_always_type_one),
     cmocka_unit_test(test_fast_path_equals_rule_eval),
     cmocka_unit_test(test_tally_equals_loop),
+    cmocka_unit_test(test_extremes_and_engines),
     cmocka_unit_test(test_tally_hook),
     cmocka_unit_test(test_types_reached),
     cmocka_unit_test(test_type_four_by_quad_rule),

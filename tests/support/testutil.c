@@ -13,6 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "testutil.h"
+#include "measure.h"
 #include "sampler.h"
 #include "splitmix.h"
 
@@ -133,4 +134,45 @@ size_t testutil_count(const char *hay, const char *needle) {
   size_t n = 0;
   for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
   return n;
+}
+
+/* ---- extreme measures ------------------------------------------------------ */
+
+/* 0..7 from low-order bits of a vertex coordinate: a fixed, well-mixed
+** choice per triangle. */
+static int testutil_bucket(const geom_tri *t) {
+  uint64_t u;
+  memcpy(&u, &t->v[1].y, sizeof u);
+  return (int)((u >> 11 ^ u >> 29) & 7);
+}
+
+static double testutil_wide(const geom_tri *t, void *ctx) {
+  (void)ctx;
+  return ldexp(t->P, (testutil_bucket(t) - 4) * 225);   /* 2^-900 .. 2^675 times P */
+}
+
+static double testutil_negwide(const geom_tri *t, void *ctx) {
+  (void)ctx;
+  return -ldexp(t->area, (testutil_bucket(t) - 3) * 225);
+}
+
+static double testutil_infzero(const geom_tri *t, void *ctx) {
+  (void)ctx;
+  int b = testutil_bucket(t);
+  return b == 0 ? INFINITY : b == 1 ? 0.0 : b == 2 ? 0x1p-1074 : t->R;
+}
+
+int testutil_extreme_measures(int ids[3]) {
+  static const measure m[3] = {
+    {"xwide", "xwide", "test: P scaled by 2^-900 .. 2^675", MEASURE_NONNEG, testutil_wide, NULL},
+    {"-xwide", "-xwide", "test: -A scaled by 2^-675 .. 2^900", MEASURE_NONPOS, testutil_negwide,
+     NULL},
+    {"xinf", "xinf", "test: +inf, 0, the least subnormal or R", MEASURE_NONNEG, testutil_infzero,
+     NULL}};
+  for (int k = 0; k < 3; k++) {
+    ids[k] = measure_find(m[k].name);
+    if (ids[k] < 0) ids[k] = measure_register(&m[k]);
+    if (ids[k] < 0) return -1;
+  }
+  return 0;
 }

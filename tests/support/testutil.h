@@ -64,4 +64,11 @@ size_t testutil_count(const char *hay, const char *needle);
 /* A fresh path in the build tree for a test's files. */
 void testutil_tmppath(char *buf, size_t len, const char *name);
 
+/* Register (once) three user measures with extreme values, for the engines'
+** exact fallbacks: "xwide" (>= 0) and "-xwide" (<= 0), magnitudes from
+** 2^-900 to 2^900 (products and squares under- and overflow), and "xinf"
+** (>= 0): +inf, 0, the least subnormal or R.  Their ids into ids; 0, or
+** -1 if the registry is full. */
+int testutil_extreme_measures(int ids[3]);
+
 #endif
