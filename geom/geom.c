@@ -45,10 +45,12 @@ static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_
 ** when |fl(l - r)| > 2^40 bound its relative error is below 2^-40 and it is
 ** returned as it is (the same bits as before this filter existed).  Below
 ** that, the triangle is flat (the determinant is under 2^-11 of the
-** permanent) and the value is computed exactly with GMP and rounded toward
-** zero (relative error below 2^-52): cancellation would otherwise leave
-** thin triangles with an area that is wrong in every digit, or 0.  Out of
-** line and rare: random triangles pass the filter 99.9% of the time. */
+** permanent) and the value is computed exactly (floating-point expansions,
+** geom_twice_area_exact) and rounded toward zero (relative error below
+** 2^-52): cancellation would otherwise leave thin triangles with an area
+** that is wrong in every digit, or 0.  Out of line: random triangles pass
+** the filter 99.9% of the time, though the skinny candidates of some LOT
+** rules (beta, -c, -A) fail it about 4% of the time. */
 static inline double geom_twice_area_inline(geom_point p, geom_point q, geom_point r) {
   double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
   double l = bax * cay, rr = bay * cax;

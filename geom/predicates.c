@@ -52,10 +52,102 @@ GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
   return s;
 }
 
-/* |orientation determinant| of p, q, r, computed exactly, rounded toward
-** zero to a double (geom_twice_area's slow path). */
-GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+/* ---- |orientation determinant| exactly, by floating-point expansions ----
+**
+** geom_twice_area's slow path (flat triangles: 4% of the candidates some
+** LOT rules evaluate), so it avoids GMP's allocations and gcds.  The
+** determinant (qx-px)(ry-py) - (qy-py)(rx-px) is carried exactly as an
+** expansion (Shewchuk 1997, section 2): a sum of doubles, nonoverlapping
+** and increasing in magnitude, whose sign is the sign of its largest
+** component.  Each coordinate difference is a two-term expansion
+** (geom_two_diff), each of the 8 products of terms is one (geom_two_product,
+** Dekker's split), and each of those 16 doubles is added with
+** geom_grow_expansion.  These error-free transformations need round to
+** nearest, no contraction into FMA (fliplab_config.h), and neither overflow
+** nor underflow: with every coordinate 0 or of magnitude in [2^-200, 2^200]
+** (the contract's [1e-30, 1e30] and more), every difference term is a
+** multiple of 2^-252 below 2^201 in magnitude (as in geom.h), so every
+** product term is a multiple of 2^-504 below 2^402, all normal, and the
+** split's 2^27 + 1 factor stays below 2^229.  Other finite coordinates go
+** to GMP rationals.
+**
+** The exact value T = |det| is then rounded toward zero, as mpq_get_d
+** did before: a candidate t (the plain sum of the components, within a few
+** ulps of T) is moved down while t > T and up while its successor is still
+** <= T, each comparison exact (the sign of the expansion minus t).  The
+** loop ends exactly at the largest double <= T, whatever the candidate's
+** accuracy.  tests/test_geom.c checks the result against GMP bit for bit. */
+
+/* x + y = a + b exactly, x = fl(a + b). */
+static inline void geom_two_sum(double a, double b, double *x, double *y) {
+  double s = a + b, bv = s - a, av = s - bv;
+  *x = s;
+  *y = (a - av) + (b - bv);
+}
+
+/* x + y = a - b exactly, x = fl(a - b). */
+static inline void geom_two_diff(double a, double b, double *x, double *y) {
+  double d = a - b, bv = a - d, av = d + bv;
+  *x = d;
+  *y = (a - av) + (bv - b);
+}
+
+/* hi + lo = a, each with at most 26 significant bits (Dekker). */
+static inline void geom_split(double a, double *hi, double *lo) {
+  double c = 134217729.0 * a, big = c - a;
+  *hi = c - big;
+  *lo = a - *hi;
+}
+
+/* x + y = a * b exactly, x = fl(a * b). */
+static inline void geom_two_product(double a, double b, double *x, double *y) {
+  double p = a * b, ahi, alo, bhi, blo;
+  geom_split(a, &ahi, &alo);
+  geom_split(b, &bhi, &blo);
+  double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
+  *x = p;
+  *y = alo * blo - err;
+}
+
+/* h = e + b (e has n components; h gets at most n + 1, zeros dropped, at
+** least one).  Returns h's length.  h may not alias e. */
+static int geom_grow_expansion(int n, const double *e, double b, double *h) {
+  int k = 0;
+  double q = b;
+  for (int i = 0; i < n; i++) {
+    double hh;
+    geom_two_sum(q, e[i], &q, &hh);
+    if (hh != 0) h[k++] = hh;
+  }
+  if (q != 0 || k == 0) h[k++] = q;
+  return k;
+}
+
+/* The sign of (e - t), e an expansion of n components (exact). */
+static int geom_expansion_cmp(int n, const double *e, double t) {
+  double h[34];
+  int k = geom_grow_expansion(n, e, -t, h);
+  return (h[k - 1] > 0) - (h[k - 1] < 0);
+}
+
+/* Adds a * b to the expansion e of *n components (kept in place). */
+static void geom_add_product(double *e, int *n, double a, double b) {
+  if (a == 0 || b == 0) return;
+  double x, y, h[34];
+  geom_two_product(a, b, &x, &y);
+  int k = *n;
+  if (y != 0) {
+    k = geom_grow_expansion(k, e, y, h);
+    for (int i = 0; i < k; i++) e[i] = h[i];
+  }
+  k = geom_grow_expansion(k, e, x, h);
+  for (int i = 0; i < k; i++) e[i] = h[i];
+  *n = k;
+}
+
+/* Outside [2^-200, 2^200] (beyond the contract: tests and plugins may go
+** there) the expansions could underflow or overflow: exact rationals. */
+static GEOM_COLD double geom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
   mpq_t t[5];
   for (int i = 0; i < 5; i++) mpq_init(t[i]);
   mpq_set_d(t[0], q.x); mpq_set_d(t[4], p.x); mpq_sub(t[0], t[0], t[4]);  /* qx - px */
@@ -66,9 +158,44 @@ GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r)
   mpq_mul(t[2], t[2], t[3]);
   mpq_sub(t[0], t[0], t[2]);
   mpq_abs(t[0], t[0]);
-  double v = mpq_get_d(t[0]);
+  double v = mpq_get_d(t[0]);   /* rounds toward zero */
   for (int i = 0; i < 5; i++) mpq_clear(t[i]);
   return v;
+}
+
+static int geom_coord_moderate(double x) {
+  double m = fabs(x);
+  return m == 0 || (m >= 0x1p-200 && m <= 0x1p200);
+}
+
+GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  if (!(geom_coord_moderate(p.x) && geom_coord_moderate(p.y) && geom_coord_moderate(q.x)
+        && geom_coord_moderate(q.y) && geom_coord_moderate(r.x) && geom_coord_moderate(r.y)))
+    return geom_twice_area_gmp(p, q, r);
+  double d[4][2];   /* qx - px, ry - py, qy - py, rx - px, each as hi + lo */
+  geom_two_diff(q.x, p.x, &d[0][0], &d[0][1]);
+  geom_two_diff(r.y, p.y, &d[1][0], &d[1][1]);
+  geom_two_diff(q.y, p.y, &d[2][0], &d[2][1]);
+  geom_two_diff(r.x, p.x, &d[3][0], &d[3][1]);
+  double e[34] = {0};   /* 16 products of 2 terms: at most 32 components, +1 in a compare */
+  int n = 1;
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++) {
+      geom_add_product(e, &n, d[0][i], d[1][j]);
+      geom_add_product(e, &n, -d[2][i], d[3][j]);
+    }
+  if (e[n - 1] == 0) return 0;
+  if (e[n - 1] < 0)
+    for (int i = 0; i < n; i++) e[i] = -e[i];
+  double t = 0;
+  for (int i = 0; i < n; i++) t += e[i];
+  if (!(t >= 0)) t = 0;
+  while (geom_expansion_cmp(n, e, t) < 0) t = nextafter(t, 0);
+  for (double up = nextafter(t, INFINITY); geom_expansion_cmp(n, e, up) >= 0;
+       up = nextafter(t, INFINITY))
+    t = up;
+  return t;
 }
 
 /* The incircle determinant of a, b, c, d translated so that d is the origin:

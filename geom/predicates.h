@@ -27,8 +27,9 @@ typedef struct geom_point {
 } geom_point;
 
 int geom_orient_exact(geom_point a, geom_point b, geom_point c);
-/* |orientation determinant| exactly, rounded toward zero (finite input;
-** geom_twice_area's slow path). */
+/* |orientation determinant| exactly, rounded toward zero (input within the
+** coordinate contract of geom.h; geom_twice_area's slow path).  Computed
+** with floating-point expansions, not GMP (predicates.c). */
 double geom_twice_area_exact(geom_point a, geom_point b, geom_point c);
 int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d);
 

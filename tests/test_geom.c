@@ -488,6 +488,102 @@ static void test_predicates_extreme(void **state) {
                                  tgeom_pt(0x1p298, 0x1p298)), 1);
 }
 
+/* |orientation determinant| in GMP rationals, rounded toward zero
+** (mpq_get_d truncates): the reference for geom_twice_area_exact. */
+static double tgeom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
+  mpq_t bx, by, cx, cy, t, u;
+  mpq_inits(bx, by, cx, cy, t, u, NULL);
+  mpq_set_d(t, p.x);
+  mpq_set_d(bx, q.x); mpq_sub(bx, bx, t);
+  mpq_set_d(cx, r.x); mpq_sub(cx, cx, t);
+  mpq_set_d(t, p.y);
+  mpq_set_d(by, q.y); mpq_sub(by, by, t);
+  mpq_set_d(cy, r.y); mpq_sub(cy, cy, t);
+  mpq_mul(t, bx, cy);
+  mpq_mul(u, by, cx);
+  mpq_sub(t, t, u);
+  mpq_abs(t, t);
+  double v = mpq_get_d(t);
+  mpq_clears(bx, by, cx, cy, t, u, NULL);
+  return v;
+}
+
+/* A coordinate of the contract: 0 sometimes, else a random sign and
+** binary exponent in [e0, e0 + span) (kept inside [1e-30, 1e30]). */
+static double tgeom_contract_coord(testutil_rng *g, int e0, int span) {
+  if (testutil_next(g) % 16 == 0) return 0;
+  double x = ldexp(1 + testutil_uniform(g), e0 + (int)(testutil_next(g) % (uint64_t)span));
+  if (x > 1e30) x = 1e30;
+  if (x < 1e-30) x = 1e-30;
+  return testutil_next(g) % 2 ? -x : x;
+}
+
+/* Nudge x by k ulps (k may be negative), staying inside the contract. */
+static double tgeom_nudge(double x, int k) {
+  for (int i = 0; i < (k < 0 ? -k : k); i++) x = nextafter(x, k < 0 ? -INFINITY : INFINITY);
+  double m = fabs(x);
+  return m != 0 && m < 1e-30 ? 0 : m > 1e30 ? copysign(1e30, x) : x;
+}
+
+/* geom_twice_area_exact (floating-point expansions) equals the GMP value
+** bit for bit on the triangles where it matters: nearly and exactly
+** collinear ones at every scale of the contract, needles, points a few
+** ulps apart, mixed magnitudes, zero coordinates; and on random ones. */
+static void test_twice_area_exact(void **state) {
+  (void)state;
+  testutil_rng g = {8080};
+  int wrong = 0, n = 0, zeros = 0;
+  for (int it = 0; it < 300000; it++) {
+    int kind = it % 6, e0 = -99 + (int)(testutil_next(&g) % 190);
+    int span = kind == 5 ? 200 : 1 + (int)(testutil_next(&g) % 8);
+    geom_point p = tgeom_pt(tgeom_contract_coord(&g, e0, span), tgeom_contract_coord(&g, e0, span));
+    geom_point q = tgeom_pt(tgeom_contract_coord(&g, e0, span), tgeom_contract_coord(&g, e0, span));
+    geom_point r;
+    double s = testutil_uniform(&g) * (kind == 1 ? 1e-12 : kind == 2 ? 3 : 1);
+    switch (kind) {
+      case 0: case 1: case 2:   /* on the line pq (rounded), then a few ulps off */
+        r = tgeom_pt(p.x + s * (q.x - p.x), p.y + s * (q.y - p.y));
+        if (fabs(r.x) > 1e30 || fabs(r.y) > 1e30) continue;
+        r = tgeom_pt(tgeom_nudge(r.x, (int)(testutil_next(&g) % 7) - 3),
+                     tgeom_nudge(r.y, (int)(testutil_next(&g) % 7) - 3));
+        break;
+      case 3:   /* a needle: r a few ulps from p */
+        r = tgeom_pt(tgeom_nudge(p.x, (int)(testutil_next(&g) % 9) - 4),
+                     tgeom_nudge(p.y, (int)(testutil_next(&g) % 9) - 4));
+        break;
+      case 4:   /* a lattice line: exactly collinear often */
+        r = tgeom_pt(2 * q.x - p.x, 2 * q.y - p.y);
+        if (fabs(r.x) > 1e30 || fabs(r.y) > 1e30) continue;
+        if (testutil_next(&g) % 2) r.y = tgeom_nudge(r.y, 1);
+        break;
+      default:   /* anything, magnitudes 2^-99 .. 2^100 mixed */
+        r = tgeom_pt(tgeom_contract_coord(&g, -99, 200), tgeom_contract_coord(&g, -99, 200));
+        break;
+    }
+    double want = tgeom_twice_area_gmp(p, q, r), got = geom_twice_area_exact(p, q, r);
+    n++;
+    zeros += want == 0;
+    if (memcmp(&got, &want, sizeof got) != 0 && wrong++ < 5)
+      print_error("twice area (%a,%a) (%a,%a) (%a,%a): got %a, exact %a\n", p.x, p.y, q.x, q.y,
+                  r.x, r.y, got, want);
+  }
+  print_message("twice area: %d of %d differ from GMP (%d exactly collinear)\n", wrong, n, zeros);
+  assert_int_equal(wrong, 0);
+  assert_true(zeros > 1000);
+  /* beyond [2^-200, 2^200] (the GMP path) and at its edges */
+  const geom_point far[][3] = {
+    {{0, 0}, {0x1p-300, 0x1p-301}, {0x1p-299, 0x1p-300}},
+    {{0x1p300, 1}, {-0x1p300, 3}, {0x1p299, 0x1p-250}},
+    {{0x1p-200, 0x1p200}, {0x1p200, -0x1p-200}, {3 * 0x1p-200, 0x1p199}},
+    {{0x1.fffffffffffffp199, 1}, {-0x1p200, 0x1p-200}, {0x1p-200, 0x1.fffffffffffffp199}},
+  };
+  for (size_t k = 0; k < sizeof far / sizeof far[0]; k++) {
+    double want = tgeom_twice_area_gmp(far[k][0], far[k][1], far[k][2]);
+    double got = geom_twice_area_exact(far[k][0], far[k][1], far[k][2]);
+    assert_memory_equal(&got, &want, sizeof got);
+  }
+}
+
 /* ---- small helpers and polygon validation ---- */
 
 static void test_dist_finite(void **state) {
@@ -591,6 +687,7 @@ int main(void) {
     cmocka_unit_test(test_predicates_contract),
     cmocka_unit_test(test_predicates_random),
     cmocka_unit_test(test_predicates_extreme),
+    cmocka_unit_test(test_twice_area_exact),
     cmocka_unit_test(test_dist_finite),
     cmocka_unit_test(test_polygon_check),
   };
