@@ -127,6 +127,41 @@ void measure_names(char *buf, size_t len) {
   }
 }
 
+/* ---- lower bounds without atan2 (measure.h) ---------------------------- */
+
+/* sigma = sqrt(sum (x - pi/3)^2 / 3) over the three angles: each term is
+** at least the squared distance from pi/3 to the angle's enclosure, less
+** 1e-15 for the rounding of M_PI / 3; the value as measure_eval computes
+** it is within 8 eps (relative) of the exact formula on its angles, and so
+** is the bound here of its own exact value, hence the factor 1 - 2^-40. */
+static double measure_sigma_bound(const double lo[3], const double hi[3]) {
+  double s = 0;
+  for (int i = 0; i < 3; i++) {
+    double d = lo[i] > M_PI / 3 ? lo[i] - M_PI / 3 : hi[i] < M_PI / 3 ? M_PI / 3 - hi[i] : 0;
+    d = d > 1e-15 ? d - 1e-15 : 0;
+    s += d * d;
+  }
+  return sqrt(s / 3.0) * (1 - 0x1p-40);
+}
+
+double measure_lower_bound(int id, geom_point p, geom_point q, geom_point r) {
+  double lo[3], hi[3];
+  geom_angle_which w = id == MEASURE_NEG_ALPHA ? GEOM_ANGLE_SMALLEST
+                     : id == MEASURE_GAMMA ? GEOM_ANGLE_LARGEST : GEOM_ANGLES_ALL;
+  if (!measure_has_lower_bound(id) || !geom_angle_bounds(p, q, r, w, lo, hi)) return -INFINITY;
+  switch (id) {
+    case MEASURE_NEG_ALPHA: return -geom_min3(hi[0], hi[1], hi[2]);
+    case MEASURE_BETA: return fmax(0.0, geom_mid3(lo[0], lo[1], lo[2]));
+    case MEASURE_GAMMA: return geom_max3(lo[0], lo[1], lo[2]);
+    default: return measure_sigma_bound(lo, hi);
+  }
+}
+
+int measure_has_lower_bound(int id) {
+  return id == MEASURE_NEG_ALPHA || id == MEASURE_BETA || id == MEASURE_GAMMA ||
+         id == MEASURE_SIGMA;
+}
+
 int measure_needs_angles(int id) {
   return id >= MEASURE_BUILTIN_COUNT || id == MEASURE_NEG_ALPHA || id == MEASURE_BETA ||
          id == MEASURE_GAMMA || id == MEASURE_SIGMA;

@@ -68,6 +68,15 @@ void measure_eval_all(const geom_tri *t, double *out);
 ** be given geom_tri_make_noangles (tests/test_lot.c checks the list). */
 int measure_needs_angles(int id);
 
+/* A cheap lower bound on measure_eval(id, t) for t made by geom_tri_make
+** from p, q, r (that very double is >= the bound), or -INFINITY where there
+** is none: the angle measures (-alpha, beta, gamma, sigma) from
+** geom_angle_bounds, without atan2; -INFINITY for the other measures
+** (measure_has_lower_bound) and for flat triangles.  For filters that
+** decide without evaluating (lot/lot.c). */
+double measure_lower_bound(int id, geom_point p, geom_point q, geom_point r);
+int measure_has_lower_bound(int id);
+
 /* Write a comma-separated list of all measure names into buf. */
 void measure_names(char *buf, size_t len);
 

@@ -12,23 +12,6 @@ static void geom_swap(geom_point *p, geom_point *q) {
   *q = t;
 }
 
-/* Plain comparisons rather than fmin/fmax: the inputs are never NaN here
-** and the comparisons compile to branch-free minsd/maxsd. */
-static double geom_min3(double a, double b, double c) {
-  double m = a < b ? a : b;
-  return m < c ? m : c;
-}
-
-static double geom_max3(double a, double b, double c) {
-  double m = a > b ? a : b;
-  return m > c ? m : c;
-}
-
-static double geom_mid3(double a, double b, double c) {
-  double lo = a < b ? a : b, hi = a > b ? a : b;
-  return c < lo ? lo : c > hi ? hi : c;
-}
-
 /* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
 ** accurate for tiny and for near-straight angles alike (acos of the law of
 ** cosines loses half the digits there).  twice_area = |u x w| is passed in
@@ -130,6 +113,73 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
 
 void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   geom_tri_fill(t, p, q, r, 0);
+}
+
+/* ---- cheap enclosures of the angles (geom.h) -----------------------------
+**
+** atan on [0, 1] by Abramowitz and Stegun's 4.4.49 polynomial, whose error
+** is below 1.4e-8 (tests/test_geom.c measures it on a fine grid together
+** with its derivative bound); atan2 for y >= 0 by the usual reflections,
+** which add no error beyond the rounding of pi/2 - a and pi - a.
+**
+** Why GEOM_ANGLE_SLACK = 1e-6 covers every other difference between the
+** approximation here and the angle c_v that geom_tri_fill computes at the
+** same vertex v.  Let L = |u||w| (u, w the exact edge vectors at v); the
+** exact twice area T and dot product D satisfy T^2 + D^2 = L^2.  Both sides
+** work from a twice area within a relative 2^-40 of T (here: the same
+** filter as geom_twice_area's, else no enclosure; there: that filter or the
+** exact value) and a dot product within 4 eps L of D (rounded differences,
+** products and sum; |ux wx| + |uy wy| <= L), so each sees the point (D, T)
+** moved by under 2^-39 L, which turns its direction by under 2^-38.  libm's
+** atan2 adds a few ulps of pi, and the third angle pi - (c1 + c2) at most
+** the sum of two such errors and an ulp of pi: c_v is within 2^-35 of the
+** exact angle, the value here within 2^-37 + 1.4e-8 of it, and
+** 2^-35 + 2^-37 + 1.4e-8 + a few roundings of lo and hi < 1e-6. */
+#define GEOM_ANGLE_SLACK 1e-6
+
+static double geom_atan01(double z) {
+  double z2 = z * z;
+  double s = ((((0.0028662257 * z2 - 0.0161657367) * z2 + 0.0429096138) * z2 - 0.0752896400) * z2
+              + 0.1065626393) * z2 - 0.1420889944;
+  s = ((s * z2 + 0.1999355085) * z2 - 0.3333314528) * z2 + 1.0;
+  return z * s;
+}
+
+static double geom_atan2_approx(double y, double x) {   /* y > 0 */
+  double ax = fabs(x);
+  double a = y <= ax ? geom_atan01(y / ax) : M_PI_2 - geom_atan01(ax / y);
+  return x < 0 ? M_PI - a : a;
+}
+
+int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
+                      double lo[3], double hi[3]) {
+  double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
+  double cbx = r.x - q.x, cby = r.y - q.y;
+  double l = bax * cay, rr = bay * cax;
+  double twice = fabs(l - rr), perm = fabs(l) + fabs(rr);
+  /* geom_twice_area_inline's filter: a relative error below 2^-40 */
+  if (!(twice > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900))
+    return 0;
+  double dot[3] = {bax * cax + bay * cay,        /* at p: to q and to r */
+                   -(bax * cbx + bay * cby),     /* at q: to p and to r */
+                   cax * cbx + cay * cby};       /* at r: to p and to q */
+  int only = -1;   /* the one vertex to enclose, or all three */
+  if (which != GEOM_ANGLES_ALL) {
+    double s0 = cbx * cbx + cby * cby, s1 = cax * cax + cay * cay, s2 = bax * bax + bay * bay;
+    only = which == GEOM_ANGLE_SMALLEST ? (s0 <= s1 ? (s0 <= s2 ? 0 : 2) : (s1 <= s2 ? 1 : 2))
+                                        : (s0 >= s1 ? (s0 >= s2 ? 0 : 2) : (s1 >= s2 ? 1 : 2));
+  }
+  for (int i = 0; i < 3; i++) {
+    if (only >= 0 && i != only) {   /* every computed angle lies in [0, pi] */
+      lo[i] = 0;
+      hi[i] = 4;
+      continue;
+    }
+    double a = geom_atan2_approx(twice, dot[i]);
+    lo[i] = a - GEOM_ANGLE_SLACK;
+    hi[i] = a + GEOM_ANGLE_SLACK;
+  }
+  return 1;
 }
 
 double geom_dist(geom_point p, geom_point q) {

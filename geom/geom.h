@@ -35,6 +35,40 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r);
 ** (measure_needs_angles) on hot paths. */
 void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r);
 
+/* Smallest, largest and median of three non-NaN values: plain comparisons
+** rather than fmin/fmax, which compile to branch-free minsd/maxsd. */
+static inline double geom_min3(double a, double b, double c) {
+  double m = a < b ? a : b;
+  return m < c ? m : c;
+}
+
+static inline double geom_max3(double a, double b, double c) {
+  double m = a > b ? a : b;
+  return m > c ? m : c;
+}
+
+static inline double geom_mid3(double a, double b, double c) {
+  double lo = a < b ? a : b, hi = a > b ? a : b;
+  return c < lo ? lo : c > hi ? hi : c;
+}
+
+/* Cheap enclosures of the angles geom_tri_make computes, without atan2:
+** lo[i] <= (the angle it computes at vertex i of p, q, r) <= hi[i], the
+** enclosures about 2e-6 wide.  Since min, median and max are monotone in
+** each argument, the order statistics of lo and hi enclose alpha, beta and
+** gamma.  Returns 0 (lo, hi unset) for a triangle so flat that its area
+** needs geom_twice_area's exact path.  For filters that skip geom_tri_make
+** when a decision cannot depend on the exact values (lot/lot.c).
+** GEOM_ANGLE_SMALLEST and GEOM_ANGLE_LARGEST enclose only the angle opposite
+** the shortest or the longest side (as far as rounded squared lengths
+** tell) and give the others the trivial [0, 4]: still enclosures, enough
+** to bound alpha from above or gamma from below, at a third of the cost. */
+typedef enum geom_angle_which {
+  GEOM_ANGLES_ALL, GEOM_ANGLE_SMALLEST, GEOM_ANGLE_LARGEST
+} geom_angle_which;
+int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
+                      double lo[3], double hi[3]);
+
 /* The lexicographic order of points (by x, then y): a triangle's canonical
 ** vertex order, the samplers' collinear tie-break, the plugin rotation. */
 static inline int geom_lexless(geom_point a, geom_point b) {

@@ -381,6 +381,124 @@ static void test_random_independent(void **state) {
   }
 }
 
+/* ---- measure_lower_bound: the LOT filter's bounds ---- */
+
+/* A point inside the contract: x clamped to [1e-30, 1e30] in magnitude. */
+static double tmeas_clamp(double x) {
+  double m = fabs(x);
+  return m == 0 ? 0 : m < 1e-30 ? copysign(1e-30, x) : m > 1e30 ? copysign(1e30, x) : x;
+}
+
+/* One triangle of the stress set: kind 0 uniform, 1 a needle (one side
+** 1e-9 of the others), 2 flat (apex 1e-9 off a side, also outside it),
+** 3 nearly equilateral, 4 nearly isosceles with a right angle, 5 flat to a
+** few ulps; then scaled by 2^-95 .. 2^95 and shifted. */
+static void tmeas_stress_tri(testutil_rng *g, int kind, geom_point v[3]) {
+  double u[6];
+  for (int i = 0; i < 6; i++) u[i] = testutil_uniform(g);
+  switch (kind) {
+    case 0:
+      for (int i = 0; i < 3; i++) v[i] = (geom_point){u[2 * i], u[2 * i + 1]};
+      break;
+    case 1:
+      v[0] = (geom_point){u[0], u[1]};
+      v[1] = (geom_point){u[0] + 1e-9 * (u[2] - 0.5), u[1] + 1e-9 * (u[3] - 0.5)};
+      v[2] = (geom_point){u[4], u[5]};
+      break;
+    case 2: case 5: {
+      double t = 3 * u[2] - 1, off = kind == 2 ? 1e-9 * (u[3] - 0.5) : 0;
+      v[0] = (geom_point){u[0], u[1]};
+      v[1] = (geom_point){u[4], u[5]};
+      v[2] = (geom_point){u[0] + t * (u[4] - u[0]) - off * (u[5] - u[1]),
+                          u[1] + t * (u[5] - u[1]) + off * (u[4] - u[0])};
+      if (kind == 5) v[2].y = nextafter(nextafter(v[2].y, 2), 2);
+      break;
+    }
+    case 3: {
+      double e = 1e-7 * (u[0] - 0.5);
+      v[0] = (geom_point){0, 0};
+      v[1] = (geom_point){1, e};
+      v[2] = (geom_point){0.5 + e * u[1], sqrt(0.75) - e * u[2]};
+      break;
+    }
+    default:
+      v[0] = (geom_point){0, 0};
+      v[1] = (geom_point){1, 0};
+      v[2] = (geom_point){1e-9 * (u[0] - 0.5), 1 + 1e-9 * (u[1] - 0.5)};
+      break;
+  }
+  double scale = ldexp(1.0, (int)(testutil_next(g) % 191) - 95), sx = 2 * u[3] - 1, sy = 2 * u[4] - 1;
+  for (int i = 0; i < 3; i++)
+    v[i] = (geom_point){tmeas_clamp(scale * (v[i].x + sx)), tmeas_clamp(scale * (v[i].y + sy))};
+}
+
+/* For the four angle measures, measure_lower_bound is at most the very
+** double measure_eval gives (in every vertex order) and, where it exists,
+** within 1e-5 of it; -inf only for triangles whose area needs the exact
+** path.  The other measures have no bound. */
+static void test_lower_bounds(void **state) {
+  (void)state;
+  static const int ids[] = {MEASURE_NEG_ALPHA, MEASURE_BETA, MEASURE_GAMMA, MEASURE_SIGMA};
+  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  testutil_rng g = {777};
+  long checked = 0, none = 0, bad = 0;
+  for (int it = 0; it < 120000; it++) {
+    geom_point v[3];
+    tmeas_stress_tri(&g, it % 6, v);
+    if (geom_orient(v[0], v[1], v[2]) == 0) continue;
+    geom_tri t;
+    geom_tri_make(&t, v[0], v[1], v[2]);
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
+      double x = measure_eval(ids[k], &t);
+      for (int o = 0; o < 6; o++) {
+        double lb = measure_lower_bound(ids[k], v[perm[o][0]], v[perm[o][1]], v[perm[o][2]]);
+        checked++;
+        if (lb == -INFINITY) {
+          none++;
+          continue;
+        }
+        if (!(lb <= x && lb > x - 1e-5) && bad++ < 5)
+          print_error("%s of (%a,%a) (%a,%a) (%a,%a): bound %.17g, value %.17g\n",
+                      measure_get(ids[k])->name, v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y,
+                      lb, x);
+      }
+    }
+  }
+  print_message("lower bounds: %ld checked, %ld without a bound (flat), %ld wrong\n", checked,
+                none, bad);
+  assert_int_equal(bad, 0);
+  assert_true(none > 0 && none < checked / 2);
+  geom_point a = {0, 0}, b = {1, 0}, c = {0, 1};
+  for (int id = 0; id < measure_count(); id++)
+    if (!measure_has_lower_bound(id)) assert_true(measure_lower_bound(id, a, b, c) == -INFINITY);
+}
+
+/* A dense sweep of one angle through (0, pi) at several scales: the
+** enclosures of geom_angle_bounds hold the angles geom_tri_make computes
+** (this probes the atan polynomial on a fine grid of arguments). */
+static void test_angle_bounds_sweep(void **state) {
+  (void)state;
+  long wrong = 0, n = 0;
+  for (int s = -90; s <= 90; s += 30)
+    for (int i = 1; i < 200000; i++) {
+      double th = M_PI * i / 200000.0, sc = ldexp(1.0, s);
+      geom_point v[3] = {{0, 0}, {sc, 0}, {0.75 * sc * cos(th), 0.75 * sc * sin(th)}};
+      double lo[3], hi[3];
+      if (!geom_angle_bounds(v[0], v[1], v[2], GEOM_ANGLES_ALL, lo, hi)) continue;
+      geom_tri t;
+      geom_tri_make(&t, v[0], v[1], v[2]);
+      n++;
+      if (!(geom_min3(lo[0], lo[1], lo[2]) <= t.alpha && t.alpha <= geom_min3(hi[0], hi[1], hi[2])
+            && geom_mid3(lo[0], lo[1], lo[2]) <= t.beta && t.beta <= geom_mid3(hi[0], hi[1], hi[2])
+            && geom_max3(lo[0], lo[1], lo[2]) <= t.gamma && t.gamma <= geom_max3(hi[0], hi[1], hi[2]))
+          && wrong++ < 5)
+        print_error("angle %.17g at scale 2^%d: not enclosed\n", th, s);
+    }
+  print_message("angle sweep: %ld triangles, %ld not enclosed\n", n, wrong);
+  assert_int_equal(wrong, 0);
+  assert_true(n > 1000000);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_registry),
@@ -392,6 +510,8 @@ int main(void) {
     cmocka_unit_test(test_rotated_345),
     cmocka_unit_test(test_rinf_appendix_c),
     cmocka_unit_test(test_random_independent),
+    cmocka_unit_test(test_lower_bounds),
+    cmocka_unit_test(test_angle_bounds_sweep),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
