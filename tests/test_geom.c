@@ -510,7 +510,7 @@ static double tgeom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
 
 /* A coordinate of the contract: 0 sometimes, else a random sign and
 ** binary exponent in [e0, e0 + span) (kept inside [1e-30, 1e30]). */
-static double tgeom_contract_coord(testutil_rng *g, int e0, int span) {
+static double tgeom_scaled_coord(testutil_rng *g, int e0, int span) {
   if (testutil_next(g) % 16 == 0) return 0;
   double x = ldexp(1 + testutil_uniform(g), e0 + (int)(testutil_next(g) % (uint64_t)span));
   if (x > 1e30) x = 1e30;
@@ -534,10 +534,10 @@ static void test_twice_area_exact(void **state) {
   testutil_rng g = {8080};
   int wrong = 0, n = 0, zeros = 0;
   for (int it = 0; it < 300000; it++) {
-    int kind = it % 6, e0 = -99 + (int)(testutil_next(&g) % 190);
+    int kind = it % 7, e0 = -99 + (int)(testutil_next(&g) % 190);
     int span = kind == 5 ? 200 : 1 + (int)(testutil_next(&g) % 8);
-    geom_point p = tgeom_pt(tgeom_contract_coord(&g, e0, span), tgeom_contract_coord(&g, e0, span));
-    geom_point q = tgeom_pt(tgeom_contract_coord(&g, e0, span), tgeom_contract_coord(&g, e0, span));
+    geom_point p = tgeom_pt(tgeom_scaled_coord(&g, e0, span), tgeom_scaled_coord(&g, e0, span));
+    geom_point q = tgeom_pt(tgeom_scaled_coord(&g, e0, span), tgeom_scaled_coord(&g, e0, span));
     geom_point r;
     double s = testutil_uniform(&g) * (kind == 1 ? 1e-12 : kind == 2 ? 3 : 1);
     switch (kind) {
@@ -556,8 +556,13 @@ static void test_twice_area_exact(void **state) {
         if (fabs(r.x) > 1e30 || fabs(r.y) > 1e30) continue;
         if (testutil_next(&g) % 2) r.y = tgeom_nudge(r.y, 1);
         break;
+      case 6:   /* the contract's edges: 0, 1e-30 and 1e30 a few ulps inwards */
+        p = tgeom_pt(tgeom_contract_coord(&g), tgeom_contract_coord(&g));
+        q = tgeom_pt(tgeom_contract_coord(&g), tgeom_contract_coord(&g));
+        r = tgeom_pt(tgeom_contract_coord(&g), tgeom_contract_coord(&g));
+        break;
       default:   /* anything, magnitudes 2^-99 .. 2^100 mixed */
-        r = tgeom_pt(tgeom_contract_coord(&g, -99, 200), tgeom_contract_coord(&g, -99, 200));
+        r = tgeom_pt(tgeom_scaled_coord(&g, -99, 200), tgeom_scaled_coord(&g, -99, 200));
         break;
     }
     double want = tgeom_twice_area_gmp(p, q, r), got = geom_twice_area_exact(p, q, r);
