@@ -39,7 +39,8 @@ static void quadvec_lane(joint_id j, const quadvec_batch *b, int s) {
     const int *o = b->qoff[q];
     int c = joint_compare(j, sign, b->val[o[0] + s], b->val[o[1] + s], b->val[o[2] + s],
                           b->val[o[3] + s], b->tie_eps);
-    code += c < 0 ? 0 : c > 0 ? b->bd_weight[q] : b->tie_weight[q];
+    if (b->bd_weight == NULL) code |= (unsigned long long)(c > 0) << q;
+    else code += c < 0 ? 0 : c > 0 ? b->bd_weight[q] : b->tie_weight[q];
     tie |= c == 0;
   }
   b->code[j * st + s] = code;
@@ -84,7 +85,8 @@ static void quadvec_joint_scalar(joint_id j, const quadvec_batch *b) {
       int tie = fa == fb || isnan(fa) || isnan(fb)
              || (!isinf(fa) && !isinf(fb) && fabs(fa - fb) <= b->tie_eps * big);
       int ac = (fa < fb) != neg;
-      code += tie ? b->tie_weight[q] : ac ? 0 : b->bd_weight[q];
+      if (b->bd_weight == NULL) code |= (unsigned long long)!ac << q;
+      else code += tie ? b->tie_weight[q] : ac ? 0 : b->bd_weight[q];
       tieacc |= tie;
     }
     b->code[j * st + s] = code;

@@ -35,8 +35,10 @@
 ** For each used joint j, slot s and quadrilateral q decided d (AC, BD or a
 ** tie), code[j][s] is the sum over q of bd_weight[q] (d = BD) or
 ** tie_weight[q] (tie), and tie[j][s] is non-zero iff some q is a tie.
-** Pentagons take bd_weight 3^q and tie_weight 2 * 3^q (the decision code);
-** the census 2^q and 0 (the BD bits; q < 64). */
+** Pentagons take bd_weight 3^q and tie_weight 2 * 3^q (the decision code).
+** Both NULL ask for BD bits (bit q set where q is decided BD; q < 64) and
+** leave code[j][s] unspecified where tie[j][s] is set: the census, which
+** counts a rule with a tie as a tie whatever its other decisions. */
 typedef struct quadvec_batch {
   int nslots, stride, ntris, nquads;
   const int (*qoff)[4];             /* row * stride of ABC, ACD (diagonal AC), ABD, BCD (BD) */
@@ -99,7 +101,8 @@ void quadvec_use_scalar(int on);
 **    returns the other argument exactly when one harmonic argument is +inf;
 **    1/(1/y) need not be y, so such slots go to rewrite 5's fallback.)
 ** 3. joint_compare_values inlined: fmax(|ac|, |bd|) is a plain maximum once
-**    NaN has been sent to a tie; isinf(v) is |v| == inf.
+**    NaN has been sent to a tie; isinf(v) is |v| == inf, and "neither is
+**    infinite" is "their larger magnitude is not".
 ** 4. A filter saves the final division (harmonic, f = 1/s) or square root
 **    (l_2, f = sqrt(s)) of the sums s_AC, s_BD when their order alone
 **    decides.  Let u = 2^-53, 0 <= tie_eps <= 1/8, K = 4 tie_eps + 2^-45,
@@ -236,6 +239,7 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
     if (!finite_p) negm = (quadvec_vi){0};
     quadvec_vu code = {0};
     quadvec_vi tieacc = {0};
+    quadvec_vu bit = code + 1;   /* bits mode: 2^q */
     for (int q = 0; q < b->nquads; q++) {
       const int *o = b->qoff[q];
       quadvec_vi tie, lt;
@@ -245,13 +249,20 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
         quadvec_vc(j, &src[o[2] + s], &src[o[3] + s], &fb);
         quadvec_vd aa = QUADVEC_VABS(fa), ab = QUADVEC_VABS(fb);
         quadvec_vd big = QUADVEC_VSEL(aa > ab, aa, ab);
+        /* big != inf is |fa| != inf && |fb| != inf on lanes without NaN
+        ** (a NaN lane is a tie anyway). */
         tie = (fa == fb) | (fa != fa) | (fb != fb)
-            | ((aa != INFINITY) & (ab != INFINITY) & (QUADVEC_VABS(fa - fb) <= eps * big));
+            | ((big != INFINITY) & (QUADVEC_VABS(fa - fb) <= eps * big));
         lt = fa < fb;
       }
       quadvec_vi ac = lt ^ negm;
-      long long bw = (long long)b->bd_weight[q], tw = (long long)b->tie_weight[q];
-      code += (quadvec_vu)((tie & tw) | (~tie & ~ac & bw));
+      if (b->bd_weight == NULL) {
+        code |= (quadvec_vu)~ac & bit;
+        bit += bit;
+      } else {
+        long long bw = (long long)b->bd_weight[q], tw = (long long)b->tie_weight[q];
+        code += (quadvec_vu)((tie & tw) | (~tie & ~ac & bw));
+      }
       tieacc |= tie;
     }
     memcpy(&b->code[j * st + s], &code, sizeof code);

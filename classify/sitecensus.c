@@ -93,14 +93,6 @@ typedef struct siteflip_cwork {
   size_t nodecap;
 } siteflip_cwork;
 
-/* Census weights of quadvec: bit q for BD, nothing for a tie (the tie flag
-** says it). */
-#define SITEFLIP_W4(q) 1ull << (q), 1ull << ((q) + 1), 1ull << ((q) + 2), 1ull << ((q) + 3)
-#define SITEFLIP_W16(q) SITEFLIP_W4(q), SITEFLIP_W4((q) + 4), SITEFLIP_W4((q) + 8), SITEFLIP_W4((q) + 12)
-static const unsigned long long siteflip_bd_weight[QUADVEC_MAX_QUADS] = {
-  SITEFLIP_W16(0), SITEFLIP_W16(16), SITEFLIP_W16(32), SITEFLIP_W16(48)};
-static const unsigned long long siteflip_tie_weight[QUADVEC_MAX_QUADS];
-
 /* 0, -1 for a rule the plan cannot hold, -2 when memory ran out. */
 static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
   memset(pl, 0, sizeof *pl);
@@ -277,7 +269,7 @@ __attribute__((target_clones("avx2", "default")))
 static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
                               siteflip_cwork *w) {
   const quadvec_batch b = {pl->nslots, pl->nv, g->ntris, g->nquads, (const int (*)[4])w->qoff,
-                           siteflip_bd_weight, siteflip_tie_weight, pl->slot_sign, pl->eps,
+                           NULL, NULL, pl->slot_sign, pl->eps,
                            pl->joint_used, w->val, w->mag, w->h, w->flags, w->bits, w->tie};
   quadvec_run(&b);
 }
