@@ -57,6 +57,7 @@ typedef struct siteflip_crule {
   int quad;              /* whole-quadrilateral rule */
   int dt;                /* the DT rule */
   int slot;
+  int bit;               /* joint * nv + slot: the rule's entry of bits and tie */
   joint_id joint;
   int msign;             /* the measure's sign */
   joint_keyop keyop;     /* how keys of triangles combine */
@@ -128,6 +129,7 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
     c->key0 = joint_key_identity(r->joint);
   }
   pl->nv = QUADVEC_PAD(pl->nslots);
+  for (int i = 0; i < nrules; i++) pl->cr[i].bit = pl->cr[i].joint * pl->nv + pl->cr[i].slot;
   /* measure_eval_all when it is cheaper than calls: many slots, and no
   ** unused user measure (maybe a slow formula) would run. */
   pl->eval_all = pl->nslots > 4;
@@ -369,8 +371,8 @@ static int siteflip_rule_bits(const siteflip_cplan *pl, siteflip_cwork *w,
                               const siteflip_graph *g, int i, uint64_t *bits) {
   const siteflip_crule *cr = &pl->cr[i];
   if (g->nquads <= 64 && !cr->quad) {
-    *bits = w->bits[cr->joint * pl->nv + cr->slot];
-    return w->tie[cr->joint * pl->nv + cr->slot] != 0;
+    *bits = w->bits[cr->bit];
+    return w->tie[cr->bit] != 0;
   }
   *bits = 0;
   return siteflip_decide(pl, i, g, w->val, w->dtdec, w->dec, bits);
@@ -418,9 +420,18 @@ static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const si
   if (!masks) return;
   siteflip_sink_masks(w, g->nnodes, pl->nrules);
   for (int i = 0; i < pl->nrules; i++) {
+    uint64_t m = w->smask[i];
     if (w->rtied[i]) continue;
+    if (m != 0 && (m & (m - 1)) == 0) {   /* one sink: the common case */
+      siteflip_counts *c = &out[i];
+      c->sinks++;
+      c->max_sinks |= c->max_sinks == 0;
+      c->one_sink++;
+      c->sink_dt += siteflip_ctz(m) == g->delaunay;
+      continue;
+    }
     int ns = 0;
-    for (uint64_t m = w->smask[i]; m != 0; m &= m - 1) w->sinks[ns++] = siteflip_ctz(m);
+    for (; m != 0; m &= m - 1) w->sinks[ns++] = siteflip_ctz(m);
     siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
 }
