@@ -207,9 +207,17 @@ QUADVEC_INLINE int quadvec_filter(joint_id j, const double *src, const int *o, d
   quadvec_vi eq = sa == sb;
   quadvec_vi sure = eq | ((hi <= 0x1p1000) & (lo >= 0x1p-1000)
                           & (QUADVEC_VABS(sa - sb) > k * hi));
+  /* All lanes sure: an AND across the four lanes by two swaps. */
+  _Static_assert(QUADVEC_LANES == 4, "the swaps below are written for four lanes");
+#if defined(__clang__) || __GNUC__ >= 12
+  sure &= __builtin_shufflevector(sure, sure, 2, 3, 0, 1);
+  sure &= __builtin_shufflevector(sure, sure, 1, 0, 3, 2);
+  if (sure[0] == 0) return 0;
+#else
   int all_sure = 1;
   for (int l = 0; l < QUADVEC_LANES; l++) all_sure &= sure[l] != 0;
   if (!all_sure) return 0;
+#endif
   /* f_AC < f_BD iff s_AC > s_BD (harmonic: 1/s decreases) or s_AC < s_BD (l_2). */
   *tie = eq;
   *lt = j == JOINT_HARMONIC ? sa > sb : sa < sb;
