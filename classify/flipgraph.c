@@ -266,7 +266,7 @@ static void flipgraph_work_init(flipgraph_work *w) {
 /* flipgraph_quad_tri as offsets into the rows of flipgraph_work. */
 #define FLIPGRAPH_OFF(a, b, c, d) \
   {(a) * FLIPGRAPH_SLOTS, (b) * FLIPGRAPH_SLOTS, (c) * FLIPGRAPH_SLOTS, (d) * FLIPGRAPH_SLOTS}
-static const int flipgraph_quad_off[5][4] = {FLIPGRAPH_QUADS(FLIPGRAPH_OFF)};
+static const ptrdiff_t flipgraph_quad_off[5][4] = {FLIPGRAPH_QUADS(FLIPGRAPH_OFF)};
 
 /* Codes of every (joint, slot) in use.  The batch's constants (five
 ** quadrilaterals, rows, weights) fold into the inlined loops. */

@@ -36,7 +36,7 @@ static void quadvec_lane(joint_id j, const quadvec_batch *b, int s) {
   unsigned long long code = 0;
   long long tie = 0;
   for (int q = 0; q < b->nquads; q++) {
-    const int *o = b->qoff[q];
+    const ptrdiff_t *o = b->qoff[q];
     int c = joint_compare(j, sign, b->val[o[0] + s], b->val[o[1] + s], b->val[o[2] + s],
                           b->val[o[3] + s], b->tie_eps);
     if (b->bd_weight == NULL) code |= (unsigned long long)(c > 0) << q;
@@ -64,7 +64,7 @@ static void quadvec_joint_scalar(joint_id j, const quadvec_batch *b) {
     long long tieacc = 0;
     int neg = finite_p && b->sign[s] < 0;
     for (int q = 0; q < b->nquads; q++) {
-      const int *o = b->qoff[q];
+      const ptrdiff_t *o = b->qoff[q];
       double a0 = src[o[0] + s], a1 = src[o[1] + s], b0 = src[o[2] + s], b1 = src[o[3] + s];
       double fa, fb;
       if (hj) {

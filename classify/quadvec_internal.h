@@ -12,6 +12,7 @@
 #define FLIPLAB_QUADVEC_INTERNAL_H
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 #include "fliplab_config.h"
 #if FLIPLAB_HAVE_SSE2
@@ -41,7 +42,7 @@
 ** counts a rule with a tie as a tie whatever its other decisions. */
 typedef struct quadvec_batch {
   int nslots, stride, ntris, nquads;
-  const int (*qoff)[4];             /* row * stride of ABC, ACD (diagonal AC), ABD, BCD (BD) */
+  const ptrdiff_t (*qoff)[4];       /* row * stride of ABC, ACD (diagonal AC), ABD, BCD (BD) */
   const unsigned long long *bd_weight, *tie_weight;   /* per quadrilateral */
   const double *sign;               /* per slot: -1.0 for measures <= 0, else 1.0 */
   double tie_eps;
@@ -195,7 +196,7 @@ QUADVEC_INLINE void quadvec_magnitudes_vector(const quadvec_batch *b) {
 
 /* Rewrite 4 on one quadrilateral: 1 (and *tie, *ac set) when every lane's
 ** sums decide, 0 to take the exact path. */
-QUADVEC_INLINE int quadvec_filter(joint_id j, const double *src, const int *o, double k,
+QUADVEC_INLINE int quadvec_filter(joint_id j, const double *src, const ptrdiff_t *o, double k,
                                   quadvec_vi *tie, quadvec_vi *lt) {
   quadvec_vd a0, a1, b0, b1;
   memcpy(&a0, &src[o[0]], sizeof a0);
@@ -249,12 +250,12 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
     quadvec_vi tieacc = {0};
     quadvec_vu bit = code + 1;   /* bits mode: 2^q */
     for (int q = 0; q < b->nquads; q++) {
-      const int *o = b->qoff[q];
+      const ptrdiff_t *o = b->qoff[q];
       quadvec_vi tie, lt;
       if (!(filter && quadvec_filter(j, src + s, o, k, &tie, &lt))) {
         quadvec_vd fa, fb;
-        quadvec_vc(j, &src[o[0] + s], &src[o[1] + s], &fa);
-        quadvec_vc(j, &src[o[2] + s], &src[o[3] + s], &fb);
+        quadvec_vc(j, &src[s + o[0]], &src[s + o[1]], &fa);
+        quadvec_vc(j, &src[s + o[2]], &src[s + o[3]], &fb);
         quadvec_vd aa = QUADVEC_VABS(fa), ab = QUADVEC_VABS(fb);
         quadvec_vd big = QUADVEC_VSEL(aa > ab, aa, ab);
         /* big != inf is |fa| != inf && |fb| != inf on lanes without NaN

@@ -82,7 +82,7 @@ typedef struct siteflip_cwork {
   long long flags[SITEFLIP_SLOTS];
   unsigned long long bits[JOINT_COUNT * SITEFLIP_SLOTS];  /* [joint][nv]: BD decisions by quadrilateral */
   long long tie[JOINT_COUNT * SITEFLIP_SLOTS];            /* [joint][nv]: non-zero: some tie */
-  int qoff[QUADVEC_MAX_QUADS][4];    /* quadrilaterals' triangle rows, times nv */
+  ptrdiff_t qoff[QUADVEC_MAX_QUADS][4];   /* quadrilaterals' triangle rows, times nv */
   rule_choice *dec, *dtdec;          /* one rule's decisions; DT's */
   size_t deccap, dtcap;
   uint64_t *qmask, *want;
@@ -210,7 +210,7 @@ static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g,
 static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g, int nv) {
   if (g->nquads > 64) return;
   for (int q = 0; q < g->nquads; q++)
-    for (int k = 0; k < 4; k++) w->qoff[q][k] = g->quad[q].tri[k] * nv;
+    for (int k = 0; k < 4; k++) w->qoff[q][k] = (ptrdiff_t)g->quad[q].tri[k] * nv;
   memset(w->qmask, 0, (size_t)g->nnodes * sizeof *w->qmask);
   memset(w->want, 0, (size_t)g->nnodes * sizeof *w->want);
   for (int e = 0; e < g->nedges; e++) {
@@ -270,7 +270,7 @@ __attribute__((target_clones("avx2", "default")))
 #endif
 static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
                               siteflip_cwork *w) {
-  const quadvec_batch b = {pl->nslots, pl->nv, g->ntris, g->nquads, (const int (*)[4])w->qoff,
+  const quadvec_batch b = {pl->nslots, pl->nv, g->ntris, g->nquads, (const ptrdiff_t (*)[4])w->qoff,
                            NULL, NULL, pl->slot_sign, pl->eps,
                            pl->joint_used, w->val, w->mag, w->h, w->flags, w->bits, w->tie};
   quadvec_run(&b);

@@ -27,7 +27,8 @@
 #define TQV_STRIDE 16
 
 typedef struct tqv_batch {
-  int qoff[TQV_QUADS][4], used[JOINT_COUNT];
+  ptrdiff_t qoff[TQV_QUADS][4];
+  int used[JOINT_COUNT];
   unsigned long long bw[TQV_QUADS], tw[TQV_QUADS], code[JOINT_COUNT * TQV_STRIDE];
   long long tie[JOINT_COUNT * TQV_STRIDE], flags[TQV_STRIDE];
   double sign[TQV_STRIDE], val[TQV_ROWS * TQV_STRIDE], mag[TQV_ROWS * TQV_STRIDE],
@@ -51,7 +52,7 @@ static double tqv_magnitude(testutil_rng *g, double prev) {
 /* Runs b through quadvec (engine `scalar`) and checks every used joint,
 ** slot and quadrilateral against joint_compare. */
 static void tqv_check(tqv_batch *t, int nslots, int ntris, int nquads, double eps, int scalar) {
-  const quadvec_batch b = {nslots, TQV_STRIDE, ntris, nquads, (const int (*)[4])t->qoff, t->bw,
+  const quadvec_batch b = {nslots, TQV_STRIDE, ntris, nquads, (const ptrdiff_t (*)[4])t->qoff, t->bw,
                            t->tw, t->sign, eps, t->used, t->val, t->mag, t->h, t->flags,
                            t->code, t->tie};
   quadvec_use_scalar(scalar);
@@ -62,7 +63,7 @@ static void tqv_check(tqv_batch *t, int nslots, int ntris, int nquads, double ep
       unsigned long long code = 0;
       int tied = 0;
       for (int q = 0; q < nquads; q++) {
-        const int *o = t->qoff[q];
+        const ptrdiff_t *o = t->qoff[q];
         int c = joint_compare((joint_id)j, t->sign[s] < 0 ? -1 : 1, t->val[o[0] + s],
                               t->val[o[1] + s], t->val[o[2] + s], t->val[o[3] + s], eps);
         code += c < 0 ? 0 : c > 0 ? t->bw[q] : t->tw[q];
@@ -79,7 +80,7 @@ static void tqv_check(tqv_batch *t, int nslots, int ntris, int nquads, double ep
 static void tqv_random(testutil_rng *g, tqv_batch *t, int nslots, int ntris, int nquads) {
   for (int j = 0; j < JOINT_COUNT; j++) t->used[j] = 1;
   for (int q = 0, w = 1; q < nquads; q++, w *= 3) {
-    for (int k = 0; k < 4; k++) t->qoff[q][k] = (int)(testutil_next(g) % (uint64_t)ntris) * TQV_STRIDE;
+    for (int k = 0; k < 4; k++) t->qoff[q][k] = (ptrdiff_t)(testutil_next(g) % (uint64_t)ntris) * TQV_STRIDE;
     t->bw[q] = (unsigned long long)w;
     t->tw[q] = 2 * (unsigned long long)w;
   }
