@@ -162,7 +162,20 @@ int measure_has_lower_bound(int id) {
          id == MEASURE_SIGMA;
 }
 
-int measure_needs_angles(int id) {
-  return id >= MEASURE_BUILTIN_COUNT || id == MEASURE_NEG_ALPHA || id == MEASURE_BETA ||
-         id == MEASURE_GAMMA || id == MEASURE_SIGMA;
+/* The geom_tri fields each built-in measure's expression reads. */
+static const unsigned measure_builtin_fields[MEASURE_BUILTIN_COUNT] = {
+  [MEASURE_NEG_ALPHA] = GEOM_F_ANGLES, [MEASURE_BETA] = GEOM_F_ANGLES,
+  [MEASURE_GAMMA] = GEOM_F_ANGLES, [MEASURE_A] = GEOM_F_SIDES, [MEASURE_NEG_C] = GEOM_F_SIDES,
+  [MEASURE_P] = GEOM_F_PERIM, [MEASURE_ABC] = GEOM_F_SIDES, [MEASURE_NEG_AREA] = GEOM_F_AREA,
+  [MEASURE_R] = GEOM_F_RADII, [MEASURE_NEG_R] = GEOM_F_RADII, [MEASURE_NEG_H] = GEOM_F_RADII,
+  [MEASURE_NEG_R_OVER_R] = GEOM_F_RADII, [MEASURE_NEG_R2_OVER_A] = GEOM_F_AREA | GEOM_F_PERIM,
+  [MEASURE_NEG_C_OVER_A] = GEOM_F_SIDES, [MEASURE_NEG_C_OVER_P] = GEOM_F_SIDES | GEOM_F_PERIM,
+  [MEASURE_A_MINUS_C] = GEOM_F_SIDES, [MEASURE_B_OVER_C_MINUS_A] = GEOM_F_SIDES,
+  [MEASURE_LAMBDA] = GEOM_F_SIDES | GEOM_F_AREA, [MEASURE_D] = GEOM_F_SIDES | GEOM_F_RADII,
+  [MEASURE_SIGMA] = GEOM_F_ANGLES, [MEASURE_PINF] = GEOM_F_RANGES,
+  [MEASURE_RINF] = GEOM_F_RANGES, [MEASURE_NEG_RINF] = GEOM_F_AREA | GEOM_F_RANGES,
+};
+
+unsigned measure_fields(int id) {
+  return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_fields[id] : GEOM_F_ALL;
 }

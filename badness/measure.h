@@ -63,10 +63,11 @@ static inline double measure_eval(int id, const geom_tri *t) {
 ** built-ins are evaluated inline, without a call each (hot paths). */
 void measure_eval_all(const geom_tri *t, double *out);
 
-/* Whether measure id reads a triangle's angles (alpha, beta, gamma): the
-** four angle measures and every user measure (which may); the others can
-** be given geom_tri_make_noangles (tests/test_lot.c checks the list). */
-int measure_needs_angles(int id);
+/* The geom_tri fields measure id reads (an OR of GEOM_F_*; GEOM_F_ALL for
+** a user measure, which may read any): geom_tri_make_fields with them
+** gives the value measure_eval gives on geom_tri_make's triangle, bit for
+** bit (tests/test_lot.c checks the table both ways). */
+unsigned measure_fields(int id);
 
 /* A cheap lower bound on measure_eval(id, t) for t made by geom_tri_make
 ** from p, q, r (that very double is >= the bound), or -INFINITY where there

@@ -49,70 +49,87 @@ double geom_twice_area(geom_point p, geom_point q, geom_point r) {
   return geom_twice_area_inline(p, q, r);
 }
 
+/* The three angles from the sides (opposite v0, v1, v2) and twice the area.
+** The two angles opposite the two shorter sides come from atan2, which
+** keeps its relative accuracy for tiny angles (a needle has two); the
+** largest angle, at least pi/3, is pi minus their sum to within an ulp or
+** two of pi, which is a relative error of 1e-16 for it. */
+static void geom_tri_angles(geom_tri *t, const double side[3], double twice) {
+  int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
+  int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
+  double ang[3];
+  ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
+  ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
+  ang[big] = M_PI - (ang[i1] + ang[i2]);
+  /* The two longest sides can round to the same double while their
+  ** opposite angles are pi - 5e-20 and 5e-20 (a flat triangle with one
+  ** very short side; found by fuzz/fuzz_quad_dt): then "big" may name the
+  ** tiny angle, and pi minus the others leaves 0 or less.  The largest
+  ** angle is at least pi/3 > 1, so a value below 1 means the guess was
+  ** wrong: compute that angle by atan2 as well. */
+  if (ang[big] < 1.0) ang[big] = geom_angle(t->v[big], t->v[i1], t->v[i2], twice);
+  /* Sorting the angle values themselves (not pairing them with sorted
+  ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
+  t->alpha = geom_min3(ang[0], ang[1], ang[2]);
+  t->beta = geom_mid3(ang[0], ang[1], ang[2]);
+  t->gamma = geom_max3(ang[0], ang[1], ang[2]);
+}
+
 /* Everything below is computed from the canonically ordered vertices
 ** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
-** the caller listed them in. */
-/* geom_tri_make with or without the angles (two atan2, most of the cost). */
-static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r, int angles) {
+** the caller listed them in.  Each field is computed by the same
+** operations whatever else is asked for, so it has the same bits; the
+** fields not asked for are NaN. */
+static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r, unsigned f) {
   if (geom_lexless(q, p)) geom_swap(&p, &q);
   if (geom_lexless(r, q)) geom_swap(&q, &r);
   if (geom_lexless(q, p)) geom_swap(&p, &q);
   t->v[0] = p;
   t->v[1] = q;
   t->v[2] = r;
+  t->a = t->b = t->c = t->alpha = t->beta = t->gamma = t->area = NAN;
+  t->P = t->R = t->r = t->h = t->rx = t->ry = NAN;
 
-  double e01x = q.x - p.x, e01y = q.y - p.y;
-  double e02x = r.x - p.x, e02y = r.y - p.y;
-  double e12x = r.x - q.x, e12y = r.y - q.y;
-  double twice = geom_twice_area_inline(p, q, r);
-  double side[3] = {sqrt(e12x * e12x + e12y * e12y),   /* opposite v0 */
-                    sqrt(e02x * e02x + e02y * e02y),   /* opposite v1 */
-                    sqrt(e01x * e01x + e01y * e01y)};  /* opposite v2 */
-  t->a = geom_max3(side[0], side[1], side[2]);
-  t->b = geom_mid3(side[0], side[1], side[2]);
-  t->c = geom_min3(side[0], side[1], side[2]);
-
-  /* The two angles opposite the two shorter sides come from atan2, which
-  ** keeps its relative accuracy for tiny angles (a needle has two); the
-  ** largest angle, at least pi/3, is pi minus their sum to within an ulp
-  ** or two of pi, which is a relative error of 1e-16 for it. */
-  t->alpha = t->beta = t->gamma = NAN;
-  if (angles) {
-    int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
-    int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
-    double ang[3];
-    ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
-    ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
-    ang[big] = M_PI - (ang[i1] + ang[i2]);
-    /* The two longest sides can round to the same double while their
-    ** opposite angles are pi - 5e-20 and 5e-20 (a flat triangle with one
-    ** very short side; found by fuzz/fuzz_quad_dt): then "big" may name the
-    ** tiny angle, and pi minus the others leaves 0 or less.  The largest
-    ** angle is at least pi/3 > 1, so a value below 1 means the guess was
-    ** wrong: compute that angle by atan2 as well. */
-    if (ang[big] < 1.0) ang[big] = geom_angle(t->v[big], t->v[i1], t->v[i2], twice);
-    /* Sorting the angle values themselves (not pairing them with sorted
-    ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
-    t->alpha = geom_min3(ang[0], ang[1], ang[2]);
-    t->beta = geom_mid3(ang[0], ang[1], ang[2]);
-    t->gamma = geom_max3(ang[0], ang[1], ang[2]);
+  double twice = 0, side[3] = {0, 0, 0}, a = 0, b = 0, c = 0, P = 0;
+  if (f & (GEOM_F_AREA | GEOM_F_ANGLES | GEOM_F_RADII)) twice = geom_twice_area_inline(p, q, r);
+  if (f & (GEOM_F_SIDES | GEOM_F_ANGLES | GEOM_F_PERIM | GEOM_F_RADII)) {
+    double e01x = q.x - p.x, e01y = q.y - p.y;
+    double e02x = r.x - p.x, e02y = r.y - p.y;
+    double e12x = r.x - q.x, e12y = r.y - q.y;
+    side[0] = sqrt(e12x * e12x + e12y * e12y);   /* opposite v0 */
+    side[1] = sqrt(e02x * e02x + e02y * e02y);   /* opposite v1 */
+    side[2] = sqrt(e01x * e01x + e01y * e01y);   /* opposite v2 */
+    a = geom_max3(side[0], side[1], side[2]);
+    b = geom_mid3(side[0], side[1], side[2]);
+    c = geom_min3(side[0], side[1], side[2]);
+    P = a + b + c;
   }
-
-  t->area = 0.5 * twice;
-  t->P = t->a + t->b + t->c;
-  t->R = t->a * t->b * t->c / (2.0 * twice);
-  t->r = twice / t->P;
-  t->h = twice / t->a;
-  t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
-  t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);
+  if (f & GEOM_F_SIDES) {
+    t->a = a;
+    t->b = b;
+    t->c = c;
+  }
+  if (f & GEOM_F_ANGLES) geom_tri_angles(t, side, twice);
+  if (f & GEOM_F_AREA) t->area = 0.5 * twice;
+  if (f & GEOM_F_PERIM) t->P = P;
+  if (f & GEOM_F_RADII) {
+    t->R = a * b * c / (2.0 * twice);
+    t->r = twice / P;
+    t->h = twice / a;
+  }
+  if (f & GEOM_F_RANGES) {
+    t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
+    t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);
+  }
 }
 
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
-  geom_tri_fill(t, p, q, r, 1);
+  geom_tri_fill(t, p, q, r, GEOM_F_ALL);
 }
 
-void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r) {
-  geom_tri_fill(t, p, q, r, 0);
+void geom_tri_make_fields(geom_tri *t, geom_point p, geom_point q, geom_point r,
+                          unsigned fields) {
+  geom_tri_fill(t, p, q, r, fields);
 }
 
 /* ---- cheap enclosures of the angles (geom.h) -----------------------------
@@ -134,8 +151,9 @@ void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point 
 ** moved by under 2^-39 L, which turns its direction by under 2^-38.  libm's
 ** atan2 adds a few ulps of pi, and the third angle pi - (c1 + c2) at most
 ** the sum of two such errors and an ulp of pi: c_v is within 2^-35 of the
-** exact angle, the value here within 2^-37 + 2e-8 of it, and
-** 2^-35 + 2^-37 + 2e-8 + a few roundings of lo and hi < 1e-6. */
+** exact angle, the value here within 2^-37 + 2e-8 of it (twice that for a
+** third angle taken as pi minus the other two), and
+** 2^-35 + 2 (2^-37 + 2e-8) + a few roundings of lo and hi < 1e-6. */
 #define GEOM_ANGLE_SLACK 1e-6
 
 static double geom_atan01(double z) {
@@ -170,15 +188,20 @@ int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which
     only = which == GEOM_ANGLE_SMALLEST ? (s0 <= s1 ? (s0 <= s2 ? 0 : 2) : (s1 <= s2 ? 1 : 2))
                                         : (s0 >= s1 ? (s0 >= s2 ? 0 : 2) : (s1 >= s2 ? 1 : 2));
   }
+  double a[3];
   for (int i = 0; i < 3; i++) {
     if (only >= 0 && i != only) {   /* every computed angle lies in [0, pi] */
       lo[i] = 0;
       hi[i] = 4;
-      continue;
+    } else if (i < 2 || only >= 0) {
+      a[i] = geom_atan2_approx(twice, dot[i]);
+      lo[i] = a[i] - GEOM_ANGLE_SLACK;
+      hi[i] = a[i] + GEOM_ANGLE_SLACK;
+    } else {   /* the third exact angle is pi minus the others: within 2 (2^-37 + 2e-8) */
+      a[2] = M_PI - (a[0] + a[1]);
+      lo[2] = a[2] - GEOM_ANGLE_SLACK;
+      hi[2] = a[2] + GEOM_ANGLE_SLACK;
     }
-    double a = geom_atan2_approx(twice, dot[i]);
-    lo[i] = a - GEOM_ANGLE_SLACK;
-    hi[i] = a + GEOM_ANGLE_SLACK;
   }
   return 1;
 }

@@ -30,10 +30,22 @@ typedef struct geom_tri {
 
 /* Fill *t from three points, in any order. */
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r);
-/* The same without the angles (alpha, beta, gamma are NaN): every other
-** field bit-identical to geom_tri_make's, for measures that read no angle
-** (measure_needs_angles) on hot paths. */
-void geom_tri_make_noangles(geom_tri *t, geom_point p, geom_point q, geom_point r);
+
+/* Groups of geom_tri fields, for geom_tri_make_fields. */
+enum {
+  GEOM_F_SIDES = 1,    /* a, b, c */
+  GEOM_F_ANGLES = 2,   /* alpha, beta, gamma (two atan2, most of the cost) */
+  GEOM_F_AREA = 4,     /* area */
+  GEOM_F_PERIM = 8,    /* P */
+  GEOM_F_RADII = 16,   /* R, r, h */
+  GEOM_F_RANGES = 32,  /* rx, ry */
+  GEOM_F_ALL = 63
+};
+/* Only the fields asked for (an OR of GEOM_F_*), each bit-identical to
+** geom_tri_make's, the others NaN (v is always set): for a measure that
+** reads a few fields (measure_fields) on hot paths. */
+void geom_tri_make_fields(geom_tri *t, geom_point p, geom_point q, geom_point r,
+                          unsigned fields);
 
 /* Smallest, largest and median of three non-NaN values: plain comparisons
 ** rather than fmin/fmax, which compile to branch-free minsd/maxsd. */

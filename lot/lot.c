@@ -450,7 +450,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
     goto oom;
   L->r = o->r;
   L->m.r = &L->r;
-  L->m.angles = o->r.kind == RULE_TRIANGLE && measure_needs_angles(o->r.measure);
+  L->m.fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
   L->st.n = n;
   lot_run_init(&R, L, o);
   R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
@@ -495,7 +495,7 @@ oom:
 int lot_reflip(lot *L, const lot_options *o) {
   lot_mesh *m = &L->m;
   L->r = o->r;
-  m->angles = o->r.kind == RULE_TRIANGLE && measure_needs_angles(o->r.measure);
+  m->fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
   int tri = o->r.kind == RULE_TRIANGLE && !o->decide;
   if (tri && m->bad == NULL && (m->bad = malloc((size_t)m->cap * sizeof *m->bad)) == NULL)
     return -1;

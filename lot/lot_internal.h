@@ -38,7 +38,7 @@ typedef struct lot_mesh {
   uint32_t last;        /* a triangle near the last insertion: the walk's start */
   uint64_t walk;        /* the walk's generator state (deterministic) */
   const rule *r;        /* for the badness cache */
-  int angles;           /* the measure reads angles (measure_needs_angles) */
+  unsigned fields;      /* the geom_tri fields the measure reads (measure_fields) */
 } lot_mesh;
 
 /* Corner i of triangle t, the triangle of corner c, and the next and

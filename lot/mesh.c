@@ -46,8 +46,7 @@ void lot_mesh_free(lot_mesh *m) {
 
 double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   geom_tri t;
-  if (m->angles) geom_tri_make(&t, m->p[a], m->p[b], m->p[c]);
-  else geom_tri_make_noangles(&t, m->p[a], m->p[b], m->p[c]);
+  geom_tri_make_fields(&t, m->p[a], m->p[b], m->p[c], m->fields);
   return measure_eval(m->r->measure, &t);
 }
 

@@ -172,30 +172,37 @@ static void test_theorem7_bound(void **state) {
   }
 }
 
-/* measure_needs_angles is right: a measure said not to read angles gives
-** the same value bit for bit when the angles are NaN (geom_tri_make_noangles),
-** on random triangles of every shape. */
-static void test_noangles_list(void **state) {
+/* measure_fields is right both ways: a triangle made with only the fields
+** a measure is said to read gives the same value bit for bit (the others
+** are NaN), and leaving out any one of them changes it, on random
+** triangles of every shape. */
+static int tlot_fields_agree(int m, unsigned fields, testutil_rng *g) {
+  for (int k = 0; k < 2000; k++) {
+    geom_point p[3];
+    for (int i = 0; i < 3; i++)
+      p[i] = (geom_point){testutil_uniform(g), (k % 3 ? 1e-3 : 1) * testutil_uniform(g)};
+    if (geom_orient(p[0], p[1], p[2]) == 0) continue;
+    geom_tri a, b;
+    geom_tri_make(&a, p[0], p[1], p[2]);
+    geom_tri_make_fields(&b, p[0], p[1], p[2], fields);
+    double va = measure_eval(m, &a), vb = measure_eval(m, &b);
+    if (memcmp(&va, &vb, sizeof va) != 0) return 0;
+  }
+  return 1;
+}
+
+static void test_fields_list(void **state) {
   (void)state;
   testutil_rng g = {77};
   for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
-    int differs = 0;
-    for (int k = 0; k < 2000; k++) {
-      geom_point p[3];
-      for (int i = 0; i < 3; i++)
-        p[i] = (geom_point){testutil_uniform(&g), (k % 3 ? 1e-3 : 1) * testutil_uniform(&g)};
-      if (geom_orient(p[0], p[1], p[2]) == 0) continue;
-      geom_tri a, b;
-      geom_tri_make(&a, p[0], p[1], p[2]);
-      geom_tri_make_noangles(&b, p[0], p[1], p[2]);
-      double va = measure_eval(m, &a), vb = measure_eval(m, &b);
-      if (!(va == vb || (isnan(va) && isnan(vb))) ||
-          memcmp(&va, &vb, sizeof va) != 0) differs = 1;
-    }
-    if (differs != measure_needs_angles(m))
-      fail_msg("measure %s: needs angles %d, but values %s without them",
-               measure_get(m)->name, measure_needs_angles(m), differs ? "differ" : "agree");
+    unsigned f = measure_fields(m);
+    if (!tlot_fields_agree(m, f, &g))
+      fail_msg("measure %s: values differ with fields %#x only", measure_get(m)->name, f);
+    for (unsigned bit = 1; bit < GEOM_F_ALL; bit <<= 1)
+      if ((f & bit) && tlot_fields_agree(m, f & ~bit, &g))
+        fail_msg("measure %s: field group %#x is listed but not read", measure_get(m)->name, bit);
   }
+  assert_int_equal(measure_fields(MEASURE_BUILTIN_COUNT), GEOM_F_ALL);   /* user measures */
 }
 
 /* Every built-in measure with every joint it admits, both algorithms, on
@@ -469,7 +476,7 @@ int main(void) {
     cmocka_unit_test(test_dt_grid_and_circle),
     cmocka_unit_test(test_theorem6_parabola),
     cmocka_unit_test(test_theorem7_bound),
-    cmocka_unit_test(test_noangles_list),
+    cmocka_unit_test(test_fields_list),
     cmocka_unit_test(test_every_rule_locally_optimal),
     cmocka_unit_test(test_convex_dt_equivalent),
     cmocka_unit_test(test_always_flip_is_a_cycle),
