@@ -275,7 +275,10 @@ static int lot_examine(lot_run *R, uint32_t c) {
       if (R->bounded && lot_cannot_flip(R, pa, pb, pc, pd, t, u)) return 0;
       x1 = lot_mesh_badness(m, a, b, d);
       x2 = lot_mesh_badness(m, a, d, c0);
-      ch = rule_eval_badness(&o->r, x1, x2, m->bad[t], m->bad[u], o->tie_eps, NULL, NULL);
+      /* rule_eval_badness's decision, without its lookups: the new pair
+      ** (AC) against the cached current one (BD). */
+      ch = joint_compare(o->r.joint, m->meas->sign, x1, x2, m->bad[t], m->bad[u], o->tie_eps) < 0
+               ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_QUAD) {
       ch = rule_eval(&o->r, q, o->tie_eps, NULL, NULL);
     } else {
@@ -450,6 +453,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
     goto oom;
   L->r = o->r;
   L->m.r = &L->r;
+  L->m.meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
   L->m.fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
   L->st.n = n;
   lot_run_init(&R, L, o);
@@ -495,6 +499,7 @@ oom:
 int lot_reflip(lot *L, const lot_options *o) {
   lot_mesh *m = &L->m;
   L->r = o->r;
+  m->meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
   m->fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
   int tri = o->r.kind == RULE_TRIANGLE && !o->decide;
   if (tri && m->bad == NULL && (m->bad = malloc((size_t)m->cap * sizeof *m->bad)) == NULL)

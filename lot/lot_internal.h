@@ -24,6 +24,7 @@
 
 #include <stdint.h>
 #include "lot.h"
+#include "measure.h"
 
 #define LOT_GHOST UINT32_MAX
 #define LOT_NONE UINT32_MAX
@@ -38,6 +39,7 @@ typedef struct lot_mesh {
   uint32_t last;        /* a triangle near the last insertion: the walk's start */
   uint64_t walk;        /* the walk's generator state (deterministic) */
   const rule *r;        /* for the badness cache */
+  const measure *meas;  /* r's measure, looked up once (triangle-based rules) */
   unsigned fields;      /* the geom_tri fields the measure reads (measure_fields) */
 } lot_mesh;
 

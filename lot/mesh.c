@@ -47,7 +47,7 @@ void lot_mesh_free(lot_mesh *m) {
 double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   geom_tri t;
   geom_tri_make_fields(&t, m->p[a], m->p[b], m->p[c], m->fields);
-  return measure_eval(m->r->measure, &t);
+  return m->meas->fn(&t, m->meas->ctx);
 }
 
 static void lot_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
