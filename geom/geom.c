@@ -165,9 +165,15 @@ static double geom_atan01(double z) {
 }
 
 static double geom_atan2_approx(double y, double x) {   /* y > 0 */
-  double ax = fabs(x);
-  double a = y <= ax ? geom_atan01(y / ax) : M_PI_2 - geom_atan01(ax / y);
+  double ax = fabs(x), lo = y < ax ? y : ax, hi = y < ax ? ax : y;
+  double a = geom_atan01(lo / hi);
+  a = y > ax ? M_PI_2 - a : a;
   return x < 0 ? M_PI - a : a;
+}
+
+static void geom_angle_enclose(double a, double *lo, double *hi) {
+  *lo = a - GEOM_ANGLE_SLACK;
+  *hi = a + GEOM_ANGLE_SLACK;
 }
 
 int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
@@ -182,27 +188,22 @@ int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which
   double dot[3] = {bax * cax + bay * cay,        /* at p: to q and to r */
                    -(bax * cbx + bay * cby),     /* at q: to p and to r */
                    cax * cbx + cay * cby};       /* at r: to p and to q */
-  int only = -1;   /* the one vertex to enclose, or all three */
-  if (which != GEOM_ANGLES_ALL) {
-    double s0 = cbx * cbx + cby * cby, s1 = cax * cax + cay * cay, s2 = bax * bax + bay * bay;
-    only = which == GEOM_ANGLE_SMALLEST ? (s0 <= s1 ? (s0 <= s2 ? 0 : 2) : (s1 <= s2 ? 1 : 2))
-                                        : (s0 >= s1 ? (s0 >= s2 ? 0 : 2) : (s1 >= s2 ? 1 : 2));
+  if (which == GEOM_ANGLES_ALL) {
+    /* the third exact angle is pi minus the others: within 2 (2^-37 + 2e-8) */
+    double a0 = geom_atan2_approx(twice, dot[0]), a1 = geom_atan2_approx(twice, dot[1]);
+    geom_angle_enclose(a0, &lo[0], &hi[0]);
+    geom_angle_enclose(a1, &lo[1], &hi[1]);
+    geom_angle_enclose(M_PI - (a0 + a1), &lo[2], &hi[2]);
+    return 1;
   }
-  double a[3];
-  for (int i = 0; i < 3; i++) {
-    if (only >= 0 && i != only) {   /* every computed angle lies in [0, pi] */
-      lo[i] = 0;
-      hi[i] = 4;
-    } else if (i < 2 || only >= 0) {
-      a[i] = geom_atan2_approx(twice, dot[i]);
-      lo[i] = a[i] - GEOM_ANGLE_SLACK;
-      hi[i] = a[i] + GEOM_ANGLE_SLACK;
-    } else {   /* the third exact angle is pi minus the others: within 2 (2^-37 + 2e-8) */
-      a[2] = M_PI - (a[0] + a[1]);
-      lo[2] = a[2] - GEOM_ANGLE_SLACK;
-      hi[2] = a[2] + GEOM_ANGLE_SLACK;
-    }
+  double s0 = cbx * cbx + cby * cby, s1 = cax * cax + cay * cay, s2 = bax * bax + bay * bay;
+  int v = which == GEOM_ANGLE_SMALLEST ? (s0 <= s1 ? (s0 <= s2 ? 0 : 2) : (s1 <= s2 ? 1 : 2))
+                                       : (s0 >= s1 ? (s0 >= s2 ? 0 : 2) : (s1 >= s2 ? 1 : 2));
+  for (int i = 0; i < 3; i++) {   /* every computed angle lies in [0, pi] */
+    lo[i] = 0;
+    hi[i] = 4;
   }
+  geom_angle_enclose(geom_atan2_approx(twice, dot[v]), &lo[v], &hi[v]);
   return 1;
 }
 
