@@ -244,8 +244,7 @@ static int lot_cannot_flip(const lot_run *R, geom_point pa, geom_point pb, geom_
   const rule *r = &R->o->r;
   double l1 = measure_lower_bound(r->measure, pa, pb, pd);
   double l2 = measure_lower_bound(r->measure, pa, pd, pc);
-  int s = measure_get(r->measure)->sign;
-  return joint_compare(r->joint, s, l1, l2, m->bad[t], m->bad[u], 0.0) >= 0;
+  return joint_compare(r->joint, m->meas->sign, l1, l2, m->bad[t], m->bad[u], 0.0) >= 0;
 }
 
 /* Examine the edge opposite corner c; flip it when the rule prefers the
