@@ -121,13 +121,16 @@ double joint_apply_split(joint_id j, int s, double x, double y, int *e) {
 ** can no longer tie with it (for tie_eps < 1) nor change the order. */
 int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
                   double tie_eps) {
+  /* Only the product and the root-sum-square have a split form; for the
+  ** other joints e1 = e2 = 0 below and this is the same comparison. */
+  if (j != JOINT_PRODUCT && j != JOINT_RSS)
+    return joint_compare_values(joint_apply(j, s, x1, y1), joint_apply(j, s, x2, y2), tie_eps);
   int e1, e2;
   double m1 = joint_apply_split(j, s, x1, y1, &e1);
   double m2 = joint_apply_split(j, s, x2, y2, &e2);
   int n1 = m1 != 0 && isfinite(m1), n2 = m2 != 0 && isfinite(m2);
   int E = n1 && n2 ? (e1 > e2 ? e1 : e2) : n1 ? e1 : n2 ? e2 : 0;
-  /* ldexp by 0 is the identity: skip the call (every joint but the product
-  ** and the root-sum-square has e1 = e2 = 0, and those are the hot ones). */
+  /* ldexp by 0 is the identity: skip the call. */
   if (n1 && e1 != E) m1 = ldexp(m1, e1 - E);
   if (n2 && e2 != E) m2 = ldexp(m2, e2 - E);
   return joint_compare_values(m1, m2, tie_eps);
