@@ -68,7 +68,8 @@ typedef struct siteflip_cplan {
   const rule *rules;
   int nrules, nslots, nv, eval_all;   /* nv: slots padded to whole vectors */
   int has_dt;                         /* some rule is DT */
-  int slot_measure[MEASURE_MAX];
+  int slot_measure[MEASURE_MAX];      /* in increasing order */
+  int nruns, run_slot[MEASURE_MAX], run_len[MEASURE_MAX];   /* slots of consecutive measures */
   double slot_sign[SITEFLIP_SLOTS];   /* -1.0 for measures <= 0, else 1.0 (padding too) */
   int joint_used[JOINT_COUNT];
   siteflip_crule *cr;
@@ -94,6 +95,30 @@ typedef struct siteflip_cwork {
   size_t nodecap;
 } siteflip_cwork;
 
+/* One slot per measure of the (valid) triangle rules, in measure order,
+** so that siteflip_values copies runs of consecutive measures. */
+static void siteflip_cplan_slots(siteflip_cplan *pl) {
+  unsigned char used[MEASURE_MAX] = {0};
+  int slot_of[MEASURE_MAX];
+  for (int i = 0; i < pl->nrules; i++)
+    if (!pl->cr[i].quad) used[pl->rules[i].measure] = 1;
+  for (int m = 0; m < MEASURE_MAX; m++) {
+    if (!used[m]) continue;
+    int s = pl->nslots++;
+    slot_of[m] = s;
+    pl->slot_measure[s] = m;
+    pl->slot_sign[s] = measure_get(m)->sign < 0 ? -1.0 : 1.0;
+    if (s > 0 && pl->slot_measure[s - 1] == m - 1) {
+      pl->run_len[pl->nruns - 1]++;
+    } else {
+      pl->run_slot[pl->nruns] = s;
+      pl->run_len[pl->nruns++] = 1;
+    }
+  }
+  for (int i = 0; i < pl->nrules; i++)
+    if (!pl->cr[i].quad) pl->cr[i].slot = slot_of[pl->rules[i].measure];
+}
+
 /* 0, -1 for a rule the plan cannot hold, -2 when memory ran out. */
 static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
   memset(pl, 0, sizeof *pl);
@@ -115,19 +140,13 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
     }
     if (r->measure < 0 || r->measure >= measure_count() || (unsigned)r->joint >= JOINT_COUNT)
       return -1;
-    int s = 0;
-    while (s < pl->nslots && pl->slot_measure[s] != r->measure) s++;
-    if (s == pl->nslots) {
-      pl->slot_sign[s] = measure_get(r->measure)->sign < 0 ? -1.0 : 1.0;
-      pl->slot_measure[pl->nslots++] = r->measure;
-    }
     pl->joint_used[r->joint] = 1;
-    c->slot = s;
     c->joint = r->joint;
     c->msign = measure_get(r->measure)->sign;
     c->keyop = joint_get(r->joint)->keyop;
     c->key0 = joint_key_identity(r->joint);
   }
+  siteflip_cplan_slots(pl);
   pl->nv = QUADVEC_PAD(pl->nslots);
   for (int i = 0; i < nrules; i++) pl->cr[i].bit = pl->cr[i].joint * pl->nv + pl->cr[i].slot;
   /* measure_eval_all when it is cheaper than calls: many slots, and no
@@ -316,37 +335,56 @@ static int siteflip_ctz(uint64_t m) {   /* m != 0 */
 #endif
 }
 
-/* Node u's total in key space (siteflip_node_key's arithmetic, with the
-** plan's values). */
-static double siteflip_ckey(const siteflip_graph *g, const double *val, int nv,
-                            const siteflip_crule *c, int u) {
-  double k = c->key0;
-  const int *t = g->node_tri + (size_t)u * (size_t)g->per;
-  if (c->keyop == JOINT_KEY_ADD) {
-    for (int f = 0; f < g->per; f++) k += joint_key(c->joint, c->msign, val[t[f] * nv + c->slot]);
-  } else {
-    for (int f = 0; f < g->per; f++)
-      k = joint_key_combine(c->keyop, k, val[t[f] * nv + c->slot]);
+/* The least and greatest total in key space over the nsinks sinks (each
+** siteflip_node_key's arithmetic, with the plan's values), for joint j:
+** called with a constant j, so each joint gets its own loop with the key
+** inline.  Plain comparisons pick the extremes: a NaN total is skipped as
+** fmin and fmax would skip it. */
+static inline void siteflip_sink_range(joint_id j, const siteflip_cwork *w,
+                                       const siteflip_graph *g, const double *v, int nv,
+                                       const siteflip_crule *c, int nsinks, double *lo,
+                                       double *hi) {
+  const int per = g->per, ms = c->msign;
+  const joint_keyop op = c->keyop;
+  double best = INFINITY, worst = -INFINITY;
+  for (int s = 0; s < nsinks; s++) {
+    const int *t = g->node_tri + (size_t)w->sinks[s] * (size_t)per;
+    double k = c->key0;
+    if (op == JOINT_KEY_ADD)
+      for (int f = 0; f < per; f++) k += joint_key_inline(j, ms, v[t[f] * nv]);
+    else
+      for (int f = 0; f < per; f++) k = joint_key_combine(op, k, v[t[f] * nv]);
+    best = k < best ? k : best;
+    worst = k > worst ? k : worst;
   }
-  return k;
+  *lo = best;
+  *hi = worst;
 }
 
-/* The worst sink's gap, in units; see the GOT shortcut above.  Plain
-** comparisons pick the extreme keys: a NaN key is skipped as fmin and fmax
-** would skip it, and the sign of a zero total cannot change the gap. */
+/* llround(x) for 0 <= x < 2^52: the integer part is exact, and so is the
+** fraction x - r, so rounding half away from zero is r + (frac >= 1/2). */
+static uint64_t siteflip_round_units(double x) {
+  uint64_t r = (uint64_t)x;
+  return r + (x - (double)r >= 0.5);
+}
+
+/* The worst sink's gap, in units; see the GOT shortcut above.  The sign
+** of a zero total cannot change the gap. */
 static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph *g,
                                    const double *val, int nv, const siteflip_crule *c,
                                    int nsinks) {
   if (nsinks == 1) return 0;
-  double best = INFINITY, worst = -INFINITY;
-  for (int s = 0; s < nsinks; s++) {
-    double k = siteflip_ckey(g, val, nv, c, w->sinks[s]);
-    best = k < best ? k : best;
-    worst = k > worst ? k : worst;
+  const double *v = val + c->slot;
+  double best, worst;
+  switch (c->joint) {
+    case JOINT_HARMONIC: siteflip_sink_range(JOINT_HARMONIC, w, g, v, nv, c, nsinks, &best, &worst); break;
+    case JOINT_PRODUCT: siteflip_sink_range(JOINT_PRODUCT, w, g, v, nv, c, nsinks, &best, &worst); break;
+    case JOINT_RSS: siteflip_sink_range(JOINT_RSS, w, g, v, nv, c, nsinks, &best, &worst); break;
+    default: siteflip_sink_range(JOINT_SUM, w, g, v, nv, c, nsinks, &best, &worst); break;
   }
   double gap = siteflip_gap(c->joint, c->msign, best, worst);
   if (!(gap > 0)) return 0;
-  return (uint64_t)llround(fmin(gap, 4.0) / SITEFLIP_GAP_UNIT);
+  return siteflip_round_units((gap < 4.0 ? gap : 4.0) / SITEFLIP_GAP_UNIT);
 }
 
 /* Measure values, rows of nv with the padding lanes 1.0 (quadvec). */
@@ -356,7 +394,11 @@ static void siteflip_values(const siteflip_cplan *pl, const siteflip_graph *g, d
     double *row = val + (size_t)t * (size_t)pl->nv;
     if (pl->eval_all) {
       measure_eval_all(&g->tri[t], all);
-      for (int s = 0; s < pl->nslots; s++) row[s] = all[pl->slot_measure[s]];
+      for (int k = 0; k < pl->nruns; k++) {
+        const int s0 = pl->run_slot[k], len = pl->run_len[k];
+        const double *src = all + pl->slot_measure[s0];
+        for (int s = 0; s < len; s++) row[s0 + s] = src[s];
+      }
     } else {
       for (int s = 0; s < pl->nslots; s++) row[s] = measure_eval(pl->slot_measure[s], &g->tri[t]);
     }
@@ -378,19 +420,30 @@ static int siteflip_rule_bits(const siteflip_cplan *pl, siteflip_cwork *w,
   return siteflip_decide(pl, i, g, w->val, w->dtdec, w->dec, bits);
 }
 
-/* Adds one untied sample whose ns sinks are w->sinks[0..ns-1] to c. */
+/* Adds one untied sample whose ns sinks are w->sinks[0..ns-1] to c, in
+** the running form of siteflip_count: a one-sink sample counts in
+** one_sink and sink_dt only. */
 static void siteflip_tally(const siteflip_cplan *pl, const siteflip_cwork *w,
                            const siteflip_graph *g, int i, int ns, siteflip_counts *c) {
+  if (ns == 1) {
+    c->one_sink++;
+    c->sink_dt += w->sinks[0] == g->delaunay;
+    return;
+  }
   c->sinks += (uint64_t)ns;
   if ((uint64_t)ns > c->max_sinks) c->max_sinks = (uint64_t)ns;
   if (ns == 0) c->no_sink++;
-  else if (ns > 1) c->multi_sink++;
-  else {
-    c->one_sink++;
-    c->sink_dt += w->sinks[0] == g->delaunay;
-  }
+  else c->multi_sink++;
   if (ns > 1 && !pl->cr[i].quad)
     c->gap_units += siteflip_gap_units(w, g, w->val, pl->nv, &pl->cr[i], ns);
+}
+
+/* Running counts of `samples` samples made whole: every sample counts in
+** samples, and a one-sink sample's sink in sinks and max_sinks. */
+static void siteflip_counts_finish(siteflip_counts *c, uint64_t samples) {
+  c->samples += samples;
+  c->sinks += c->one_sink;
+  if (c->one_sink > 0 && c->max_sinks < 1) c->max_sinks = 1;
 }
 
 /* Sinks of packed decisions on a graph of more than 64 nodes. */
@@ -401,6 +454,8 @@ static int siteflip_sinks_packed(siteflip_cwork *w, const siteflip_graph *g, uin
   return ns;
 }
 
+/* Adds g's sample to out[0 .. nrules-1] in running form (siteflip_tally;
+** siteflip_counts_finish completes the counts). */
 static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const siteflip_graph *g,
                            siteflip_counts *out) {
   siteflip_values(pl, g, w->val);
@@ -408,26 +463,24 @@ static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const si
   if (packed) siteflip_all_bits(pl, g, w);
   for (int i = 0; i < pl->nrules; i++) {
     uint64_t bits;
-    out[i].samples++;
-    w->rtied[i] = (unsigned char)siteflip_rule_bits(pl, w, g, i, &bits);
+    int tied = siteflip_rule_bits(pl, w, g, i, &bits);
+    w->rtied[i] = (unsigned char)tied;
     w->rbits[i] = bits;
-    if (w->rtied[i]) out[i].tie++;
-    if (masks || w->rtied[i]) continue;
+    out[i].tie += (uint64_t)tied;
+    if (masks || tied) continue;
     /* Now, while w->dec holds rule i's decisions. */
     int ns = packed ? siteflip_sinks_packed(w, g, bits) : siteflip_sinks(w, g, w->dec);
     siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
   if (!masks) return;
   siteflip_sink_masks(w, g->nnodes, pl->nrules);
+  const uint64_t dtbit = g->delaunay >= 0 ? 1ull << g->delaunay : 0;
   for (int i = 0; i < pl->nrules; i++) {
     uint64_t m = w->smask[i];
     if (w->rtied[i]) continue;
     if (m != 0 && (m & (m - 1)) == 0) {   /* one sink: the common case */
-      siteflip_counts *c = &out[i];
-      c->sinks++;
-      c->max_sinks |= c->max_sinks == 0;
-      c->one_sink++;
-      c->sink_dt += siteflip_ctz(m) == g->delaunay;
+      out[i].one_sink++;
+      out[i].sink_dt += m == dtbit;
       continue;
     }
     int ns = 0;
@@ -557,8 +610,12 @@ int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t 
     siteflip_cwork_free(&w);
   }
   if (progress != NULL && !failed) progress(count, count, ctx);
-  for (int t = 0; t < threads && !failed; t++)
-    for (int r = 0; r < nrules; r++) siteflip_counts_add(&out[r], &all[(size_t)t * nr + r]);
+  for (int r = 0; r < nrules && !failed; r++) {
+    siteflip_counts tot = {0};
+    for (int t = 0; t < threads; t++) siteflip_counts_add(&tot, &all[(size_t)t * nr + r]);
+    siteflip_counts_finish(&tot, count);
+    siteflip_counts_add(&out[r], &tot);
+  }
   free(all);
   free(pl.cr);
   if (failed) snprintf(err, errlen, "out of memory enumerating triangulations");

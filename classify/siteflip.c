@@ -513,9 +513,11 @@ static void siteflip_got(const siteflip_graph *g, const rule *r, const int *sink
   res->worst_gap = res->worst_sink >= 0 ? siteflip_gap(r->joint, M->sign, best, worst) : 0;
 }
 
+/* A NaN total gives 0 by the test tw > tg, whatever den is, so a plain
+** comparison serves as fmax. */
 double siteflip_gap(joint_id j, int s, double best_key, double worst_key) {
-  double tw = joint_unkey(j, s, worst_key), tg = joint_unkey(j, s, best_key);
-  double den = fmax(fabs(tw), fabs(tg));
+  double tw = joint_unkey_inline(j, s, worst_key), tg = joint_unkey_inline(j, s, best_key);
+  double aw = fabs(tw), ag = fabs(tg), den = aw > ag ? aw : ag;
   return tw > tg && den > 0 ? (tw - tg) / den : 0;
 }
 

@@ -25,34 +25,26 @@ static double joint_product(double x, double y) { return x * y; }
 static double joint_sum(double x, double y) { return x + y; }
 static double joint_rss(double x, double y) { return sqrt(x * x + y * y); }
 
-/* Keys for the magnitude form (x >= 0); see joint_key for the signed form. */
-static double joint_key_harmonic(double x) { return -1.0 / x; }
-static double joint_unkey_harmonic(double k) { return -1.0 / k; }
-static double joint_key_identity_fn(double x) { return x; }
-static double joint_key_square(double x) { return x * x; }
-
 typedef struct joint_impl {
   joint pub;
   double (*g)(double, double);
   double identity;                  /* of g on values >= 0 */
-  double (*key)(double);            /* increasing on values >= 0 */
-  double (*unkey)(double);
 } joint_impl;
 
 static const joint_impl joint_table[JOINT_COUNT] = {
   [JOINT_MIN] = {{"-inf", "l_-inf", "min(x, y)", 0, JOINT_KEY_MIN, "min", "#0072B2"},
-                 joint_min, INFINITY, joint_key_identity_fn, joint_key_identity_fn},
+                 joint_min, INFINITY},
   [JOINT_HARMONIC] = {{"-1", "l_-1", "1/(1/x + 1/y), harmonic", 1, JOINT_KEY_ADD, "harmonic", "#E69F00"},
-                      joint_harmonic, INFINITY, joint_key_harmonic, joint_unkey_harmonic},
+                      joint_harmonic, INFINITY},
   [JOINT_PRODUCT] = {{"0", "l_0", "x*y, product (geometric)", 1, JOINT_KEY_ADD, "product", "#009E73"},
-                     joint_product, 1.0, log, exp},
+                     joint_product, 1.0},
   [JOINT_SUM] = {{"1", "l_1", "x + y, sum", 1, JOINT_KEY_ADD, "sum", "#D55E00"},
-                 joint_sum, 0.0, joint_key_identity_fn, joint_key_identity_fn},
+                 joint_sum, 0.0},
   [JOINT_RSS] = {{"2", "l_2", "sqrt(x^2 + y^2), root-sum-square", 1, JOINT_KEY_ADD,
                  "root-sum-sq", "#CC79A7"},
-                 joint_rss, 0.0, joint_key_square, sqrt},
+                 joint_rss, 0.0},
   [JOINT_MAX] = {{"inf", "l_inf", "max(x, y)", 0, JOINT_KEY_MAX, "max", "#56B4E9"},
-                 joint_max, -INFINITY, joint_key_identity_fn, joint_key_identity_fn},
+                 joint_max, -INFINITY},
 };
 
 const joint *joint_get(joint_id j) {
@@ -147,15 +139,11 @@ double joint_identity(joint_id j, int s) {
 ** increasing in x and adds the same way, since the leading minus turns
 ** "larger magnitude" into "smaller value". */
 double joint_key(joint_id j, int s, double x) {
-  const joint_impl *J = &joint_table[j];
-  if (!J->pub.needs_sign || s >= 0) return J->key(x);
-  return -J->key(-x);
+  return joint_key_inline(j, s, x);
 }
 
 double joint_unkey(joint_id j, int s, double k) {
-  const joint_impl *J = &joint_table[j];
-  if (!J->pub.needs_sign || s >= 0) return J->unkey(k);
-  return -J->unkey(-k);
+  return joint_unkey_inline(j, s, k);
 }
 
 double joint_key_identity(joint_id j) {

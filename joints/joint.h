@@ -15,6 +15,8 @@
 #ifndef FLIPLAB_JOINT_H
 #define FLIPLAB_JOINT_H
 
+#include <math.h>
+
 typedef enum joint_id {
   JOINT_MIN,       /* l_-inf */
   JOINT_HARMONIC,  /* l_-1 */
@@ -78,6 +80,28 @@ double joint_apply_split(joint_id j, int s, double x, double y, int *e);
 double joint_key(joint_id j, int s, double x);
 double joint_unkey(joint_id j, int s, double k);
 double joint_key_identity(joint_id j);
+
+/* The definitions of joint_key and joint_unkey, inline for loops that key
+** many values (the census's sinks): no call, no table.  With K the key on
+** magnitudes (x >= 0: -1/x, log x, x^2, or x itself), a measure of sign -1
+** takes -K(-x) (joint_key's comment in joint.c says why); the identity
+** keys need no sign case, -(-x) being x bit for bit. */
+static inline double joint_key_inline(joint_id j, int s, double x) {
+  switch (j) {
+    case JOINT_HARMONIC: return s >= 0 ? -1.0 / x : -(-1.0 / -x);
+    case JOINT_PRODUCT: return s >= 0 ? log(x) : -log(-x);
+    case JOINT_RSS: return s >= 0 ? x * x : -((-x) * (-x));
+    default: return x;
+  }
+}
+static inline double joint_unkey_inline(joint_id j, int s, double k) {
+  switch (j) {
+    case JOINT_HARMONIC: return s >= 0 ? -1.0 / k : -(-1.0 / -k);
+    case JOINT_PRODUCT: return s >= 0 ? exp(k) : -exp(-k);
+    case JOINT_RSS: return s >= 0 ? sqrt(k) : -sqrt(-k);
+    default: return k;
+  }
+}
 static inline double joint_key_combine(joint_keyop op, double k1, double k2) {
   return op == JOINT_KEY_ADD ? k1 + k2
        : op == JOINT_KEY_MIN ? (k1 < k2 ? k1 : k2)

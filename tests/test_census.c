@@ -223,6 +223,52 @@ static void test_census_threads(void **state) {
   free(rules);
 }
 
+/* The rules' order changes no rule's counts: the census gives each used
+** measure a slot in measure order and copies runs of consecutive
+** measures, so a reversed list, and a subset with gaps between its
+** measures listed out of order, must count as the full list does.  And a
+** census adds to what out already holds. */
+static void test_census_rule_order(void **state) {
+  (void)state;
+  rule *rules;
+  int nr = tc_all_rules(&rules);
+  rule *perm = malloc((size_t)nr * sizeof *perm);
+  int *from = malloc((size_t)nr * sizeof *from);
+  siteflip_counts *a = malloc((size_t)nr * sizeof *a), *b = malloc((size_t)nr * sizeof *b);
+  assert_true(nr % 37 != 0);
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++) {
+    tc_census(rules, nr, kind, 6, 0, 400, 1, a);
+    for (int variant = 0; variant < 2; variant++) {
+      int np = 0;
+      for (int r = 0; r < nr; r++) {
+        /* reversed; or scrambled (nr is prime to 37), without the measures 1, 4, 7, ... */
+        int k = variant == 0 ? nr - 1 - r : (int)((r * 37L) % nr);
+        if (variant == 1 && rules[k].kind == RULE_TRIANGLE && rules[k].measure % 3 == 1) continue;
+        from[np] = k;
+        perm[np++] = rules[k];
+      }
+      assert_true(np > 5);
+      tc_census(perm, np, kind, 6, 0, 400, 2, b);
+      for (int i = 0; i < np; i++)
+        assert_memory_equal(&b[i], &a[from[i]], sizeof *b);
+    }
+    /* Adding 400 more samples to a's counts gives the census of 800. */
+    char err[256];
+    assert_int_equal(siteflip_census(rules, nr, kind, 6, 3, 400, 400, RULE_DEFAULT_TIE_EPS, 1,
+                                     a, NULL, NULL, err, sizeof err), 0);
+    tc_census(rules, nr, kind, 6, 0, 800, 2, b);
+    for (int r = 0; r < nr; r++) {
+      assert_int_equal(a[r].samples, 800);
+      assert_memory_equal(&a[r], &b[r], sizeof *a);
+    }
+  }
+  free(a);
+  free(b);
+  free(from);
+  free(perm);
+  free(rules);
+}
+
 static void test_census_bad_args(void **state) {
   (void)state;
   rule r = rule_delaunay();
@@ -242,6 +288,7 @@ int main(void) {
     cmocka_unit_test(test_census_vector_equals_scalar),
     cmocka_unit_test(test_census_pentagons_are_table34),
     cmocka_unit_test(test_census_threads),
+    cmocka_unit_test(test_census_rule_order),
     cmocka_unit_test(test_census_bad_args),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
