@@ -58,6 +58,7 @@ typedef struct siteflip_crule {
   int dt;                /* the DT rule */
   int slot;
   int bit;               /* joint * nv + slot: the rule's entry of bits and tie */
+  int next;              /* the next rule of the same entry (or quadrilateral rule), -1 */
   joint_id joint;
   int msign;             /* the measure's sign */
   joint_keyop keyop;     /* how keys of triangles combine */
@@ -74,6 +75,9 @@ typedef struct siteflip_cplan {
   int joint_used[JOINT_COUNT];
   siteflip_crule *cr;
   double eps;
+  int nentries;                       /* JOINT_COUNT * nv */
+  int entry_rule[JOINT_COUNT * SITEFLIP_SLOTS];   /* first rule of each entry, -1 */
+  int first_quad;                     /* first quadrilateral rule, -1 */
 } siteflip_cplan;
 
 typedef struct siteflip_cwork {
@@ -87,8 +91,12 @@ typedef struct siteflip_cwork {
   rule_choice *dec, *dtdec;          /* one rule's decisions; DT's */
   size_t deccap, dtcap;
   uint64_t *qmask, *want;
-  uint64_t *rbits, *smask;           /* per rule: BD bits, sink mask */
-  unsigned char *rtied;              /* per rule: some tie */
+  /* Packed graphs (siteflip_count_entries), by entry of bits: sink
+  ** masks, and the running counts of siteflip_flush. */
+  uint64_t emask[JOINT_COUNT * SITEFLIP_SLOTS];
+  uint64_t etie[JOINT_COUNT * SITEFLIP_SLOTS], eone[JOINT_COUNT * SITEFLIP_SLOTS];
+  uint64_t edt[JOINT_COUNT * SITEFLIP_SLOTS];
+  int emulti[JOINT_COUNT * SITEFLIP_SLOTS];
   unsigned char *out;
   double *key;
   int *sinks;
@@ -148,7 +156,15 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
   }
   siteflip_cplan_slots(pl);
   pl->nv = QUADVEC_PAD(pl->nslots);
-  for (int i = 0; i < nrules; i++) pl->cr[i].bit = pl->cr[i].joint * pl->nv + pl->cr[i].slot;
+  pl->nentries = JOINT_COUNT * pl->nv;
+  for (int e = 0; e < pl->nentries; e++) pl->entry_rule[e] = -1;
+  pl->first_quad = -1;
+  for (int i = nrules - 1; i >= 0; i--) {   /* chains in rule order */
+    siteflip_crule *c = &pl->cr[i];
+    int *head = c->quad ? &pl->first_quad : &pl->entry_rule[c->bit = c->joint * pl->nv + c->slot];
+    c->next = *head;
+    *head = i;
+  }
   /* measure_eval_all when it is cheaper than calls: many slots, and no
   ** unused user measure (maybe a slow formula) would run. */
   pl->eval_all = pl->nslots > 4;
@@ -168,9 +184,6 @@ static void siteflip_cwork_free(siteflip_cwork *w) {
   free(w->dec);
   free(w->dtdec);
   free(w->qmask);
-  free(w->rbits);
-  free(w->smask);
-  free(w->rtied);
   free(w->want);
   free(w->out);
   free(w->key);
@@ -190,16 +203,6 @@ static int siteflip_grow(void **p, size_t *cap, size_t need, size_t size) {
 static int siteflip_cwork_fit(siteflip_cwork *w, const siteflip_graph *g,
                               const siteflip_cplan *pl) {
   const int nv = pl->nv;
-  if (w->rbits == NULL || w->smask == NULL || w->rtied == NULL) {   /* per rule, once */
-    size_t nr = (size_t)pl->nrules + 1;
-    free(w->rbits);
-    free(w->smask);
-    free(w->rtied);
-    w->rbits = malloc(nr * sizeof *w->rbits);
-    w->smask = malloc(nr * sizeof *w->smask);
-    w->rtied = malloc(nr);
-    if (w->rbits == NULL || w->smask == NULL || w->rtied == NULL) return -1;
-  }
   size_t vc = w->valcap, dc = w->deccap, nn = (size_t)g->nnodes + 1, nc = w->nodecap;
   size_t mc = w->magcap, hc = w->hcap, tc = w->dtcap, rows = (size_t)g->ntris * (size_t)(nv + 1);
   if (siteflip_grow((void **)&w->val, &vc, rows, sizeof *w->val) ||
@@ -308,21 +311,45 @@ static int siteflip_sinks(siteflip_cwork *w, const siteflip_graph *g, const rule
   return ns;
 }
 
-/* Node masks of the sinks of every rule with packed decisions (nquads and
-** nnodes <= 64): node u is a sink iff (bits & qmask[u]) == want[u].
-** Node by node over all rules, branch-free, so the AVX2 clone handles
-** four rules at a time. */
+/* Node masks of the sinks of every entry of w->bits (nquads and nnodes
+** <= 64): node u is a sink iff (bits & qmask[u]) == want[u].  Node by
+** node over all entries, branch-free, so the AVX2 clone handles four
+** entries at a time. */
 #if FLIPLAB_HAVE_CLONES
 __attribute__((target_clones("avx2", "default")))
 #endif
-static void siteflip_sink_masks(siteflip_cwork *w, int nnodes, int nrules) {
-  const uint64_t *bits = w->rbits;
-  uint64_t *m = w->smask;
-  for (int i = 0; i < nrules; i++) m[i] = 0;
+static void siteflip_sink_masks(siteflip_cwork *w, int nnodes, int nentries) {
+  const unsigned long long *bits = w->bits;
+  uint64_t *m = w->emask;
+  for (int e = 0; e < nentries; e++) m[e] = 0;
   for (int u = 0; u < nnodes; u++) {
     const uint64_t qm = w->qmask[u], want = w->want[u];
-    for (int i = 0; i < nrules; i++) m[i] |= (uint64_t)((bits[i] & qm) == want) << u;
+    for (int e = 0; e < nentries; e++) m[e] |= (uint64_t)((bits[e] & qm) == want) << u;
   }
+}
+
+/* The running counts of every entry from its sink mask: a tie, or one
+** sink (at the Delaunay node dtbit or not); the others, without a tie and
+** with no sink or several, are listed in w->emulti for siteflip_tally.
+** Branch-free but for the list, in its own loop. */
+#if FLIPLAB_HAVE_CLONES
+__attribute__((target_clones("avx2", "default")))
+#endif
+static int siteflip_entry_counts(siteflip_cwork *w, int nentries, uint64_t dtbit) {
+  for (int e = 0; e < nentries; e++) {
+    const uint64_t m = w->emask[e], tied = w->tie[e] != 0;
+    const uint64_t one = (m != 0) & ((m & (m - 1)) == 0) & !tied;
+    w->etie[e] += tied;
+    w->eone[e] += one;
+    w->edt[e] += (m == dtbit) & !tied;
+  }
+  int n = 0;
+  for (int e = 0; e < nentries; e++) {
+    const uint64_t m = w->emask[e];
+    if (w->tie[e] == 0 && (m & (m - 1)) == 0 && m != 0) continue;
+    if (w->tie[e] == 0) w->emulti[n++] = e;
+  }
+  return n;
 }
 
 static int siteflip_ctz(uint64_t m) {   /* m != 0 */
@@ -454,37 +481,69 @@ static int siteflip_sinks_packed(siteflip_cwork *w, const siteflip_graph *g, uin
   return ns;
 }
 
+/* Adds the entries' running counts to the triangle rules' and clears them. */
+static void siteflip_flush(const siteflip_cplan *pl, siteflip_cwork *w, siteflip_counts *out) {
+  for (int e = 0; e < pl->nentries; e++) {
+    for (int i = pl->entry_rule[e]; i >= 0; i = pl->cr[i].next) {
+      out[i].tie += w->etie[e];
+      out[i].one_sink += w->eone[e];
+      out[i].sink_dt += w->edt[e];
+    }
+    w->etie[e] = w->eone[e] = w->edt[e] = 0;
+  }
+}
+
+/* Lists in w->sinks the nodes of sink mask m; returns their count. */
+static int siteflip_mask_sinks(siteflip_cwork *w, uint64_t m) {
+  int ns = 0;
+  for (; m != 0; m &= m - 1) w->sinks[ns++] = siteflip_ctz(m);
+  return ns;
+}
+
+/* siteflip_count on a graph of at most 64 quadrilaterals and nodes: the
+** triangle rules by entry of w->bits (rules sharing a measure and a joint
+** share one), in running form until siteflip_flush, except for the
+** samples with no sink or several, tallied rule by rule. */
+static void siteflip_count_entries(const siteflip_cplan *pl, siteflip_cwork *w,
+                                   const siteflip_graph *g, siteflip_counts *out) {
+  const uint64_t dtbit = g->delaunay >= 0 ? 1ull << g->delaunay : 0;
+  siteflip_sink_masks(w, g->nnodes, pl->nentries);
+  int nm = siteflip_entry_counts(w, pl->nentries, dtbit);
+  for (int k = 0; k < nm; k++) {
+    int e = w->emulti[k], ns = siteflip_mask_sinks(w, w->emask[e]);
+    for (int i = pl->entry_rule[e]; i >= 0; i = pl->cr[i].next) siteflip_tally(pl, w, g, i, ns, &out[i]);
+  }
+  for (int i = pl->first_quad; i >= 0; i = pl->cr[i].next) {
+    uint64_t bits;
+    if (siteflip_rule_bits(pl, w, g, i, &bits)) {
+      out[i].tie++;
+      continue;
+    }
+    uint64_t m = 0;
+    for (int u = 0; u < g->nnodes; u++) m |= (uint64_t)((bits & w->qmask[u]) == w->want[u]) << u;
+    siteflip_tally(pl, w, g, i, siteflip_mask_sinks(w, m), &out[i]);
+  }
+}
+
 /* Adds g's sample to out[0 .. nrules-1] in running form (siteflip_tally;
-** siteflip_counts_finish completes the counts). */
+** siteflip_flush, then siteflip_counts_finish complete the counts). */
 static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const siteflip_graph *g,
                            siteflip_counts *out) {
   siteflip_values(pl, g, w->val);
-  int packed = g->nquads <= 64, masks = packed && g->nnodes <= 64;
+  int packed = g->nquads <= 64;
   if (packed) siteflip_all_bits(pl, g, w);
+  if (packed && g->nnodes <= 64) {
+    siteflip_count_entries(pl, w, g, out);
+    return;
+  }
   for (int i = 0; i < pl->nrules; i++) {
     uint64_t bits;
-    int tied = siteflip_rule_bits(pl, w, g, i, &bits);
-    w->rtied[i] = (unsigned char)tied;
-    w->rbits[i] = bits;
-    out[i].tie += (uint64_t)tied;
-    if (masks || tied) continue;
-    /* Now, while w->dec holds rule i's decisions. */
-    int ns = packed ? siteflip_sinks_packed(w, g, bits) : siteflip_sinks(w, g, w->dec);
-    siteflip_tally(pl, w, g, i, ns, &out[i]);
-  }
-  if (!masks) return;
-  siteflip_sink_masks(w, g->nnodes, pl->nrules);
-  const uint64_t dtbit = g->delaunay >= 0 ? 1ull << g->delaunay : 0;
-  for (int i = 0; i < pl->nrules; i++) {
-    uint64_t m = w->smask[i];
-    if (w->rtied[i]) continue;
-    if (m != 0 && (m & (m - 1)) == 0) {   /* one sink: the common case */
-      out[i].one_sink++;
-      out[i].sink_dt += m == dtbit;
+    if (siteflip_rule_bits(pl, w, g, i, &bits)) {
+      out[i].tie++;
       continue;
     }
-    int ns = 0;
-    for (; m != 0; m &= m - 1) w->sinks[ns++] = siteflip_ctz(m);
+    /* Now, while w->dec holds rule i's decisions. */
+    int ns = packed ? siteflip_sinks_packed(w, g, bits) : siteflip_sinks(w, g, w->dec);
     siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
 }
@@ -532,6 +591,7 @@ static int siteflip_range(const siteflip_cplan *pl, siteflip_cwork *w, int sampl
     siteflip_count(pl, w, g, out);
     if (owned) siteflip_free(g);
   }
+  siteflip_flush(pl, w, out);
   return 0;
 }
 
@@ -637,6 +697,7 @@ int64_t siteflip_find_multi(const rule *r, int sampler, int n, uint64_t seed, ui
       if (g == NULL) break;
       siteflip_counts c = {0};
       siteflip_count(&pl, &w, g, &c);
+      siteflip_flush(&pl, &w, &c);
       if (c.multi_sink > 0) {
         found = (int64_t)i;
         memcpy(p, g->p, (size_t)n * sizeof *p);
