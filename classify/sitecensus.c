@@ -82,6 +82,8 @@ typedef struct siteflip_cplan {
 
 typedef struct siteflip_cwork {
   siteflip_graph *shape;     /* convex: the one shape, moved to each sample */
+  uint64_t *stab;            /* the shape's sink tables [nstab][256] (siteflip_cwork_tables) */
+  int nstab;                 /* 0: none */
   double *val, *mag, *h;     /* values, magnitudes, scratch: [triangle][nv] */
   size_t valcap, magcap, hcap;
   long long flags[SITEFLIP_SLOTS];
@@ -96,7 +98,8 @@ typedef struct siteflip_cwork {
   uint64_t emask[JOINT_COUNT * SITEFLIP_SLOTS];
   uint64_t etie[JOINT_COUNT * SITEFLIP_SLOTS], eone[JOINT_COUNT * SITEFLIP_SLOTS];
   uint64_t edt[JOINT_COUNT * SITEFLIP_SLOTS];
-  int emulti[JOINT_COUNT * SITEFLIP_SLOTS];
+  uint64_t eother[JOINT_COUNT * SITEFLIP_SLOTS];   /* 1: no sink or several, no tie */
+  int emulti[JOINT_COUNT * SITEFLIP_SLOTS + 1];
   unsigned char *out;
   double *key;
   int *sinks;
@@ -178,6 +181,7 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
 
 static void siteflip_cwork_free(siteflip_cwork *w) {
   siteflip_free(w->shape);
+  free(w->stab);
   free(w->val);
   free(w->mag);
   free(w->h);
@@ -241,6 +245,27 @@ static void siteflip_cwork_masks(siteflip_cwork *w, const siteflip_graph *g, int
     w->qmask[g->edge[e].bd] |= b;
     w->want[g->edge[e].bd] |= b;
   }
+}
+
+/* Sink tables for the convex shape, which every sample of a thread
+** shares.  Node u is a sink iff (bits & qmask[u]) == want[u]; cut the
+** bits into bytes b_c: u is a sink iff (b_c & qmask_c[u]) == want_c[u] for
+** every c (the byte c of each), so the sink mask is the AND over c of
+** stab[c][b_c], one load per byte instead of a test per node.  No tables
+** (nstab = 0) when memory is short: the node loop does the same work. */
+static void siteflip_cwork_tables(siteflip_cwork *w, const siteflip_graph *g) {
+  w->nstab = 0;
+  if (g->nquads > 64 || g->nnodes > 64) return;
+  int nc = (g->nquads + 7) / 8;
+  free(w->stab);
+  if ((w->stab = malloc((size_t)nc * 256 * sizeof *w->stab)) == NULL) return;
+  for (int c = 0; c < nc; c++)
+    for (uint64_t x = 0; x < 256; x++) {
+      uint64_t m = 0, bc = x << (8 * c), byte = 0xffull << (8 * c);
+      for (int u = 0; u < g->nnodes; u++) m |= (uint64_t)((bc & w->qmask[u]) == (w->want[u] & byte)) << u;
+      w->stab[c * 256 + x] = m;
+    }
+  w->nstab = nc;
 }
 
 /* ---- decisions -------------------------------------------------------------- */
@@ -338,18 +363,29 @@ __attribute__((target_clones("avx2", "default")))
 static int siteflip_entry_counts(siteflip_cwork *w, int nentries, uint64_t dtbit) {
   for (int e = 0; e < nentries; e++) {
     const uint64_t m = w->emask[e], tied = w->tie[e] != 0;
-    const uint64_t one = (m != 0) & ((m & (m - 1)) == 0) & !tied;
+    const uint64_t one = (m != 0) & ((m & (m - 1)) == 0);
     w->etie[e] += tied;
-    w->eone[e] += one;
+    w->eone[e] += one & !tied;
     w->edt[e] += (m == dtbit) & !tied;
+    w->eother[e] = !(one | tied);
   }
   int n = 0;
   for (int e = 0; e < nentries; e++) {
-    const uint64_t m = w->emask[e];
-    if (w->tie[e] == 0 && (m & (m - 1)) == 0 && m != 0) continue;
-    if (w->tie[e] == 0) w->emulti[n++] = e;
+    w->emulti[n] = e;
+    n += (int)w->eother[e];
   }
   return n;
+}
+
+/* siteflip_sink_masks by the tables of siteflip_cwork_tables. */
+static void siteflip_sink_masks_tab(siteflip_cwork *w, int nentries) {
+  const uint64_t *tab = w->stab;
+  for (int e = 0; e < nentries; e++) {
+    const uint64_t b = w->bits[e];
+    uint64_t m = tab[b & 255];
+    for (int c = 1; c < w->nstab; c++) m &= tab[c * 256 + ((b >> (8 * c)) & 255)];
+    w->emask[e] = m;
+  }
 }
 
 static int siteflip_ctz(uint64_t m) {   /* m != 0 */
@@ -507,7 +543,8 @@ static int siteflip_mask_sinks(siteflip_cwork *w, uint64_t m) {
 static void siteflip_count_entries(const siteflip_cplan *pl, siteflip_cwork *w,
                                    const siteflip_graph *g, siteflip_counts *out) {
   const uint64_t dtbit = g->delaunay >= 0 ? 1ull << g->delaunay : 0;
-  siteflip_sink_masks(w, g->nnodes, pl->nentries);
+  if (g == w->shape && w->nstab > 0) siteflip_sink_masks_tab(w, pl->nentries);
+  else siteflip_sink_masks(w, g->nnodes, pl->nentries);
   int nm = siteflip_entry_counts(w, pl->nentries, dtbit);
   for (int k = 0; k < nm; k++) {
     int e = w->emulti[k], ns = siteflip_mask_sinks(w, w->emask[e]);
@@ -564,7 +601,10 @@ static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork 
     int fresh = w->shape == NULL;
     if (fresh && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL) return NULL;
     g = w->shape;
-    if (fresh && siteflip_cwork_fit(w, g, pl) == 0) siteflip_cwork_masks(w, g, pl->nv);
+    if (fresh && siteflip_cwork_fit(w, g, pl) == 0) {
+      siteflip_cwork_masks(w, g, pl->nv);
+      siteflip_cwork_tables(w, g);
+    }
   }
   if (g == NULL || siteflip_cwork_fit(w, g, pl) != 0) {
     if (*owned) siteflip_free(g);
