@@ -84,6 +84,8 @@ typedef struct siteflip_cwork {
   siteflip_graph *shape;     /* convex: the one shape, moved to each sample */
   uint64_t *stab;            /* the shape's sink tables [nstab][256] (siteflip_cwork_tables) */
   int nstab;                 /* 0: none */
+  uint64_t dtbits;           /* with tables: DT's BD bits, and whether some is a tie */
+  int dttied;
   double *val, *mag, *h;     /* values, magnitudes, scratch: [triangle][nv] */
   size_t valcap, magcap, hcap;
   long long flags[SITEFLIP_SLOTS];
@@ -268,6 +270,13 @@ static void siteflip_cwork_tables(siteflip_cwork *w, const siteflip_graph *g) {
   w->nstab = nc;
 }
 
+/* The sink mask of decision bits b by the tables (nstab > 0). */
+static uint64_t siteflip_table_mask(const siteflip_cwork *w, uint64_t b) {
+  uint64_t m = w->stab[b & 255];
+  for (int c = 1; c < w->nstab; c++) m &= w->stab[c * 256 + ((b >> (8 * c)) & 255)];
+  return m;
+}
+
 /* ---- decisions -------------------------------------------------------------- */
 
 /* Every quadrilateral of g under a triangle rule, as rule_eval_tris decides
@@ -379,13 +388,15 @@ static int siteflip_entry_counts(siteflip_cwork *w, int nentries, uint64_t dtbit
 
 /* siteflip_sink_masks by the tables of siteflip_cwork_tables. */
 static void siteflip_sink_masks_tab(siteflip_cwork *w, int nentries) {
-  const uint64_t *tab = w->stab;
-  for (int e = 0; e < nentries; e++) {
-    const uint64_t b = w->bits[e];
-    uint64_t m = tab[b & 255];
-    for (int c = 1; c < w->nstab; c++) m &= tab[c * 256 + ((b >> (8 * c)) & 255)];
-    w->emask[e] = m;
+  const uint64_t *t0 = w->stab, *t1 = w->stab + 256;
+  if (w->nstab == 2) {   /* 9 to 16 quadrilaterals: hexagons */
+    for (int e = 0; e < nentries; e++) {
+      const uint64_t b = w->bits[e];
+      w->emask[e] = t0[b & 255] & t1[(b >> 8) & 255];
+    }
+    return;
   }
+  for (int e = 0; e < nentries; e++) w->emask[e] = siteflip_table_mask(w, w->bits[e]);
 }
 
 static int siteflip_ctz(uint64_t m) {   /* m != 0 */
@@ -550,14 +561,22 @@ static void siteflip_count_entries(const siteflip_cplan *pl, siteflip_cwork *w,
     int e = w->emulti[k], ns = siteflip_mask_sinks(w, w->emask[e]);
     for (int i = pl->entry_rule[e]; i >= 0; i = pl->cr[i].next) siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
+  const int tables = g == w->shape && w->nstab > 0;
   for (int i = pl->first_quad; i >= 0; i = pl->cr[i].next) {
-    uint64_t bits;
-    if (siteflip_rule_bits(pl, w, g, i, &bits)) {
-      out[i].tie++;
-      continue;
+    uint64_t bits, m = 0;
+    if (tables && pl->cr[i].dt) {   /* siteflip_sample's DT bits and sinks */
+      if (w->dttied) {
+        out[i].tie++;
+        continue;
+      }
+      m = siteflip_table_mask(w, w->dtbits);
+    } else {
+      if (siteflip_rule_bits(pl, w, g, i, &bits)) {
+        out[i].tie++;
+        continue;
+      }
+      for (int u = 0; u < g->nnodes; u++) m |= (uint64_t)((bits & w->qmask[u]) == w->want[u]) << u;
     }
-    uint64_t m = 0;
-    for (int u = 0; u < g->nnodes; u++) m |= (uint64_t)((bits & w->qmask[u]) == w->want[u]) << u;
     siteflip_tally(pl, w, g, i, siteflip_mask_sinks(w, m), &out[i]);
   }
 }
@@ -583,6 +602,28 @@ static void siteflip_count(const siteflip_cplan *pl, siteflip_cwork *w, const si
     int ns = packed ? siteflip_sinks_packed(w, g, bits) : siteflip_sinks(w, g, w->dec);
     siteflip_tally(pl, w, g, i, ns, &out[i]);
   }
+}
+
+/* g->delaunay for the moved convex shape: with tables and no tie, the
+** Delaunay node is DT's one sink (siteflip_delaunay_of's nodes no flip
+** leaves are then exactly the sinks), found by the tables; DT's bits and
+** tie kept for the DT rule. */
+static void siteflip_dt_node(siteflip_cwork *w, siteflip_graph *g) {
+  if (w->nstab == 0) {
+    g->delaunay = siteflip_delaunay_of(g, w->dtdec);
+    return;
+  }
+  uint64_t b = 0;
+  int tied = 0;
+  for (int q = 0; q < g->nquads; q++) {
+    b |= (uint64_t)(w->dtdec[q] == RULE_BD) << q;
+    tied |= w->dtdec[q] == RULE_EITHER;
+  }
+  w->dtbits = b;
+  w->dttied = tied;
+  uint64_t m = siteflip_table_mask(w, b);
+  if (tied) g->delaunay = siteflip_delaunay_of(g, w->dtdec);
+  else g->delaunay = m != 0 && (m & (m - 1)) == 0 ? siteflip_ctz(m) : -1;
 }
 
 /* The flip graph of sample i, ready for siteflip_count: the moved shape
@@ -617,7 +658,7 @@ static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork 
     /* siteflip_move, keeping DT's decisions for the DT rule. */
     siteflip_move_tris(g, p);
     siteflip_dt_decisions(g, w->dtdec);
-    g->delaunay = siteflip_delaunay_of(g, w->dtdec);
+    siteflip_dt_node(w, g);
   }
   return g;
 }
