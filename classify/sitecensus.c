@@ -22,7 +22,9 @@
 ** Sinks.  With at most 64 quadrilaterals the decisions pack into one word
 ** (bit q = 1 for BD); node u is a sink iff (bits & qmask[u]) == want[u],
 ** where qmask[u] marks the quadrilaterals of u's flips and want[u] those
-** where u holds BD.  Larger graphs walk the edge list.
+** where u holds BD.  Larger graphs walk the edge list.  Packed graphs are
+** counted by entry of the decision bits (one per measure and joint), and
+** the convex shape's masks come from per-byte tables (siteflip_cwork_tables).
 **
 ** GOT shortcut.  A flip that a triangle rule strictly prefers never
 ** raises the total badness: the total is the joint over all triangles, the
