@@ -91,8 +91,9 @@ static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r,
   t->P = t->R = t->r = t->h = t->rx = t->ry = NAN;
 
   double twice = 0, side[3] = {0, 0, 0}, a = 0, b = 0, c = 0, P = 0;
-  if (f & (GEOM_F_AREA | GEOM_F_ANGLES | GEOM_F_RADII)) twice = geom_twice_area_inline(p, q, r);
-  if (f & (GEOM_F_SIDES | GEOM_F_ANGLES | GEOM_F_PERIM | GEOM_F_RADII)) {
+  const unsigned radii = GEOM_F_CIRCUM | GEOM_F_INRADIUS | GEOM_F_HEIGHT;
+  if (f & (GEOM_F_AREA | GEOM_F_ANGLES | radii)) twice = geom_twice_area_inline(p, q, r);
+  if (f & (GEOM_F_SIDES | GEOM_F_ANGLES | GEOM_F_PERIM | radii)) {
     double e01x = q.x - p.x, e01y = q.y - p.y;
     double e02x = r.x - p.x, e02y = r.y - p.y;
     double e12x = r.x - q.x, e12y = r.y - q.y;
@@ -112,11 +113,9 @@ static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r,
   if (f & GEOM_F_ANGLES) geom_tri_angles(t, side, twice);
   if (f & GEOM_F_AREA) t->area = 0.5 * twice;
   if (f & GEOM_F_PERIM) t->P = P;
-  if (f & GEOM_F_RADII) {
-    t->R = a * b * c / (2.0 * twice);
-    t->r = twice / P;
-    t->h = twice / a;
-  }
+  if (f & GEOM_F_CIRCUM) t->R = a * b * c / (2.0 * twice);
+  if (f & GEOM_F_INRADIUS) t->r = twice / P;
+  if (f & GEOM_F_HEIGHT) t->h = twice / a;
   if (f & GEOM_F_RANGES) {
     t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
     t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);

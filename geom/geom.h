@@ -37,9 +37,11 @@ enum {
   GEOM_F_ANGLES = 2,   /* alpha, beta, gamma (two atan2, most of the cost) */
   GEOM_F_AREA = 4,     /* area */
   GEOM_F_PERIM = 8,    /* P */
-  GEOM_F_RADII = 16,   /* R, r, h */
+  GEOM_F_CIRCUM = 16,  /* R (each of R, r, h costs a division) */
   GEOM_F_RANGES = 32,  /* rx, ry */
-  GEOM_F_ALL = 63
+  GEOM_F_INRADIUS = 64,   /* r */
+  GEOM_F_HEIGHT = 128,    /* h */
+  GEOM_F_ALL = 255
 };
 /* Only the fields asked for (an OR of GEOM_F_*), each bit-identical to
 ** geom_tri_make's, the others NaN (v is always set): for a measure that
