@@ -25,7 +25,8 @@ static geom_point tgeom_pt(double x, double y) {
 
 /* ---- exact reference predicates (GMP rationals hold every double exactly) ---- */
 
-static int tgeom_orient_exact(geom_point a, geom_point b, geom_point c) {
+/* det = (bx-ax)(cy-ay) - (by-ay)(cx-ax), exactly, into det (initialised). */
+static void tgeom_orient_det(mpq_t det, geom_point a, geom_point b, geom_point c) {
   mpq_t bx, by, cx, cy, t, u;
   mpq_inits(bx, by, cx, cy, t, u, NULL);
   mpq_set_d(t, a.x);
@@ -36,9 +37,16 @@ static int tgeom_orient_exact(geom_point a, geom_point b, geom_point c) {
   mpq_set_d(cy, c.y); mpq_sub(cy, cy, t);
   mpq_mul(t, bx, cy);
   mpq_mul(u, by, cx);
-  mpq_sub(t, t, u);
-  int s = mpq_sgn(t);
+  mpq_sub(det, t, u);
   mpq_clears(bx, by, cx, cy, t, u, NULL);
+}
+
+static int tgeom_orient_exact(geom_point a, geom_point b, geom_point c) {
+  mpq_t det;
+  mpq_init(det);
+  tgeom_orient_det(det, a, b, c);
+  int s = mpq_sgn(det);
+  mpq_clear(det);
   return s;
 }
 
@@ -491,20 +499,12 @@ static void test_predicates_extreme(void **state) {
 /* |orientation determinant| in GMP rationals, rounded toward zero
 ** (mpq_get_d truncates): the reference for geom_twice_area_exact. */
 static double tgeom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
-  mpq_t bx, by, cx, cy, t, u;
-  mpq_inits(bx, by, cx, cy, t, u, NULL);
-  mpq_set_d(t, p.x);
-  mpq_set_d(bx, q.x); mpq_sub(bx, bx, t);
-  mpq_set_d(cx, r.x); mpq_sub(cx, cx, t);
-  mpq_set_d(t, p.y);
-  mpq_set_d(by, q.y); mpq_sub(by, by, t);
-  mpq_set_d(cy, r.y); mpq_sub(cy, cy, t);
-  mpq_mul(t, bx, cy);
-  mpq_mul(u, by, cx);
-  mpq_sub(t, t, u);
-  mpq_abs(t, t);
-  double v = mpq_get_d(t);
-  mpq_clears(bx, by, cx, cy, t, u, NULL);
+  mpq_t det;
+  mpq_init(det);
+  tgeom_orient_det(det, p, q, r);
+  mpq_abs(det, det);
+  double v = mpq_get_d(det);
+  mpq_clear(det);
   return v;
 }
 
