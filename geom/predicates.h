@@ -13,8 +13,8 @@
 ** which cover the rounding of the input differences too.  NaN and infinite
 ** coordinates give 0; callers validate input first.
 **
-** Depends on nothing but fliplab_config.h (the floating-point contract the
-** error bounds assume); geom.h builds on it.
+** Depends on nothing but <math.h> (fabs) and fliplab_config.h (the
+** floating-point contract the error bounds assume); geom.h builds on it.
 */
 #ifndef FLIPLAB_PREDICATES_H
 #define FLIPLAB_PREDICATES_H
