@@ -85,17 +85,6 @@ static double bench_ours(const geom_point *p, size_t n, const char *rname, int t
   return bench_median(t, runs);
 }
 
-static geom_point *bench_polygon(size_t n) {
-  geom_point *p = malloc(n * sizeof *p);
-  sampler_rng g;
-  sampler_seed(&g, 1, 0);
-  if (p == NULL || sampler_vector(&g, n, p) != 0) {
-    fprintf(stderr, "bench_got: sampler failed for n = %zu\n", n);
-    exit(1);
-  }
-  return p;
-}
-
 /* The machine's load average (Linux), printed with the tables: the
 ** targets are wall-clock times on 2 cores, which other processes skew. */
 static void bench_print_load(const char *when) {
@@ -121,7 +110,7 @@ int main(int argc, char **argv) {
     size_t last_n = 0;
     for (size_t s = 0; s < nsizes; s++) {
       size_t n = sizes[s];
-      geom_point *p = bench_polygon(n);
+      geom_point *p = bench_polygon("bench_got", sampler_vector, n);
       double key1 = 0, key2 = 0;
       double t1 = bench_ours(p, n, rules[rr], 1, 5, &key1);
       double t2 = bench_ours(p, n, rules[rr], 2, 5, &key2);
@@ -151,7 +140,8 @@ int main(int argc, char **argv) {
          "triangle, the slowest key); targets n = 1000 < 0.5 s, n = %zu < 4 s\n\n", nbig);
   printf("| measure  | 1000 l_1 | 1000 l_0 | %4zu l_1 | %4zu l_0 | targets |\n", nbig, nbig);
   printf("|----------|---------:|---------:|---------:|---------:|---------|\n");
-  geom_point *p1 = bench_polygon(1000), *p2 = bench_polygon(nbig);
+  geom_point *p1 = bench_polygon("bench_got", sampler_vector, 1000);
+  geom_point *p2 = bench_polygon("bench_got", sampler_vector, nbig);
   int allok = 1;
   for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
     char r1[64], r0[64];

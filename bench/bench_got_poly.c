@@ -25,19 +25,6 @@
 #define BENCH_RUNS 3
 
 
-typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
-
-static geom_point *bench_polygon(bench_sampler fn, size_t n) {
-  geom_point *p = malloc(n * sizeof *p);
-  sampler_rng g;
-  sampler_seed(&g, 1, 0);
-  if (p == NULL || fn(&g, n, p) != 0) {
-    fprintf(stderr, "bench_got_poly: sampler failed for n = %zu\n", n);
-    exit(1);
-  }
-  return p;
-}
-
 static double bench_last_cpu;
 
 static double bench_solve(const geom_point *p, size_t n, const char *rname, int mask,
@@ -90,7 +77,7 @@ static void bench_table_simple(int quick) {
     for (size_t a = 0; a < 3; a++) {
       size_t n = N[a];
       if (quick && n > 1000) continue;
-      geom_point *p = bench_polygon(S[s].fn, n);
+      geom_point *p = bench_polygon("bench_got_poly", S[s].fn, n);
       double tv, td;
       bench_phases(p, n, &tv, &td);
       unsigned char *V = malloc(n * n);
@@ -128,7 +115,7 @@ static void bench_table_cert(int quick) {
   for (size_t a = 0; a < 2; a++) {
     size_t n = N[a];
     if (quick && n > 1000) continue;
-    geom_point *p = bench_polygon(sampler_star, n);
+    geom_point *p = bench_polygon("bench_got_poly", sampler_star, n);
     for (int r = 0; r < 2; r++) {
       double t[BENCH_RUNS], c[51];
       got_result res;
@@ -151,7 +138,7 @@ static void bench_table_cert(int quick) {
 ** programme on the same polygon (results identical; tests check that). */
 static void bench_table_convex(void) {
   printf("\n| convex n | rule | convex path | masked path |\n|---:|---|---:|---:|\n");
-  geom_point *p = bench_polygon(sampler_vector, 1000);
+  geom_point *p = bench_polygon("bench_got_poly", sampler_vector, 1000);
   static const char *R[] = {"P_1", "sigma_2"};
   for (int r = 0; r < 2; r++) {
     double a[BENCH_RUNS], b[BENCH_RUNS];

@@ -1,5 +1,5 @@
 /*
-** benchutil.c: clocks, medians and the load average for bench/ (see
+** benchutil.c: clocks, medians, the load average and polygons for bench/ (see
 ** benchutil.h).
 */
 #include <math.h>
@@ -35,6 +35,17 @@ static int bench_cmp_time(const void *a, const void *b) {
 bench_time bench_median_time(bench_time *t, int n) {
   qsort(t, (size_t)n, sizeof *t, bench_cmp_time);
   return t[n / 2];
+}
+
+geom_point *bench_polygon(const char *prog, bench_sampler fn, size_t n) {
+  geom_point *p = malloc(n * sizeof *p);
+  sampler_rng g;
+  sampler_seed(&g, 1, 0);
+  if (p == NULL || fn(&g, n, p) != 0) {
+    fprintf(stderr, "%s: sampler failed for n = %zu\n", prog, n);
+    exit(1);
+  }
+  return p;
 }
 
 double bench_load(void) {

@@ -1,11 +1,14 @@
 /*
 ** benchutil.h: what every benchmark of bench/ needs besides the code it
-** times: wall and CPU clocks, the median of repeated runs, and the load
-** average printed beside the figures.  One home, so that every table in
-** the README is measured the same way.
+** times: wall and CPU clocks, the median of repeated runs, the load
+** average printed beside the figures, and seeded polygons to time.  One
+** home, so that every table in the README is measured the same way.
 */
 #ifndef FLIPLAB_BENCHUTIL_H
 #define FLIPLAB_BENCHUTIL_H
+
+#include <stddef.h>
+#include "sampler.h"
 
 /* Seconds on the monotonic clock (wall time). */
 double bench_wall(void);
@@ -23,5 +26,11 @@ bench_time bench_median_time(bench_time *t, int n);
 
 /* The one-minute load average (Linux /proc/loadavg), or NAN. */
 double bench_load(void);
+
+/* A polygon sampler of pentagon/sampler.h (sampler_vector, sampler_star...). */
+typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
+/* n vertices from fn with seed 1 (malloc'd); exits with a message naming
+** prog if the sampler or the allocation fails. */
+geom_point *bench_polygon(const char *prog, bench_sampler fn, size_t n);
 
 #endif
