@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "measure.h"
+#include "geom_tri_internal.h"
 
 /* The built-in measures, once: id, name, symbol, sign, description and the
 ** value as an expression of the triangle t.  The list generates both the
@@ -28,53 +29,76 @@
 static int measure_registered = MEASURE_BUILTIN_COUNT;
 
 #define MEASURE_LIST(X) \
-  X(MEASURE_NEG_ALPHA, "-alpha", "-α", NEG, "smallest angle", -t->alpha) \
-  X(MEASURE_BETA, "beta", "β", POS, "median angle", t->beta) \
-  X(MEASURE_GAMMA, "gamma", "γ", POS, "largest angle", t->gamma) \
-  X(MEASURE_A, "a", "a", POS, "length of the longest side", t->a) \
-  X(MEASURE_NEG_C, "-c", "-c", NEG, "length of the shortest side", -t->c) \
-  X(MEASURE_P, "P", "P", POS, "perimeter a+b+c", t->P) \
-  X(MEASURE_ABC, "abc", "abc", POS, "product of the sides", t->a * t->b * t->c) \
-  X(MEASURE_NEG_AREA, "-A", "-A", NEG, "area", -t->area) \
-  X(MEASURE_R, "R", "R", POS, "circumradius abc/(4A)", t->R) \
-  X(MEASURE_NEG_R, "-r", "-r", NEG, "inradius 2A/P", -t->r) \
-  X(MEASURE_NEG_H, "-a'", "-a'", NEG, "shortest altitude a' = 2A/a", -t->h) \
-  X(MEASURE_NEG_R_OVER_R, "-r/R", "-r/R", NEG, "inradius over circumradius", -(t->r / t->R)) \
-  X(MEASURE_NEG_R2_OVER_A, "-r2/A", "-r²/A", NEG, "incircle area over area, up to pi: 4A/P^2", \
-    -4.0 * t->area / (t->P * t->P)) \
-  X(MEASURE_NEG_C_OVER_A, "-c/a", "-c/a", NEG, "shortest over longest side", -(t->c / t->a)) \
-  X(MEASURE_NEG_C_OVER_P, "-c/P", "-c/P", NEG, "share of the perimeter in the shortest side", \
-    -(t->c / t->P)) \
-  X(MEASURE_A_MINUS_C, "a-c", "a-c", POS, "longest minus shortest side", t->a - t->c) \
-  X(MEASURE_B_OVER_C_MINUS_A, "b/(c-a)", "b/(c-a)", NEG, \
+  X(MEASURE_NEG_ALPHA, "-alpha", "-α", NEG, GEOM_F_ANGLES, "smallest angle", -t->alpha) \
+  X(MEASURE_BETA, "beta", "β", POS, GEOM_F_ANGLES, "median angle", t->beta) \
+  X(MEASURE_GAMMA, "gamma", "γ", POS, GEOM_F_ANGLES, "largest angle", t->gamma) \
+  X(MEASURE_A, "a", "a", POS, GEOM_F_SIDES, "length of the longest side", t->a) \
+  X(MEASURE_NEG_C, "-c", "-c", NEG, GEOM_F_SIDES, "length of the shortest side", -t->c) \
+  X(MEASURE_P, "P", "P", POS, GEOM_F_PERIM, "perimeter a+b+c", t->P) \
+  X(MEASURE_ABC, "abc", "abc", POS, GEOM_F_SIDES, "product of the sides", t->a * t->b * t->c) \
+  X(MEASURE_NEG_AREA, "-A", "-A", NEG, GEOM_F_AREA, "area", -t->area) \
+  X(MEASURE_R, "R", "R", POS, GEOM_F_CIRCUM, "circumradius abc/(4A)", t->R) \
+  X(MEASURE_NEG_R, "-r", "-r", NEG, GEOM_F_INRADIUS, "inradius 2A/P", -t->r) \
+  X(MEASURE_NEG_H, "-a'", "-a'", NEG, GEOM_F_HEIGHT, "shortest altitude a' = 2A/a", -t->h) \
+  X(MEASURE_NEG_R_OVER_R, "-r/R", "-r/R", NEG, GEOM_F_CIRCUM | GEOM_F_INRADIUS, \
+    "inradius over circumradius", -(t->r / t->R)) \
+  X(MEASURE_NEG_R2_OVER_A, "-r2/A", "-r²/A", NEG, GEOM_F_AREA | GEOM_F_PERIM, \
+    "incircle area over area, up to pi: 4A/P^2", -4.0 * t->area / (t->P * t->P)) \
+  X(MEASURE_NEG_C_OVER_A, "-c/a", "-c/a", NEG, GEOM_F_SIDES, "shortest over longest side", \
+    -(t->c / t->a)) \
+  X(MEASURE_NEG_C_OVER_P, "-c/P", "-c/P", NEG, GEOM_F_SIDES | GEOM_F_PERIM, \
+    "share of the perimeter in the shortest side", -(t->c / t->P)) \
+  X(MEASURE_A_MINUS_C, "a-c", "a-c", POS, GEOM_F_SIDES, "longest minus shortest side", \
+    t->a - t->c) \
+  X(MEASURE_B_OVER_C_MINUS_A, "b/(c-a)", "b/(c-a)", NEG, GEOM_F_SIDES, \
     "median side over (c-a); -inf for equilateral", -(t->b / (t->a - t->c))) \
-  X(MEASURE_LAMBDA, "lambda", "λ", POS, "aspect ratio a/a' = a^2/(2A)", t->a * t->a / (2.0 * t->area)) \
-  X(MEASURE_D, "d", "d", POS, "eccentricity R(1 - cos gamma) (project's reading of the OCR)", \
+  X(MEASURE_LAMBDA, "lambda", "λ", POS, GEOM_F_SIDES | GEOM_F_AREA, \
+    "aspect ratio a/a' = a^2/(2A)", t->a * t->a / (2.0 * t->area)) \
+  X(MEASURE_D, "d", "d", POS, GEOM_F_SIDES | GEOM_F_CIRCUM, \
+    "eccentricity R(1 - cos gamma) (project's reading of the OCR)", \
     t->R * (1.0 - (t->b * t->b + t->c * t->c - t->a * t->a) / (2.0 * t->b * t->c))) \
-  X(MEASURE_SIGMA, "sigma", "σ", POS, "standard deviation of the angles", \
+  X(MEASURE_SIGMA, "sigma", "σ", POS, GEOM_F_ANGLES, "standard deviation of the angles", \
     sqrt(((t->alpha - M_PI / 3) * (t->alpha - M_PI / 3) + (t->beta - M_PI / 3) * (t->beta - M_PI / 3) \
           + (t->gamma - M_PI / 3) * (t->gamma - M_PI / 3)) / 3.0)) \
-  X(MEASURE_PINF, "Pinf", "P∞", POS, "l_inf perimeter 2(rx+ry)", 2.0 * (t->rx + t->ry)) \
-  X(MEASURE_RINF, "Rinf", "R∞", POS, "smallest enclosing axis-parallel square: max(rx,ry)/2", \
-    0.5 * (t->rx > t->ry ? t->rx : t->ry)) \
-  X(MEASURE_NEG_RINF, "-rinf", "-r∞", NEG, "largest inscribed axis-parallel square: A/(rx+ry)", \
-    -t->area / (t->rx + t->ry))
+  X(MEASURE_PINF, "Pinf", "P∞", POS, GEOM_F_RANGES, "l_inf perimeter 2(rx+ry)", \
+    2.0 * (t->rx + t->ry)) \
+  X(MEASURE_RINF, "Rinf", "R∞", POS, GEOM_F_RANGES, \
+    "smallest enclosing axis-parallel square: max(rx,ry)/2", 0.5 * (t->rx > t->ry ? t->rx : t->ry)) \
+  X(MEASURE_NEG_RINF, "-rinf", "-r∞", NEG, GEOM_F_AREA | GEOM_F_RANGES, \
+    "largest inscribed axis-parallel square: A/(rx+ry)", -t->area / (t->rx + t->ry))
 
-#define MEASURE_FN(id, name, sym, sign, desc, expr) \
+#define MEASURE_FN(id, name, sym, sign, fields, desc, expr) \
   static double measure_fn_##id(const geom_tri *t, void *ctx) { (void)ctx; return expr; }
 MEASURE_LIST(MEASURE_FN)
 #undef MEASURE_FN
 
+/* The same expressions on a triangle made here, inline, with only the
+** fields they read: geom_tri_fill_values with a constant mask, which the
+** compiler specialises (the fields not read are never computed nor stored,
+** and the sides-only measures skip the canonical sort, which cannot change
+** them).  The same operations, so the same bits as measure_fn on
+** geom_tri_make_fields for points without NaN (tests/test_measures.c checks
+** it on stress triangles), without the calls. */
+#define MEASURE_PTS(id, name, sym, sign, fields, desc, expr) \
+  static double measure_pts_##id(geom_point p, geom_point q, geom_point r) { \
+    geom_tri tri; \
+    geom_tri_fill_values(&tri, p, q, r, fields); \
+    const geom_tri *t = &tri; \
+    return expr; \
+  }
+MEASURE_LIST(MEASURE_PTS)
+#undef MEASURE_PTS
+
 #define NEG MEASURE_NONPOS
 #define POS MEASURE_NONNEG
-#define MEASURE_ENTRY(id, name, sym, sign, desc, expr) [id] = {name, sym, desc, sign, measure_fn_##id, NULL},
+#define MEASURE_ENTRY(id, name, sym, sign, fields, desc, expr) [id] = {name, sym, desc, sign, measure_fn_##id, NULL},
 static measure measure_registry[MEASURE_MAX] = {MEASURE_LIST(MEASURE_ENTRY)};
 #undef MEASURE_ENTRY
 #undef NEG
 #undef POS
 
 void measure_eval_all(const geom_tri *t, double *out) {
-#define MEASURE_VALUE(id, name, sym, sign, desc, expr) out[id] = (expr);
+#define MEASURE_VALUE(id, name, sym, sign, fields, desc, expr) out[id] = (expr);
   MEASURE_LIST(MEASURE_VALUE)
 #undef MEASURE_VALUE
   for (int i = MEASURE_BUILTIN_COUNT; i < measure_registered; i++)
@@ -162,19 +186,23 @@ int measure_has_lower_bound(int id) {
          id == MEASURE_SIGMA;
 }
 
-/* The geom_tri fields each built-in measure's expression reads. */
+/* The geom_tri fields each built-in measure's expression reads, and its
+** inline evaluation from three points. */
+#define MEASURE_FIELDS(id, name, sym, sign, fields, desc, expr) [id] = fields,
 static const unsigned measure_builtin_fields[MEASURE_BUILTIN_COUNT] = {
-  [MEASURE_NEG_ALPHA] = GEOM_F_ANGLES, [MEASURE_BETA] = GEOM_F_ANGLES,
-  [MEASURE_GAMMA] = GEOM_F_ANGLES, [MEASURE_A] = GEOM_F_SIDES, [MEASURE_NEG_C] = GEOM_F_SIDES,
-  [MEASURE_P] = GEOM_F_PERIM, [MEASURE_ABC] = GEOM_F_SIDES, [MEASURE_NEG_AREA] = GEOM_F_AREA,
-  [MEASURE_R] = GEOM_F_CIRCUM, [MEASURE_NEG_R] = GEOM_F_INRADIUS,
-  [MEASURE_NEG_H] = GEOM_F_HEIGHT, [MEASURE_NEG_R_OVER_R] = GEOM_F_CIRCUM | GEOM_F_INRADIUS, [MEASURE_NEG_R2_OVER_A] = GEOM_F_AREA | GEOM_F_PERIM,
-  [MEASURE_NEG_C_OVER_A] = GEOM_F_SIDES, [MEASURE_NEG_C_OVER_P] = GEOM_F_SIDES | GEOM_F_PERIM,
-  [MEASURE_A_MINUS_C] = GEOM_F_SIDES, [MEASURE_B_OVER_C_MINUS_A] = GEOM_F_SIDES,
-  [MEASURE_LAMBDA] = GEOM_F_SIDES | GEOM_F_AREA, [MEASURE_D] = GEOM_F_SIDES | GEOM_F_CIRCUM,
-  [MEASURE_SIGMA] = GEOM_F_ANGLES, [MEASURE_PINF] = GEOM_F_RANGES,
-  [MEASURE_RINF] = GEOM_F_RANGES, [MEASURE_NEG_RINF] = GEOM_F_AREA | GEOM_F_RANGES,
+  MEASURE_LIST(MEASURE_FIELDS)
 };
+#undef MEASURE_FIELDS
+
+#define MEASURE_PTS_ENTRY(id, name, sym, sign, fields, desc, expr) [id] = measure_pts_##id,
+static const measure_points_fn measure_builtin_points[MEASURE_BUILTIN_COUNT] = {
+  MEASURE_LIST(MEASURE_PTS_ENTRY)
+};
+#undef MEASURE_PTS_ENTRY
+
+measure_points_fn measure_points(int id) {
+  return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_points[id] : NULL;
+}
 
 unsigned measure_fields(int id) {
   return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_fields[id] : GEOM_F_ALL;

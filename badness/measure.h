@@ -69,6 +69,13 @@ void measure_eval_all(const geom_tri *t, double *out);
 ** bit (tests/test_lot.c checks the table both ways). */
 unsigned measure_fields(int id);
 
+/* A built-in measure evaluated straight from three points, in any order:
+** measure_eval(id, t) for t = geom_tri_make_fields(p, q, r,
+** measure_fields(id)), bit for bit, at about half the cost (for hot loops:
+** lot/).  NULL for a user measure. */
+typedef double (*measure_points_fn)(geom_point p, geom_point q, geom_point r);
+measure_points_fn measure_points(int id);
+
 /* A cheap lower bound on measure_eval(id, t) for t made by geom_tri_make
 ** from p, q, r (that very double is >= the bound), or -INFINITY where there
 ** is none: the angle measures (-alpha, beta, gamma, sigma) from

@@ -1,10 +1,12 @@
 /*
 ** geom.c: triangle quantities, convex and simple polygon validation.
+** (The triangle's fields are computed in geom_tri_internal.h.)
 */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include "geom.h"
+#include "geom_tri_internal.h"
 
 static void geom_swap(geom_point *p, geom_point *q) {
   geom_point t = *p;
@@ -12,114 +14,16 @@ static void geom_swap(geom_point *p, geom_point *q) {
   *q = t;
 }
 
-/* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
-** accurate for tiny and for near-straight angles alike (acos of the law of
-** cosines loses half the digits there).  twice_area = |u x w| is passed in
-** so the three angles share one cross product. */
-static double geom_angle(geom_point o, geom_point u, geom_point w, double twice_area) {
-  double dot = (u.x - o.x) * (w.x - o.x) + (u.y - o.y) * (w.y - o.y);
-  return atan2(twice_area, dot);
-}
-
-/* Twice the area, accurate to a relative 2^-40.  The plain evaluation
-** fl(l - r), l and r the two products of the orientation determinant, is
-** off by at most bound = (3 + 16 eps) eps (|l| + |r|) (geom_orient's
-** ccwerrboundA, which covers the rounding of the coordinate differences), so
-** when |fl(l - r)| > 2^40 bound its relative error is below 2^-40 and it is
-** returned as it is (the same bits as before this filter existed).  Below
-** that, the triangle is flat (the determinant is under 2^-11 of the
-** permanent) and the value is computed exactly (floating-point expansions,
-** geom_twice_area_exact) and rounded toward zero (relative error below
-** 2^-52): cancellation would otherwise leave thin triangles with an area
-** that is wrong in every digit, or 0.  Out of line: random triangles pass
-** the filter 99.9% of the time, though the skinny candidates of some LOT
-** rules (beta, -c, -A) fail it about 4% of the time. */
-static inline double geom_twice_area_inline(geom_point p, geom_point q, geom_point r) {
-  double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
-  double l = bax * cay, rr = bay * cax;
-  double det = fabs(l - rr), perm = fabs(l) + fabs(rr);
-  /* perm >= 2^-900: the few absolute errors of 2^-1075 that underflow can
-  ** add (geom_filter_tiny's argument) are far below 2^-40 eps perm. */
-  if (det > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900) return det;
+#if defined(__GNUC__)
+__attribute__((cold, noinline))
+#endif
+double geom_twice_area_flat(geom_point p, geom_point q, geom_point r, double det) {
   if (!(geom_point_finite(p) && geom_point_finite(q) && geom_point_finite(r))) return det;
   return geom_twice_area_exact(p, q, r);
 }
 
 double geom_twice_area(geom_point p, geom_point q, geom_point r) {
   return geom_twice_area_inline(p, q, r);
-}
-
-/* The three angles from the sides (opposite v0, v1, v2) and twice the area.
-** The two angles opposite the two shorter sides come from atan2, which
-** keeps its relative accuracy for tiny angles (a needle has two); the
-** largest angle, at least pi/3, is pi minus their sum to within an ulp or
-** two of pi, which is a relative error of 1e-16 for it. */
-static void geom_tri_angles(geom_tri *t, const double side[3], double twice) {
-  int big = side[0] >= side[1] ? (side[0] >= side[2] ? 0 : 2) : (side[1] >= side[2] ? 1 : 2);
-  int i1 = (big + 1) % 3, i2 = (big + 2) % 3;
-  double ang[3];
-  ang[i1] = geom_angle(t->v[i1], t->v[i2], t->v[big], twice);
-  ang[i2] = geom_angle(t->v[i2], t->v[big], t->v[i1], twice);
-  ang[big] = M_PI - (ang[i1] + ang[i2]);
-  /* The two longest sides can round to the same double while their
-  ** opposite angles are pi - 5e-20 and 5e-20 (a flat triangle with one
-  ** very short side; found by fuzz/fuzz_quad_dt): then "big" may name the
-  ** tiny angle, and pi minus the others leaves 0 or less.  The largest
-  ** angle is at least pi/3 > 1, so a value below 1 means the guess was
-  ** wrong: compute that angle by atan2 as well. */
-  if (ang[big] < 1.0) ang[big] = geom_angle(t->v[big], t->v[i1], t->v[i2], twice);
-  /* Sorting the angle values themselves (not pairing them with sorted
-  ** sides) keeps alpha <= beta <= gamma even where rounding disagrees. */
-  t->alpha = geom_min3(ang[0], ang[1], ang[2]);
-  t->beta = geom_mid3(ang[0], ang[1], ang[2]);
-  t->gamma = geom_max3(ang[0], ang[1], ang[2]);
-}
-
-/* Everything below is computed from the canonically ordered vertices
-** v0 < v1 < v2 (lexicographic), so the result does not depend on the order
-** the caller listed them in.  Each field is computed by the same
-** operations whatever else is asked for, so it has the same bits; the
-** fields not asked for are NaN. */
-static void geom_tri_fill(geom_tri *t, geom_point p, geom_point q, geom_point r, unsigned f) {
-  if (geom_lexless(q, p)) geom_swap(&p, &q);
-  if (geom_lexless(r, q)) geom_swap(&q, &r);
-  if (geom_lexless(q, p)) geom_swap(&p, &q);
-  t->v[0] = p;
-  t->v[1] = q;
-  t->v[2] = r;
-  t->a = t->b = t->c = t->alpha = t->beta = t->gamma = t->area = NAN;
-  t->P = t->R = t->r = t->h = t->rx = t->ry = NAN;
-
-  double twice = 0, side[3] = {0, 0, 0}, a = 0, b = 0, c = 0, P = 0;
-  const unsigned radii = GEOM_F_CIRCUM | GEOM_F_INRADIUS | GEOM_F_HEIGHT;
-  if (f & (GEOM_F_AREA | GEOM_F_ANGLES | radii)) twice = geom_twice_area_inline(p, q, r);
-  if (f & (GEOM_F_SIDES | GEOM_F_ANGLES | GEOM_F_PERIM | radii)) {
-    double e01x = q.x - p.x, e01y = q.y - p.y;
-    double e02x = r.x - p.x, e02y = r.y - p.y;
-    double e12x = r.x - q.x, e12y = r.y - q.y;
-    side[0] = sqrt(e12x * e12x + e12y * e12y);   /* opposite v0 */
-    side[1] = sqrt(e02x * e02x + e02y * e02y);   /* opposite v1 */
-    side[2] = sqrt(e01x * e01x + e01y * e01y);   /* opposite v2 */
-    a = geom_max3(side[0], side[1], side[2]);
-    b = geom_mid3(side[0], side[1], side[2]);
-    c = geom_min3(side[0], side[1], side[2]);
-    P = a + b + c;
-  }
-  if (f & GEOM_F_SIDES) {
-    t->a = a;
-    t->b = b;
-    t->c = c;
-  }
-  if (f & GEOM_F_ANGLES) geom_tri_angles(t, side, twice);
-  if (f & GEOM_F_AREA) t->area = 0.5 * twice;
-  if (f & GEOM_F_PERIM) t->P = P;
-  if (f & GEOM_F_CIRCUM) t->R = a * b * c / (2.0 * twice);
-  if (f & GEOM_F_INRADIUS) t->r = twice / P;
-  if (f & GEOM_F_HEIGHT) t->h = twice / a;
-  if (f & GEOM_F_RANGES) {
-    t->rx = geom_max3(p.x, q.x, r.x) - geom_min3(p.x, q.x, r.x);
-    t->ry = geom_max3(p.y, q.y, r.y) - geom_min3(p.y, q.y, r.y);
-  }
 }
 
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {

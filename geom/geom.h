@@ -84,9 +84,11 @@ int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which
                       double lo[3], double hi[3]);
 
 /* The lexicographic order of points (by x, then y): a triangle's canonical
-** vertex order, the samplers' collinear tie-break, the plugin rotation. */
+** vertex order, the samplers' collinear tie-break, the plugin rotation.
+** Bitwise & and | rather than && and ||: the same value, without branches
+** (geom_tri_make's canonical sort depends on it). */
 static inline int geom_lexless(geom_point a, geom_point b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
+  return (a.x < b.x) | ((a.x == b.x) & (a.y < b.y));
 }
 
 double geom_dist(geom_point p, geom_point q);

@@ -67,7 +67,10 @@ double joint_apply(joint_id j, int s, double x, double y) {
 
 int joint_compare_values(double a, double b, double tie_eps) {
   if (a == b || isnan(a) || isnan(b)) return 0;
-  if (!isinf(a) && !isinf(b) && fabs(a - b) <= tie_eps * fmax(fabs(a), fabs(b))) return 0;
+  /* a, b are not NaN here, so the larger magnitude by a plain comparison is
+  ** fmax's value, without libm's call. */
+  double ma = fabs(a), mb = fabs(b);
+  if (!isinf(a) && !isinf(b) && fabs(a - b) <= tie_eps * (ma > mb ? ma : mb)) return 0;
   return a < b ? -1 : 1;
 }
 

@@ -454,6 +454,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   L->m.r = &L->r;
   L->m.meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
   L->m.fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
+  L->m.pts = o->r.kind == RULE_TRIANGLE ? measure_points(o->r.measure) : NULL;
   L->st.n = n;
   lot_run_init(&R, L, o);
   R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
@@ -500,6 +501,7 @@ int lot_reflip(lot *L, const lot_options *o) {
   L->r = o->r;
   m->meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
   m->fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
+  m->pts = o->r.kind == RULE_TRIANGLE ? measure_points(o->r.measure) : NULL;
   int tri = o->r.kind == RULE_TRIANGLE && !o->decide;
   if (tri && m->bad == NULL && (m->bad = malloc((size_t)m->cap * sizeof *m->bad)) == NULL)
     return -1;

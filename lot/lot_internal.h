@@ -41,6 +41,7 @@ typedef struct lot_mesh {
   const rule *r;        /* for the badness cache */
   const measure *meas;  /* r's measure, looked up once (triangle-based rules) */
   unsigned fields;      /* the geom_tri fields the measure reads (measure_fields) */
+  measure_points_fn pts;   /* its evaluation from points (built-ins), or NULL */
 } lot_mesh;
 
 /* Corner i of triangle t, the triangle of corner c, and the next and

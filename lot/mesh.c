@@ -45,6 +45,7 @@ void lot_mesh_free(lot_mesh *m) {
 }
 
 double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
+  if (m->pts) return m->pts(m->p[a], m->p[b], m->p[c]);   /* built-in: inline kernel */
   geom_tri t;
   geom_tri_make_fields(&t, m->p[a], m->p[b], m->p[c], m->fields);
   return m->meas->fn(&t, m->meas->ctx);

@@ -473,6 +473,52 @@ static void test_lower_bounds(void **state) {
     if (!measure_has_lower_bound(id)) assert_true(measure_lower_bound(id, a, b, c) == -INFINITY);
 }
 
+/* measure_points(id) is measure_eval on geom_tri_make, bit for bit, in
+** every vertex order: on the stress set, and on triangles with signed
+** zeros, coincident and collinear vertices (the sort-free and origin-only
+** paths of geom_tri_fill_values must agree with the canonical sort there
+** too).  Two NaN results count as equal. */
+static int tmeas_points_agree(int id, const geom_point v[3]) {
+  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  geom_tri t;
+  geom_tri_make(&t, v[0], v[1], v[2]);
+  double x = measure_eval(id, &t);
+  for (int o = 0; o < 6; o++) {
+    double y = measure_points(id)(v[perm[o][0]], v[perm[o][1]], v[perm[o][2]]);
+    if (!(isnan(x) && isnan(y)) && memcmp(&x, &y, sizeof x) != 0) {
+      print_error("%s of (%a,%a) (%a,%a) (%a,%a) order %d: %a, expected %a\n",
+                  measure_get(id)->name, v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y, o, y, x);
+      return 0;
+    }
+  }
+  return 1;
+}
+
+static void test_points_kernels(void **state) {
+  (void)state;
+  static const geom_point special[][3] = {
+    {{0, 0}, {-0.0, 1}, {1, -0.0}}, {{-0.0, -0.0}, {0, 0}, {1, 1}}, {{0, 0}, {0, 0}, {0, 0}},
+    {{0, 0}, {-0.0, 0}, {0, -0.0}}, {{1, 2}, {1, 2}, {3, 5}}, {{0, 0}, {1, 1}, {2, 2}},
+    {{0, 1}, {0, 2}, {0, 3}}, {{-0.0, 1}, {0, 2}, {-0.0, 3}}, {{1e-30, 0}, {0, 1e-30}, {0, 0}},
+  };
+  testutil_rng g = {4242};
+  long bad = 0, n = 0;
+  for (int id = 0; id < MEASURE_BUILTIN_COUNT; id++) {
+    assert_non_null(measure_points(id));
+    for (size_t s = 0; s < sizeof special / sizeof special[0]; s++, n++)
+      bad += !tmeas_points_agree(id, special[s]);
+    for (int it = 0; it < 6000; it++, n++) {
+      geom_point v[3];
+      tmeas_stress_tri(&g, it % 6, v);
+      bad += !tmeas_points_agree(id, v);
+    }
+  }
+  print_message("measure_points: %ld triangles x 6 orders, %ld differing\n", n, bad);
+  assert_int_equal(bad, 0);
+  assert_null(measure_points(MEASURE_BUILTIN_COUNT));
+  assert_null(measure_points(-1));
+}
+
 /* A dense sweep of one angle through (0, pi) at several scales: the
 ** enclosures of geom_angle_bounds hold the angles geom_tri_make computes
 ** (this probes the atan polynomial on a fine grid of arguments). */
@@ -511,6 +557,7 @@ int main(void) {
     cmocka_unit_test(test_rinf_appendix_c),
     cmocka_unit_test(test_random_independent),
     cmocka_unit_test(test_lower_bounds),
+    cmocka_unit_test(test_points_kernels),
     cmocka_unit_test(test_angle_bounds_sweep),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
