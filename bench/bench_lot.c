@@ -15,7 +15,9 @@
 **   2. peak memory: a child process builds the DT and reports its peak
 **      resident set (getrusage), input points included, in bytes per point;
 **   3. every built-in triangle-based rule with joint l_1: time (median of
-**      RULE_RUNS), ratio to fliplab's DT time, flips per point, status.
+**      RULE_RUNS), ratio to fliplab's DT time (each rule run is paired
+**      with a DT run just before it; the median of the pairs' ratios),
+**      flips per point, status.
 ** Times cover the triangulation only (input validation, ordering,
 ** insertion, flips), not sampling or output.
 */
@@ -50,11 +52,25 @@ static void bench_once(const geom_point *p, size_t n, const rule *r, double *wal
   lot_free(L);
 }
 
-/* Median wall time of `runs` builds (*cpu: median CPU time). */
+/* Median wall time of `runs` builds of rule r (*cpu: median CPU time),
+** each run next to a DT run: *ratio is the median of the per-pair ratios
+** of wall times (*cratio: of CPU times), which the machine's drift from
+** minute to minute hardly moves, since both members of a pair see the
+** same load. */
 static double bench_rule(const geom_point *p, size_t n, const rule *r, int runs, double *cpu,
-                         uint64_t *flips, lot_status *status) {
-  double t[16], c[16];
-  for (int k = 0; k < runs; k++) bench_once(p, n, r, &t[k], &c[k], flips, status);
+                         double *ratio, double *cratio, uint64_t *flips, lot_status *status) {
+  double t[16], c[16], q[16], cq[16], dw, dc;
+  rule dt = rule_delaunay();
+  uint64_t dflips;
+  lot_status dstatus;
+  for (int k = 0; k < runs; k++) {
+    bench_once(p, n, &dt, &dw, &dc, &dflips, &dstatus);
+    bench_once(p, n, r, &t[k], &c[k], flips, status);
+    q[k] = t[k] / dw;
+    cq[k] = c[k] / dc;
+  }
+  *ratio = bench_median(q, runs);
+  *cratio = bench_median(cq, runs);
   *cpu = bench_median(c, runs);
   return bench_median(t, runs);
 }
@@ -126,7 +142,7 @@ int main(int argc, char **argv) {
   }
   double tdt = bench_median(tw, runs), cdt = bench_median(tc, runs);
   double tcg = have_cgal ? bench_median(cw, runs) : NAN, ccg = have_cgal ? bench_median(cc, runs) : NAN;
-  printf("| rule | time (s) | CPU (s) | time / fliplab DT | flips/point | status |\n");
+  printf("| rule | time (s) | CPU (s) | time / fliplab DT (paired runs) | flips/point | status |\n");
   printf("|---|---:|---:|---:|---:|---|\n");
   printf("| DT (fliplab, incremental, spatial order) | %.3f | %.3f | 1.00 | %.3f | %s |\n", tdt,
          cdt, (double)flips / (double)n, status == LOT_CONVERGED ? "converged" : "NOT converged");
@@ -140,9 +156,9 @@ int main(int argc, char **argv) {
     rule r;
     char err[256];
     if (rule_triangle(m, JOINT_SUM, &r, err, sizeof err) != 0) continue;
-    double c, t = bench_rule(p, n, &r, rule_runs, &c, &flips, &status);
-    printf("| %s | %.3f | %.3f | %.2f (CPU %.2f) | %.3f | %s |\n", r.name, t, c, t / tdt,
-           c / cdt, (double)flips / (double)n,
+    double c, q, cq, t = bench_rule(p, n, &r, rule_runs, &c, &q, &cq, &flips, &status);
+    printf("| %s | %.3f | %.3f | %.2f (CPU %.2f) | %.3f | %s |\n", r.name, t, c, q, cq,
+           (double)flips / (double)n,
            status == LOT_CONVERGED ? "converged" : status == LOT_CYCLE ? "cycle" : "budget");
     fflush(stdout);
   }

@@ -50,7 +50,8 @@ void geom_tri_make_fields(geom_tri *t, geom_point p, geom_point q, geom_point r,
                           unsigned fields);
 
 /* Smallest, largest and median of three non-NaN values: plain comparisons
-** rather than fmin/fmax, which compile to branch-free minsd/maxsd. */
+** rather than fmin/fmax (libm calls); they compile to branch-free
+** minsd/maxsd. */
 static inline double geom_min3(double a, double b, double c) {
   double m = a < b ? a : b;
   return m < c ? m : c;
@@ -61,9 +62,15 @@ static inline double geom_max3(double a, double b, double c) {
   return m > c ? m : c;
 }
 
+/* The median as c clamped to [lo, hi], written as two plain selections
+** so that it too compiles to minsd/maxsd instead of a branch that random
+** values mispredict half the time.  The same bits as "c < lo ? lo : c > hi
+** ? hi : c" for every input, signed zeros and NaN included: c is kept
+** whenever it is neither above hi nor below lo. */
 static inline double geom_mid3(double a, double b, double c) {
   double lo = a < b ? a : b, hi = a > b ? a : b;
-  return c < lo ? lo : c > hi ? hi : c;
+  double m = c > hi ? hi : c;
+  return m < lo ? lo : m;
 }
 
 /* Cheap enclosures of the angles geom_tri_make computes, without atan2:

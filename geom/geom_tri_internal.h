@@ -13,7 +13,12 @@
 #define FLIPLAB_GEOM_TRI_INTERNAL_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "geom.h"
+#if FLIPLAB_HAVE_SSE2
+#include <emmintrin.h>
+#endif
 
 /* The angle at vertex o between the edges to u and w: atan2(|u x w|, u . w),
 ** accurate for tiny and for near-straight angles alike (acos of the law of
@@ -78,26 +83,38 @@ static inline void geom_tri_angles(geom_tri *t, const double side[3], double twi
   t->gamma = geom_max3(ang[0], ang[1], ang[2]);
 }
 
+/* Exchange *a and *b when s is 1 (s is 0 or 1), without a branch.  The
+** order of three random points is a coin toss, so as a branch each
+** exchange was mispredicted half the time: with the LOT's 27 triangles per
+** point that cost more than the rest of the triangle.  SSE2: the two
+** points' difference masked, xor-ed into both; elsewhere the same with
+** 64-bit integers. */
+static inline void geom_cswap(unsigned s, geom_point *a, geom_point *b) {
+#if FLIPLAB_HAVE_SSE2
+  __m128d va = _mm_loadu_pd(&a->x), vb = _mm_loadu_pd(&b->x);
+  __m128d d = _mm_and_pd(_mm_xor_pd(va, vb), _mm_castsi128_pd(_mm_set1_epi64x(-(long long)s)));
+  _mm_storeu_pd(&a->x, _mm_xor_pd(va, d));
+  _mm_storeu_pd(&b->x, _mm_xor_pd(vb, d));
+#else
+  uint64_t m = -(uint64_t)s, ax, ay, bx, by;
+  memcpy(&ax, &a->x, 8); memcpy(&ay, &a->y, 8);
+  memcpy(&bx, &b->x, 8); memcpy(&by, &b->y, 8);
+  uint64_t dx = (ax ^ bx) & m, dy = (ay ^ by) & m;
+  ax ^= dx; bx ^= dx; ay ^= dy; by ^= dy;
+  memcpy(&a->x, &ax, 8); memcpy(&a->y, &ay, 8);
+  memcpy(&b->x, &bx, 8); memcpy(&b->y, &by, 8);
+#endif
+}
+
 /* The canonical order: the three-comparator network (compare-exchange
-** (0,1), (1,2), (0,1)) on indices rather than on the points, the same
-** comparisons on the same values as swapping the points themselves, so the
-** same order for every input, NaN included.  Written (with geom_lexless's
-** bitwise form) so that it compiles to conditional moves: the order of
-** three random points is a coin toss, and as branches it cost a
-** mispredicted jump or two per triangle. */
-static inline void geom_tri_sort3(geom_point p0, geom_point p1, geom_point p2, geom_point *p,
-                                  geom_point *q, geom_point *r) {
-  const geom_point v[3] = {p0, p1, p2};
-  unsigned i = 0, j = 1, k = 2, s, x;
-  s = (unsigned)geom_lexless(v[j], v[i]);
-  x = s ? i : j; i = s ? j : i; j = x;
-  s = (unsigned)geom_lexless(v[k], v[j]);
-  x = s ? j : k; j = s ? k : j; k = x;
-  s = (unsigned)geom_lexless(v[j], v[i]);
-  x = s ? i : j; i = s ? j : i; j = x;
-  *p = v[i];
-  *q = v[j];
-  *r = v[k];
+** (0,1), (1,2), (0,1)) with geom_lexless, whose bitwise form has no branch
+** either.  A network of strict comparisons is a stable sort, and its
+** comparisons are the same on the same values whatever the input, NaN
+** included. */
+static inline void geom_tri_sort3(geom_point *p, geom_point *q, geom_point *r) {
+  geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
+  geom_cswap((unsigned)geom_lexless(*r, *q), q, r);
+  geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
 }
 
 /* Everything below is computed from the canonically ordered vertices
@@ -147,9 +164,8 @@ static inline void geom_tri_fill_sorted(geom_tri *t, geom_point p, geom_point q,
 
 static inline void geom_tri_fill(geom_tri *t, geom_point p0, geom_point p1, geom_point p2,
                                  unsigned f) {
-  geom_point p, q, r;
-  geom_tri_sort3(p0, p1, p2, &p, &q, &r);
-  geom_tri_fill_sorted(t, p, q, r, f);
+  geom_tri_sort3(&p0, &p1, &p2);
+  geom_tri_fill_sorted(t, p0, p1, p2, f);
 }
 
 /* The fields whose values depend on which vertex comes first: the twice
@@ -168,15 +184,8 @@ static inline void geom_tri_fill(geom_tri *t, geom_point p0, geom_point p1, geom
 ** hot loops that pay a mispredicted branch or two for the sort otherwise. */
 static inline void geom_tri_fill_values(geom_tri *t, geom_point p0, geom_point p1,
                                         geom_point p2, unsigned f) {
-  if (f & (GEOM_F_ANGLES | GEOM_F_RANGES)) {
-    geom_tri_fill(t, p0, p1, p2, f);
-  } else if (f & GEOM_F_ORDERED) {   /* the lexicographically smallest vertex first */
-    geom_point m = geom_lexless(p1, p0) ? p1 : p0, o = geom_lexless(p1, p0) ? p0 : p1;
-    int s = geom_lexless(p2, m);
-    geom_tri_fill_sorted(t, s ? p2 : m, s ? m : o, s ? o : p2, f);
-  } else {
-    geom_tri_fill_sorted(t, p0, p1, p2, f);
-  }
+  if (f & (GEOM_F_ORDERED | GEOM_F_RANGES)) geom_tri_fill(t, p0, p1, p2, f);
+  else geom_tri_fill_sorted(t, p0, p1, p2, f);
 }
 
 #endif
