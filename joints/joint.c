@@ -110,6 +110,22 @@ double joint_apply_split(joint_id j, int s, double x, double y, int *e) {
   return -joint_split_mag(j, -x, -y, e);
 }
 
+/* joint_apply for the comparisons of the joints without a split form,
+** with the three that flip loops use most written out, so that they
+** inline instead of calling through the table (a LOT compares two joint
+** values for every examined edge).  l_1 as x + y for either sign: for
+** s < 0 the table computes -((-x) + (-y)), which rounds to the same value
+** (round to nearest is symmetric) except that a zero sum may have the
+** other sign, and joint_compare_values does not see the sign of a zero. */
+static double joint_apply_plain(joint_id j, int s, double x, double y) {
+  switch (j) {
+    case JOINT_SUM: return x + y;
+    case JOINT_MIN: return joint_min(x, y);
+    case JOINT_MAX: return joint_max(x, y);
+    default: return joint_apply(j, s, x, y);
+  }
+}
+
 /* Both values scaled by 2^-E, E the larger exponent of the finite non-zero
 ** ones (0, inf and NaN are unchanged by scaling and keep their own value):
 ** exact unless the smaller one falls below 2^-1022 of the larger, where it
@@ -119,7 +135,8 @@ int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
   /* Only the product and the root-sum-square have a split form; for the
   ** other joints e1 = e2 = 0 below and this is the same comparison. */
   if (j != JOINT_PRODUCT && j != JOINT_RSS)
-    return joint_compare_values(joint_apply(j, s, x1, y1), joint_apply(j, s, x2, y2), tie_eps);
+    return joint_compare_values(joint_apply_plain(j, s, x1, y1), joint_apply_plain(j, s, x2, y2),
+                                tie_eps);
   int e1, e2;
   double m1 = joint_apply_split(j, s, x1, y1, &e1);
   double m2 = joint_apply_split(j, s, x2, y2, &e2);

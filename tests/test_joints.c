@@ -264,6 +264,46 @@ static void test_keys(void **state) {
     }
 }
 
+/* joint_compare decides as joint_compare_values on joint_apply's values,
+** for the joints it evaluates plainly (every one but l_0 and l_2, whose
+** split form has its own tests): on random values of both sign domains,
+** with zeros of both signs, infinities and near-ties at the tolerance. */
+static double tjoint_hard(testutil_rng *g, int s) {
+  static const double special[] = {0.0, -0.0, INFINITY, 1.0, 0x1p-1000, 0x1p1000};
+  double u = testutil_uniform(g);
+  if (u < 0.2) return s * special[testutil_next(g) % 6];
+  return tjoint_value(g, s);
+}
+
+static void test_compare_plain(void **state) {
+  (void)state;
+  static const double eps[] = {0.0, 1e-12, 1e-6};
+  testutil_rng g = {4711};
+  long bad = 0;
+  for (int j = 0; j < JOINT_COUNT; j++) {
+    if (j == JOINT_PRODUCT || j == JOINT_RSS) continue;
+    for (int k = 0; k < TJOINT_SAMPLES; k++) {
+      int s = k % 2 ? -1 : 1;
+      double x1 = tjoint_hard(&g, s), y1 = tjoint_hard(&g, s), x2, y2;
+      if (k % 3 == 0) {   /* a near-tie: the same pair, one value nudged */
+        x2 = y1;
+        y2 = x1 * (1 + 1e-12 * (testutil_uniform(&g) - 0.5));
+      } else {
+        x2 = tjoint_hard(&g, s);
+        y2 = tjoint_hard(&g, s);
+      }
+      for (int e = 0; e < 3; e++) {
+        int want = joint_compare_values(joint_apply(j, s, x1, y1), joint_apply(j, s, x2, y2), eps[e]);
+        int got = joint_compare(j, s, x1, y1, x2, y2, eps[e]);
+        if (got != want && bad++ < 5)
+          print_error("joint %s s=%d (%a, %a) vs (%a, %a) eps %g: %d, expected %d\n",
+                      joint_get(j)->name, s, x1, y1, x2, y2, eps[e], got, want);
+      }
+    }
+  }
+  assert_int_equal(bad, 0);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_table),
@@ -274,6 +314,7 @@ int main(void) {
     cmocka_unit_test(test_identity),
     cmocka_unit_test(test_infinite_inputs),
     cmocka_unit_test(test_keys),
+    cmocka_unit_test(test_compare_plain),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
