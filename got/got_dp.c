@@ -321,6 +321,7 @@ size_t got_memory_needed(size_t n, int measure) {
   size_t tables = 1 + (size_t)got_kernel_tables(measure);
   return n * n * sizeof(double) * tables          /* keys + pair tables */
        + n * (n - 1) / 2 * sizeof(int32_t)        /* argmin */
+       + n * n                                    /* valid diagonals (simple polygons) */
        + n * (sizeof(got_node) + 64);             /* backtracking, buffers */
 }
 

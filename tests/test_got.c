@@ -451,6 +451,9 @@ static void test_limits(void **state) {
   assert_int_equal(got_check_memory(1000000000, MEASURE_P, err, sizeof err), -1);
   assert_non_null(strstr(err, "too large"));
   assert_true(got_memory_needed(2000, MEASURE_SIGMA) > got_memory_needed(2000, MEASURE_NEG_AREA));
+  /* at least the n^2 keys and the n^2-byte table of valid diagonals of a
+  ** simple polygon (once left out of the estimate) */
+  assert_true(got_memory_needed(1000, MEASURE_P) >= (size_t)1000 * 1000 * (sizeof(double) + 1));
 
   geom_point p[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   rule dt = rule_delaunay();
