@@ -451,9 +451,12 @@ static void test_limits(void **state) {
   assert_int_equal(got_check_memory(1000000000, MEASURE_P, err, sizeof err), -1);
   assert_non_null(strstr(err, "too large"));
   assert_true(got_memory_needed(2000, MEASURE_SIGMA) > got_memory_needed(2000, MEASURE_NEG_AREA));
-  /* at least the n^2 keys and the n^2-byte table of valid diagonals of a
-  ** simple polygon (once left out of the estimate) */
-  assert_true(got_memory_needed(1000, MEASURE_P) >= (size_t)1000 * 1000 * (sizeof(double) + 1));
+  /* at least its Theta(n^2) tables: keys and pair tables, argmin, and the
+  ** n^2-byte table of valid diagonals of a simple polygon (once left out) */
+  for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
+    size_t n = 1000, k = 1 + (size_t)got_kernel_tables(m);
+    assert_true(got_memory_needed(n, m) >= n * n * 8 * k + n * (n - 1) / 2 * 4 + n * n);
+  }
 
   geom_point p[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   rule dt = rule_delaunay();
