@@ -13,6 +13,7 @@
 ** mesh, so runs are reproducible; after far more steps than triangles the
 ** walk gives way to a scan of every triangle, so it always ends.
 */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "lot_internal.h"
@@ -81,16 +82,23 @@ void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   m->last = 0;
 }
 
-/* i mod 3 for i < 6, by table: the walk's edge arithmetic without divisions. */
+/* i mod 3 for i < 6, by table: the first step's and lot_scan's edge
+** arithmetic without divisions. */
 static const uint8_t lot_mod3[6] = {0, 1, 2, 0, 1, 2};
 
-/* A random edge 0, 1 or 2 (xorshift64; the high word times 3, >> 32). */
-static uint32_t lot_walk_rand3(lot_mesh *m) {
-  uint64_t x = m->walk;
+/* The next and previous slot of slot f < 3, read from two-bit fields: the
+** walk's slot arithmetic without a load or a branch. */
+static inline uint32_t lot_slot_next(uint32_t f) { return (0x09u >> (2 * f)) & 3; }
+static inline uint32_t lot_slot_prev(uint32_t f) { return (0x12u >> (2 * f)) & 3; }
+
+/* A random edge 0, 1 or 2 (xorshift64 on the state *s; the high word
+** times 3, >> 32). */
+static inline uint32_t lot_walk_rand3(uint64_t *s) {
+  uint64_t x = *s;
   x ^= x << 13;
   x ^= x >> 7;
   x ^= x << 17;
-  m->walk = x;
+  *s = x;
   return (uint32_t)(((x >> 32) * 3) >> 32);
 }
 
@@ -133,45 +141,155 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
   return LOT_ON_VERTEX;   /* unreachable for a valid mesh */
 }
 
-lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
-  uint32_t t = m->last, from = 3;   /* from: the edge we entered by (3 = none) */
+/* The walk inside a triangle it has entered: nc is the corner opposite the
+** edge it came through, whose apex A = tv[nc] is the one vertex the step
+** has to load; that edge runs from L = tv[next(nc)] to R = tv[prev(nc)],
+** and dl = L - q, dr = R - q come from the triangle before.  Crossing the
+** edge opposite L (R -> A) makes A the next triangle's L; crossing the
+** edge opposite R (A -> L) makes A its R. */
+typedef struct lot_walk {
+  uint32_t nc;
+  geom_point dl, dr;
+} lot_walk;
+
+static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
+  return (geom_point){a.x - q.x, a.y - q.y};
+}
+
+/* q's side of the directed line a -> b from da = a - q and db = b - q:
+** orient(a, b, q) = orient(q, a, b) = da.x db.y - da.y db.x.  That is
+** Shewchuk's orient2d(a, b, q) in his own form (differences to the third
+** point), and his bound ccwerrboundA, |fl(det) - det| <= (3 + 16 eps) eps
+** (|l| + |r|) with l, r the two products, covers the rounding of da, db and
+** of the products, as for geom_orient_filtered (which takes differences to
+** a instead); within the coordinate contract nothing under- or overflows
+** (geom_orient_valid).  So a larger |fl(det)| has the exact sign: +1 or -1;
+** 0 means the filter cannot tell and the caller asks geom_orient_exact.
+** Both comparisons are made, without a branch, because the walk's next
+** step depends on them and their outcome is a coin toss. */
+static inline int lot_walk_filter(geom_point da, geom_point db) {
+  double l = da.x * db.y, r = da.y * db.x, det = l - r;
+  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
+  return (det > bound) - (-det > bound);
+}
+
+/* The filter left *sl (edge R -> A) or *sr (edge A -> L) undecided (0):
+** settle them exactly, in the order the step reads them (r_first: the
+** edge opposite R first), the second only when q is not beyond the first:
+** the exact path runs no more often than the step needs it. */
+static void lot_walk_settle(const lot_mesh *m, uint32_t nc, geom_point q, int r_first,
+                            int *sl, int *sr) {
+  geom_point pa = m->p[m->tv[nc]], pl = m->p[m->tv[lot_next3(nc)]];
+  geom_point pr = m->p[m->tv[lot_prev3(nc)]];
+  for (int k = 0; k < 2; k++) {
+    int right = (k == 0) == (r_first != 0);
+    int *s = right ? sr : sl;
+    if (*s == 0) *s = right ? geom_orient_exact(pa, pl, q) : geom_orient_exact(pr, pa, q);
+    if (*s < 0) return;
+  }
+}
+
+/* One step from the triangle of w->nc (real, apex a): cross an edge q is
+** strictly beyond, or stop (return 1, *where and *c set) when there is
+** none.  The edge tried first is the one after a drawn edge e0 in the
+** order e0, e0 + 1, e0 + 2, skipping the way in: the edge opposite R when
+** e0 is R's slot, else the edge opposite L.  Both orientations are
+** computed and the exit chosen by selects rather than branches: which
+** edge q lies beyond is unpredictable, and a mispredicted branch costs
+** more than the second test. */
+static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, uint32_t a, geom_point q,
+                                uint64_t *s, uint32_t *c, lot_where *where) {
+  uint32_t f = lot_slot(w->nc), t4 = w->nc - f;
+  uint32_t fl = lot_slot_next(f), fr = lot_slot_prev(f);   /* the slots of L and R */
+  int r_first = lot_walk_rand3(s) == fr;
+  geom_point da = lot_walk_diff(m->p[a], q);
+  int sl = lot_walk_filter(w->dr, da), sr = lot_walk_filter(da, w->dl);
+  if ((sl == 0) | (sr == 0)) lot_walk_settle(m, w->nc, q, r_first, &sl, &sr);
+  int xl = sl < 0, xr = sr < 0;
+  if (!(xl | xr)) {   /* q is strictly on the inner side of the edge we came by */
+    int o[3];
+    o[f] = 1;
+    o[fl] = sl;
+    o[fr] = sr;
+    *where = lot_classify(lot_tri_of(w->nc), o, c);
+    return 1;
+  }
+  int cross_r = xr & (r_first | !xl);
+  w->nc = m->tn[t4 + (cross_r ? fr : fl)];
+  w->dl = cross_r ? w->dl : da;
+  w->dr = cross_r ? da : w->dr;
+  return 0;
+}
+
+/* The first step, in the real triangle t: the edges in the order e0,
+** e0 + 1, e0 + 2 from a drawn e0, crossing the first that q is strictly
+** beyond.  Returns 1 (*where and *c set) when there is none, else 0 with
+** *w in the triangle beyond. */
+static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t *s,
+                          lot_walk *w, uint32_t *c, lot_where *where) {
   const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
-  for (int g = 0; g < 3; g++)
-    if (v[g] == LOT_GHOST) {       /* start from the real triangle next to a ghost */
-      t = lot_tri_of(m->tn[LOT_CORNER(t, g)]);
-      break;
+  uint32_t e0 = lot_walk_rand3(s);
+  int o[3] = {1, 1, 1};
+  for (uint32_t k = 0; k < 3; k++) {
+    uint32_t e = lot_mod3[e0 + k];
+    geom_point pr = m->p[v[lot_mod3[e + 1]]], pl = m->p[v[lot_mod3[e + 2]]];
+    o[e] = geom_orient_valid(pr, pl, q);
+    if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
+      w->nc = m->tn[LOT_CORNER(t, e)];
+      w->dl = lot_walk_diff(pl, q);
+      w->dr = lot_walk_diff(pr, q);
+      return 0;
     }
-  uint64_t limit = 4 * (uint64_t)m->nt + 64;
-  for (uint64_t step = 0; step < limit; step++) {
-    v = m->tv + LOT_CORNER((size_t)t, 0);
-    int o[3] = {1, 1, 1};
-    uint32_t e0 = lot_walk_rand3(m), cross = 3;
-    for (uint32_t k = 0; k < 3; k++) {
-      uint32_t e = lot_mod3[e0 + k];
-      if (e == from) continue;     /* q is on the inner side of the edge we came through */
-      o[e] = geom_orient_valid(m->p[v[lot_mod3[e + 1]]], m->p[v[lot_mod3[e + 2]]], q);
-      if (o[e] < 0) {
-        cross = e;
+  }
+  *where = lot_classify(t, o, c);
+  return 1;
+}
+
+/* Where the walk starts: m->last, or the real triangle next to it if it
+** is a ghost. */
+static uint32_t lot_walk_start(const lot_mesh *m) {
+  uint32_t t = m->last;
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+  for (uint32_t g = 0; g < 3; g++)
+    if (v[g] == LOT_GHOST) return lot_tri_of(m->tn[LOT_CORNER(t, g)]);
+  return t;
+}
+
+/* The remembering stochastic walk (file comment).  Why it ends: in a
+** Delaunay triangulation any visibility walk does (Edelsbrunner), but in
+** the needle-filled LOTs of other rules a fixed choice of exit edge can
+** cycle for ever; with each step's first edge drawn at random, both exits
+** have a probability of at least 1/3 whenever q is beyond both, so the
+** walk leaves any cycle with probability 1 (Devillers, Pion and Teillaud,
+** 2002).  For a guarantee rather than a probability, after 4 nt + 64 steps
+** lot_scan decides.  A ghost triangle is recognised by its apex: a real
+** triangle's neighbour across an edge is a ghost exactly when the vertex
+** opposite that edge is LOT_GHOST, which the step loads anyway.
+** Each step draws one number whether or not it needs it: the sequence of
+** draws, and so the path and the side of an edge it reaches a point on
+** (which decides the triangles' numbering and the flips' order), are those
+** of the step-by-step walk this replaced. */
+lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
+  uint64_t s = m->walk, limit = 4 * (uint64_t)m->nt + 64;
+  lot_walk w;
+  lot_where where;
+  if (!lot_walk_first(m, lot_walk_start(m), q, &s, &w, c, &where)) {
+    for (uint64_t step = 1;; step++) {
+      uint32_t a = m->tv[w.nc];
+      if (a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
+        *c = w.nc;
+        where = LOT_OUTSIDE;
         break;
       }
-    }
-    if (cross == 3) {
-      if (from != 3) {   /* the edge we came by: q is strictly on its inner side */
-        o[from] = 1;
+      if (step == limit) {
+        where = lot_scan(m, q, c);
+        break;
       }
-      return lot_classify(t, o, c);
+      if (lot_walk_step(m, &w, a, q, &s, c, &where)) break;
     }
-    uint32_t nc = m->tn[LOT_CORNER(t, cross)], nt = lot_tri_of(nc);
-    if (lot_is_ghost(m, nt)) {
-      /* the ghost's ghost corner */
-      const uint32_t *w = m->tv + LOT_CORNER((size_t)nt, 0);
-      *c = LOT_CORNER(nt, w[0] == LOT_GHOST ? 0u : w[1] == LOT_GHOST ? 1u : 2u);
-      return LOT_OUTSIDE;
-    }
-    t = nt;
-    from = lot_slot(nc);
   }
-  return lot_scan(m, q, c);
+  m->walk = s;
+  return where;
 }
 
 /* Split triangle t = (a, b, c) at k: (a, b, k), (b, c, k), (c, a, k). */
