@@ -142,14 +142,15 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
 }
 
 /* The walk inside a triangle it has entered: nc is the corner opposite the
-** edge it came through, whose apex A = tv[nc] is the one vertex the step
-** has to load; that edge runs from L = tv[next(nc)] to R = tv[prev(nc)],
-** and dl = L - q, dr = R - q come from the triangle before.  Crossing the
-** edge opposite L (R -> A) makes A the next triangle's L; crossing the
-** edge opposite R (A -> L) makes A its R. */
+** edge it came through, a = tv[nc] its apex and pa a's point (when a is
+** not LOT_GHOST); that edge runs from L = tv[next(nc)] to R =
+** tv[prev(nc)], and d[0] = L - q, d[1] = R - q come from the triangle
+** before.  Leaving by the edge opposite L (R -> A) makes A the next
+** triangle's L, by the edge opposite R (A -> L) its R: exit x (0 or 1)
+** replaces d[x]. */
 typedef struct lot_walk {
-  uint32_t nc;
-  geom_point dl, dr;
+  uint32_t nc, a;
+  geom_point pa, d[2];
 } lot_walk;
 
 static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
@@ -163,61 +164,93 @@ static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
 ** (|l| + |r|) with l, r the two products, covers the rounding of da, db and
 ** of the products, as for geom_orient_filtered (which takes differences to
 ** a instead); within the coordinate contract nothing under- or overflows
-** (geom_orient_valid).  So a larger |fl(det)| has the exact sign: +1 or -1;
-** 0 means the filter cannot tell and the caller asks geom_orient_exact.
-** Both comparisons are made, without a branch, because the walk's next
-** step depends on them and their outcome is a coin toss. */
-static inline int lot_walk_filter(geom_point da, geom_point db) {
+** (geom_orient_valid).  So when |fl(det)| is larger, fl(det) has the exact
+** sign; otherwise *unsure is set and the caller asks geom_orient_exact.
+** Either way the walk sees the sign geom_orient_valid would give. */
+static inline double lot_walk_det(geom_point da, geom_point db, int *unsure) {
   double l = da.x * db.y, r = da.y * db.x, det = l - r;
   double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
-  return (det > bound) - (-det > bound);
+  *unsure |= fabs(det) <= bound;
+  return det;
 }
 
-/* The filter left *sl (edge R -> A) or *sr (edge A -> L) undecided (0):
-** settle them exactly, in the order the step reads them (r_first: the
-** edge opposite R first), the second only when q is not beyond the first:
-** the exact path runs no more often than the step needs it. */
-static void lot_walk_settle(const lot_mesh *m, uint32_t nc, geom_point q, int r_first,
-                            int *sl, int *sr) {
-  geom_point pa = m->p[m->tv[nc]], pl = m->p[m->tv[lot_next3(nc)]];
-  geom_point pr = m->p[m->tv[lot_prev3(nc)]];
+/* The filter could not tell the side of the edge opposite L (R -> A) or
+** of the edge opposite R (A -> L): settle them exactly, in the order the
+** step reads them (r_first: the edge opposite R first), the second only
+** when q is not beyond the first, so the exact path runs no more often
+** than the step needs it.  *sl, *sr: the signs (a sign not needed stays
+** 1); returns which are negative (bit 0: sl, bit 1: sr). */
+static unsigned lot_walk_settle(const lot_mesh *m, const lot_walk *w, geom_point q, int r_first,
+                                int *sl, int *sr) {
+  geom_point pl = m->p[m->tv[lot_next3(w->nc)]], pr = m->p[m->tv[lot_prev3(w->nc)]];
+  geom_point da = lot_walk_diff(w->pa, q);
   for (int k = 0; k < 2; k++) {
-    int right = (k == 0) == (r_first != 0);
+    int right = (k == 0) == (r_first != 0), unsure = 0;
+    double det = right ? lot_walk_det(da, w->d[0], &unsure) : lot_walk_det(w->d[1], da, &unsure);
     int *s = right ? sr : sl;
-    if (*s == 0) *s = right ? geom_orient_exact(pa, pl, q) : geom_orient_exact(pr, pa, q);
-    if (*s < 0) return;
+    if (unsure) *s = right ? geom_orient_exact(w->pa, pl, q) : geom_orient_exact(pr, w->pa, q);
+    else *s = det < 0 ? -1 : 1;
+    if (*s < 0) return right ? 2u : 1u;
   }
+  return 0;
 }
 
-/* One step from the triangle of w->nc (real, apex a): cross an edge q is
-** strictly beyond, or stop (return 1, *where and *c set) when there is
-** none.  The edge tried first is the one after a drawn edge e0 in the
-** order e0, e0 + 1, e0 + 2, skipping the way in: the edge opposite R when
-** e0 is R's slot, else the edge opposite L.  Both orientations are
-** computed and the exit chosen by selects rather than branches: which
-** edge q lies beyond is unpredictable, and a mispredicted branch costs
-** more than the second test. */
-static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, uint32_t a, geom_point q,
-                                uint64_t *s, uint32_t *c, lot_where *where) {
+/* The exit (0: the edge opposite L, 1: the edge opposite R) by bit i of
+** LOT_WALK_EXIT, i = [q beyond the edge opposite L] + 2 [beyond the edge
+** opposite R] + 4 [the edge opposite R is tried first]: the one tried
+** first if q is beyond it, else the other. */
+#define LOT_WALK_EXIT 0xC4u
+
+/* One step from the real triangle of w->nc: cross an edge q is strictly
+** beyond, or stop (return 1, *where and *c set) when there is none.  The
+** edge tried first is the first after a drawn edge e0 in the order e0,
+** e0 + 1, e0 + 2, skipping the way in: the edge opposite R when e0 is R's
+** slot, else the edge opposite L.
+** Which exit q lies beyond is a coin toss, so a branch on it would be
+** mispredicted every other step.  Instead both orientations are computed
+** and the exit picked by indexing; and both possible next triangles' apexes
+** are loaded while the orientations are computed, so that the chain from
+** one step to the next is the arithmetic, not three dependent loads. */
+static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, uint64_t *s,
+                                uint32_t *c, lot_where *where) {
   uint32_t f = lot_slot(w->nc), t4 = w->nc - f;
-  uint32_t fl = lot_slot_next(f), fr = lot_slot_prev(f);   /* the slots of L and R */
-  int r_first = lot_walk_rand3(s) == fr;
-  geom_point da = lot_walk_diff(m->p[a], q);
-  int sl = lot_walk_filter(w->dr, da), sr = lot_walk_filter(da, w->dl);
-  if ((sl == 0) | (sr == 0)) lot_walk_settle(m, w->nc, q, r_first, &sl, &sr);
-  int xl = sl < 0, xr = sr < 0;
-  if (!(xl | xr)) {   /* q is strictly on the inner side of the edge we came by */
+  uint32_t fx[2] = {lot_slot_next(f), lot_slot_prev(f)};   /* the slots of L and R */
+  uint32_t nx[2], ax[2];
+  geom_point px[2];
+  for (int x = 0; x < 2; x++) {
+    nx[x] = m->tn[t4 + fx[x]];
+    ax[x] = m->tv[nx[x]];
+    px[x] = m->p[ax[x] != LOT_GHOST ? ax[x] : 0];   /* a ghost's point is never read */
+  }
+  unsigned r_first = lot_walk_rand3(s) == fx[1], i;
+  int unsure = 0, sl = 1, sr = 1;
+  geom_point da = lot_walk_diff(w->pa, q);
+  double detl = lot_walk_det(w->d[1], da, &unsure), detr = lot_walk_det(da, w->d[0], &unsure);
+  if (unsure) {
+    i = lot_walk_settle(m, w, q, (int)r_first, &sl, &sr);
+  } else {
+    /* Past the filter det != 0 and its sign bit says det < 0.  The stop
+    ** test reads the smaller value, and the exit the two bits, so that the
+    ** compiler does not split the exit's choice into branches. */
+    double least = detl < detr ? detl : detr;
+    uint64_t bl, br;
+    memcpy(&bl, &detl, sizeof bl);
+    memcpy(&br, &detr, sizeof br);
+    i = least > 0 ? 0 : (unsigned)(bl >> 63 | br >> 63 << 1);
+  }
+  if (i == 0) {   /* q is strictly on the inner side of the edge we came by */
     int o[3];
     o[f] = 1;
-    o[fl] = sl;
-    o[fr] = sr;
+    o[fx[0]] = sl;
+    o[fx[1]] = sr;
     *where = lot_classify(lot_tri_of(w->nc), o, c);
     return 1;
   }
-  int cross_r = xr & (r_first | !xl);
-  w->nc = m->tn[t4 + (cross_r ? fr : fl)];
-  w->dl = cross_r ? w->dl : da;
-  w->dr = cross_r ? da : w->dr;
+  unsigned x = (LOT_WALK_EXIT >> (i | r_first << 2)) & 1;
+  w->d[x] = da;
+  w->nc = nx[x];
+  w->a = ax[x];
+  w->pa = px[x];
   return 0;
 }
 
@@ -236,8 +269,10 @@ static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t 
     o[e] = geom_orient_valid(pr, pl, q);
     if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
       w->nc = m->tn[LOT_CORNER(t, e)];
-      w->dl = lot_walk_diff(pl, q);
-      w->dr = lot_walk_diff(pr, q);
+      w->a = m->tv[w->nc];
+      if (w->a != LOT_GHOST) w->pa = m->p[w->a];
+      w->d[0] = lot_walk_diff(pl, q);
+      w->d[1] = lot_walk_diff(pr, q);
       return 0;
     }
   }
@@ -275,8 +310,7 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
   lot_where where;
   if (!lot_walk_first(m, lot_walk_start(m), q, &s, &w, c, &where)) {
     for (uint64_t step = 1;; step++) {
-      uint32_t a = m->tv[w.nc];
-      if (a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
+      if (w.a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
         *c = w.nc;
         where = LOT_OUTSIDE;
         break;
@@ -285,7 +319,7 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
         where = lot_scan(m, q, c);
         break;
       }
-      if (lot_walk_step(m, &w, a, q, &s, c, &where)) break;
+      if (lot_walk_step(m, &w, q, &s, c, &where)) break;
     }
   }
   m->walk = s;
