@@ -86,10 +86,12 @@ void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
 ** arithmetic without divisions. */
 static const uint8_t lot_mod3[6] = {0, 1, 2, 0, 1, 2};
 
-/* The next and previous slot of slot f < 3, read from two-bit fields: the
-** walk's slot arithmetic without a load or a branch. */
-static inline uint32_t lot_slot_next(uint32_t f) { return (0x09u >> (2 * f)) & 3; }
-static inline uint32_t lot_slot_prev(uint32_t f) { return (0x12u >> (2 * f)) & 3; }
+/* The next and previous corner of corner c in its triangle, by a table of
+** steps rather than lot_next3's test, which the compiler makes a branch:
+** in the walk the slot is a coin toss. */
+static const int8_t lot_walk_dnext[4] = {1, 1, -2, 0}, lot_walk_dprev[4] = {2, -1, -1, 0};
+static inline uint32_t lot_walk_next3(uint32_t c) { return c + (uint32_t)lot_walk_dnext[c & 3]; }
+static inline uint32_t lot_walk_prev3(uint32_t c) { return c + (uint32_t)lot_walk_dprev[c & 3]; }
 
 /* A random edge 0, 1 or 2 (xorshift64 on the state *s; the high word
 ** times 3, >> 32). */
@@ -145,13 +147,33 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
 ** edge it came through, a = tv[nc] its apex and pa a's point (when a is
 ** not LOT_GHOST); that edge runs from L = tv[next(nc)] to R =
 ** tv[prev(nc)], and d[0] = L - q, d[1] = R - q come from the triangle
-** before.  Leaving by the edge opposite L (R -> A) makes A the next
-** triangle's L, by the edge opposite R (A -> L) its R: exit x (0 or 1)
-** replaces d[x]. */
+** before.  The two ways on are exit 0, the edge opposite L (R -> A), which
+** makes A the next triangle's L, and exit 1, the edge opposite R (A -> L),
+** which makes A its R: exit x replaces d[x] by A - q.  nx[x] = tn[corner
+** of L or R] is the corner beyond exit x, loaded a step ahead. */
 typedef struct lot_walk {
-  uint32_t nc, a;
+  uint32_t nc, a, nx[2];
   geom_point pa, d[2];
 } lot_walk;
+
+/* The triangles beyond both exits, loaded (lot_walk_step): their entry
+** corners, apexes, apex points and the corners beyond their own exits,
+** one array per field so that the step's choice reads each with one
+** indexed load. */
+typedef struct lot_walk_ahead {
+  uint32_t nc[2], a[2], nx0[2], nx1[2];
+  geom_point pa[2];
+} lot_walk_ahead;
+
+/* Load the triangle entered at corner nc as candidate x of *h. */
+static inline void lot_walk_load(const lot_mesh *m, uint32_t nc, lot_walk_ahead *h, int x) {
+  uint32_t a = m->tv[nc];
+  h->nc[x] = nc;
+  h->a[x] = a;
+  h->pa[x] = m->p[a != LOT_GHOST ? a : 0];   /* a ghost's point is never read */
+  h->nx0[x] = m->tn[lot_walk_next3(nc)];
+  h->nx1[x] = m->tn[lot_walk_prev3(nc)];
+}
 
 static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
   return (geom_point){a.x - q.x, a.y - q.y};
@@ -165,8 +187,8 @@ static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
 ** of the products, as for geom_orient_filtered (which takes differences to
 ** a instead); within the coordinate contract nothing under- or overflows
 ** (geom_orient_valid).  So when |fl(det)| is larger, fl(det) has the exact
-** sign; otherwise *unsure is set and the caller asks geom_orient_exact.
-** Either way the walk sees the sign geom_orient_valid would give. */
+** sign (and is not 0); otherwise *unsure is set and the step asks
+** geom_orient_valid.  Either way the walk sees the exact sign. */
 static inline double lot_walk_det(geom_point da, geom_point db, int *unsure) {
   double l = da.x * db.y, r = da.y * db.x, det = l - r;
   double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
@@ -174,83 +196,78 @@ static inline double lot_walk_det(geom_point da, geom_point db, int *unsure) {
   return det;
 }
 
-/* The filter could not tell the side of the edge opposite L (R -> A) or
-** of the edge opposite R (A -> L): settle them exactly, in the order the
-** step reads them (r_first: the edge opposite R first), the second only
-** when q is not beyond the first, so the exact path runs no more often
-** than the step needs it.  *sl, *sr: the signs (a sign not needed stays
-** 1); returns which are negative (bit 0: sl, bit 1: sr). */
-static unsigned lot_walk_settle(const lot_mesh *m, const lot_walk *w, geom_point q, int r_first,
-                                int *sl, int *sr) {
-  geom_point pl = m->p[m->tv[lot_next3(w->nc)]], pr = m->p[m->tv[lot_prev3(w->nc)]];
-  geom_point da = lot_walk_diff(w->pa, q);
-  for (int k = 0; k < 2; k++) {
-    int right = (k == 0) == (r_first != 0), unsure = 0;
-    double det = right ? lot_walk_det(da, w->d[0], &unsure) : lot_walk_det(w->d[1], da, &unsure);
-    int *s = right ? sr : sl;
-    if (unsure) *s = right ? geom_orient_exact(w->pa, pl, q) : geom_orient_exact(pr, w->pa, q);
-    else *s = det < 0 ? -1 : 1;
-    if (*s < 0) return right ? 2u : 1u;
+/* The filter could not tell a side: decide the exit with geom_orient_valid
+** instead, reading the edges in the step's order (r_first: the edge
+** opposite R first) and the second only when q is not beyond the first.
+** Returns bit 0 for the edge opposite L, bit 1 for the edge opposite R,
+** 0 when q is beyond neither. */
+static unsigned lot_walk_settle(const lot_mesh *m, uint32_t nc, geom_point q, unsigned r_first) {
+  geom_point pa = m->p[m->tv[nc]], pl = m->p[m->tv[lot_next3(nc)]];
+  geom_point pr = m->p[m->tv[lot_prev3(nc)]];
+  for (unsigned k = 0; k < 2; k++) {
+    unsigned right = (k == 0) == (r_first != 0);
+    if ((right ? geom_orient_valid(pa, pl, q) : geom_orient_valid(pr, pa, q)) < 0)
+      return right ? 2u : 1u;
   }
   return 0;
 }
 
-/* The exit (0: the edge opposite L, 1: the edge opposite R) by bit i of
+/* The walk ends in the real triangle of corner nc, q strictly on the inner
+** side of the edge opposite nc and not beyond the other two: where in it. */
+static lot_where lot_walk_stop(const lot_mesh *m, uint32_t nc, geom_point q, uint32_t *c) {
+  uint32_t t = lot_tri_of(nc);
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+  int o[3];
+  for (uint32_t e = 0; e < 3; e++)
+    o[e] = e == lot_slot(nc)
+               ? 1 : geom_orient_valid(m->p[v[lot_mod3[e + 1]]], m->p[v[lot_mod3[e + 2]]], q);
+  return lot_classify(t, o, c);
+}
+
+/* The exit (0: the edge opposite L, 1: the edge opposite R) is bit i of
 ** LOT_WALK_EXIT, i = [q beyond the edge opposite L] + 2 [beyond the edge
-** opposite R] + 4 [the edge opposite R is tried first]: the one tried
+** opposite R] + 4 [the edge opposite R is tried first]: the edge tried
 ** first if q is beyond it, else the other. */
 #define LOT_WALK_EXIT 0xC4u
 
 /* One step from the real triangle of w->nc: cross an edge q is strictly
-** beyond, or stop (return 1, *where and *c set) when there is none.  The
-** edge tried first is the first after a drawn edge e0 in the order e0,
-** e0 + 1, e0 + 2, skipping the way in: the edge opposite R when e0 is R's
-** slot, else the edge opposite L.
-** Which exit q lies beyond is a coin toss, so a branch on it would be
-** mispredicted every other step.  Instead both orientations are computed
-** and the exit picked by indexing; and both possible next triangles' apexes
-** are loaded while the orientations are computed, so that the chain from
-** one step to the next is the arithmetic, not three dependent loads. */
-static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, uint64_t *s,
-                                uint32_t *c, lot_where *where) {
-  uint32_t f = lot_slot(w->nc), t4 = w->nc - f;
-  uint32_t fx[2] = {lot_slot_next(f), lot_slot_prev(f)};   /* the slots of L and R */
-  uint32_t nx[2], ax[2];
-  geom_point px[2];
-  for (int x = 0; x < 2; x++) {
-    nx[x] = m->tn[t4 + fx[x]];
-    ax[x] = m->tv[nx[x]];
-    px[x] = m->p[ax[x] != LOT_GHOST ? ax[x] : 0];   /* a ghost's point is never read */
-  }
-  unsigned r_first = lot_walk_rand3(s) == fx[1], i;
-  int unsure = 0, sl = 1, sr = 1;
+** beyond, or return 1 when there is none.  The edge tried first is the
+** first after a drawn edge e0 in the order e0, e0 + 1, e0 + 2, skipping
+** the way in: the edge opposite R when e0 is R's slot, else the edge
+** opposite L.
+** Why it is written this way: which exit q lies beyond is a coin toss, so
+** a branch on it would be mispredicted every other step; and the
+** triangles around a point were made at scattered times, so their entries
+** lie far apart in memory.  So both orientations are computed and the
+** exit picked by selects (on the sign bits, read as integers so that the
+** compiler does not turn them into branches), and while they are computed
+** the step loads, for both triangles it may enter, the apex, its point
+** and the corners beyond their exits: the next step's data is then one
+** select away rather than three dependent loads. */
+static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, uint64_t *s) {
+  lot_walk_ahead h;
+  lot_walk_load(m, w->nx[0], &h, 0);
+  lot_walk_load(m, w->nx[1], &h, 1);
+  unsigned r_first = lot_walk_rand3(s) == lot_slot(lot_walk_prev3(w->nc)), i;
+  int unsure = 0;
   geom_point da = lot_walk_diff(w->pa, q);
   double detl = lot_walk_det(w->d[1], da, &unsure), detr = lot_walk_det(da, w->d[0], &unsure);
   if (unsure) {
-    i = lot_walk_settle(m, w, q, (int)r_first, &sl, &sr);
+    if ((i = lot_walk_settle(m, w->nc, q, r_first)) == 0) return 1;
   } else {
-    /* Past the filter det != 0 and its sign bit says det < 0.  The stop
-    ** test reads the smaller value, and the exit the two bits, so that the
-    ** compiler does not split the exit's choice into branches. */
-    double least = detl < detr ? detl : detr;
-    uint64_t bl, br;
+    uint64_t bl, br;   /* past the filter det != 0: its sign bit says det < 0 */
     memcpy(&bl, &detl, sizeof bl);
     memcpy(&br, &detr, sizeof br);
-    i = least > 0 ? 0 : (unsigned)(bl >> 63 | br >> 63 << 1);
-  }
-  if (i == 0) {   /* q is strictly on the inner side of the edge we came by */
-    int o[3];
-    o[f] = 1;
-    o[fx[0]] = sl;
-    o[fx[1]] = sr;
-    *where = lot_classify(lot_tri_of(w->nc), o, c);
-    return 1;
+    if ((bl | br) >> 63 == 0) return 1;
+    i = (unsigned)(bl >> 63 | br >> 63 << 1);
   }
   unsigned x = (LOT_WALK_EXIT >> (i | r_first << 2)) & 1;
   w->d[x] = da;
-  w->nc = nx[x];
-  w->a = ax[x];
-  w->pa = px[x];
+  w->nc = h.nc[x];
+  w->a = h.a[x];
+  w->pa = h.pa[x];
+  w->nx[0] = h.nx0[x];
+  w->nx[1] = h.nx1[x];
   return 0;
 }
 
@@ -268,9 +285,13 @@ static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t 
     geom_point pr = m->p[v[lot_mod3[e + 1]]], pl = m->p[v[lot_mod3[e + 2]]];
     o[e] = geom_orient_valid(pr, pl, q);
     if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
-      w->nc = m->tn[LOT_CORNER(t, e)];
-      w->a = m->tv[w->nc];
-      if (w->a != LOT_GHOST) w->pa = m->p[w->a];
+      lot_walk_ahead h;
+      lot_walk_load(m, m->tn[LOT_CORNER(t, e)], &h, 0);
+      w->nc = h.nc[0];
+      w->a = h.a[0];
+      w->pa = h.pa[0];
+      w->nx[0] = h.nx0[0];
+      w->nx[1] = h.nx1[0];
       w->d[0] = lot_walk_diff(pl, q);
       w->d[1] = lot_walk_diff(pr, q);
       return 0;
@@ -319,7 +340,10 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
         where = lot_scan(m, q, c);
         break;
       }
-      if (lot_walk_step(m, &w, q, &s, c, &where)) break;
+      if (lot_walk_step(m, &w, q, &s)) {
+        where = lot_walk_stop(m, w.nc, q, c);
+        break;
+      }
     }
   }
   m->walk = s;
