@@ -175,6 +175,15 @@ static inline void lot_walk_load(const lot_mesh *m, uint32_t nc, lot_walk_ahead 
   h->nx1[x] = m->tn[lot_walk_prev3(nc)];
 }
 
+/* Move the walk into candidate x of *h. */
+static inline void lot_walk_take(lot_walk *w, const lot_walk_ahead *h, unsigned x) {
+  w->nc = h->nc[x];
+  w->a = h->a[x];
+  w->pa = h->pa[x];
+  w->nx[0] = h->nx0[x];
+  w->nx[1] = h->nx1[x];
+}
+
 static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
   return (geom_point){a.x - q.x, a.y - q.y};
 }
@@ -263,11 +272,7 @@ static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, ui
   }
   unsigned x = (LOT_WALK_EXIT >> (i | r_first << 2)) & 1;
   w->d[x] = da;
-  w->nc = h.nc[x];
-  w->a = h.a[x];
-  w->pa = h.pa[x];
-  w->nx[0] = h.nx0[x];
-  w->nx[1] = h.nx1[x];
+  lot_walk_take(w, &h, x);
   return 0;
 }
 
@@ -287,11 +292,7 @@ static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t 
     if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
       lot_walk_ahead h;
       lot_walk_load(m, m->tn[LOT_CORNER(t, e)], &h, 0);
-      w->nc = h.nc[0];
-      w->a = h.a[0];
-      w->pa = h.pa[0];
-      w->nx[0] = h.nx0[0];
-      w->nx[1] = h.nx1[0];
+      lot_walk_take(w, &h, 0);
       w->d[0] = lot_walk_diff(pl, q);
       w->d[1] = lot_walk_diff(pr, q);
       return 0;
