@@ -146,14 +146,17 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
 /* The walk inside a triangle it has entered: nc is the corner opposite the
 ** edge it came through, a = tv[nc] its apex and pa a's point (when a is
 ** not LOT_GHOST); that edge runs from L = tv[next(nc)] to R =
-** tv[prev(nc)], and d[0] = L - q, d[1] = R - q come from the triangle
-** before.  The two ways on are exit 0, the edge opposite L (R -> A), which
-** makes A the next triangle's L, and exit 1, the edge opposite R (A -> L),
-** which makes A its R: exit x replaces d[x] by A - q.  nx[x] = tn[corner
-** of L or R] is the corner beyond exit x, loaded a step ahead. */
+** tv[prev(nc)].  The two ways on are exit 0, the edge opposite L
+** (R -> A), which makes A the next triangle's L, and exit 1, the edge
+** opposite R (A -> L), which makes A its R.  nx[x] = tn[corner of L or R]
+** is the corner beyond exit x, loaded a step ahead.  Beside this struct
+** the walk keeps d[0] = L - q and d[1] = R - q, carried over from the
+** triangle before (exit x replaces d[x] by A - q); apart, because that
+** store by index keeps its array in memory, and would keep the struct
+** there too. */
 typedef struct lot_walk {
   uint32_t nc, a, nx[2];
-  geom_point pa, d[2];
+  geom_point pa;
 } lot_walk;
 
 /* The triangles beyond both exits, loaded (lot_walk_step): their entry
@@ -165,14 +168,23 @@ typedef struct lot_walk_ahead {
   geom_point pa[2];
 } lot_walk_ahead;
 
+/* The arrays the step reads, copied out of the mesh: the step's rare
+** out-of-line calls (lot_walk_settle) could change *m as far as the
+** compiler knows, so read through m the pointers would be reloaded on
+** every step; these copies stay in registers. */
+typedef struct lot_walk_view {
+  const uint32_t *tv, *tn;
+  const geom_point *p;
+} lot_walk_view;
+
 /* Load the triangle entered at corner nc as candidate x of *h. */
-static inline void lot_walk_load(const lot_mesh *m, uint32_t nc, lot_walk_ahead *h, int x) {
-  uint32_t a = m->tv[nc];
+static inline void lot_walk_load(lot_walk_view v, uint32_t nc, lot_walk_ahead *h, int x) {
+  uint32_t a = v.tv[nc];
   h->nc[x] = nc;
   h->a[x] = a;
-  h->pa[x] = m->p[a != LOT_GHOST ? a : 0];   /* a ghost's point is never read */
-  h->nx0[x] = m->tn[lot_walk_next3(nc)];
-  h->nx1[x] = m->tn[lot_walk_prev3(nc)];
+  h->pa[x] = v.p[a != LOT_GHOST ? a : 0];   /* a ghost's point is never read */
+  h->nx0[x] = v.tn[lot_walk_next3(nc)];
+  h->nx1[x] = v.tn[lot_walk_prev3(nc)];
 }
 
 /* Move the walk into candidate x of *h. */
@@ -253,14 +265,15 @@ static lot_where lot_walk_stop(const lot_mesh *m, uint32_t nc, geom_point q, uin
 ** the step loads, for both triangles it may enter, the apex, its point
 ** and the corners beyond their exits: the next step's data is then one
 ** select away rather than three dependent loads. */
-static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, uint64_t *s) {
+static inline int lot_walk_step(const lot_mesh *m, lot_walk_view v, lot_walk *w, geom_point d[2],
+                                geom_point q, uint64_t *s) {
   lot_walk_ahead h;
-  lot_walk_load(m, w->nx[0], &h, 0);
-  lot_walk_load(m, w->nx[1], &h, 1);
+  lot_walk_load(v, w->nx[0], &h, 0);
+  lot_walk_load(v, w->nx[1], &h, 1);
   unsigned r_first = lot_walk_rand3(s) == lot_slot(lot_walk_prev3(w->nc)), i;
   int unsure = 0;
   geom_point da = lot_walk_diff(w->pa, q);
-  double detl = lot_walk_det(w->d[1], da, &unsure), detr = lot_walk_det(da, w->d[0], &unsure);
+  double detl = lot_walk_det(d[1], da, &unsure), detr = lot_walk_det(da, d[0], &unsure);
   if (unsure) {
     if ((i = lot_walk_settle(m, w->nc, q, r_first)) == 0) return 1;
   } else {
@@ -271,7 +284,7 @@ static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, ui
     i = (unsigned)(bl >> 63 | br >> 63 << 1);
   }
   unsigned x = (LOT_WALK_EXIT >> (i | r_first << 2)) & 1;
-  w->d[x] = da;
+  d[x] = da;
   lot_walk_take(w, &h, x);
   return 0;
 }
@@ -279,9 +292,9 @@ static inline int lot_walk_step(const lot_mesh *m, lot_walk *w, geom_point q, ui
 /* The first step, in the real triangle t: the edges in the order e0,
 ** e0 + 1, e0 + 2 from a drawn e0, crossing the first that q is strictly
 ** beyond.  Returns 1 (*where and *c set) when there is none, else 0 with
-** *w in the triangle beyond. */
+** *w and d in the triangle beyond. */
 static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t *s,
-                          lot_walk *w, uint32_t *c, lot_where *where) {
+                          lot_walk *w, geom_point d[2], uint32_t *c, lot_where *where) {
   const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
   uint32_t e0 = lot_walk_rand3(s);
   int o[3] = {1, 1, 1};
@@ -291,10 +304,10 @@ static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t 
     o[e] = geom_orient_valid(pr, pl, q);
     if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
       lot_walk_ahead h;
-      lot_walk_load(m, m->tn[LOT_CORNER(t, e)], &h, 0);
+      lot_walk_load((lot_walk_view){m->tv, m->tn, m->p}, m->tn[LOT_CORNER(t, e)], &h, 0);
       lot_walk_take(w, &h, 0);
-      w->d[0] = lot_walk_diff(pl, q);
-      w->d[1] = lot_walk_diff(pr, q);
+      d[0] = lot_walk_diff(pl, q);
+      d[1] = lot_walk_diff(pr, q);
       return 0;
     }
   }
@@ -328,9 +341,11 @@ static uint32_t lot_walk_start(const lot_mesh *m) {
 ** of the step-by-step walk this replaced. */
 lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
   uint64_t s = m->walk, limit = 4 * (uint64_t)m->nt + 64;
+  lot_walk_view v = {m->tv, m->tn, m->p};
   lot_walk w;
+  geom_point d[2];
   lot_where where;
-  if (!lot_walk_first(m, lot_walk_start(m), q, &s, &w, c, &where)) {
+  if (!lot_walk_first(m, lot_walk_start(m), q, &s, &w, d, c, &where)) {
     for (uint64_t step = 1;; step++) {
       if (w.a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
         *c = w.nc;
@@ -341,7 +356,7 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
         where = lot_scan(m, q, c);
         break;
       }
-      if (lot_walk_step(m, &w, q, &s)) {
+      if (lot_walk_step(m, v, &w, d, q, &s)) {
         where = lot_walk_stop(m, w.nc, q, c);
         break;
       }
