@@ -83,19 +83,38 @@ static inline void geom_tri_angles(geom_tri *t, const double side[3], double twi
   t->gamma = geom_max3(ang[0], ang[1], ang[2]);
 }
 
-/* Exchange *a and *b when s is 1 (s is 0 or 1), without a branch.  The
-** order of three random points is a coin toss, so as a branch each
-** exchange was mispredicted half the time: with the LOT's 27 triangles per
-** point that cost more than the rest of the triangle.  SSE2: the two
-** points' difference masked, xor-ed into both; elsewhere the same with
-** 64-bit integers. */
-static inline void geom_cswap(unsigned s, geom_point *a, geom_point *b) {
+/* The canonical order: the three-comparator network (compare-exchange
+** (0,1), (1,2), (0,1)) by geom_lexless.  A network of strict comparisons
+** is a stable sort, and its comparisons are the same on the same values
+** whatever the input, NaN included.  Without a branch: the order of three
+** random points is a coin toss, and as branches the exchanges were
+** mispredicted half the time (more than the rest of a sides-only triangle
+** cost, with the LOT's 27 triangles per point).
+** SSE2: a point is one register (x, y); "b before a" is lt.x | (eq.x &
+** lt.y) from the two packed comparisons (the same IEEE comparisons as
+** geom_lexless, unordered counting as false), spread to both lanes, and
+** the exchange xors the masked difference into both points.  Elsewhere:
+** the same exchange on the points' bits, with geom_lexless. */
 #if FLIPLAB_HAVE_SSE2
-  __m128d va = _mm_loadu_pd(&a->x), vb = _mm_loadu_pd(&b->x);
-  __m128d d = _mm_and_pd(_mm_xor_pd(va, vb), _mm_castsi128_pd(_mm_set1_epi64x(-(long long)s)));
-  _mm_storeu_pd(&a->x, _mm_xor_pd(va, d));
-  _mm_storeu_pd(&b->x, _mm_xor_pd(vb, d));
+static inline void geom_cswap_sse2(__m128d *a, __m128d *b) {
+  __m128d lt = _mm_cmplt_pd(*b, *a), eq = _mm_cmpeq_pd(*b, *a);
+  __m128d s = _mm_or_pd(lt, _mm_and_pd(eq, _mm_unpackhi_pd(lt, lt)));
+  __m128d d = _mm_and_pd(_mm_xor_pd(*a, *b), _mm_unpacklo_pd(s, s));
+  *a = _mm_xor_pd(*a, d);
+  *b = _mm_xor_pd(*b, d);
+}
+
+static inline void geom_tri_sort3(geom_point *p, geom_point *q, geom_point *r) {
+  __m128d vp = _mm_set_pd(p->y, p->x), vq = _mm_set_pd(q->y, q->x), vr = _mm_set_pd(r->y, r->x);
+  geom_cswap_sse2(&vp, &vq);
+  geom_cswap_sse2(&vq, &vr);
+  geom_cswap_sse2(&vp, &vq);
+  *p = (geom_point){_mm_cvtsd_f64(vp), _mm_cvtsd_f64(_mm_unpackhi_pd(vp, vp))};
+  *q = (geom_point){_mm_cvtsd_f64(vq), _mm_cvtsd_f64(_mm_unpackhi_pd(vq, vq))};
+  *r = (geom_point){_mm_cvtsd_f64(vr), _mm_cvtsd_f64(_mm_unpackhi_pd(vr, vr))};
+}
 #else
+static inline void geom_cswap(unsigned s, geom_point *a, geom_point *b) {
   uint64_t m = -(uint64_t)s, ax, ay, bx, by;
   memcpy(&ax, &a->x, 8); memcpy(&ay, &a->y, 8);
   memcpy(&bx, &b->x, 8); memcpy(&by, &b->y, 8);
@@ -103,19 +122,14 @@ static inline void geom_cswap(unsigned s, geom_point *a, geom_point *b) {
   ax ^= dx; bx ^= dx; ay ^= dy; by ^= dy;
   memcpy(&a->x, &ax, 8); memcpy(&a->y, &ay, 8);
   memcpy(&b->x, &bx, 8); memcpy(&b->y, &by, 8);
-#endif
 }
 
-/* The canonical order: the three-comparator network (compare-exchange
-** (0,1), (1,2), (0,1)) with geom_lexless, whose bitwise form has no branch
-** either.  A network of strict comparisons is a stable sort, and its
-** comparisons are the same on the same values whatever the input, NaN
-** included. */
 static inline void geom_tri_sort3(geom_point *p, geom_point *q, geom_point *r) {
   geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
   geom_cswap((unsigned)geom_lexless(*r, *q), q, r);
   geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
 }
+#endif
 
 /* Everything below is computed from the canonically ordered vertices
 ** v0 < v1 < v2 (lexicographic), so the result does not depend on the order

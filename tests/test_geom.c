@@ -678,6 +678,47 @@ static void test_polygon_check(void **state) {
   assert_int_equal(kite_bad, 0);
 }
 
+/* geom_tri_make's vertex order is the plain three-comparator network
+** (compare-exchange (0,1), (1,2), (0,1), swapping the points when the
+** second is lexicographically smaller), bit for bit, whatever the branch-free
+** form it is written in: on random triples drawn from a few values, so that
+** ties in x, equal points, signed zeros, infinities and NaN all occur, in
+** every order. */
+static void tgeom_network(geom_point v[3]) {
+  static const int ce[3][2] = {{0, 1}, {1, 2}, {0, 1}};
+  for (int k = 0; k < 3; k++) {
+    geom_point *a = &v[ce[k][0]], *b = &v[ce[k][1]];
+    if (b->x < a->x || (b->x == a->x && b->y < a->y)) {
+      geom_point s = *a;
+      *a = *b;
+      *b = s;
+    }
+  }
+}
+
+static void test_tri_canonical_order(void **state) {
+  (void)state;
+  static const double vals[] = {0.0, -0.0, 1.0, -1.0, 2.5, INFINITY, NAN};
+  uint64_t g = 99;
+  long bad = 0;
+  for (int it = 0; it < 200000; it++) {
+    geom_point v[3];
+    for (int i = 0; i < 3; i++) {
+      g = g * 6364136223846793005u + 1442695040888963407u;
+      int lim = it % 4 ? 5 : 7;   /* non-finite values in a quarter of the triples */
+      v[i] = (geom_point){vals[(g >> 33) % lim], vals[(g >> 45) % lim]};
+    }
+    geom_point want[3] = {v[0], v[1], v[2]};
+    tgeom_network(want);
+    geom_tri t;
+    geom_tri_make(&t, v[0], v[1], v[2]);
+    if (memcmp(t.v, want, sizeof want) != 0 && bad++ < 3)
+      print_error("(%g,%g) (%g,%g) (%g,%g): not the network's order\n", v[0].x, v[0].y, v[1].x,
+                  v[1].y, v[2].x, v[2].y);
+  }
+  assert_int_equal(bad, 0);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_tri_equilateral),
@@ -685,6 +726,7 @@ int main(void) {
     cmocka_unit_test(test_tri_sliver),
     cmocka_unit_test(test_tri_needle),
     cmocka_unit_test(test_tri_random),
+    cmocka_unit_test(test_tri_canonical_order),
     cmocka_unit_test(test_orient_easy),
     cmocka_unit_test(test_incircle_easy),
     cmocka_unit_test(test_orient_near_degenerate),
