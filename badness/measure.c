@@ -151,37 +151,73 @@ void measure_names(char *buf, size_t len) {
   }
 }
 
-/* ---- lower bounds without atan2 (measure.h) ---------------------------- */
+/* ---- enclosures without atan2 (measure.h) ------------------------------ */
 
-/* sigma = sqrt(sum (x - pi/3)^2 / 3) over the three angles: each term is
-** at least the squared distance from pi/3 to the angle's enclosure, less
-** 1e-15 for the rounding of M_PI / 3; the value as measure_eval computes
-** it is within 8 eps (relative) of the exact formula on its angles, and so
-** is the bound here of its own exact value, hence the factor 1 - 2^-40. */
-static double measure_sigma_bound(const double lo[3], const double hi[3]) {
-  double s = 0;
+/* sigma(x) = |x - (t, t, t)| / sqrt 3 (Euclidean norm) over the three
+** angles x, t = M_PI / 3 (the double measure_eval subtracts).  With each
+** angle c_i in [lo_i, hi_i] and h >= every hi_i - lo_i, the triangle
+** inequality gives |sigma(c) - sigma(lo)| <= |c - lo| / sqrt 3 <= h.  The
+** value measure_eval computes is within 2 eps (relative) of sigma(c), the
+** one computed here within 2 eps of sigma(lo) (a rounded difference,
+** square, sum of positive terms, division and square root), and h is
+** fl(hi - lo) made larger by 2^-40: the factors 1 -+ 2^-40 cover those
+** errors and the roundings of the last lines.  One square root, the
+** enclosure 2h, about 4e-6, wide. */
+static void measure_sigma_bounds(const double lo[3], const double hi[3], double *slo,
+                                 double *shi) {
+  const double third = M_PI / 3;
+  double s = 0, h = 0;
   for (int i = 0; i < 3; i++) {
-    double d = lo[i] > M_PI / 3 ? lo[i] - M_PI / 3 : hi[i] < M_PI / 3 ? M_PI / 3 - hi[i] : 0;
-    d = d > 1e-15 ? d - 1e-15 : 0;
+    double d = lo[i] - third, w = hi[i] - lo[i];
     s += d * d;
+    h = w > h ? w : h;
   }
-  return sqrt(s / 3.0) * (1 - 0x1p-40);
+  double sl = sqrt(s / 3.0);
+  h *= 1 + 0x1p-40;
+  double l = (sl * (1 - 0x1p-40) - h) * (1 - 0x1p-40);
+  *slo = l > 0 ? l : 0;
+  *shi = (sl * (1 + 0x1p-40) + h) * (1 + 0x1p-40);
 }
 
-double measure_lower_bound(int id, geom_point p, geom_point q, geom_point r) {
-  double lo[3], hi[3];
+/* The order statistics of the angles' enclosures enclose alpha, beta and
+** gamma (min, median and max are monotone in each argument); the angle
+** measures are those order statistics, exactly, or sigma. */
+int measure_bounds(int id, geom_point p, geom_point q, geom_point r, double *lo, double *hi) {
+  double a[3], b[3];
   geom_angle_which w = id == MEASURE_NEG_ALPHA ? GEOM_ANGLE_SMALLEST
                      : id == MEASURE_GAMMA ? GEOM_ANGLE_LARGEST : GEOM_ANGLES_ALL;
-  if (!measure_has_lower_bound(id) || !geom_angle_bounds(p, q, r, w, lo, hi)) return -INFINITY;
+  if (!measure_has_bounds(id) || !geom_angle_bounds(p, q, r, w, a, b)) return 0;
   switch (id) {
-    case MEASURE_NEG_ALPHA: return -geom_min3(hi[0], hi[1], hi[2]);
-    case MEASURE_BETA: return fmax(0.0, geom_mid3(lo[0], lo[1], lo[2]));
-    case MEASURE_GAMMA: return geom_max3(lo[0], lo[1], lo[2]);
-    default: return measure_sigma_bound(lo, hi);
+    case MEASURE_NEG_ALPHA:
+      *lo = -geom_min3(b[0], b[1], b[2]);
+      *hi = -geom_min3(a[0], a[1], a[2]);
+      break;
+    case MEASURE_BETA:
+      *lo = geom_mid3(a[0], a[1], a[2]);
+      *lo = *lo > 0 ? *lo : 0;
+      *hi = geom_mid3(b[0], b[1], b[2]);
+      break;
+    case MEASURE_GAMMA:
+      *lo = geom_max3(a[0], a[1], a[2]);
+      *hi = geom_max3(b[0], b[1], b[2]);
+      break;
+    default:
+      measure_sigma_bounds(a, b, lo, hi);
+      break;
   }
+  return 1;
 }
 
-int measure_has_lower_bound(int id) {
+/* The angles geom_tri_fill computes are within 2^-35 of the exact ones
+** (geom.c), and exact alpha <= pi/3 <= gamma: 1e-6 less covers the
+** difference. */
+double measure_floor(int id) {
+  if (id == MEASURE_NEG_ALPHA) return -(M_PI / 3 + 1e-6);
+  if (id == MEASURE_GAMMA) return M_PI / 3 - 1e-6;
+  return measure_get(id)->sign >= 0 ? 0 : -INFINITY;
+}
+
+int measure_has_bounds(int id) {
   return id == MEASURE_NEG_ALPHA || id == MEASURE_BETA || id == MEASURE_GAMMA ||
          id == MEASURE_SIGMA;
 }

@@ -76,14 +76,20 @@ unsigned measure_fields(int id);
 typedef double (*measure_points_fn)(geom_point p, geom_point q, geom_point r);
 measure_points_fn measure_points(int id);
 
-/* A cheap lower bound on measure_eval(id, t) for t made by geom_tri_make
-** from p, q, r (that very double is >= the bound), or -INFINITY where there
-** is none: the angle measures (-alpha, beta, gamma, sigma) from
-** geom_angle_bounds, without atan2; -INFINITY for the other measures
-** (measure_has_lower_bound) and for flat triangles.  For filters that
-** decide without evaluating (lot/lot.c). */
-double measure_lower_bound(int id, geom_point p, geom_point q, geom_point r);
-int measure_has_lower_bound(int id);
+/* A cheap enclosure *lo <= measure_eval(id, t) <= *hi of the very double
+** measure_eval gives for t made by geom_tri_make from p, q, r (in any
+** order): 1, or 0 (*lo, *hi unset) where there is none.  The angle
+** measures (-alpha, beta, gamma, sigma) have one, from geom_angle_bounds,
+** without atan2, some 1e-6 wide (wider, up to trivial, for -alpha and
+** gamma of near-isosceles triangles); the other measures
+** (measure_has_bounds) and flat triangles have none.  For decisions that
+** need the exact values only when the enclosures cannot decide (lot/lot.c). */
+int measure_bounds(int id, geom_point p, geom_point q, geom_point r, double *lo, double *hi);
+int measure_has_bounds(int id);
+/* A lower bound on every value measure_eval(id, .) takes: 0 for measures
+** of sign >= 0, -inf for the others, except -alpha >= -pi/3 and gamma >=
+** pi/3 (less 1e-6 for rounding). */
+double measure_floor(int id);
 
 /* Write a comma-separated list of all measure names into buf. */
 void measure_names(char *buf, size_t len);

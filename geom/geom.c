@@ -79,6 +79,39 @@ static void geom_angle_enclose(double a, double *lo, double *hi) {
   *hi = a + GEOM_ANGLE_SLACK;
 }
 
+/* One angle's enclosure extended to alpha or gamma (GEOM_ANGLE_SMALLEST,
+** GEOM_ANGLE_LARGEST).  Let v be the vertex opposite the side whose
+** rounded squared length s_v is the smallest (largest).  Each s_i is the
+** exact S_i times (1 + t), |t| <= 4 eps/2 + O(eps^2) (two rounded
+** differences, their squares, the sum), when s_i >= 2^-1000 (any absolute
+** error of underflow is then below 2^-74 s_i).  So s_v < s_i (1 - 2^-48),
+** rounding of the product included, gives S_v < S_i (2^-48 is 32 eps/2,
+** the errors need 11): side v is exactly the shortest (longest), and in a
+** Euclidean triangle the strictly shorter side faces the strictly smaller
+** angle, A_v < A_i (A_v > A_i).  The angles c_i that geom_tri_fill
+** computes are within 2^-35 of the exact ones, so c_i >= c_v - 2^-34
+** (c_i <= c_v + 2^-34), and the margin of GEOM_ANGLE_SLACK over the error of
+** the approximation (2^-35 + 2^-37 + 2e-8 + roundings < 3e-8, geom.c's
+** argument above) covers that 2^-34 = 6e-11: lo[v] <= c_i (hi[v] >= c_i).
+** The other vertices then get lo[i] = lo[v] (hi[i] = hi[v]): the minimum
+** (maximum) of lo and hi encloses alpha (gamma).  Without that margin
+** (near-isosceles at v, or sides below 2^-500) they keep [0, 4]: a useless
+** but valid enclosure, and the caller falls back to the exact value.
+** Example of why the margin matters: (0, 0), (1e-17, 1e-17), (1, 0) has
+** angles 45 and 135 degrees at the first two points, whose opposite
+** sides 1 and 1 - 1e-17 round to the same length. */
+static void geom_angle_extend(const double s[3], int v, geom_angle_which which, double lo[3],
+                              double hi[3]) {
+  const double m = 1 - 0x1p-48;
+  int i = v == 0 ? 1 : 0, k = v == 2 ? 1 : 2;   /* the other two vertices */
+  if (!(geom_min3(s[0], s[1], s[2]) >= 0x1p-1000)) return;
+  if (which == GEOM_ANGLE_SMALLEST) {
+    if (s[v] < s[i] * m && s[v] < s[k] * m) lo[i] = lo[k] = lo[v];
+  } else if (s[v] * m > s[i] && s[v] * m > s[k]) {
+    hi[i] = hi[k] = hi[v];
+  }
+}
+
 int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
                       double lo[3], double hi[3]) {
   double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
@@ -88,25 +121,28 @@ int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which
   /* geom_twice_area_inline's filter: a relative error below 2^-40 */
   if (!(twice > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900))
     return 0;
-  double dot[3] = {bax * cax + bay * cay,        /* at p: to q and to r */
-                   -(bax * cbx + bay * cby),     /* at q: to p and to r */
-                   cax * cbx + cay * cby};       /* at r: to p and to q */
+  /* the dot products at p (to q and to r), at q (to p and r), at r */
   if (which == GEOM_ANGLES_ALL) {
     /* the third exact angle is pi minus the others: within 2 (2^-37 + 2e-8) */
-    double a0 = geom_atan2_approx(twice, dot[0]), a1 = geom_atan2_approx(twice, dot[1]);
+    double a0 = geom_atan2_approx(twice, bax * cax + bay * cay);
+    double a1 = geom_atan2_approx(twice, -(bax * cbx + bay * cby));
     geom_angle_enclose(a0, &lo[0], &hi[0]);
     geom_angle_enclose(a1, &lo[1], &hi[1]);
     geom_angle_enclose(M_PI - (a0 + a1), &lo[2], &hi[2]);
     return 1;
   }
-  double s0 = cbx * cbx + cby * cby, s1 = cax * cax + cay * cay, s2 = bax * bax + bay * bay;
-  int v = which == GEOM_ANGLE_SMALLEST ? (s0 <= s1 ? (s0 <= s2 ? 0 : 2) : (s1 <= s2 ? 1 : 2))
-                                       : (s0 >= s1 ? (s0 >= s2 ? 0 : 2) : (s1 >= s2 ? 1 : 2));
+  double s[3] = {cbx * cbx + cby * cby, cax * cax + cay * cay, bax * bax + bay * bay};
+  int v = which == GEOM_ANGLE_SMALLEST
+              ? (s[0] <= s[1] ? (s[0] <= s[2] ? 0 : 2) : (s[1] <= s[2] ? 1 : 2))
+              : (s[0] >= s[1] ? (s[0] >= s[2] ? 0 : 2) : (s[1] >= s[2] ? 1 : 2));
   for (int i = 0; i < 3; i++) {   /* every computed angle lies in [0, pi] */
     lo[i] = 0;
     hi[i] = 4;
   }
-  geom_angle_enclose(geom_atan2_approx(twice, dot[v]), &lo[v], &hi[v]);
+  double dot = v == 0 ? bax * cax + bay * cay : v == 1 ? -(bax * cbx + bay * cby)
+                                                       : cax * cbx + cay * cby;
+  geom_angle_enclose(geom_atan2_approx(twice, dot), &lo[v], &hi[v]);
+  geom_angle_extend(s, v, which, lo, hi);
   return 1;
 }
 

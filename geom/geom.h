@@ -82,8 +82,11 @@ static inline double geom_mid3(double a, double b, double c) {
 ** when a decision cannot depend on the exact values (lot/lot.c).
 ** GEOM_ANGLE_SMALLEST and GEOM_ANGLE_LARGEST enclose only the angle opposite
 ** the shortest or the longest side (as far as rounded squared lengths
-** tell) and give the others the trivial [0, 4]: still enclosures, enough
-** to bound alpha from above or gamma from below, at a third of the cost. */
+** tell), at a third of the cost; the other two get the trivial [0, 4],
+** enough to bound alpha from above or gamma from below, except that when
+** that side is shorter (longer) than the others by a clear margin they get
+** the same lower (upper) bound as it, so that alpha (gamma) is enclosed
+** from both sides (geom.c, geom_angle_extend, says why that is safe). */
 typedef enum geom_angle_which {
   GEOM_ANGLES_ALL, GEOM_ANGLE_SMALLEST, GEOM_ANGLE_LARGEST
 } geom_angle_which;

@@ -148,6 +148,58 @@ int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
   return joint_compare_values(m1, m2, tie_eps);
 }
 
+/* ---- verdicts from enclosures (joint.h) --------------------------------
+**
+** Why a verdict is the exact comparison's.  For min, max and sum the
+** joint as joint_compare computes it (f = joint_apply_plain: min, max,
+** x + y for either sign) is non-decreasing in each argument: min and max
+** are exact, fl(x + y) is the rounded sum and rounding is monotone.  So
+** with A = f(x1, y1) and B = f(x2, y2) computed on values inside the
+** enclosures, a1 <= A <= a2 and b1 <= B <= b2 for the f of the lower and
+** of the upper ends, and A and B are the very doubles joint_compare
+** compares.  joint_compare_values(A, B, eps) is < 0 exactly when A < B
+** and not fl(|A - B|) <= fl(eps max(|A|, |B|)).
+** - a1 >= b2: A >= B, never < 0.
+** - a2 < b1, all four finite: A < B, and B - A >= b1 - a2 as reals, so
+**   fl(|A - B|) = fl(B - A) >= fl(b1 - a2) (rounding is monotone), while
+**   max(|A|, |B|) <= M = the largest magnitude of a1, a2, b1, b2, so
+**   fl(eps max(|A|, |B|)) <= fl(eps M): fl(b1 - a2) > fl(eps M) rules the
+**   tie out.  The factor 1 + 2^-20 on the right is a safety margin only
+**   (the argument needs none under the build's floating-point contract).
+** - all finite, fl(D) < fl(eps m) (1 - 2^-20), D the larger of fl(a2 - b1)
+**   and fl(b2 - a1) (|A - B| is at most the larger of the exact
+**   differences) and m the larger of the least magnitudes |A| and |B| can
+**   have: always a tie, never < 0.
+** (The maxima by plain comparisons, not fmax, a libm call: every value is
+** finite where they are taken.) */
+static double joint_mag_lo(double lo, double hi) {
+  return lo > 0 ? lo : hi < 0 ? -hi : 0;
+}
+
+static double joint_mag_hi(double lo, double hi) {
+  return joint_max(fabs(lo), fabs(hi));
+}
+
+joint_verdict joint_compare_bounds(joint_id j, int s, const double lo[4], const double hi[4],
+                                   double tie_eps) {
+  if (!joint_has_bounds(j)) return JOINT_UNSURE;
+  double a1 = joint_apply_plain(j, s, lo[0], lo[1]);
+  double b2 = joint_apply_plain(j, s, hi[2], hi[3]);
+  if (a1 >= b2) return JOINT_NOT_LESS;
+  double a2 = joint_apply_plain(j, s, hi[0], hi[1]);
+  double b1 = joint_apply_plain(j, s, lo[2], lo[3]);
+  if (!(isfinite(a1) && isfinite(a2) && isfinite(b1) && isfinite(b2))) return JOINT_UNSURE;
+  double M = joint_max(joint_mag_hi(a1, a2), joint_mag_hi(b1, b2));
+  if (a2 < b1 && b1 - a2 > tie_eps * M * (1 + 0x1p-20)) return JOINT_LESS;
+  double D = joint_max(a2 - b1, b2 - a1);
+  double m = joint_max(joint_mag_lo(a1, a2), joint_mag_lo(b1, b2));
+  return D < tie_eps * m * (1 - 0x1p-20) ? JOINT_NOT_LESS : JOINT_UNSURE;
+}
+
+int joint_has_bounds(joint_id j) {
+  return j == JOINT_MIN || j == JOINT_MAX || j == JOINT_SUM;
+}
+
 double joint_identity(joint_id j, int s) {
   const joint_impl *J = &joint_table[j];
   if (!J->pub.needs_sign || s >= 0) return J->identity;

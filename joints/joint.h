@@ -72,6 +72,21 @@ double joint_identity(joint_id j, int s);
 int joint_compare_values(double a, double b, double tie_eps);
 int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
                   double tie_eps);
+/* ---- deciding from enclosures ------------------------------------------
+**
+** joint_compare_bounds(j, s, lo, hi, eps) decides joint_compare(j, s, x1,
+** y1, x2, y2, eps) < 0 for every x1, y1, x2, y2 with lo[k] <= (the k-th of
+** them) <= hi[k]: JOINT_LESS when it holds for every choice, JOINT_NOT_LESS
+** when it holds for none, JOINT_UNSURE otherwise, and always for the
+** joints without enclosures (joint_has_bounds: only min, max and sum, whose
+** computed values are monotone in each argument).  A certified verdict is
+** the one joint_compare would give on the exact values, bit for bit; a
+** caller evaluates those only when the answer is JOINT_UNSURE. */
+typedef enum joint_verdict { JOINT_UNSURE, JOINT_LESS, JOINT_NOT_LESS } joint_verdict;
+joint_verdict joint_compare_bounds(joint_id j, int s, const double lo[4], const double hi[4],
+                                   double tie_eps);
+int joint_has_bounds(joint_id j);
+
 /* f(x, y) = m * 2^*e (m = joint_apply(j, s, x, y) and *e = 0 for the
 ** joints that need no split, and whenever an argument is 0, infinite or NaN). */
 double joint_apply_split(joint_id j, int s, double x, double y, int *e);

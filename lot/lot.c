@@ -22,6 +22,9 @@
 **            triangles are below the larger removed one);
 **     l_-inf: the values sorted increasingly, lexicographically (the new
 **            smaller triangle is below both removed ones).
+**   The angle measures under l_1, l_inf and l_-inf keep enclosures of v(t)
+**   and compute v(t) only when they cannot decide (lot_prefers_lazy): the
+**   decisions, and so the argument, are those of the exact values.
 **   Measures of sign <= 0 use |v| and the mirror potentials.  Two cases are
 **   subtle: a value 0 under l_0 or l_-1 (log 0 and 1/0 are infinite; the
 **   joint then ties or decides by the other triangles only) and values that
@@ -70,8 +73,8 @@ typedef struct lot_run {
   lot_stats *st;
   lot_kind kind;
   int star_only;        /* DT insertion: only edges opposite the new point */
-  int bounded;          /* triangle rule with lower bounds: lot_cannot_flip applies */
   int stopped;          /* cycle or budget: no more flips */
+  lot_enc any;          /* encloses every value of the measure (measure_floor) */
   lot_entry *stk;
   size_t ns, cap;
   /* cycle detection (quadrilateral rules) */
@@ -229,22 +232,62 @@ static int lot_track(lot_run *R, uint32_t a, uint32_t b, uint32_t d, uint32_t c)
 
 /* ---- decisions and the flip loop --------------------------------------- */
 
-/* The filter in front of a triangle rule's decision: the flip needs
-** J(x1, x2) < J(b_t, b_u) (joint_compare, strictly, beyond the tie
-** tolerance), x1, x2 the new triangles' values, b_t, b_u the cached old
-** ones.  For l_1, l_-inf and l_inf the computed joint (fl(x + y), min, max)
-** is non-decreasing in each argument, so lower bounds l1 <= x1, l2 <= x2
-** (measure_lower_bound, no atan2) with J(l1, l2) >= J(b_t, b_u) already
-** rule the flip out: the decision is the one the full evaluation would
-** make.  About three examined edges in four of an angle rule's LOT are
-** settled here, without making the two triangles. */
-static int lot_cannot_flip(const lot_run *R, geom_point pa, geom_point pb, geom_point pc,
-                           geom_point pd, uint32_t t, uint32_t u) {
+/* A triangle rule's decision with an exact cache: the new pair (AC)
+** against the cached current one (BD), as rule_eval_badness decides,
+** without its lookups.  *n1, *n2: the new triangles' values. */
+static int lot_prefers_exact(const lot_run *R, uint32_t a, uint32_t b, uint32_t c0, uint32_t d,
+                             uint32_t t, uint32_t u, lot_enc *n1, lot_enc *n2) {
   const lot_mesh *m = R->m;
-  const rule *r = &R->o->r;
-  double l1 = measure_lower_bound(r->measure, pa, pb, pd);
-  double l2 = measure_lower_bound(r->measure, pa, pd, pc);
-  return joint_compare(r->joint, m->meas->sign, l1, l2, m->bad[t], m->bad[u], 0.0) >= 0;
+  double x1 = lot_mesh_badness(m, a, b, d), x2 = lot_mesh_badness(m, a, d, c0);
+  *n1 = (lot_enc){x1, x1};
+  *n2 = (lot_enc){x2, x2};
+  return joint_compare(R->o->r.joint, m->meas->sign, x1, x2, m->bad[t], m->bad[u],
+                       R->o->tie_eps) < 0;
+}
+
+static joint_verdict lot_verdict(const lot_run *R, lot_enc n1, lot_enc n2, lot_enc o1,
+                                 lot_enc o2) {
+  const double lo[4] = {n1.lo, n2.lo, o1.lo, o2.lo}, hi[4] = {n1.hi, n2.hi, o1.hi, o2.hi};
+  return joint_compare_bounds(R->o->r.joint, R->m->meas->sign, lo, hi, R->o->tie_eps);
+}
+
+/* The same decision with an enclosed cache (lot_internal.h), exact values
+** made lazily.  The rule flips when joint_compare(J, s, x1, x2, y1, y2,
+** eps) < 0, x1, x2 the new triangles' exact values (lot_mesh_badness), y1,
+** y2 the current ones'.  Each of them lies in its enclosure: measure_bounds
+** encloses the very double lot_mesh_badness returns (measure_fields makes
+** that double measure_eval's on geom_tri_make's triangle, bit for bit, in
+** any vertex order), and an exact entry is that double.
+** joint_compare_bounds certifies a verdict only when every choice of values
+** inside the enclosures gives it (joints/joint.c has the argument, rounding
+** of the joint and of the tie test included), so a certified verdict is
+** the exact one.  When it cannot tell: the current triangles are made
+** exact (they stay so in the cache: they meet more decisions), then, if
+** still unsure, the new ones, and joint_compare decides on exact values
+** exactly as the exact cache does.  So every flip, and with it the
+** sequence of triangulations, is the exact cache's, bit for bit; the
+** termination argument at the top of this file holds as it stands (it is
+** about the exact values, which are the same).  Enclosures are about 2e-6
+** wide and the compared joints rarely that close, so most decisions, and
+** most triangles, never need atan2. */
+static int lot_prefers_lazy(const lot_run *R, uint32_t a, uint32_t b, uint32_t c0, uint32_t d,
+                            uint32_t t, uint32_t u, lot_enc *n1, lot_enc *n2) {
+  lot_mesh *m = R->m;
+  *n1 = lot_mesh_enclose(m, a, b, d);
+  joint_verdict v = lot_verdict(R, *n1, R->any, m->enc[t], m->enc[u]);
+  if (v == JOINT_NOT_LESS) return 0;
+  *n2 = lot_mesh_enclose(m, a, d, c0);
+  v = lot_verdict(R, *n1, *n2, m->enc[t], m->enc[u]);
+  if (v == JOINT_UNSURE && (m->enc[t].lo != m->enc[t].hi || m->enc[u].lo != m->enc[u].hi)) {
+    lot_mesh_exact(m, t);
+    lot_mesh_exact(m, u);
+    v = lot_verdict(R, *n1, *n2, m->enc[t], m->enc[u]);
+  }
+  if (v != JOINT_UNSURE) return v == JOINT_LESS;
+  n1->lo = n1->hi = lot_mesh_badness(m, a, b, d);
+  n2->lo = n2->hi = lot_mesh_badness(m, a, d, c0);
+  return joint_compare(R->o->r.joint, m->meas->sign, n1->lo, n2->lo, m->enc[t].lo,
+                       m->enc[u].lo, R->o->tie_eps) < 0;
 }
 
 /* Examine the edge opposite corner c; flip it when the rule prefers the
@@ -259,7 +302,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
   if (d == LOT_GHOST) return 0;
   uint32_t a = m->tv[c], b = m->tv[lot_next3(c)], c0 = m->tv[lot_prev3(c)];
   geom_point pa = m->p[a], pb = m->p[b], pc = m->p[c0], pd = m->p[d];
-  double x1 = 0, x2 = 0;
+  lot_enc n1 = {0, 0}, n2 = {0, 0};
   if (R->kind == LOT_K_DT) {
     /* d strictly inside circle abc makes abdc strictly convex (a and d on
     ** opposite sides of bc, and the line ab meets the circle only at a and
@@ -271,13 +314,9 @@ static int lot_examine(lot_run *R, uint32_t c) {
     const lot_options *o = R->o;
     rule_choice ch;
     if (R->kind == LOT_K_TRI) {
-      if (R->bounded && lot_cannot_flip(R, pa, pb, pc, pd, t, u)) return 0;
-      x1 = lot_mesh_badness(m, a, b, d);
-      x2 = lot_mesh_badness(m, a, d, c0);
-      /* rule_eval_badness's decision, without its lookups: the new pair
-      ** (AC) against the cached current one (BD). */
-      ch = joint_compare(o->r.joint, m->meas->sign, x1, x2, m->bad[t], m->bad[u], o->tie_eps) < 0
-               ? RULE_AC : RULE_EITHER;
+      int flip = m->enc ? lot_prefers_lazy(R, a, b, c0, d, t, u, &n1, &n2)
+                        : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
+      ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_QUAD) {
       ch = rule_eval(&o->r, q, o->tie_eps, NULL, NULL);
     } else {
@@ -290,7 +329,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
     R->stopped = 1;
     return 0;
   }
-  lot_mesh_flip(m, c, x1, x2);
+  lot_mesh_flip(m, c, n1, n2);
   R->st->flips++;
   if (R->track && lot_track(R, a, b, d, c0)) R->stopped = 1;
   return 1;
@@ -327,6 +366,13 @@ static int lot_push_all(lot_run *R) {
   return 0;
 }
 
+/* What the mesh caches for options o (lot_internal.h). */
+static lot_cache lot_cache_of(const lot_options *o) {
+  if (o->r.kind != RULE_TRIANGLE || o->decide) return LOT_CACHE_NONE;
+  return measure_has_bounds(o->r.measure) && joint_has_bounds(o->r.joint) ? LOT_CACHE_ENCLOSED
+                                                                          : LOT_CACHE_EXACT;
+}
+
 static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   memset(R, 0, sizeof *R);
   R->m = &L->m;
@@ -336,8 +382,7 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
           : o->r.kind == RULE_TRIANGLE ? LOT_K_TRI
           : o->r.quad == RULE_DT ? LOT_K_DT : LOT_K_QUAD;
   R->track = R->kind >= LOT_K_QUAD;
-  R->bounded = R->kind == LOT_K_TRI && measure_has_lower_bound(o->r.measure) &&
-               (o->r.joint == JOINT_SUM || o->r.joint == JOINT_MIN || o->r.joint == JOINT_MAX);
+  if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(o->r.measure), INFINITY};
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
 }
 
@@ -448,7 +493,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   uint32_t *ord = malloc(n * sizeof *ord);
   lot_run R;
   if (L == NULL || ord == NULL ||
-      lot_mesh_alloc(&L->m, (uint32_t)n, o->r.kind == RULE_TRIANGLE && !o->decide) != 0)
+      lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(o)) != 0)
     goto oom;
   L->r = o->r;
   L->m.r = &L->r;
@@ -502,17 +547,7 @@ int lot_reflip(lot *L, const lot_options *o) {
   m->meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
   m->fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
   m->pts = o->r.kind == RULE_TRIANGLE ? measure_points(o->r.measure) : NULL;
-  int tri = o->r.kind == RULE_TRIANGLE && !o->decide;
-  if (tri && m->bad == NULL && (m->bad = malloc((size_t)m->cap * sizeof *m->bad)) == NULL)
-    return -1;
-  if (!tri) {
-    free(m->bad);
-    m->bad = NULL;
-  }
-  for (uint32_t t = 0; tri && t < m->nt; t++)
-    m->bad[t] = lot_is_ghost(m, t) ? 0
-              : lot_mesh_badness(m, m->tv[LOT_CORNER(t, 0)], m->tv[LOT_CORNER(t, 1)],
-                                 m->tv[LOT_CORNER(t, 2)]);
+  if (lot_mesh_recache(m, lot_cache_of(o)) != 0) return -1;
   lot_run R;
   L->st.flips = 0;
   L->st.status = LOT_CONVERGED;
@@ -528,9 +563,10 @@ int lot_reflip(lot *L, const lot_options *o) {
 }
 
 /* Bytes per point: input copy in insertion order (16) and its index (4),
-** the order (4, transient), 2 triangles of 32 bytes of indices and 8 of
-** badness, and a caller's input and output (16 + 2 * 12 + 2 * 8). */
-#define LOT_BYTES_PER_POINT 168u
+** the order (4, transient), 2 triangles of 32 bytes of indices and up to
+** 16 of badness (an enclosure), and a caller's input and output
+** (16 + 2 * 12 + 2 * 8). */
+#define LOT_BYTES_PER_POINT 184u
 
 int lot_check_memory(size_t n, char *err, size_t errlen) {
   long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);

@@ -109,7 +109,7 @@ void lot_get_triangles(const lot *L, uint32_t *tri);
 ** anticlockwise, as input indices; out holds stats.hull entries. */
 size_t lot_get_hull(const lot *L, uint32_t *out);
 
-/* 0 if n points fit in memory (at most 3/4 of physical memory, about 170
+/* 0 if n points fit in memory (at most 3/4 of physical memory, about 185
 ** bytes per point with a caller's input and output), else -1 and a
 ** one-line message. */
 int lot_check_memory(size_t n, char *err, size_t errlen);

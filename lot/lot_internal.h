@@ -14,7 +14,15 @@
 ** several divisions by 3, a tenth of the Delaunay triangulation's
 ** instructions.  16 bytes of indices per corner slot pair, 2n - 2 triangles
 ** (ghosts included) for n vertices: 64 bytes per point, plus 8 per triangle
-** for the badness cache of triangle-based rules.
+** for the badness cache of triangle-based rules, or 16 for its enclosures.
+**
+** The badness cache.  A triangle-based rule keeps each triangle's badness
+** (bad[], exact, computed whenever a triangle is made).  The angle
+** measures with a joint that has enclosures (measure_has_bounds,
+** joint_has_bounds) keep an enclosure [lo, hi] instead (enc[]), from
+** measure_bounds, without atan2; the exact value replaces it (lo == hi)
+** only when a decision needs it (lot.c).  lo == hi always means exact: an
+** enclosure that wide holds only the exact value.
 **
 ** Vertices are numbered in insertion order (p[] is the input permuted),
 ** which keeps neighbouring triangles' points close in memory.
@@ -29,12 +37,22 @@
 #define LOT_GHOST UINT32_MAX
 #define LOT_NONE UINT32_MAX
 
+/* An enclosure lo <= badness <= hi of a triangle; lo == hi: the exact value. */
+typedef struct lot_enc {
+  double lo, hi;
+} lot_enc;
+
+/* What a mesh caches per triangle: nothing (DT, quadrilateral rules, a
+** decision hook), the exact badness, or enclosures of it. */
+typedef enum lot_cache { LOT_CACHE_NONE, LOT_CACHE_EXACT, LOT_CACHE_ENCLOSED } lot_cache;
+
 typedef struct lot_mesh {
   geom_point *p;        /* vertex k's point (k in insertion order) */
   uint32_t *inp;        /* vertex k's input index (first occurrence after merging) */
   uint32_t np;          /* slots in p (input points, duplicates included) */
   uint32_t *tv, *tn;    /* 4 per triangle (LOT_CORNER), the last unused */
   double *bad;          /* per-triangle badness (triangle-based rules) or NULL */
+  lot_enc *enc;         /* per-triangle enclosures of it instead (LOT_CACHE_ENCLOSED) */
   uint32_t nt, cap;     /* triangles used, allocated */
   uint32_t last;        /* a triangle near the last insertion: the walk's start */
   uint64_t walk;        /* the walk's generator state (deterministic) */
@@ -59,7 +77,10 @@ static inline int lot_is_ghost(const lot_mesh *m, uint32_t t) {
 /* Where a point lies (lot_mesh_locate). */
 typedef enum lot_where { LOT_IN_TRIANGLE, LOT_ON_EDGE, LOT_ON_VERTEX, LOT_OUTSIDE } lot_where;
 
-int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness);
+int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache);
+/* Switch the cache to another kind and fill it for every triangle (reflip);
+** 0, or -1 when out of memory. */
+int lot_mesh_recache(lot_mesh *m, lot_cache cache);
 void lot_mesh_free(lot_mesh *m);
 /* The first triangle a, b, c (anticlockwise) and its three ghosts. */
 void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
@@ -75,10 +96,15 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
                      size_t *candcap);
 /* Flip the edge opposite corner c (both triangles real): t = (a, b, c0)
 ** and t' = (d, c0, b) become (a, b, d) and (d, c0, a), keeping a at its
-** corner in t and d at its corner in t'. */
-void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u);
+** corner in t and d at its corner in t'.
+** bt and bu are the new triangles' badness (bt.lo for an exact cache). */
+void lot_mesh_flip(lot_mesh *m, uint32_t c, lot_enc bt, lot_enc bu);
 /* The badness of triangle (a, b, c) for m->r (triangle-based rules). */
 double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+/* An enclosure of it (measure_bounds), or the exact value where there is none. */
+lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+/* Triangle t's enclosure made exact (computed once, then cached). */
+void lot_mesh_exact(lot_mesh *m, uint32_t t);
 
 /* Insertion orders (lot/order.c): ord[0..n-1] = input indices. */
 int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *ord);

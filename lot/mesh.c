@@ -1,7 +1,8 @@
 /*
 ** mesh.c: the triangle-neighbour structure of lot_internal.h: the first
 ** triangle, point location by a walk, insertion (inside a triangle, on an
-** edge, outside the hull) and the flip.
+** edge, outside the hull), the flip, and the per-triangle badness cache
+** (exact values, or enclosures made exact on demand).
 **
 ** All geometric decisions are exact (geom_orient_valid: lot_build has
 ** checked every point against the coordinate contract).  The walk is the
@@ -19,7 +20,18 @@
 #include "lot_internal.h"
 #include "measure.h"
 
-int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness) {
+/* The cache's array for its kind (the other one freed): 0, or -1. */
+static int lot_cache_alloc(lot_mesh *m, lot_cache cache) {
+  free(m->bad);
+  free(m->enc);
+  m->bad = NULL;
+  m->enc = NULL;
+  if (cache == LOT_CACHE_EXACT) m->bad = malloc((size_t)m->cap * sizeof *m->bad);
+  if (cache == LOT_CACHE_ENCLOSED) m->enc = malloc((size_t)m->cap * sizeof *m->enc);
+  return cache == LOT_CACHE_NONE || m->bad || m->enc ? 0 : -1;
+}
+
+int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache) {
   memset(m, 0, sizeof *m);
   m->np = np;
   m->cap = 2 * np + 4;
@@ -27,9 +39,8 @@ int lot_mesh_alloc(lot_mesh *m, uint32_t np, int with_badness) {
   m->inp = malloc((size_t)np * sizeof *m->inp);
   m->tv = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tv);
   m->tn = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tn);
-  if (with_badness) m->bad = malloc((size_t)m->cap * sizeof *m->bad);
   m->walk = 0x9e3779b97f4a7c15ull;
-  if (!m->p || !m->inp || !m->tv || !m->tn || (with_badness && !m->bad)) {
+  if (!m->p || !m->inp || !m->tv || !m->tn || lot_cache_alloc(m, cache) != 0) {
     lot_mesh_free(m);
     return -1;
   }
@@ -42,6 +53,7 @@ void lot_mesh_free(lot_mesh *m) {
   free(m->tv);
   free(m->tn);
   free(m->bad);
+  free(m->enc);
   memset(m, 0, sizeof *m);
 }
 
@@ -50,6 +62,34 @@ double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   geom_tri t;
   geom_tri_make_fields(&t, m->p[a], m->p[b], m->p[c], m->fields);
   return m->meas->fn(&t, m->meas->ctx);
+}
+
+lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
+  lot_enc e;
+  if (!measure_bounds(m->r->measure, m->p[a], m->p[b], m->p[c], &e.lo, &e.hi))
+    e.lo = e.hi = lot_mesh_badness(m, a, b, c);
+  return e;
+}
+
+void lot_mesh_exact(lot_mesh *m, uint32_t t) {
+  lot_enc *e = &m->enc[t];
+  if (e->lo == e->hi) return;
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+  e->lo = e->hi = lot_mesh_badness(m, v[0], v[1], v[2]);
+}
+
+/* Triangle t's cache entry from its vertices (0 for a ghost). */
+static void lot_cache_set(lot_mesh *m, uint32_t t) {
+  const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+  int ghost = v[0] == LOT_GHOST || v[1] == LOT_GHOST || v[2] == LOT_GHOST;
+  if (m->bad) m->bad[t] = ghost ? 0 : lot_mesh_badness(m, v[0], v[1], v[2]);
+  else if (m->enc) m->enc[t] = ghost ? (lot_enc){0, 0} : lot_mesh_enclose(m, v[0], v[1], v[2]);
+}
+
+int lot_mesh_recache(lot_mesh *m, lot_cache cache) {
+  if (lot_cache_alloc(m, cache) != 0) return -1;
+  for (uint32_t t = 0; t < m->nt; t++) lot_cache_set(m, t);
+  return 0;
 }
 
 static void lot_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
@@ -62,8 +102,7 @@ static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
   v[0] = a;
   v[1] = b;
   v[2] = c;
-  if (m->bad) m->bad[t] = (a == LOT_GHOST || b == LOT_GHOST || c == LOT_GHOST)
-                              ? 0 : lot_mesh_badness(m, a, b, c);
+  lot_cache_set(m, t);
 }
 
 void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
@@ -442,8 +481,7 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     }
     uint32_t t = lot_tri_of(x);
     m->tv[x] = k;
-    const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
-    if (m->bad) m->bad[t] = lot_mesh_badness(m, v[0], v[1], v[2]);
+    lot_cache_set(m, t);
     (*cand)[nc++] = x;
     last = x;
     /* The next ghost (v, w, G) faces edge (G, v) with w's corner. */
@@ -505,7 +543,7 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
   return kept;
 }
 
-void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
+void lot_mesh_flip(lot_mesh *m, uint32_t c, lot_enc bt, lot_enc bu) {
   uint32_t t = lot_tri_of(c), i1 = lot_next3(c), i2 = lot_next3(i1);
   uint32_t j0 = m->tn[c], u = lot_tri_of(j0), j1 = lot_next3(j0), j2 = lot_next3(j1);
   uint32_t a = m->tv[c], d = m->tv[j0];
@@ -516,7 +554,10 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
   lot_link(m, j0, n_ca);
   lot_link(m, i1, j1);
   if (m->bad) {
-    m->bad[t] = bad_t;
-    m->bad[u] = bad_u;
+    m->bad[t] = bt.lo;
+    m->bad[u] = bu.lo;
+  } else if (m->enc) {
+    m->enc[t] = bt;
+    m->enc[u] = bu;
   }
 }

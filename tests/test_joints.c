@@ -3,7 +3,8 @@
 ** random values of both sign domains: the l_p formulas and the sign
 ** convention, commutativity (bit-exact), associativity (to rounding),
 ** monotonicity, the identity element, infinite inputs, and the keys
-** (strictly increasing, invertible, turning f into +, min or max).
+** (strictly increasing, invertible, turning f into +, min or max), and
+** verdicts from enclosures (joint_compare_bounds) against joint_compare.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -304,6 +305,134 @@ static void test_compare_plain(void **state) {
   assert_int_equal(bad, 0);
 }
 
+/* ---- joint_compare_bounds: verdicts from enclosures ---- */
+
+static const double tjoint_eps[] = {0, 1e-12, 1e-9, 1e-3, 0.5, 1};
+
+/* The k-th sample of the box lo..hi: its 16 corners, then points drawn
+** per coordinate from the ends, their neighbours inside and the interior. */
+static void tjoint_sample(testutil_rng *g, int k, const double lo[4], const double hi[4],
+                          double x[4]) {
+  for (int i = 0; i < 4; i++) {
+    if (k < 16) {
+      x[i] = (k >> i) & 1 ? hi[i] : lo[i];
+      continue;
+    }
+    double u = testutil_uniform(g);
+    x[i] = u < 0.25 ? lo[i] : u < 0.5 ? hi[i] : u < 0.6 ? nextafter(lo[i], hi[i])
+         : u < 0.7 ? nextafter(hi[i], lo[i]) : lo[i] + testutil_uniform(g) * (hi[i] - lo[i]);
+    if (x[i] < lo[i] || x[i] > hi[i]) x[i] = lo[i];
+  }
+}
+
+/* A certified verdict must be joint_compare's on every sampled point of
+** the box; returns 1 when the verdict was certified. */
+static int tjoint_check_box(testutil_rng *g, joint_id j, int s, const double lo[4],
+                            const double hi[4], double eps) {
+  joint_verdict v = joint_compare_bounds(j, s, lo, hi, eps);
+  if (v == JOINT_UNSURE) return 0;
+  for (int k = 0; k < 48; k++) {
+    double x[4];
+    tjoint_sample(g, k, lo, hi, x);
+    int c = joint_compare(j, s, x[0], x[1], x[2], x[3], eps);
+    if ((v == JOINT_LESS) != (c < 0)) {
+      print_error("joint %s s=%d eps=%g: verdict %s but joint_compare(%.17g, %.17g, %.17g, "
+                  "%.17g) = %d; box [%.17g %.17g] [%.17g %.17g] [%.17g %.17g] [%.17g %.17g]\n",
+                  joint_get(j)->name, s, eps, v == JOINT_LESS ? "less" : "not less", x[0], x[1],
+                  x[2], x[3], c, lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], lo[3], hi[3]);
+      fail();
+    }
+  }
+  return 1;
+}
+
+/* Values of the second pair whose joint is the first pair's times
+** (1 + r) (near a tie when |r| is near eps), or equal to it (r = 0,
+** the pair swapped or rebuilt). */
+static void tjoint_near_pair(testutil_rng *g, joint_id j, int s, double x1, double y1, double r,
+                             double *x2, double *y2) {
+  double A = joint_apply(j, s, x1, y1), B = A * (1 + r), f = testutil_uniform(g);
+  if (j == JOINT_SUM) {
+    *y2 = f * B;
+    *x2 = B - *y2;
+  } else if ((j == JOINT_MIN) == (s > 0)) {   /* B is the smaller one */
+    *x2 = B;
+    *y2 = B * (s > 0 ? 1 + f : 1 - f / 2);
+  } else {
+    *x2 = B;
+    *y2 = B * (s > 0 ? f : 1 - f / 2 + 0.5);
+  }
+  if (testutil_next(g) & 1) {
+    double t = *x2;
+    *x2 = *y2;
+    *y2 = t;
+  }
+}
+
+/* Half-widths of the enclosures: none (exact values), an ulp, the LOT's
+** 1e-6, relative or absolute, and wide. */
+static double tjoint_width(testutil_rng *g, double v) {
+  switch (testutil_next(g) % 6) {
+    case 0: return 0;
+    case 1: return fabs(nextafter(v, INFINITY) - v);
+    case 2: return 1e-6 * fabs(v);
+    case 3: return 1e-6;
+    case 4: return 1e-12 * fabs(v);
+    default: return 1e-3 * fabs(v);
+  }
+}
+
+/* For min, max and sum, on random values, on near ties at the tolerance
+** (the joint of the second pair eps (1 +- 1e-6), eps, eps (1 +- few
+** ulps) away from the first's, or equal), at scales 2^-1000 .. 2^1000
+** (eps max(|A|, |B|) underflows, sums overflow), with exact values and
+** with enclosures of several widths: every certified verdict is
+** joint_compare's at every corner and at sampled points.  Most generic
+** cases are certified; the other joints are never. */
+static void test_compare_bounds(void **state) {
+  (void)state;
+  testutil_rng g = {7};
+  static const double near[] = {1, 1 + 1e-6, 1 - 1e-6, 1 + 0x1p-50, 1 - 0x1p-50, 0};
+  long cases = 0, decided = 0, exact_cases = 0, exact_decided = 0;
+  for (int n = 0; n < 60000; n++)
+    for (int s = -1; s <= 1; s += 2)
+      for (int jj = 0; jj < JOINT_COUNT; jj++) {
+        joint_id j = (joint_id)jj;
+        double eps = tjoint_eps[testutil_next(&g) % 6], v[4];
+        double scale = ldexp(1.0, (int)(testutil_next(&g) % 2001) - 1000);
+        v[0] = tjoint_value(&g, s) * scale;
+        v[1] = tjoint_value(&g, s) * scale;
+        int kind = (int)(testutil_next(&g) % 4);
+        if (kind == 0) {
+          v[2] = tjoint_value(&g, s) * scale;
+          v[3] = tjoint_value(&g, s) * scale;
+        } else {
+          double r = near[testutil_next(&g) % 6] * (testutil_next(&g) & 1 ? eps : -eps);
+          tjoint_near_pair(&g, j, s, v[0], v[1], kind == 3 ? 0 : r, &v[2], &v[3]);
+        }
+        double lo[4], hi[4];
+        int exact = testutil_next(&g) % 3 == 0;
+        for (int i = 0; i < 4; i++) {
+          double w = exact ? 0 : tjoint_width(&g, v[i]);
+          lo[i] = v[i] - w;
+          hi[i] = v[i] + w;
+        }
+        int d = tjoint_check_box(&g, j, s, lo, hi, eps);
+        if (!joint_has_bounds(j)) {
+          assert_int_equal(d, 0);
+          continue;
+        }
+        cases += kind == 0;
+        decided += kind == 0 && d;
+        exact_cases += kind == 0 && exact;
+        exact_decided += kind == 0 && exact && d;
+      }
+  print_message("compare_bounds: %ld of %ld generic cases certified (%ld of %ld exact)\n",
+                decided, cases, exact_decided, exact_cases);
+  assert_true(decided > cases / 2);
+  assert_true(exact_decided > 0.98 * exact_cases);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_table),
@@ -315,6 +444,7 @@ int main(void) {
     cmocka_unit_test(test_infinite_inputs),
     cmocka_unit_test(test_keys),
     cmocka_unit_test(test_compare_plain),
+    cmocka_unit_test(test_compare_bounds),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
