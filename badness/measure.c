@@ -179,33 +179,30 @@ static void measure_sigma_bounds(const double lo[3], const double hi[3], double 
   *shi = (sl * (1 + 0x1p-40) + h) * (1 + 0x1p-40);
 }
 
-/* The order statistics of the angles' enclosures enclose alpha, beta and
-** gamma (min, median and max are monotone in each argument); the angle
-** measures are those order statistics, exactly, or sigma. */
+/* The angle measures are alpha, beta, gamma themselves (negated for
+** -alpha) or sigma of the three angles. */
 int measure_bounds(int id, geom_point p, geom_point q, geom_point r, double *lo, double *hi) {
-  double a[3], b[3];
-  geom_angle_which w = id == MEASURE_NEG_ALPHA ? GEOM_ANGLE_SMALLEST
-                     : id == MEASURE_GAMMA ? GEOM_ANGLE_LARGEST : GEOM_ANGLES_ALL;
-  if (!measure_has_bounds(id) || !geom_angle_bounds(p, q, r, w, a, b)) return 0;
+  double a[3], b[3], l, h;
   switch (id) {
     case MEASURE_NEG_ALPHA:
-      *lo = -geom_min3(b[0], b[1], b[2]);
-      *hi = -geom_min3(a[0], a[1], a[2]);
-      break;
+      if (!geom_angle_rank_bounds(p, q, r, 0, &l, &h)) return 0;
+      *lo = -h;
+      *hi = -l;
+      return 1;
     case MEASURE_BETA:
-      *lo = geom_mid3(a[0], a[1], a[2]);
-      *lo = *lo > 0 ? *lo : 0;
-      *hi = geom_mid3(b[0], b[1], b[2]);
-      break;
+      if (!geom_angle_rank_bounds(p, q, r, 1, &l, &h)) return 0;
+      *lo = l > 0 ? l : 0;
+      *hi = h;
+      return 1;
     case MEASURE_GAMMA:
-      *lo = geom_max3(a[0], a[1], a[2]);
-      *hi = geom_max3(b[0], b[1], b[2]);
-      break;
-    default:
+      return geom_angle_rank_bounds(p, q, r, 2, lo, hi);
+    case MEASURE_SIGMA:
+      if (!geom_angle_bounds(p, q, r, a, b)) return 0;
       measure_sigma_bounds(a, b, lo, hi);
-      break;
+      return 1;
+    default:
+      return 0;
   }
-  return 1;
 }
 
 /* The angles geom_tri_fill computes are within 2^-35 of the exact ones

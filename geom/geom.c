@@ -79,70 +79,84 @@ static void geom_angle_enclose(double a, double *lo, double *hi) {
   *hi = a + GEOM_ANGLE_SLACK;
 }
 
-/* One angle's enclosure extended to alpha or gamma (GEOM_ANGLE_SMALLEST,
-** GEOM_ANGLE_LARGEST).  Let v be the vertex opposite the side whose
-** rounded squared length s_v is the smallest (largest).  Each s_i is the
-** exact S_i times (1 + t), |t| <= 4 eps/2 + O(eps^2) (two rounded
-** differences, their squares, the sum), when s_i >= 2^-1000 (any absolute
-** error of underflow is then below 2^-74 s_i).  So s_v < s_i (1 - 2^-48),
-** rounding of the product included, gives S_v < S_i (2^-48 is 32 eps/2,
-** the errors need 11): side v is exactly the shortest (longest), and in a
-** Euclidean triangle the strictly shorter side faces the strictly smaller
-** angle, A_v < A_i (A_v > A_i).  The angles c_i that geom_tri_fill
-** computes are within 2^-35 of the exact ones, so c_i >= c_v - 2^-34
-** (c_i <= c_v + 2^-34), and the margin of GEOM_ANGLE_SLACK over the error of
-** the approximation (2^-35 + 2^-37 + 2e-8 + roundings < 3e-8, geom.c's
-** argument above) covers that 2^-34 = 6e-11: lo[v] <= c_i (hi[v] >= c_i).
-** The other vertices then get lo[i] = lo[v] (hi[i] = hi[v]): the minimum
-** (maximum) of lo and hi encloses alpha (gamma).  Without that margin
-** (near-isosceles at v, or sides below 2^-500) they keep [0, 4]: a useless
-** but valid enclosure, and the caller falls back to the exact value.
-** Example of why the margin matters: (0, 0), (1e-17, 1e-17), (1, 0) has
-** angles 45 and 135 degrees at the first two points, whose opposite
-** sides 1 and 1 - 1e-17 round to the same length. */
-static void geom_angle_extend(const double s[3], int v, geom_angle_which which, double lo[3],
-                              double hi[3]) {
-  const double m = 1 - 0x1p-48;
-  int i = v == 0 ? 1 : 0, k = v == 2 ? 1 : 2;   /* the other two vertices */
-  if (!(geom_min3(s[0], s[1], s[2]) >= 0x1p-1000)) return;
-  if (which == GEOM_ANGLE_SMALLEST) {
-    if (s[v] < s[i] * m && s[v] < s[k] * m) lo[i] = lo[k] = lo[v];
-  } else if (s[v] * m > s[i] && s[v] * m > s[k]) {
-    hi[i] = hi[k] = hi[v];
-  }
+/* The edge vectors of p, q, r and twice the area; 1 when the area passes
+** geom_twice_area_inline's filter (a relative error below 2^-40). */
+typedef struct geom_edges {
+  double bax, bay, cax, cay, cbx, cby, twice;
+} geom_edges;
+
+static inline int geom_edges_make(geom_point p, geom_point q, geom_point r, geom_edges *e) {
+  e->bax = q.x - p.x, e->bay = q.y - p.y, e->cax = r.x - p.x, e->cay = r.y - p.y;
+  e->cbx = r.x - q.x, e->cby = r.y - q.y;
+  double l = e->bax * e->cay, rr = e->bay * e->cax, perm = fabs(l) + fabs(rr);
+  e->twice = fabs(l - rr);
+  return e->twice > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900;
 }
 
-int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
-                      double lo[3], double hi[3]) {
-  double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;
-  double cbx = r.x - q.x, cby = r.y - q.y;
-  double l = bax * cay, rr = bay * cax;
-  double twice = fabs(l - rr), perm = fabs(l) + fabs(rr);
-  /* geom_twice_area_inline's filter: a relative error below 2^-40 */
-  if (!(twice > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900))
-    return 0;
-  /* the dot products at p (to q and to r), at q (to p and r), at r */
-  if (which == GEOM_ANGLES_ALL) {
-    /* the third exact angle is pi minus the others: within 2 (2^-37 + 2e-8) */
-    double a0 = geom_atan2_approx(twice, bax * cax + bay * cay);
-    double a1 = geom_atan2_approx(twice, -(bax * cbx + bay * cby));
-    geom_angle_enclose(a0, &lo[0], &hi[0]);
-    geom_angle_enclose(a1, &lo[1], &hi[1]);
-    geom_angle_enclose(M_PI - (a0 + a1), &lo[2], &hi[2]);
+/* The dot product of the edges at vertex v: at p (to q and to r), q, r. */
+static inline double geom_edges_dot(const geom_edges *e, int v) {
+  return v == 0 ? e->bax * e->cax + e->bay * e->cay
+       : v == 1 ? -(e->bax * e->cbx + e->bay * e->cby) : e->cax * e->cbx + e->cay * e->cby;
+}
+
+/* All three angles; the third exact angle is pi minus the others: within
+** 2 (2^-37 + 2e-8). */
+static void geom_angles_all(const geom_edges *e, double lo[3], double hi[3]) {
+  double a0 = geom_atan2_approx(e->twice, geom_edges_dot(e, 0));
+  double a1 = geom_atan2_approx(e->twice, geom_edges_dot(e, 1));
+  geom_angle_enclose(a0, &lo[0], &hi[0]);
+  geom_angle_enclose(a1, &lo[1], &hi[1]);
+  geom_angle_enclose(M_PI - (a0 + a1), &lo[2], &hi[2]);
+}
+
+int geom_angle_bounds(geom_point p, geom_point q, geom_point r, double lo[3], double hi[3]) {
+  geom_edges e;
+  if (!geom_edges_make(p, q, r, &e)) return 0;
+  geom_angles_all(&e, lo, hi);
+  return 1;
+}
+
+/* alpha, beta or gamma from one angle.  Sort the vertices by the rounded
+** squared length s_i of the side opposite each, and let v be the one in
+** place k.  Each s_i is the exact S_i times (1 + t), |t| <= 4 eps/2 +
+** O(eps^2) (two rounded differences, their squares, the sum), when s_i >=
+** 2^-1000 (any absolute error of underflow is then below 2^-74 s_i).  So
+** s_i < s_j (1 - 2^-48), rounding of the product included, gives S_i < S_j
+** (2^-48 is 32 eps/2, the errors need 11).  When v's neighbours in that
+** order are separated from it so, v's side is exactly in place k, and in
+** a Euclidean triangle the strictly shorter side faces the strictly
+** smaller angle: the exact angle A_v is the k-th smallest.  The angles c_i
+** that geom_tri_fill computes are within 2^-35 of the exact ones, so their
+** k-th smallest (an order statistic moves no more than its arguments) is
+** within 2^-35 of A_v, and so is c_v; GEOM_ANGLE_SLACK exceeds the
+** approximation's error (2^-35 + 2^-37 + 2e-8 + roundings < 3e-8, the
+** argument above) by far more than that 2^-34.  Without the separation (an
+** isosceles triangle, sides below 2^-500) all three angles are enclosed
+** and the order statistic taken.  Why the separation matters: (0, 0),
+** (1e-17, 1e-17), (1, 0) has angles 45 and 135 degrees at its first two
+** points, whose opposite sides 1 and 1 - 1e-17 round to the same length. */
+int geom_angle_rank_bounds(geom_point p, geom_point q, geom_point r, int k, double *lo,
+                           double *hi) {
+  geom_edges e;
+  if (!geom_edges_make(p, q, r, &e)) return 0;
+  double s0 = e.cbx * e.cbx + e.cby * e.cby, s1 = e.cax * e.cax + e.cay * e.cay;
+  double s2 = e.bax * e.bax + e.bay * e.bay, t;
+  int i0 = 0, i1 = 1, i2 = 2, it;
+  if (s1 < s0) t = s0, s0 = s1, s1 = t, it = i0, i0 = i1, i1 = it;
+  if (s2 < s1) t = s1, s1 = s2, s2 = t, it = i1, i1 = i2, i2 = it;
+  if (s1 < s0) t = s0, s0 = s1, s1 = t, it = i0, i0 = i1, i1 = it;
+  const double m = 1 - 0x1p-48;
+  if (s0 >= 0x1p-1000 && (k == 2 || s0 < s1 * m) && (k == 0 || s1 < s2 * m)) {
+    double dot = geom_edges_dot(&e, k == 0 ? i0 : k == 1 ? i1 : i2);
+    geom_angle_enclose(geom_atan2_approx(e.twice, dot), lo, hi);
     return 1;
   }
-  double s[3] = {cbx * cbx + cby * cby, cax * cax + cay * cay, bax * bax + bay * bay};
-  int v = which == GEOM_ANGLE_SMALLEST
-              ? (s[0] <= s[1] ? (s[0] <= s[2] ? 0 : 2) : (s[1] <= s[2] ? 1 : 2))
-              : (s[0] >= s[1] ? (s[0] >= s[2] ? 0 : 2) : (s[1] >= s[2] ? 1 : 2));
-  for (int i = 0; i < 3; i++) {   /* every computed angle lies in [0, pi] */
-    lo[i] = 0;
-    hi[i] = 4;
-  }
-  double dot = v == 0 ? bax * cax + bay * cay : v == 1 ? -(bax * cbx + bay * cby)
-                                                       : cax * cbx + cay * cby;
-  geom_angle_enclose(geom_atan2_approx(twice, dot), &lo[v], &hi[v]);
-  geom_angle_extend(s, v, which, lo, hi);
+  double l[3], h[3];
+  geom_angles_all(&e, l, h);
+  *lo = k == 0 ? geom_min3(l[0], l[1], l[2])
+      : k == 1 ? geom_mid3(l[0], l[1], l[2]) : geom_max3(l[0], l[1], l[2]);
+  *hi = k == 0 ? geom_min3(h[0], h[1], h[2])
+      : k == 1 ? geom_mid3(h[0], h[1], h[2]) : geom_max3(h[0], h[1], h[2]);
   return 1;
 }
 

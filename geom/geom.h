@@ -78,20 +78,16 @@ static inline double geom_mid3(double a, double b, double c) {
 ** enclosures about 2e-6 wide.  Since min, median and max are monotone in
 ** each argument, the order statistics of lo and hi enclose alpha, beta and
 ** gamma.  Returns 0 (lo, hi unset) for a triangle so flat that its area
-** needs geom_twice_area's exact path.  For filters that skip geom_tri_make
-** when a decision cannot depend on the exact values (lot/lot.c).
-** GEOM_ANGLE_SMALLEST and GEOM_ANGLE_LARGEST enclose only the angle opposite
-** the shortest or the longest side (as far as rounded squared lengths
-** tell), at a third of the cost; the other two get the trivial [0, 4],
-** enough to bound alpha from above or gamma from below, except that when
-** that side is shorter (longer) than the others by a clear margin they get
-** the same lower (upper) bound as it, so that alpha (gamma) is enclosed
-** from both sides (geom.c, geom_angle_extend, says why that is safe). */
-typedef enum geom_angle_which {
-  GEOM_ANGLES_ALL, GEOM_ANGLE_SMALLEST, GEOM_ANGLE_LARGEST
-} geom_angle_which;
-int geom_angle_bounds(geom_point p, geom_point q, geom_point r, geom_angle_which which,
-                      double lo[3], double hi[3]);
+** needs geom_twice_area's exact path.  For decisions that need the exact
+** values only when enclosures cannot decide (lot/lot.c, measure_bounds). */
+int geom_angle_bounds(geom_point p, geom_point q, geom_point r, double lo[3], double hi[3]);
+/* The same for one of alpha, beta, gamma (k = 0, 1, 2) alone: the angle
+** opposite the shortest, median or longest side, when rounded squared
+** lengths tell that side apart from the others, with one approximate
+** atan2 instead of two (geom.c says why that is safe); else (an isosceles
+** triangle) the order statistic of all three. */
+int geom_angle_rank_bounds(geom_point p, geom_point q, geom_point r, int k, double *lo,
+                           double *hi);
 
 /* The lexicographic order of points (by x, then y): a triangle's canonical
 ** vertex order, the samplers' collinear tie-break, the plugin rotation.

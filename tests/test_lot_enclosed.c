@@ -235,10 +235,61 @@ static void test_lot_identical(void **state) {
   measure_unregister_user();
 }
 
+/* Triangles of L after a reflip to measure id under joint j. */
+static uint32_t *tle_reflip(lot *L, int id, joint_id j, uint64_t *flips) {
+  rule r;
+  char err[256];
+  if (rule_triangle(id, j, &r, err, sizeof err) != 0) fail_msg("rule: %s", err);
+  lot_options o;
+  lot_options_init(&o, &r);
+  assert_int_equal(lot_reflip(L, &o), 0);
+  *flips = lot_get_stats(L)->flips;
+  uint32_t *tri = malloc(3 * lot_get_stats(L)->triangles * sizeof *tri);
+  assert_non_null(tri);
+  lot_get_triangles(L, tri);
+  return tri;
+}
+
+/* lot_reflip switches the cache between kinds (exact to enclosed, enclosed
+** to enclosed or exact) and flips as the exact cache does: from the LOT
+** of one rule to another, and on to a third. */
+static void test_reflip_identical(void **state) {
+  (void)state;
+  const size_t n = 1200;
+  geom_point *p = malloc(n * sizeof *p);
+  assert_non_null(p);
+  sampler_points(SAMPLER_NORMAL, 5, n, p);
+  static const int from[] = {MEASURE_P, MEASURE_SIGMA, MEASURE_GAMMA};
+  for (size_t f = 0; f < sizeof from / sizeof from[0]; f++)
+    for (size_t m = 0; m < sizeof tle_measures / sizeof tle_measures[0]; m++) {
+      int id = tle_measures[m], twin = tle_twin(id), next = tle_measures[(m + 1) % 4];
+      uint32_t *t0;
+      lot *A = tle_build(p, n, from[f], JOINT_SUM, LOT_INCREMENTAL, &t0);
+      lot *B = tle_build(p, n, from[f], JOINT_SUM, LOT_INCREMENTAL, &t0);
+      free(t0);
+      uint64_t fa, fb;
+      uint32_t *ta = tle_reflip(A, id, JOINT_MAX, &fa), *tb = tle_reflip(B, twin, JOINT_MAX, &fb);
+      size_t nt = lot_get_stats(A)->triangles;
+      assert_true(fa == fb && memcmp(ta, tb, 3 * nt * sizeof *ta) == 0);
+      free(ta);
+      free(tb);
+      ta = tle_reflip(A, next, JOINT_SUM, &fa);
+      tb = tle_reflip(B, tle_twin(next), JOINT_SUM, &fb);
+      assert_true(fa == fb && memcmp(ta, tb, 3 * nt * sizeof *ta) == 0);
+      free(ta);
+      free(tb);
+      lot_free(A);
+      lot_free(B);
+    }
+  free(p);
+  measure_unregister_user();
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_quad_verdicts),
     cmocka_unit_test(test_lot_identical),
+    cmocka_unit_test(test_reflip_identical),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

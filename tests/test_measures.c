@@ -455,11 +455,9 @@ static void tmeas_stress_tri(testutil_rng *g, int kind, geom_point v[3]) {
 }
 
 /* One triangle, one angle measure, every vertex order: the enclosure holds
-** the very double measure_eval gives and is at most `width` wide (or, for
-** -alpha and gamma, trivially wide: counted in *wide); the measure's
-** floor is below it.  Returns how many orders had no enclosure. */
-static int tmeas_check_bounds(int id, const geom_point v[3], double width, long *bad,
-                              long *wide) {
+** the very double measure_eval gives and is at most `width` wide; the
+** measure's floor is below it.  Returns how many orders had no enclosure. */
+static int tmeas_check_bounds(int id, const geom_point v[3], double width, long *bad) {
   static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   geom_tri t;
   geom_tri_make(&t, v[0], v[1], v[2]);
@@ -473,9 +471,7 @@ static int tmeas_check_bounds(int id, const geom_point v[3], double width, long 
       none++;
       continue;
     }
-    int trivial = (id == MEASURE_NEG_ALPHA && hi == 0) || (id == MEASURE_GAMMA && hi == 4);
-    *wide += trivial;
-    if (!(lo <= x && x <= hi && (trivial || hi - lo <= width)) && (*bad)++ < 5)
+    if (!(lo <= x && x <= hi && hi - lo <= width) && (*bad)++ < 5)
       print_error("%s of (%a,%a) (%a,%a) (%a,%a): [%.17g, %.17g], value %.17g\n",
                   measure_get(id)->name, v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y, lo, hi, x);
   }
@@ -483,37 +479,30 @@ static int tmeas_check_bounds(int id, const geom_point v[3], double width, long 
 }
 
 /* For the four angle measures, measure_bounds encloses the very double
-** measure_eval gives, in every vertex order, within 1e-5 (apart from the
-** trivial enclosures of -alpha and gamma, which only near-isosceles
-** triangles may get: never a uniform one); no enclosure only for triangles
-** whose area needs the exact path.  The other measures have none.  The
-** two vertices 1e-17 apart of geom.c's example: gamma (135 degrees) is
-** enclosed although the sides round to the same length. */
+** measure_eval gives, in every vertex order, within 1e-5; no enclosure
+** only for triangles whose area needs the exact path.  The other measures
+** have none.  The two vertices 1e-17 apart of geom.c's example: gamma (135
+** degrees) is enclosed although the sides round to the same length. */
 static void test_bounds(void **state) {
   (void)state;
   static const int ids[] = {MEASURE_NEG_ALPHA, MEASURE_BETA, MEASURE_GAMMA, MEASURE_SIGMA};
   testutil_rng g = {777};
-  long checked = 0, none = 0, bad = 0, wide = 0, wide_uniform = 0;
+  long checked = 0, none = 0, bad = 0;
   for (int it = 0; it < 160000; it++) {
     geom_point v[3];
     tmeas_stress_tri(&g, it % 8, v);
     if (geom_orient(v[0], v[1], v[2]) == 0) continue;
     for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++) {
-      long w0 = wide;
-      none += tmeas_check_bounds(ids[k], v, 1e-5, &bad, &wide);
+      none += tmeas_check_bounds(ids[k], v, 1e-5, &bad);
       checked += 6;
-      if (it % 8 == 0) wide_uniform += wide - w0;
     }
   }
-  print_message("bounds: %ld checked, %ld without (flat), %ld trivial (near-isosceles), "
-                "%ld wrong\n", checked, none, wide, bad);
+  print_message("bounds: %ld checked, %ld without (flat), %ld wrong\n", checked, none, bad);
   assert_int_equal(bad, 0);
-  assert_int_equal(wide_uniform, 0);
   assert_true(none > 0 && none < checked / 2);
-  assert_true(wide > 0 && wide < checked / 8);
   geom_point ex[3] = {{0, 0}, {1e-17, 1e-17}, {1, 0}};
   for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++)
-    assert_int_equal(tmeas_check_bounds(ids[k], ex, 1e-5, &bad, &wide), 0);
+    assert_int_equal(tmeas_check_bounds(ids[k], ex, 1e-5, &bad), 0);
   assert_int_equal(bad, 0);
   geom_point a = {0, 0}, b = {1, 0}, c = {0, 1};
   double lo, hi;
@@ -567,6 +556,38 @@ static void test_points_kernels(void **state) {
   assert_null(measure_points(-1));
 }
 
+/* geom_angle_rank_bounds encloses alpha, beta and gamma as geom_tri_make
+** computes them, in every vertex order, within 1e-5, on the stress set:
+** one angle where the sides are told apart, all three for the isosceles
+** and near-isosceles kinds (3, 4, 6, 7) where they may not be. */
+static void test_angle_rank_bounds(void **state) {
+  (void)state;
+  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  testutil_rng g = {778};
+  long checked = 0, bad = 0;
+  for (int it = 0; it < 80000; it++) {
+    geom_point v[3];
+    tmeas_stress_tri(&g, it % 8, v);
+    if (geom_orient(v[0], v[1], v[2]) == 0) continue;
+    geom_tri t;
+    geom_tri_make(&t, v[0], v[1], v[2]);
+    const double want[3] = {t.alpha, t.beta, t.gamma};
+    for (int k = 0; k < 3; k++)
+      for (int o = 0; o < 6; o++) {
+        double l, h;
+        if (!geom_angle_rank_bounds(v[perm[o][0]], v[perm[o][1]], v[perm[o][2]], k, &l, &h))
+          continue;
+        checked++;
+        if (!(l <= want[k] && want[k] <= h && h - l < 1e-5) && bad++ < 5)
+          print_error("angle %d of (%a,%a) (%a,%a) (%a,%a): [%.17g, %.17g], value %.17g\n", k,
+                      v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y, l, h, want[k]);
+      }
+  }
+  print_message("ranked angles: %ld enclosures, %ld wrong\n", checked, bad);
+  assert_int_equal(bad, 0);
+  assert_true(checked > 500000);
+}
+
 /* A dense sweep of one angle through (0, pi) at several scales: the
 ** enclosures of geom_angle_bounds hold the angles geom_tri_make computes
 ** (this probes the atan polynomial on a fine grid of arguments). */
@@ -578,7 +599,7 @@ static void test_angle_bounds_sweep(void **state) {
       double th = M_PI * i / 200000.0, sc = ldexp(1.0, s);
       geom_point v[3] = {{0, 0}, {sc, 0}, {0.75 * sc * cos(th), 0.75 * sc * sin(th)}};
       double lo[3], hi[3];
-      if (!geom_angle_bounds(v[0], v[1], v[2], GEOM_ANGLES_ALL, lo, hi)) continue;
+      if (!geom_angle_bounds(v[0], v[1], v[2], lo, hi)) continue;
       geom_tri t;
       geom_tri_make(&t, v[0], v[1], v[2]);
       n++;
@@ -606,6 +627,7 @@ int main(void) {
     cmocka_unit_test(test_random_independent),
     cmocka_unit_test(test_points_kernels),
     cmocka_unit_test(test_bounds),
+    cmocka_unit_test(test_angle_rank_bounds),
     cmocka_unit_test(test_angle_bounds_sweep),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
