@@ -263,10 +263,11 @@ static void test_reflip_identical(void **state) {
   for (size_t f = 0; f < sizeof from / sizeof from[0]; f++)
     for (size_t m = 0; m < sizeof tle_measures / sizeof tle_measures[0]; m++) {
       int id = tle_measures[m], twin = tle_twin(id), next = tle_measures[(m + 1) % 4];
-      uint32_t *t0;
+      uint32_t *t0, *t1;
       lot *A = tle_build(p, n, from[f], JOINT_SUM, LOT_INCREMENTAL, &t0);
-      lot *B = tle_build(p, n, from[f], JOINT_SUM, LOT_INCREMENTAL, &t0);
+      lot *B = tle_build(p, n, from[f], JOINT_SUM, LOT_INCREMENTAL, &t1);
       free(t0);
+      free(t1);
       uint64_t fa, fb;
       uint32_t *ta = tle_reflip(A, id, JOINT_MAX, &fa), *tb = tle_reflip(B, twin, JOINT_MAX, &fb);
       size_t nt = lot_get_stats(A)->triangles;
