@@ -180,20 +180,36 @@ static double joint_mag_hi(double lo, double hi) {
   return joint_max(fabs(lo), fabs(hi));
 }
 
-joint_verdict joint_compare_bounds(joint_id j, int s, const double lo[4], const double hi[4],
-                                   double tie_eps) {
-  if (!joint_has_bounds(j)) return JOINT_UNSURE;
-  double a1 = joint_apply_plain(j, s, lo[0], lo[1]);
-  double b2 = joint_apply_plain(j, s, hi[2], hi[3]);
+/* The verdict from the joint's values at the ends: A in [a1, a2], B in
+** [b1, b2]. */
+static joint_verdict joint_verdict_of(double a1, double a2, double b1, double b2,
+                                      double tie_eps) {
   if (a1 >= b2) return JOINT_NOT_LESS;
-  double a2 = joint_apply_plain(j, s, hi[0], hi[1]);
-  double b1 = joint_apply_plain(j, s, lo[2], lo[3]);
   if (!(isfinite(a1) && isfinite(a2) && isfinite(b1) && isfinite(b2))) return JOINT_UNSURE;
   double M = joint_max(joint_mag_hi(a1, a2), joint_mag_hi(b1, b2));
   if (a2 < b1 && b1 - a2 > tie_eps * M * (1 + 0x1p-20)) return JOINT_LESS;
   double D = joint_max(a2 - b1, b2 - a1);
   double m = joint_max(joint_mag_lo(a1, a2), joint_mag_lo(b1, b2));
   return D < tie_eps * m * (1 - 0x1p-20) ? JOINT_NOT_LESS : JOINT_UNSURE;
+}
+
+/* joint_apply_plain's operations, one switch for the four values. */
+joint_verdict joint_compare_bounds(joint_id j, int s, const double lo[4], const double hi[4],
+                                   double tie_eps) {
+  (void)s;   /* x + y, min and max do not depend on it */
+  switch (j) {
+    case JOINT_SUM:
+      return joint_verdict_of(joint_sum(lo[0], lo[1]), joint_sum(hi[0], hi[1]),
+                              joint_sum(lo[2], lo[3]), joint_sum(hi[2], hi[3]), tie_eps);
+    case JOINT_MIN:
+      return joint_verdict_of(joint_min(lo[0], lo[1]), joint_min(hi[0], hi[1]),
+                              joint_min(lo[2], lo[3]), joint_min(hi[2], hi[3]), tie_eps);
+    case JOINT_MAX:
+      return joint_verdict_of(joint_max(lo[0], lo[1]), joint_max(hi[0], hi[1]),
+                              joint_max(lo[2], lo[3]), joint_max(hi[2], hi[3]), tie_eps);
+    default:
+      return JOINT_UNSURE;
+  }
 }
 
 int joint_has_bounds(joint_id j) {
