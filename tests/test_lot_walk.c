@@ -96,7 +96,7 @@ static void tw_check(lot_mesh *m, geom_point q, uint32_t t0) {
 /* A mesh of the n points p (distinct, not all collinear, p[0..2] anticlockwise)
 ** inserted in order without flips; returns how many were inserted. */
 static uint32_t tw_build(lot_mesh *m, const geom_point *p, uint32_t n) {
-  assert_int_equal(lot_mesh_alloc(m, n, 0), 0);
+  assert_int_equal(lot_mesh_alloc(m, n, LOT_CACHE_NONE), 0);
   for (uint32_t k = 0; k < n; k++) {
     m->p[k] = p[k];
     m->inp[k] = k;
@@ -127,7 +127,7 @@ static void tw_scramble(lot_mesh *m, testutil_rng *g, uint32_t count) {
     geom_point pa = m->p[m->tv[c]], pb = m->p[m->tv[lot_next3(c)]];
     geom_point pc = m->p[m->tv[lot_prev3(c)]], pd = m->p[m->tv[cd]];
     if (geom_orient(pa, pb, pd) <= 0 || geom_orient(pa, pd, pc) <= 0) continue;
-    lot_mesh_flip(m, c, 0, 0);
+    lot_mesh_flip(m, c, (lot_enc){0, 0}, (lot_enc){0, 0});
     done++;
   }
 }
