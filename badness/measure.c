@@ -208,9 +208,29 @@ int measure_bounds(int id, geom_point p, geom_point q, geom_point r, double *lo,
 /* The angles geom_tri_fill computes are within 2^-35 of the exact ones
 ** (geom.c), and exact alpha <= pi/3 <= gamma: 1e-6 less covers the
 ** difference. */
+/* Floors other than the sign's.  Each is a true bound of the exact
+** quantity, moved out by far more than the rounding of the computed value
+** can add: the angles by 1e-6 (their enclosures' slack, geom.c), the
+** scale-free ratios by 1e-9 relative (the twice area is within 2^-40, the
+** sides and the rest within a few eps).
+**   -alpha >= -pi/3, gamma >= pi/3 (the angles sum to pi);
+**   -r/R >= -1/2 (Euler: R >= 2r);
+**   -c/a >= -1 exactly (c <= a, and c/a <= 1 rounds to at most 1);
+**   -c/P >= -1/3 (P >= 3c);
+**   -r2/A = -4A/P^2 >= -sqrt(3)/9 (of all triangles of a given perimeter
+**   the equilateral one has the largest area). */
+static const struct { int id; double floor; } measure_floors[] = {
+  {MEASURE_NEG_ALPHA, -(M_PI / 3 + 1e-6)},
+  {MEASURE_GAMMA, M_PI / 3 - 1e-6},
+  {MEASURE_NEG_R_OVER_R, -0.5 * (1 + 1e-9)},
+  {MEASURE_NEG_C_OVER_A, -1.0},
+  {MEASURE_NEG_C_OVER_P, -(1 + 1e-9) / 3},
+  {MEASURE_NEG_R2_OVER_A, -0.19245008972987526 * (1 + 1e-9)},   /* sqrt(3)/9 */
+};
+
 double measure_floor(int id) {
-  if (id == MEASURE_NEG_ALPHA) return -(M_PI / 3 + 1e-6);
-  if (id == MEASURE_GAMMA) return M_PI / 3 - 1e-6;
+  for (size_t k = 0; k < sizeof measure_floors / sizeof measure_floors[0]; k++)
+    if (measure_floors[k].id == id) return measure_floors[k].floor;
   return measure_get(id)->sign >= 0 ? 0 : -INFINITY;
 }
 

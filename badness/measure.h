@@ -87,8 +87,9 @@ measure_points_fn measure_points(int id);
 int measure_bounds(int id, geom_point p, geom_point q, geom_point r, double *lo, double *hi);
 int measure_has_bounds(int id);
 /* A lower bound on every value measure_eval(id, .) takes: 0 for measures
-** of sign >= 0, -inf for the others, except -alpha >= -pi/3 and gamma >=
-** pi/3 (less 1e-6 for rounding). */
+** of sign >= 0, -inf for the others, except the bounded ones: -alpha >=
+** -pi/3 and gamma >= pi/3, -r/R >= -1/2, -c/a >= -1, -c/P >= -1/3, -r2/A
+** >= -sqrt(3)/9 (each moved out a little for rounding; measure.c). */
 double measure_floor(int id);
 
 /* Write a comma-separated list of all measure names into buf. */

@@ -236,20 +236,22 @@ static int lot_track(lot_run *R, uint32_t a, uint32_t b, uint32_t d, uint32_t c)
 /* A triangle rule's decision with an exact cache: the new pair (AC)
 ** against the cached current one (BD), as rule_eval_badness decides,
 ** without its lookups.  *n1, *n2: the new triangles' values.
-** R->one_first (l_1 or l_inf, a built-in measure >= 0): the first new
-** triangle alone may rule the flip out.  The flip needs fl(x1 + x2) <
-** fl(y1 + y2) (l_1; max for l_inf) strictly; with x2 >= 0, x1 + x2 >= x1
-** exactly, and rounding is monotone, so fl(x1 + x2) >= x1: when x1 >=
-** fl(y1 + y2) there is no flip, the decision the second triangle would
-** confirm (and likewise max(x1, x2) >= x1).  That settles about a fifth
-** to two fifths of the examined edges of R, abc, lambda, d and a-c, which
-** then make one triangle instead of two. */
+** R->one_first (l_1 with a built-in measure that has a floor F, or l_inf):
+** the first new triangle alone may rule the flip out.  The flip needs
+** fl(x1 + x2) < fl(y1 + y2) strictly; x2 >= F (measure_floor holds for
+** every computed value), so x1 + x2 >= x1 + F exactly and, rounding being
+** monotone, fl(x1 + x2) >= fl(x1 + F): when fl(x1 + F) >= fl(y1 + y2)
+** there is no flip, the decision the second triangle would confirm.  Under
+** l_inf, max(x1, x2) >= x1, so x1 >= max(y1, y2) suffices.  That settles a
+** fifth to two fifths of the examined edges of R, abc, lambda, d, a-c,
+** -r/R and -r2/A, which then make one triangle instead of two. */
 static int lot_prefers_exact(const lot_run *R, uint32_t a, uint32_t b, uint32_t c0, uint32_t d,
                              uint32_t t, uint32_t u, lot_enc *n1, lot_enc *n2) {
   const lot_mesh *m = R->m;
   double x1 = lot_mesh_badness(m, a, b, d), y1 = m->bad[t], y2 = m->bad[u];
   *n1 = (lot_enc){x1, x1};
-  if (R->one_first && x1 >= (R->o->r.joint == JOINT_SUM ? y1 + y2 : y1 > y2 ? y1 : y2))
+  if (R->one_first && (R->o->r.joint == JOINT_SUM ? x1 + R->any.lo >= y1 + y2
+                                                   : x1 >= (y1 > y2 ? y1 : y2)))
     return 0;
   double x2 = lot_mesh_badness(m, a, d, c0);
   *n2 = (lot_enc){x2, x2};
@@ -394,11 +396,10 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
           : o->r.quad == RULE_DT ? LOT_K_DT : LOT_K_QUAD;
   R->track = R->kind >= LOT_K_QUAD;
   if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(o->r.measure), INFINITY};
-  /* Built-in measures only: their values are >= 0 as computed (a user's
-  ** formula or plugin promises its sign, but nothing checks it). */
+  /* Built-in measures only: their floors hold for every value they give
+  ** (a user's formula or plugin promises its sign, but nothing checks it). */
   R->one_first = R->kind == LOT_K_TRI && o->r.measure < MEASURE_BUILTIN_COUNT &&
-                 measure_get(o->r.measure)->sign == MEASURE_NONNEG &&
-                 (o->r.joint == JOINT_SUM || o->r.joint == JOINT_MAX);
+                 ((o->r.joint == JOINT_SUM && R->any.lo > -INFINITY) || o->r.joint == JOINT_MAX);
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
 }
 

@@ -588,6 +588,39 @@ static void test_angle_rank_bounds(void **state) {
   assert_true(checked > 500000);
 }
 
+/* measure_floor is below every value of its measure, on the stress set
+** and on near-equilateral triangles, where the bounded ratios (-r/R, -c/P,
+** -r2/A) come closest to their floors: lot_prefers_exact rules flips out
+** from it. */
+static void test_floors(void **state) {
+  (void)state;
+  testutil_rng g = {31337};
+  long bad = 0, tight = 0;
+  for (int it = 0; it < 120000; it++) {
+    geom_point v[3];
+    if (it % 2) {
+      tmeas_stress_tri(&g, it % 7, v);
+    } else {   /* equilateral to within 1e-k, k = 0..16, at any scale */
+      double e = pow(10, -(double)(testutil_next(&g) % 17)), s = ldexp(1, (int)(testutil_next(&g) % 181) - 90);
+      v[0] = (geom_point){0, 0};
+      v[1] = (geom_point){s, s * e * (testutil_uniform(&g) - 0.5)};
+      v[2] = (geom_point){s * (0.5 + e * (testutil_uniform(&g) - 0.5)), s * sqrt(0.75)};
+    }
+    if (geom_orient(v[0], v[1], v[2]) == 0) continue;
+    geom_tri t;
+    geom_tri_make(&t, v[0], v[1], v[2]);
+    for (int id = 0; id < MEASURE_BUILTIN_COUNT; id++) {
+      double x = measure_eval(id, &t), f = measure_floor(id);
+      if (!(f <= x) && bad++ < 5)
+        print_error("%s = %.17g below its floor %.17g\n", measure_get(id)->name, x, f);
+      tight += isfinite(f) && f < 0 && x - f < 1e-6 * fabs(f);
+    }
+  }
+  print_message("floors: %ld values within 1e-6 of a floor, %ld below\n", tight, bad);
+  assert_int_equal(bad, 0);
+  assert_true(tight > 1000);   /* the near-equilateral triangles reach the floors */
+}
+
 /* A dense sweep of one angle through (0, pi) at several scales: the
 ** enclosures of geom_angle_bounds hold the angles geom_tri_make computes
 ** (this probes the atan polynomial on a fine grid of arguments). */
@@ -626,6 +659,7 @@ int main(void) {
     cmocka_unit_test(test_rinf_appendix_c),
     cmocka_unit_test(test_random_independent),
     cmocka_unit_test(test_points_kernels),
+    cmocka_unit_test(test_floors),
     cmocka_unit_test(test_bounds),
     cmocka_unit_test(test_angle_rank_bounds),
     cmocka_unit_test(test_angle_bounds_sweep),
