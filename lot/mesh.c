@@ -196,6 +196,8 @@ static lot_where lot_scan(const lot_mesh *m, geom_point q, uint32_t *c) {
 typedef struct lot_walk {
   uint32_t nc, a, nx[2];
   geom_point pa;
+  geom_point dg;        /* the guide point minus q (lot_mesh_locate) */
+  unsigned guided;      /* 1 while the exit is chosen by the guide, 0 by the draw */
 } lot_walk;
 
 /* The triangles beyond both exits, loaded (lot_walk_step): their entry
@@ -312,6 +314,12 @@ static inline int lot_walk_step(const lot_mesh *m, lot_walk_view v, lot_walk *w,
   unsigned r_first = lot_walk_rand3(s) == lot_slot(lot_walk_prev3(w->nc)), i;
   int unsure = 0;
   geom_point da = lot_walk_diff(w->pa, q);
+  /* Guided: the edge opposite R first when the apex is (weakly) left of
+  ** the line from the guide point g to q, i.e. when that line passes on
+  ** the side of R.  Plain arithmetic: only a choice between two exits that
+  ** are both correct, which rounding may make either way. */
+  unsigned g_first = w->dg.x * da.y - w->dg.y * da.x >= 0;
+  r_first = w->guided ? g_first : r_first;
   double detl = lot_walk_det(d[1], da, &unsure), detr = lot_walk_det(da, d[0], &unsure);
   if (unsure) {
     if ((i = lot_walk_settle(m, w->nc, q, r_first)) == 0) return 1;
@@ -364,28 +372,48 @@ static uint32_t lot_walk_start(const lot_mesh *m) {
   return t;
 }
 
-/* The remembering stochastic walk (file comment).  Why it ends: in a
+/* Steps of the guided phase (lot_mesh_locate). */
+#define LOT_WALK_GUIDED 2048u
+
+/* The remembering stochastic walk (file comment), guided.  Where q is
+** beyond both exits of a step, the walk takes the one that the line from
+** a guide point g (the start triangle's centroid) to q passes through
+** rather than a random one: in the needle-filled LOTs of beta, -A or -c a
+** random choice wanders along the needles, and the guided walk crosses
+** about a third fewer triangles (beta_1 on 3 10^5 points: 30 steps per
+** point instead of 49).  Like every visibility walk it only ever crosses
+** an edge that q is strictly beyond, so wherever it stops it is right.
+** Why it ends: in a
 ** Delaunay triangulation any visibility walk does (Edelsbrunner), but in
 ** the needle-filled LOTs of other rules a fixed choice of exit edge can
 ** cycle for ever; with each step's first edge drawn at random, both exits
 ** have a probability of at least 1/3 whenever q is beyond both, so the
 ** walk leaves any cycle with probability 1 (Devillers, Pion and Teillaud,
-** 2002).  For a guarantee rather than a probability, after 4 nt + 64 steps
-** lot_scan decides.  A ghost triangle is recognised by its apex: a real
+** 2002).  The guided choice is fixed, so it could cycle in principle:
+** after LOT_WALK_GUIDED steps the drawn choice takes over, and that
+** argument applies to the rest.  For a guarantee rather than a
+** probability, after 4 nt + 64 steps lot_scan decides.  A ghost triangle is recognised by its apex: a real
 ** triangle's neighbour across an edge is a ghost exactly when the vertex
 ** opposite that edge is LOT_GHOST, which the step loads anyway.
-** Each step draws one number whether or not it needs it: the sequence of
-** draws, and so the path and the side of an edge it reaches a point on
-** (which decides the triangles' numbering and the flips' order), are those
-** of the step-by-step walk this replaced. */
+** Each step draws one number whether or not it uses it.  The path, and so
+** the side of an edge from which it reaches a point on that edge (which
+** decides the triangles' numbering and the flips' order), is a fixed
+** function of the mesh, q and the generator's state: the same on every
+** machine (plain arithmetic, no FMA). */
 lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
   uint64_t s = m->walk, limit = 4 * (uint64_t)m->nt + 64;
   lot_walk_view v = {m->tv, m->tn, m->p};
   lot_walk w;
   geom_point d[2];
   lot_where where;
-  if (!lot_walk_first(m, lot_walk_start(m), q, &s, &w, d, c, &where)) {
+  uint32_t t0 = lot_walk_start(m);
+  const uint32_t *tv0 = m->tv + LOT_CORNER((size_t)t0, 0);
+  geom_point p0 = m->p[tv0[0]], p1 = m->p[tv0[1]], p2 = m->p[tv0[2]];
+  w.dg = (geom_point){(p0.x + p1.x + p2.x) / 3 - q.x, (p0.y + p1.y + p2.y) / 3 - q.y};
+  w.guided = 1;
+  if (!lot_walk_first(m, t0, q, &s, &w, d, c, &where)) {
     for (uint64_t step = 1;; step++) {
+      if (step == LOT_WALK_GUIDED) w.guided = 0;
       if (w.a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
         *c = w.nc;
         where = LOT_OUTSIDE;
