@@ -113,6 +113,17 @@ static inline void geom_tri_sort3(geom_point *p, geom_point *q, geom_point *r) {
   *q = (geom_point){_mm_cvtsd_f64(vq), _mm_cvtsd_f64(_mm_unpackhi_pd(vq, vq))};
   *r = (geom_point){_mm_cvtsd_f64(vr), _mm_cvtsd_f64(_mm_unpackhi_pd(vr, vr))};
 }
+
+/* The first vertex of geom_tri_sort3's order in *p (the other two in
+** some order): compare-exchanges (0,1) and (0,2). */
+static inline void geom_tri_first3(geom_point *p, geom_point *q, geom_point *r) {
+  __m128d vp = _mm_set_pd(p->y, p->x), vq = _mm_set_pd(q->y, q->x), vr = _mm_set_pd(r->y, r->x);
+  geom_cswap_sse2(&vp, &vq);
+  geom_cswap_sse2(&vp, &vr);
+  *p = (geom_point){_mm_cvtsd_f64(vp), _mm_cvtsd_f64(_mm_unpackhi_pd(vp, vp))};
+  *q = (geom_point){_mm_cvtsd_f64(vq), _mm_cvtsd_f64(_mm_unpackhi_pd(vq, vq))};
+  *r = (geom_point){_mm_cvtsd_f64(vr), _mm_cvtsd_f64(_mm_unpackhi_pd(vr, vr))};
+}
 #else
 static inline void geom_cswap(unsigned s, geom_point *a, geom_point *b) {
   uint64_t m = -(uint64_t)s, ax, ay, bx, by;
@@ -128,6 +139,11 @@ static inline void geom_tri_sort3(geom_point *p, geom_point *q, geom_point *r) {
   geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
   geom_cswap((unsigned)geom_lexless(*r, *q), q, r);
   geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
+}
+
+static inline void geom_tri_first3(geom_point *p, geom_point *q, geom_point *r) {
+  geom_cswap((unsigned)geom_lexless(*q, *p), p, q);
+  geom_cswap((unsigned)geom_lexless(*r, *p), p, r);
 }
 #endif
 
@@ -194,12 +210,26 @@ static inline void geom_tri_fill(geom_tri *t, geom_point p0, geom_point p1, geom
 ** in any vertex order, only its slot changes; they are >= +0 (never -0),
 ** so for points without NaN the max, median and min, and P = a + b + c
 ** from them, are the same values too.  (The ranges are left to the sorted
-** path: a range of three zero coordinates could come out -0 or +0.)  For
-** hot loops that pay a mispredicted branch or two for the sort otherwise. */
+** path: a range of three zero coordinates could come out -0 or +0.)
+** The area and the radii need only the first vertex of the sort: with
+** origin p the twice area is |fl(l - r)|, l and r the two products, and
+** exchanging q and r exchanges l and r, which gives |fl(r - l)| =
+** |-fl(l - r)|, the same bits (and the same filter decision; the exact
+** path's |det| does not depend on the order at all).  The first vertex of
+** the stable sort is the first smallest one, which two compare-exchanges
+** bring to the front.  Only the angles need the whole order (which vertex
+** is "big" when two sides tie).  For hot loops (the LOT's 27 triangles per
+** point). */
 static inline void geom_tri_fill_values(geom_tri *t, geom_point p0, geom_point p1,
                                         geom_point p2, unsigned f) {
-  if (f & (GEOM_F_ORDERED | GEOM_F_RANGES)) geom_tri_fill(t, p0, p1, p2, f);
-  else geom_tri_fill_sorted(t, p0, p1, p2, f);
+  if (f & (GEOM_F_ANGLES | GEOM_F_RANGES)) {
+    geom_tri_fill(t, p0, p1, p2, f);
+  } else if (f & GEOM_F_ORDERED) {
+    geom_tri_first3(&p0, &p1, &p2);
+    geom_tri_fill_sorted(t, p0, p1, p2, f);
+  } else {
+    geom_tri_fill_sorted(t, p0, p1, p2, f);
+  }
 }
 
 #endif
