@@ -315,13 +315,15 @@ static int lot_examine(lot_run *R, uint32_t c) {
   if (d == LOT_GHOST) return 0;
   uint32_t a = m->tv[c], b = m->tv[lot_next3(c)], c0 = m->tv[lot_prev3(c)];
   geom_point pa = m->p[a], pb = m->p[b], pc = m->p[c0], pd = m->p[d];
-  lot_enc n1 = {0, 0}, n2 = {0, 0};
+  lot_enc n1, n2;
   if (R->kind == LOT_K_DT) {
     /* d strictly inside circle abc makes abdc strictly convex (a and d on
     ** opposite sides of bc, and the line ab meets the circle only at a and
     ** b, so b is not on segment ad; likewise c), so no orientation test. */
     if (geom_incircle_valid(pa, pb, pc, pd) <= 0) return 0;
+    n1 = n2 = (lot_enc){0, 0};
   } else {
+    n1 = n2 = (lot_enc){0, 0};
     if (geom_orient_valid(pa, pb, pd) <= 0 || geom_orient_valid(pa, pd, pc) <= 0) return 0;
     const geom_point q[4] = {pa, pb, pd, pc};
     const lot_options *o = R->o;
@@ -342,7 +344,11 @@ static int lot_examine(lot_run *R, uint32_t c) {
     R->stopped = 1;
     return 0;
   }
-  lot_mesh_flip(m, c, n1, n2);
+  lot_mesh_flip(m, c, n1.lo, n2.lo);
+  if (m->enc) {   /* t and u keep their numbers: (a, b, d) and (d, c0, a) */
+    m->enc[t] = n1;
+    m->enc[u] = n2;
+  }
   R->st->flips++;
   if (R->track && lot_track(R, a, b, d, c0)) R->stopped = 1;
   return 1;

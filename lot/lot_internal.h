@@ -96,9 +96,9 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
                      size_t *candcap);
 /* Flip the edge opposite corner c (both triangles real): t = (a, b, c0)
 ** and t' = (d, c0, b) become (a, b, d) and (d, c0, a), keeping a at its
-** corner in t and d at its corner in t'.
-** bt and bu are the new triangles' badness (bt.lo for an exact cache). */
-void lot_mesh_flip(lot_mesh *m, uint32_t c, lot_enc bt, lot_enc bu);
+** corner in t and d at its corner in t'.  bad_t and bad_u go to an exact
+** cache; an enclosed one is the caller's to update (lot.c). */
+void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u);
 /* The badness of triangle (a, b, c) for m->r (triangle-based rules). */
 double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* An enclosure of it (measure_bounds), or the exact value where there is none. */

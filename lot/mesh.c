@@ -102,7 +102,7 @@ static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
   v[0] = a;
   v[1] = b;
   v[2] = c;
-  lot_cache_set(m, t);
+  if (m->bad || m->enc) lot_cache_set(m, t);
 }
 
 void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
@@ -509,7 +509,7 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     }
     uint32_t t = lot_tri_of(x);
     m->tv[x] = k;
-    lot_cache_set(m, t);
+    if (m->bad || m->enc) lot_cache_set(m, t);
     (*cand)[nc++] = x;
     last = x;
     /* The next ghost (v, w, G) faces edge (G, v) with w's corner. */
@@ -571,7 +571,7 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
   return kept;
 }
 
-void lot_mesh_flip(lot_mesh *m, uint32_t c, lot_enc bt, lot_enc bu) {
+void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
   uint32_t t = lot_tri_of(c), i1 = lot_next3(c), i2 = lot_next3(i1);
   uint32_t j0 = m->tn[c], u = lot_tri_of(j0), j1 = lot_next3(j0), j2 = lot_next3(j1);
   uint32_t a = m->tv[c], d = m->tv[j0];
@@ -582,10 +582,7 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, lot_enc bt, lot_enc bu) {
   lot_link(m, j0, n_ca);
   lot_link(m, i1, j1);
   if (m->bad) {
-    m->bad[t] = bt.lo;
-    m->bad[u] = bu.lo;
-  } else if (m->enc) {
-    m->enc[t] = bt;
-    m->enc[u] = bu;
+    m->bad[t] = bad_t;
+    m->bad[u] = bad_u;
   }
 }

@@ -127,7 +127,7 @@ static void tw_scramble(lot_mesh *m, testutil_rng *g, uint32_t count) {
     geom_point pa = m->p[m->tv[c]], pb = m->p[m->tv[lot_next3(c)]];
     geom_point pc = m->p[m->tv[lot_prev3(c)]], pd = m->p[m->tv[cd]];
     if (geom_orient(pa, pb, pd) <= 0 || geom_orient(pa, pd, pc) <= 0) continue;
-    lot_mesh_flip(m, c, (lot_enc){0, 0}, (lot_enc){0, 0});
+    lot_mesh_flip(m, c, 0, 0);
     done++;
   }
 }
