@@ -215,16 +215,17 @@ static void test_tri_random(void **state) {
     if (fabs(cross) < 1e-6 * l[0] * l[1]) continue;
     done++;
     geom_tri t[6];
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     for (int k = 0; k < 6; k++) {
       memset(&t[k], 0xA5, sizeof t[k]);
-      geom_tri_make(&t[k], p[perm[k][0]], p[perm[k][1]], p[perm[k][2]]);
+      const int *o3 = testutil_perm3[k];
+      geom_tri_make(&t[k], p[o3[0]], p[o3[1]], p[o3[2]]);
     }
     for (int k = 1; k < 6; k++)
       if (memcmp(&t[0], &t[k], sizeof t[0]) != 0) {
         print_error("vertex order %d%d%d gives a different geom_tri for "
                     "(%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g)\n",
-                    perm[k][0], perm[k][1], perm[k][2], p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
+                    testutil_perm3[k][0], testutil_perm3[k][1], testutil_perm3[k][2], p[0].x,
+                    p[0].y, p[1].x, p[1].y, p[2].x, p[2].y);
         fail();
       }
     tgeom_check_invariants(&t[0]);

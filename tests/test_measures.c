@@ -458,7 +458,6 @@ static void tmeas_stress_tri(testutil_rng *g, int kind, geom_point v[3]) {
 ** the very double measure_eval gives and is at most `width` wide; the
 ** measure's floor is below it.  Returns how many orders had no enclosure. */
 static int tmeas_check_bounds(int id, const geom_point v[3], double width, long *bad) {
-  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   geom_tri t;
   geom_tri_make(&t, v[0], v[1], v[2]);
   double x = measure_eval(id, &t);
@@ -467,7 +466,8 @@ static int tmeas_check_bounds(int id, const geom_point v[3], double width, long 
     print_error("%s = %.17g below its floor %.17g\n", measure_get(id)->name, x, measure_floor(id));
   for (int o = 0; o < 6; o++) {
     double lo, hi;
-    if (!measure_bounds(id, v[perm[o][0]], v[perm[o][1]], v[perm[o][2]], &lo, &hi)) {
+    const int *o3 = testutil_perm3[o];
+    if (!measure_bounds(id, v[o3[0]], v[o3[1]], v[o3[2]], &lo, &hi)) {
       none++;
       continue;
     }
@@ -516,12 +516,12 @@ static void test_bounds(void **state) {
 ** paths of geom_tri_fill_values must agree with the canonical sort there
 ** too).  Two NaN results count as equal. */
 static int tmeas_points_agree(int id, const geom_point v[3]) {
-  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   geom_tri t;
   geom_tri_make(&t, v[0], v[1], v[2]);
   double x = measure_eval(id, &t);
   for (int o = 0; o < 6; o++) {
-    double y = measure_points(id)(v[perm[o][0]], v[perm[o][1]], v[perm[o][2]]);
+    const int *o3 = testutil_perm3[o];
+    double y = measure_points(id)(v[o3[0]], v[o3[1]], v[o3[2]]);
     if (!(isnan(x) && isnan(y)) && memcmp(&x, &y, sizeof x) != 0) {
       print_error("%s of (%a,%a) (%a,%a) (%a,%a) order %d: %a, expected %a\n",
                   measure_get(id)->name, v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y, o, y, x);
@@ -562,7 +562,6 @@ static void test_points_kernels(void **state) {
 ** and near-isosceles kinds (3, 4, 6, 7) where they may not be. */
 static void test_angle_rank_bounds(void **state) {
   (void)state;
-  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   testutil_rng g = {778};
   long checked = 0, bad = 0;
   for (int it = 0; it < 80000; it++) {
@@ -575,7 +574,8 @@ static void test_angle_rank_bounds(void **state) {
     for (int k = 0; k < 3; k++)
       for (int o = 0; o < 6; o++) {
         double l, h;
-        if (!geom_angle_rank_bounds(v[perm[o][0]], v[perm[o][1]], v[perm[o][2]], k, &l, &h))
+        const int *o3 = testutil_perm3[o];
+        if (!geom_angle_rank_bounds(v[o3[0]], v[o3[1]], v[o3[2]], k, &l, &h))
           continue;
         checked++;
         if (!(l <= want[k] && want[k] <= h && h - l < 1e-5) && bad++ < 5)

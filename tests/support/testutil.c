@@ -17,6 +17,8 @@
 #include "sampler.h"
 #include "splitmix.h"
 
+const int testutil_perm3[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+
 uint64_t testutil_next(testutil_rng *g) {
   return geom_splitmix64(&g->s);
 }

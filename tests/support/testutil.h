@@ -58,6 +58,10 @@ int testutil_runf(char *out, size_t outcap, char *err, size_t errcap, const char
 char *testutil_read_file(const char *path);
 void testutil_write_file(const char *path, const char *text);
 
+/* The six orders of three vertices, for checks that a triangle's value
+** does not depend on the order it is given in. */
+extern const int testutil_perm3[6][3];
+
 /* Non-overlapping occurrences of needle in hay. */
 size_t testutil_count(const char *hay, const char *needle);
 
