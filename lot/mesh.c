@@ -125,13 +125,6 @@ void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
 ** arithmetic without divisions. */
 static const uint8_t lot_mod3[6] = {0, 1, 2, 0, 1, 2};
 
-/* The next and previous corner of corner c in its triangle, by a table of
-** steps rather than lot_next3's test, which the compiler makes a branch:
-** in the walk the slot is a coin toss. */
-static const int8_t lot_walk_dnext[4] = {1, 1, -2, 0}, lot_walk_dprev[4] = {2, -1, -1, 0};
-static inline uint32_t lot_walk_next3(uint32_t c) { return c + (uint32_t)lot_walk_dnext[c & 3]; }
-static inline uint32_t lot_walk_prev3(uint32_t c) { return c + (uint32_t)lot_walk_dprev[c & 3]; }
-
 /* A random edge 0, 1 or 2 (xorshift64 on the state *s; the high word
 ** times 3, >> 32). */
 static inline uint32_t lot_walk_rand3(uint64_t *s) {
@@ -224,8 +217,8 @@ static inline void lot_walk_load(lot_walk_view v, uint32_t nc, lot_walk_ahead *h
   h->nc[x] = nc;
   h->a[x] = a;
   h->pa[x] = v.p[a != LOT_GHOST ? a : 0];   /* a ghost's point is never read */
-  h->nx0[x] = v.tn[lot_walk_next3(nc)];
-  h->nx1[x] = v.tn[lot_walk_prev3(nc)];
+  h->nx0[x] = v.tn[lot_next3(nc)];
+  h->nx1[x] = v.tn[lot_prev3(nc)];
 }
 
 /* Move the walk into candidate x of *h. */
@@ -311,7 +304,7 @@ static inline int lot_walk_step(const lot_mesh *m, lot_walk_view v, lot_walk *w,
   lot_walk_ahead h;
   lot_walk_load(v, w->nx[0], &h, 0);
   lot_walk_load(v, w->nx[1], &h, 1);
-  unsigned r_first = lot_walk_rand3(s) == lot_slot(lot_walk_prev3(w->nc)), i;
+  unsigned r_first = lot_walk_rand3(s) == lot_slot(lot_prev3(w->nc)), i;
   int unsure = 0;
   geom_point da = lot_walk_diff(w->pa, q);
   /* Guided: the edge opposite R first when the apex is (weakly) left of
