@@ -503,6 +503,17 @@ static void lot_finish_stats(lot *L) {
   L->st.distinct = L->st.n - L->st.duplicates;
 }
 
+/* Point L's mesh at o's rule: its measure, the fields it reads and its
+** evaluation from points (triangle rules), for lot_build and lot_reflip. */
+static void lot_use_rule(lot *L, const lot_options *o) {
+  int tri = o->r.kind == RULE_TRIANGLE;
+  L->r = o->r;
+  L->m.r = &L->r;
+  L->m.meas = tri ? measure_get(o->r.measure) : NULL;
+  L->m.fields = tri ? measure_fields(o->r.measure) : GEOM_F_ALL;
+  L->m.pts = tri ? measure_points(o->r.measure) : NULL;
+}
+
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
               size_t errlen) {
   *out = NULL;
@@ -518,11 +529,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   if (L == NULL || ord == NULL ||
       lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(o)) != 0)
     goto oom;
-  L->r = o->r;
-  L->m.r = &L->r;
-  L->m.meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
-  L->m.fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
-  L->m.pts = o->r.kind == RULE_TRIANGLE ? measure_points(o->r.measure) : NULL;
+  lot_use_rule(L, o);
   L->st.n = n;
   lot_run_init(&R, L, o);
   R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
@@ -566,10 +573,7 @@ oom:
 
 int lot_reflip(lot *L, const lot_options *o) {
   lot_mesh *m = &L->m;
-  L->r = o->r;
-  m->meas = o->r.kind == RULE_TRIANGLE ? measure_get(o->r.measure) : NULL;
-  m->fields = o->r.kind == RULE_TRIANGLE ? measure_fields(o->r.measure) : GEOM_F_ALL;
-  m->pts = o->r.kind == RULE_TRIANGLE ? measure_points(o->r.measure) : NULL;
+  lot_use_rule(L, o);
   if (lot_mesh_recache(m, lot_cache_of(o)) != 0) return -1;
   lot_run R;
   L->st.flips = 0;
