@@ -16,7 +16,6 @@
 ** replaced rather than followed.
 */
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -366,16 +365,16 @@ static int formula_check_numbers(const char *e, size_t expr_at, char *err, size_
     int starts = (e[i] >= '0' && e[i] <= '9') || (e[i] == '.' && e[i + 1] >= '0' && e[i + 1] <= '9');
     int inside = i > 0 && (isalnum((unsigned char)e[i - 1]) || e[i - 1] == '_' || e[i - 1] == '.');
     if (!starts || inside) continue;
-    char *end;
-    errno = 0;
-    double v = strtod(e + i, &end);
-    if (errno == ERANGE) {
+    double v = 0;
+    size_t used = 0;
+    geom_numerr ne = geom_number_scan(e + i, strlen(e + i), &v, &used);
+    if (ne == GEOM_NUM_OUT_OF_RANGE) {
       snprintf(err, errlen, "number '%.*s' at position %zu is out of range (%s)",
-               (int)((end - (e + i)) < 40 ? end - (e + i) : 40), e + i, expr_at + i,
+               (int)(used < 40 ? used : 40), e + i, expr_at + i,
                fabs(v) > 1 ? "it overflows a double" : "it underflows a double to 0 or a subnormal");
       return -1;
     }
-    if (end > e + i) i = (size_t)(end - e) - 1;
+    if (used > 0) i += used - 1;
   }
   return 0;
 }

@@ -2,9 +2,9 @@
 ** geom.c: triangle quantities, convex and simple polygon validation.
 ** (The triangle's fields are computed in geom_tri_internal.h.)
 */
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "geom.h"
 #include "geom_tri_internal.h"
 
@@ -178,19 +178,25 @@ geom_coorderr geom_coord_check(double x) {
   return GEOM_COORD_OK;
 }
 
-/* strtod reports overflow and underflow through errno (ERANGE); "1e-400"
-** is out of range, not "not a number", and not silently 0. */
-geom_coorderr geom_coord_parse(const char *s, double *out) {
-  char *end;
-  if (s == NULL || *s == '\0') return GEOM_COORD_NOT_NUMBER;
-  errno = 0;
-  double x = strtod(s, &end);
-  if (end == s || *end != '\0') return GEOM_COORD_NOT_NUMBER;
-  if (isnan(x) || isinf(x)) return errno == ERANGE ? GEOM_COORD_OUT_OF_RANGE : GEOM_COORD_NOT_FINITE;
-  if (errno == ERANGE) return GEOM_COORD_OUT_OF_RANGE;
+/* A number that overflows, underflows or is subnormal is out of range
+** ("1e-400" is neither "not a number" nor silently 0), and so is one
+** outside the contract. */
+geom_coorderr geom_coord_parse_n(const char *s, size_t len, double *out) {
+  double x = 0;
+  switch (geom_number_parse(s, len, &x)) {
+  case GEOM_NUM_OK: break;
+  case GEOM_NUM_NOT_FINITE: return GEOM_COORD_NOT_FINITE;
+  case GEOM_NUM_OUT_OF_RANGE: return GEOM_COORD_OUT_OF_RANGE;
+  case GEOM_NUM_NOT_NUMBER:
+  case GEOM_NUM_NO_MEMORY: return GEOM_COORD_NOT_NUMBER;
+  }
   geom_coorderr e = geom_coord_check(x);
   if (e == GEOM_COORD_OK) *out = x;
   return e;
+}
+
+geom_coorderr geom_coord_parse(const char *s, double *out) {
+  return geom_coord_parse_n(s, s != NULL ? strlen(s) : 0, out);
 }
 
 const char *geom_coorderr_str(geom_coorderr e) {

@@ -12,6 +12,7 @@
 #define FLIPLAB_GEOM_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "fliplab_config.h"
 
 #include "predicates.h"   /* geom_point, geom_orient, geom_incircle */
@@ -139,11 +140,41 @@ typedef enum geom_coorderr {
   GEOM_COORD_OUT_OF_RANGE  /* overflows, underflows, or outside the contract */
 } geom_coorderr;
 
+/* ---- numbers (geom/number.c): the one parser of every reader ----------
+**
+** Each verb reads the byte span s[0..len), which need not end in a NUL: a
+** span is a number only if all of its bytes are, so a field with a NUL byte
+** inside it is refused rather than cut short. */
+typedef enum geom_numerr {
+  GEOM_NUM_OK = 0,
+  GEOM_NUM_NOT_NUMBER,     /* empty, or not entirely a decimal/hex number */
+  GEOM_NUM_NOT_FINITE,     /* nan, inf */
+  GEOM_NUM_OUT_OF_RANGE,   /* beyond the doubles, or below the normal ones */
+  GEOM_NUM_NO_MEMORY       /* a very long number could not be copied */
+} geom_numerr;
+
+/* A real in strtod syntax (leading blanks allowed) filling the whole span:
+** GEOM_NUM_OK and *out set, or why not.  Unlike strtod, a value that
+** overflows, underflows to 0 or is subnormal is an error, not a number. */
+geom_numerr geom_number_parse(const char *s, size_t len, double *out);
+/* The longest prefix of the span that strtod reads as a number: *used is
+** its length (0: none, GEOM_NUM_NOT_NUMBER) and *out what strtod made of
+** it (HUGE_VAL on overflow, 0 or a subnormal on underflow, which are
+** GEOM_NUM_OUT_OF_RANGE). */
+geom_numerr geom_number_scan(const char *s, size_t len, double *out, size_t *used);
+/* A strict decimal count: digits only, no sign, no blank, no overflow;
+** 0 and *out set, or -1. */
+int geom_count_parse(const char *s, size_t len, uint64_t *out);
+/* "is not a number", "is not finite", "is out of range", ... */
+const char *geom_numerr_str(geom_numerr e);
+
 /* Is x a coordinate of the contract? */
 geom_coorderr geom_coord_check(double x);
-/* Parse a whole string (strtod syntax, leading blanks allowed, nothing after
-** the number) into *out and check it against the contract. */
+/* Parse a whole string (geom_number_parse on its strlen bytes) into *out
+** and check it against the contract; geom_coord_parse_n reads a span of
+** len bytes (a CSV field), refusing a NUL byte inside it. */
 geom_coorderr geom_coord_parse(const char *s, double *out);
+geom_coorderr geom_coord_parse_n(const char *s, size_t len, double *out);
 /* "is not a number", "is not finite", "is out of range (coordinates must be
 ** 0 or of magnitude between 1e-30 and 1e30)". */
 const char *geom_coorderr_str(geom_coorderr e);

@@ -13,7 +13,6 @@
 ** 2^28 samples per file).  Shards therefore merge into the very bytes of
 ** the unsharded run.
 */
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -181,19 +180,19 @@ typedef struct report_census_reader {
   const char *name;
   report_census_row *rows;
   int n, cap, header_seen;
+  const size_t *len;     /* the current record's field lengths */
   char *err;
   size_t errlen;
 } report_census_reader;
 
-static int report_census_mean(const char *s, uint64_t denom, double scale, uint64_t *out) {
-  if (s[0] == '\0') {
+static int report_census_mean(const char *s, size_t len, uint64_t denom, double scale,
+                              uint64_t *out) {
+  if (len == 0) {
     *out = 0;
     return 0;   /* nothing averaged (or no gap for this rule) */
   }
-  char *end;
-  errno = 0;
-  double v = strtod(s, &end);
-  if (*end != '\0' || errno == ERANGE || !(v >= 0) || isinf(v)) return -1;
+  double v = 0;
+  if (geom_number_parse(s, len, &v) != GEOM_NUM_OK || !(v >= 0)) return -1;
   double x = v * (double)denom / scale;
   if (x >= 0x1p52) return -1;
   *out = (uint64_t)llround(x);
@@ -234,21 +233,21 @@ static int report_census_fields(report_census_reader *cr, report_census_row *row
   uint64_t *dst[8] = {&c->samples, &c->tie, &c->no_sink, &c->one_sink, &c->multi_sink,
                       &c->sink_dt};
   int col[8] = {5, 6, 7, 8, 9, 10};
-  if (report_parse_count(f[3], &sites) != 0 || sites < 3 || sites > SITEFLIP_MAX_SITES) {
+  if (geom_count_parse(f[3], cr->len[3], &sites) != 0 || sites < 3 || sites > SITEFLIP_MAX_SITES) {
     snprintf(cr->err, cr->errlen, "%s line %llu: sites '%s' is not a site count 3..%d",
              cr->name, ln, f[3], SITEFLIP_MAX_SITES);
     return -1;
   }
   row->sites = (int)sites;
   for (int k = 0; k < 6; k++)
-    if (report_parse_count(f[col[k]], dst[k]) != 0) {
+    if (geom_count_parse(f[col[k]], cr->len[col[k]], dst[k]) != 0) {
       snprintf(cr->err, cr->errlen, "%s line %llu: %s '%s' is not a count", cr->name, ln,
                report_census_header[col[k]], f[col[k]]);
       return -1;
     }
-  if (report_parse_count(f[12], &c->max_sinks) != 0 ||
-      report_census_mean(f[11], c->samples - (c->tie <= c->samples ? c->tie : 0), 1.0, &c->sinks) != 0 ||
-      report_census_mean(f[13], c->one_sink + c->multi_sink, SITEFLIP_GAP_UNIT, &c->gap_units) != 0) {
+  if (geom_count_parse(f[12], cr->len[12], &c->max_sinks) != 0 ||
+      report_census_mean(f[11], cr->len[11], c->samples - (c->tie <= c->samples ? c->tie : 0), 1.0, &c->sinks) != 0 ||
+      report_census_mean(f[13], cr->len[13], c->one_sink + c->multi_sink, SITEFLIP_GAP_UNIT, &c->gap_units) != 0) {
     snprintf(cr->err, cr->errlen, "%s line %llu: bad mean_sinks, max_sinks or mean_worst_gap",
              cr->name, ln);
     return -1;
@@ -265,8 +264,10 @@ static int report_census_consistent(const siteflip_counts *c) {
   return sum == c->samples && c->sink_dt <= c->one_sink;
 }
 
-static int report_census_record(char **f, int nf, uint64_t line, void *data) {
+static int report_census_record(char **f, const size_t *len, int nf, uint64_t line,
+                                void *data) {
   report_census_reader *cr = data;
+  cr->len = len;
   unsigned long long ln = (unsigned long long)line;
   if (!cr->header_seen) {
     int ok = nf == REPORT_CENSUS_NCOLS;

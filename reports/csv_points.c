@@ -5,7 +5,7 @@
 ** checks what its own input must be (simple polygon, enough points, ...).
 **
 ** Every error is one line naming the file and line: a wrong field count, a
-** coordinate outside the contract (geom_coord_parse: not a number, out of
+** coordinate outside the contract (geom_coord_parse_n: not a number, out of
 ** range), no points at all, memory.  The path "-" is standard input.
 */
 #include <errno.h>
@@ -39,7 +39,8 @@ static int report_points_grow(report_points_reader *r) {
   return 0;
 }
 
-static int report_points_record(char **f, int nf, uint64_t line, void *data) {
+static int report_points_record(char **f, const size_t *len, int nf, uint64_t line,
+                                void *data) {
   report_points_reader *r = data;
   unsigned long long ln = (unsigned long long)line;
   if (r->records++ == 0 && nf == 2 && strcmp(f[0], "x") == 0 && strcmp(f[1], "y") == 0)
@@ -50,7 +51,7 @@ static int report_points_record(char **f, int nf, uint64_t line, void *data) {
   }
   double xy[2];
   for (int q = 0; q < 2; q++) {
-    geom_coorderr ce = geom_coord_parse(f[q], &xy[q]);   /* the coordinate contract */
+    geom_coorderr ce = geom_coord_parse_n(f[q], len[q], &xy[q]);   /* the coordinate contract */
     if (ce != GEOM_COORD_OK) {
       snprintf(r->err, r->errlen, "%s line %llu: %s '%.40s' %s", r->path, ln, q ? "y" : "x",
                f[q], geom_coorderr_str(ce));

@@ -138,6 +138,7 @@ static void *report_csv_realloc(void *p, size_t n) {
 
 typedef struct report_csvstate {
   char *fields[REPORT_CSV_MAXFIELDS];
+  size_t len[REPORT_CSV_MAXFIELDS];
   int nfields;       /* fields seen in the current record */
   uint64_t line;
   int after_cr;      /* the last record ended with a CR (a CRLF's LF is no new line) */
@@ -168,6 +169,7 @@ static void report_csv_cb_field(void *s, size_t len, void *data) {
   }
   if (len > 0) memcpy(copy, s, len);
   copy[len] = '\0';
+  st->len[st->nfields] = len;
   st->fields[st->nfields++] = copy;
 }
 
@@ -176,7 +178,7 @@ static void report_csv_cb_record(int c, void *data) {
   if (!st->stop) {
     /* A blank line is no record: none or one empty field. */
     int blank = st->nfields == 0 || (st->nfields == 1 && st->fields[0][0] == '\0');
-    if (!blank) st->stop = st->fn(st->fields, st->nfields, st->line, st->ctx);
+    if (!blank) st->stop = st->fn(st->fields, st->len, st->nfields, st->line, st->ctx);
   }
   /* Lines end with LF, CRLF or a lone CR (libcsv ends a record at each);
   ** the LF of a CRLF arrives as an empty record of its own. */
@@ -265,33 +267,6 @@ static void report_prefix_err(char *err, size_t errlen, const char *name, const 
   report_errf(err, errlen, strncmp(perr, "line ", 5) == 0 ? "%s %s" : "%s: %s", name, perr);
 }
 
-const char *report_number(const char *s, double *v) {
-  char *end;
-  errno = 0;
-  double x = strtod(s, &end);
-  if (*s == '\0' || end == s || *end != '\0') return "is not a number";
-  /* ERANGE: beyond the doubles (strtod gives inf), or below the normal
-  ** ones (then read as 0 or a subnormal, silently losing the value). */
-  if (errno == ERANGE || (x != 0 && isfinite(x) && fabs(x) < DBL_MIN)) return "is out of range";
-  if (!isfinite(x)) return "is not finite";
-  *v = x;
-  return NULL;
-}
-
-/* Strict decimal count: digits only, no sign, no overflow. */
-int report_parse_count(const char *s, uint64_t *out) {
-  uint64_t v = 0;
-  if (*s == '\0') return -1;
-  for (; *s; s++) {
-    if (*s < '0' || *s > '9') return -1;
-    unsigned d = (unsigned)(*s - '0');
-    if (v > (UINT64_MAX - d) / 10) return -1;
-    v = v * 10 + d;
-  }
-  *out = v;
-  return 0;
-}
-
 /* ------------------------------------------------------- counts files */
 
 typedef struct report_countsread {
@@ -301,6 +276,7 @@ typedef struct report_countsread {
   int header_seen;
   int ncols;             /* 10 (no run columns) or REPORT_CSV_NCOLS */
   report_run run;
+  const size_t *len;     /* the current record's field lengths */
   char *err;
   size_t errlen;
 } report_countsread;
@@ -359,7 +335,7 @@ static int report_counts_numbers(report_countsread *cr, char **f, report_row *ro
   uint64_t *dst[7] = {&row->c.samples, &row->c.type[0], &row->c.type[1], &row->c.type[2],
                       &row->c.type[3], &row->c.type[4], &row->c.dt};
   for (int i = 0; i < 7; i++)
-    if (report_parse_count(f[3 + i], dst[i]) != 0) {
+    if (geom_count_parse(f[3 + i], cr->len[3 + i], dst[i]) != 0) {
       report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count",
                   cr->name, ln, report_csv_header[3 + i], f[3 + i]);
       return -1;
@@ -389,12 +365,13 @@ static int report_counts_run(report_countsread *cr, char **f, const report_row *
   uint64_t *dst[5] = {&r.seed, &r.first, &r.end, &r.total, &r.rules};
   const int col[5] = {10, 12, 13, 14, 15};
   for (int i = 0; i < 5; i++)
-    if (report_parse_count(f[col[i]], dst[i]) != 0) {
+    if (geom_count_parse(f[col[i]], cr->len[col[i]], dst[i]) != 0) {
       report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count", cr->name,
                   ln, report_csv_header[col[i]], f[col[i]]);
       return -1;
     }
-  if (report_number(f[11], &r.tie_eps) != NULL && strcmp(f[11], "0") != 0) {
+  if (geom_number_parse(f[11], cr->len[11], &r.tie_eps) != GEOM_NUM_OK &&
+      strcmp(f[11], "0") != 0) {
     report_errf(cr->err, cr->errlen, "%s line %llu: tie_eps '%.40s' is not a number",
                 cr->name, ln, f[11]);
     return -1;
@@ -418,8 +395,10 @@ static int report_counts_run(report_countsread *cr, char **f, const report_row *
   return 0;
 }
 
-static int report_counts_record(char **f, int nf, uint64_t line, void *data) {
+static int report_counts_record(char **f, const size_t *len, int nf, uint64_t line,
+                                void *data) {
   report_countsread *cr = data;
+  cr->len = len;
   unsigned long long ln = (unsigned long long)line;
   if (!cr->header_seen) return report_counts_header(cr, f, nf, line);
   if (nf != cr->ncols) {
@@ -556,7 +535,8 @@ static int report_is_pentagon_header(char **f, int nf) {
   return 1;
 }
 
-static int report_pent_record(char **f, int nf, uint64_t line, void *data) {
+static int report_pent_record(char **f, const size_t *len, int nf, uint64_t line,
+                              void *data) {
   report_pentread *pr = data;
   unsigned long long ln = (unsigned long long)line;
   int first = pr->first;
@@ -572,7 +552,7 @@ static int report_pent_record(char **f, int nf, uint64_t line, void *data) {
   for (int i = 0; i < 10; i++) {
     const char *s = f[i];
     double x = 0;
-    geom_coorderr ce = geom_coord_parse(s, &x);   /* the coordinate contract */
+    geom_coorderr ce = geom_coord_parse_n(s, len[i], &x);   /* the coordinate contract */
     if (ce != GEOM_COORD_OK) {
       report_errf(pr->err, pr->errlen, "%s line %llu: %s%d '%.40s' %s", pr->name, ln,
                   i % 2 ? "y" : "x", i / 2 + 1, s, geom_coorderr_str(ce));

@@ -133,22 +133,16 @@ int report_counts_read(FILE *in, const char *name, report_row **rows, int *nrows
 int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
                     const char *what, char *err, size_t errlen);
 
-/* Strict decimal count: digits only, no sign, no overflow; 0 or -1. */
-int report_parse_count(const char *s, uint64_t *out);
-
-/* Generic CSV records through libcsv.  fn gets each non-empty record with
-** its 1-based line number; a non-zero return stops the walk and is
+/* Generic CSV records through libcsv.  fn gets each non-empty record
+** (every field NUL-terminated, and its length in bytes, which tells a field
+** with a NUL byte inside from a shorter one: numbers are read with the
+** geom_ parsers, which take it) with its 1-based line number; a non-zero return stops the walk and is
 ** returned.  Lines count LF terminators, so quoted newlines shift them.
 ** A leading UTF-8 byte order mark is skipped; a record of more than 256
 ** fields or a field of more than 4096 bytes is an error ("line N: ..."). */
-typedef int (*report_record_fn)(char **fields, int nfields, uint64_t line, void *ctx);
+typedef int (*report_record_fn)(char **fields, const size_t *len, int nfields, uint64_t line,
+                                void *ctx);
 int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t errlen);
-
-/* A coordinate or other real number, strictly: NULL and *v set, or why
-** not ("is not a number", "is not finite", "is out of range": beyond the
-** doubles or below the normal ones, which strtod would turn into 0 or a
-** subnormal without a word). */
-const char *report_number(const char *s, double *v);
 
 /* Pentagon files: a header x1,y1,...,x5,y5 then one pentagon per row, each
 ** coordinate printed with %.17g so it reads back bit for bit. */

@@ -61,7 +61,8 @@ static int tc_type(const char *s) {
   return -1;
 }
 
-static int tc_collect(char **f, int nf, uint64_t line, void *ctx) {
+static int tc_collect(char **f, const size_t *len, int nf, uint64_t line, void *ctx) {
+  (void)len;
   tc_rows *rs = ctx;
   assert_int_equal(nf, 6);
   if (!rs->header) {

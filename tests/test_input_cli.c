@@ -10,7 +10,10 @@
 **   - classify's geometry errors name the row and the vertex, as got's do;
 **   - a quoted newline echoed in a message keeps it one line;
 **   - classify with stdout output writes nothing when a row is bad, and
-**     its output does not depend on the input being a file or a pipe.
+**     its output does not depend on the input being a file or a pipe;
+**   - a NUL byte inside a number (issue 17) is refused by every reader
+**     (lot points, got polygons, classify pentagons, merge of table34 and
+**     census shards), as the same field with the NUL left out is.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
@@ -93,6 +96,57 @@ static void test_numbers_out_of_range(void **state) {
   ti_file(p, sizeof p, "poly.csv", "0,0\n1,0\n1,1e999\n");
   ti_refused(TI_RUN("got --rule P_1 --polygon %s", p), 2, "out of range", 300);
   unlink(p);
+}
+
+/* Write n bytes (NULs included) to a file of the test directory. */
+static void ti_bytes(char *path, size_t len, const char *name, const char *bytes, size_t n) {
+  ti_file(path, len, name, "");
+  FILE *f = fopen(path, "wb");
+  assert_non_null(f);
+  assert_int_equal(fwrite(bytes, 1, n, f), n);
+  assert_int_equal(fclose(f), 0);
+}
+
+/* text with a NUL byte inserted after the first occurrence of `after` at
+** or past byte `from` (the data rows), written to a file. */
+static void ti_nul_after(char *path, size_t len, const char *name, const char *text,
+                         size_t from, const char *after) {
+  const char *at = strstr(text + from, after);
+  assert_non_null(at);
+  size_t k = (size_t)(at - text) + strlen(after), n = strlen(text);
+  char *b = malloc(n + 1);
+  assert_non_null(b);
+  memcpy(b, text, k);
+  b[k] = '\0';
+  memcpy(b + k + 1, text + k, n - k);
+  ti_bytes(path, len, name, b, n + 1);
+  free(b);
+}
+
+static void test_nul_in_field(void **state) {
+  (void)state;
+  char p[512], q[512];
+  static const char pts[] = "x,y\n0,0\n1,0\n0.5\0garbage,0.8\n";
+  ti_bytes(p, sizeof p, "nul.csv", pts, sizeof pts - 1);
+  ti_refused(TI_RUN("lot --rule DT --points %s", p), 2, "line 4: x '0.5' is not a number", 300);
+  ti_refused(TI_RUN("got --rule P_1 --polygon %s", p), 2, "line 4: x '0.5' is not a number", 300);
+  static const char pent[] = "0,0,1,0,1.5\0001,0.5,1,1,0,1\n";
+  ti_bytes(p, sizeof p, "nul.csv", pent, sizeof pent - 1);
+  ti_refused(TI_RUN("classify --input %s", p), 2, "x3 '1.5' is not a number", 300);
+  /* merge: a count with a NUL and a digit after it ("20\0" "7" read as 20). */
+  ti_file(q, sizeof q, "shard.csv", "");
+  assert_int_equal(TI_RUN("table34 --samples 20 --format csv --out %s", q), 0);
+  char *csv = testutil_read_file(q);
+  ti_nul_after(p, sizeof p, "nul.csv", csv, (size_t)(strchr(csv, '\n') - csv), ",20");
+  ti_refused(TI_RUN("merge %s", p), 2, "samples '20' is not a count", 300);
+  free(csv);
+  assert_int_equal(TI_RUN("census --sites 5 --samples 20 --format csv --out %s", q), 0);
+  csv = testutil_read_file(q);
+  ti_nul_after(p, sizeof p, "nul.csv", csv, (size_t)(strchr(csv, '\n') - csv), ",20");
+  ti_refused(TI_RUN("merge %s", p), 2, "is not a count", 300);
+  free(csv);
+  unlink(p);
+  unlink(q);
 }
 
 /* A BOM changes nothing: same output as without it. */
@@ -181,6 +235,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_formula_input),
     cmocka_unit_test(test_numbers_out_of_range),
+    cmocka_unit_test(test_nul_in_field),
     cmocka_unit_test(test_bom),
     cmocka_unit_test(test_classify_names_vertex),
     cmocka_unit_test(test_classify_pipe),

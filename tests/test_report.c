@@ -53,7 +53,8 @@ static void trep_random_row(testutil_rng *g, report_row *r, const char *m, const
 
 typedef struct trep_fields { int n; char f[16][64]; uint64_t line[16]; } trep_fields;
 
-static int trep_collect(char **fields, int nf, uint64_t line, void *ctx) {
+static int trep_collect(char **fields, const size_t *len, int nf, uint64_t line, void *ctx) {
+  (void)len;
   trep_fields *t = ctx;
   for (int i = 0; i < nf && t->n < 16; i++) {
     snprintf(t->f[t->n], sizeof t->f[t->n], "%s", fields[i]);
