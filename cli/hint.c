@@ -133,21 +133,19 @@ static int cli_closest_rule(const char *s, char *buf, size_t len) {
   const char *quads[64];
   size_t nq = 0;
   for (int i = 0; i < rule_quad_count() && nq < 64; i++) quads[nq++] = rule_quad_get(i)->name;
-  const char *us = strrchr(s, '_');
-  if (us == NULL || us == s || (size_t)(us - s) > CLI_HINT_MAXLEN) {
+  char m[CLI_HINT_MAXLEN + 1];
+  const char *js = rule_name_split(s, m, sizeof m);
+  if (js == NULL) {
     const char *q = cli_closest(s, quads, nq);
     if (q != NULL) snprintf(buf, len, "%s", q);
     return q != NULL;
   }
-  char m[CLI_HINT_MAXLEN + 1];
-  memcpy(m, s, (size_t)(us - s));
-  m[us - s] = '\0';
   const char *joints[JOINT_COUNT];
   for (int j = 0; j < JOINT_COUNT; j++) joints[j] = joint_get((joint_id)j)->name;
   const char *mm = measure_find(m) >= 0 ? m : cli_closest_measure(m);
-  const char *jj = joint_find(us + 1) >= 0 ? us + 1 : cli_closest(us + 1, joints, JOINT_COUNT);
+  const char *jj = joint_find(js) >= 0 ? js : cli_closest(js, joints, JOINT_COUNT);
   if (mm == NULL || jj == NULL) return 0;
-  snprintf(buf, len, "%s_%s", mm, jj);
+  rule_name_join(buf, len, mm, jj);
   return 1;
 }
 
@@ -161,11 +159,9 @@ int cli_parse_rule(const char *cmd, const char *name, rule *out) {
       return cli_error(cmd, "unknown rule '%s': did you mean '%s'? (fliplab list shows every "
                        "measure and joint)", name, near);
   }
-  const char *us = strrchr(name, '_');
-  if (us != NULL && us != name && (size_t)(us - name) < 64 && joint_find(us + 1) >= 0) {
-    char m[64];
-    memcpy(m, name, (size_t)(us - name));
-    m[us - name] = '\0';
+  char m[64];
+  const char *js = rule_name_split(name, m, sizeof m);
+  if (js != NULL && joint_find(js) >= 0) {
     if (measure_find(m) < 0)
       return cli_error(cmd, "unknown measure '%s' in rule '%s': not built in (fliplab list) and "
                        "not defined: fliplab --define '%s = EXPR' %s ... defines it (the "

@@ -69,7 +69,7 @@ int rule_triangle(int m, joint_id j, rule *out, char *err, size_t errlen) {
     return -1;
   }
   *out = (rule){.kind = RULE_TRIANGLE, .measure = m, .joint = j, .quad = -1};
-  snprintf(out->name, sizeof out->name, "%s_%s", M->name, J->name);
+  rule_name_join(out->name, sizeof out->name, M->name, J->name);
   return 0;
 }
 
@@ -85,8 +85,23 @@ static void rule_valid_names(char *err, size_t errlen, const char *what) {
              measures);
 }
 
-/* Names split at the last '_': measure names may contain '-', '/' and '\''
-** but joint suffixes never contain '_'. */
+const char *rule_name_split(const char *name, char *measure, size_t mlen) {
+  const char *us = strrchr(name, '_');
+  if (us == NULL || us == name || (size_t)(us - name) >= mlen) return NULL;
+  memcpy(measure, name, (size_t)(us - name));
+  measure[us - name] = '\0';
+  return us + 1;
+}
+
+int rule_name_join(char *buf, size_t len, const char *measure, const char *joint) {
+  return snprintf(buf, len, "%s_%s", measure, joint);
+}
+
+int rule_name_is(const char *rule, const char *measure, const char *joint) {
+  size_t n = strlen(measure);
+  return strncmp(rule, measure, n) == 0 && rule[n] == '_' && strcmp(rule + n + 1, joint) == 0;
+}
+
 int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
   char what[160];
   snprintf(what, sizeof what, "unknown rule '%.100s'", name);
@@ -96,18 +111,16 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
       snprintf(out->name, sizeof out->name, "%s", rule_quads[i].name);
       return 0;
     }
-  const char *us = strrchr(name, '_');
-  if (us == NULL || us == name || strlen(name) >= 64) {
+  char mname[64];
+  const char *jname = strlen(name) < sizeof mname ? rule_name_split(name, mname, sizeof mname) : NULL;
+  if (jname == NULL) {
     rule_valid_names(err, errlen, what);
     return -1;
   }
-  char mname[64];
-  memcpy(mname, name, (size_t)(us - name));
-  mname[us - name] = '\0';
-  int m = measure_find(mname), j = joint_find(us + 1);
+  int m = measure_find(mname), j = joint_find(jname);
   if (m < 0 || j < 0) {
     if (m < 0) snprintf(what, sizeof what, "unknown measure '%.60s' in rule '%.60s'", mname, name);
-    else snprintf(what, sizeof what, "unknown joint '%.30s' in rule '%.60s'", us + 1, name);
+    else snprintf(what, sizeof what, "unknown joint '%.30s' in rule '%.60s'", jname, name);
     rule_valid_names(err, errlen, what);
     return -1;
   }

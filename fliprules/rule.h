@@ -50,6 +50,17 @@ typedef struct rule {
 ** name, or MEASURE_JOINT ("R_inf", "-c_-inf", "-r2/A_0").  On failure it
 ** returns -1 and writes a one-line message (naming the valid choices) to err. */
 int rule_parse(const char *name, rule *out, char *err, size_t errlen);
+
+/* The one grammar of rule names: a triangle-based rule is MEASURE_JOINT,
+** split at the last '_' (measure names may contain '-', '/' and '\'', a
+** joint name never contains '_').  rule_name_split copies the measure part
+** into measure[mlen] and returns the joint part (a pointer into name), or
+** NULL when name has no '_' after its first character or the measure part
+** does not fit.  rule_name_join writes "MEASURE_JOINT" into buf[len] and
+** returns what snprintf does; rule_name_is tells whether rule is that name. */
+const char *rule_name_split(const char *name, char *measure, size_t mlen);
+int rule_name_join(char *buf, size_t len, const char *measure, const char *joint);
+int rule_name_is(const char *rule, const char *measure, const char *joint);
 int rule_triangle(int measure, joint_id j, rule *out, char *err, size_t errlen);
 rule rule_delaunay(void);
 

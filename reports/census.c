@@ -205,9 +205,7 @@ static int report_census_mean(const char *s, size_t len, uint64_t denom, double 
 ** from the measure). */
 static int report_census_named(const report_census_row *row, const char *gap) {
   if (row->measure[0] == '\0') return row->joint[0] == '\0' && gap[0] == '\0';
-  char want[sizeof row->measure + sizeof row->joint + 1];
-  snprintf(want, sizeof want, "%s_%s", row->measure, row->joint);
-  return strcmp(want, row->rule) == 0;
+  return rule_name_is(row->rule, row->measure, row->joint);
 }
 
 static int report_census_fields(report_census_reader *cr, report_census_row *row, char **f,

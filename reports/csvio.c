@@ -317,9 +317,8 @@ static int report_counts_names(report_countsread *cr, char **f, report_row *row,
   strcpy(row->joint, f[1]);
   strcpy(row->rule, f[2]);
   if (row->measure[0] == '\0' && row->joint[0] == '\0') return 0;
-  char want[sizeof row->measure + sizeof row->joint + 1];
-  snprintf(want, sizeof want, "%s_%s", row->measure, row->joint);
-  if (row->measure[0] == '\0' || joint_find(row->joint) < 0 || strcmp(want, row->rule) != 0) {
+  if (row->measure[0] == '\0' || joint_find(row->joint) < 0 ||
+      !rule_name_is(row->rule, row->measure, row->joint)) {
     report_errf(cr->err, cr->errlen,
                 "%s line %llu: rule '%.40s' does not match its measure '%.40s' and joint "
                 "'%.16s' (expected MEASURE_JOINT with a joint -inf, -1, 0, 1, 2 or inf)",

@@ -168,6 +168,29 @@ static double trule_signed_fn(const geom_tri *t, void *ctx) {
   return t->beta - 1.0;
 }
 
+/* The name grammar: split at the last '_', join back to the same name. */
+static void test_name_grammar(void **state) {
+  (void)state;
+  char m[16], buf[64];
+  const char *j = rule_name_split("-r2/A_-inf", m, sizeof m);
+  assert_non_null(j);
+  assert_string_equal(m, "-r2/A");
+  assert_string_equal(j, "-inf");
+  assert_int_equal(rule_name_join(buf, sizeof buf, m, j), 10);
+  assert_string_equal(buf, "-r2/A_-inf");
+  assert_true(rule_name_is("-r2/A_-inf", "-r2/A", "-inf"));
+  assert_false(rule_name_is("R_1", "R", "10"));
+  assert_false(rule_name_is("R_10", "R", "1"));
+  assert_false(rule_name_is("RR_1", "R", "1"));
+  j = rule_name_split("a_b_c", m, sizeof m);           /* the last '_' */
+  assert_string_equal(m, "a_b");
+  assert_string_equal(j, "c");
+  assert_null(rule_name_split("DT", m, sizeof m));
+  assert_null(rule_name_split("_1", m, sizeof m));     /* no measure part */
+  assert_null(rule_name_split("abcdefghijklmnop_1", m, sizeof m));   /* does not fit */
+  assert_non_null(rule_name_split("abcdefghijklmno_1", m, sizeof m));
+}
+
 static void test_anysign_measure(void **state) {
   (void)state;
   measure m = {"tests2signed", "b-1", "beta minus one (test)", MEASURE_ANYSIGN, trule_signed_fn, NULL};
@@ -501,6 +524,7 @@ int main(void) {
     cmocka_unit_test(test_parse_all),
     cmocka_unit_test(test_list_triangle),
     cmocka_unit_test(test_parse_bad),
+    cmocka_unit_test(test_name_grammar),
     cmocka_unit_test(test_anysign_measure),
     cmocka_unit_test(test_compare),
     cmocka_unit_test(test_appendix_b),
