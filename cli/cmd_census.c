@@ -70,13 +70,12 @@ static int cli_census_option(int argc, char **argv, int *i, cli_census_opts *o) 
     if (strcmp(a, nums[k].name) == 0) {
       uint64_t *dst = (uint64_t *)((char *)o + nums[k].off);
       if ((v = cli_optarg(CMD, argc, argv, i)) == NULL) return -1;
-      if (strcmp(a, "--sites") == 0 && cli_parse_u64(CMD, a, v, 0, UINT64_MAX, dst) == 0 &&
-          (*dst < 3 || *dst > SITEFLIP_MAX_SITES)) {
-        cli_error(CMD, "--sites %s: the census enumerates every triangulation, so it takes "
-                       "3 to %d sites", v, SITEFLIP_MAX_SITES);
-        return -1;
-      }
-      return cli_parse_u64(CMD, a, v, nums[k].lo, nums[k].hi, dst);
+      if (cli_parse_u64(CMD, a, v, 0, UINT64_MAX, dst) != 0) return -1;   /* said why */
+      if (*dst >= nums[k].lo && *dst <= nums[k].hi) return 0;
+      if (strcmp(a, "--sites") != 0) return cli_parse_u64(CMD, a, v, nums[k].lo, nums[k].hi, dst);
+      cli_error(CMD, "--sites %s: the census enumerates every triangulation, so it takes "
+                     "3 to %d sites", v, SITEFLIP_MAX_SITES);
+      return -1;
     }
   if ((v = cli_optarg(CMD, argc, argv, i)) == NULL) return -1;
   if (strcmp(a, "--sampler") == 0) {

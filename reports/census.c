@@ -253,13 +253,27 @@ static int report_census_fields(report_census_reader *cr, report_census_row *row
   return 0;
 }
 
+/* The sinks of the untied samples: none for no_sink, one for one_sink,
+** 2 to max_sinks for each multi_sink sample, so one_sink + 2 multi_sink <=
+** sinks <= one_sink + max_sinks multi_sink, and max_sinks is 0 without a
+** sink, 1 without a multi-sink sample, at least 2 with one (a row whose
+** mean_sinks exceeds its max_sinks fails the upper bound). */
+static int report_census_sinks_consistent(const siteflip_counts *c) {
+  uint64_t one = c->one_sink, multi = c->multi_sink;
+  if (one + multi == 0) return c->max_sinks == 0 && c->sinks == 0;
+  if (multi == 0) return c->max_sinks == 1 && c->sinks == one;
+  if (c->max_sinks < 2 || c->sinks < one || (c->sinks - one) / 2 < multi) return 0;
+  uint64_t extra = c->sinks - one;   /* at most max_sinks x multi */
+  return extra / multi + (extra % multi != 0) <= c->max_sinks;
+}
+
 static int report_census_consistent(const siteflip_counts *c) {
   uint64_t parts[4] = {c->tie, c->no_sink, c->one_sink, c->multi_sink}, sum = 0;
   for (int k = 0; k < 4; k++) {
     if (parts[k] > c->samples - sum) return 0;
     sum += parts[k];
   }
-  return sum == c->samples && c->sink_dt <= c->one_sink;
+  return sum == c->samples && c->sink_dt <= c->one_sink && report_census_sinks_consistent(c);
 }
 
 static int report_census_record(char **f, const size_t *len, int nf, uint64_t line,
@@ -302,7 +316,8 @@ static int report_census_record(char **f, const size_t *len, int nf, uint64_t li
   if (report_census_fields(cr, row, f, ln) != 0) return -1;
   if (!report_census_consistent(&row->c)) {
     snprintf(cr->err, cr->errlen, "%s line %llu: inconsistent counts (tie + no_sink + one_sink "
-             "+ multi_sink must be samples, sink_dt <= one_sink)", cr->name, ln);
+             "+ multi_sink must be samples, sink_dt <= one_sink, mean_sinks within what "
+             "one_sink, multi_sink and max_sinks allow)", cr->name, ln);
     return -1;
   }
   if (cr->n > 0 && row->c.samples != cr->rows[0].c.samples) {

@@ -193,6 +193,8 @@ static void test_bad_input_cli(void **state) {
   tcc_refused("census --sampler hexagonal", "unknown sampler 'hexagonal'");
   tcc_refused("census --sites 13", "3 to 12 sites");
   tcc_refused("census --sites 2", "3 to 12 sites");
+  tcc_refused("census --sites x", "--sites expects a non-negative integer");   /* once */
+  tcc_refused("census --samples 0", "--samples 0 is out of range");
   tcc_refused("census --rules R_1,nope_1", "unknown measure 'nope'");
   tcc_refused("census --shard 4/3", "--shard");
 }
@@ -259,6 +261,40 @@ static int tcc_setup(void **state) {
   return testutil_run("--version", NULL, 0, NULL, 0) == 0 ? 0 : -1;   /* makes testtmp/ */
 }
 
+/* merge checks a census row's sinks as it checks its counts: mean_sinks
+** 3 with max_sinks 2 cannot be (issue 17), nor can max_sinks 1 beside a
+** multi-sink sample; the same row with mean_sinks 1.5 is merged. */
+static void test_merge_census_sinks(void **state) {
+  (void)state;
+  char path[512];
+  testutil_tmppath(path, sizeof path, "tcc_sinks.csv");
+  static const char head[] = "measure,joint,rule,sites,sampler,samples,tie,no_sink,one_sink,"
+                             "multi_sink,sink_dt,mean_sinks,max_sinks,mean_worst_gap\n";
+  static const struct { const char *row; int ok; } rows[] = {
+    {"R,1,R_1,5,convex,10,0,0,5,5,5,1.5,2,0\n", 1},
+    {"R,1,R_1,5,convex,10,0,0,5,5,5,3,2,0\n", 0},     /* 30 sinks: at most 5 + 5 x 2 */
+    {"R,1,R_1,5,convex,10,0,0,5,5,5,1.5,1,0\n", 0},   /* a multi-sink sample, max 1 */
+    {"R,1,R_1,5,convex,10,0,0,5,5,5,1.2,2,0\n", 0},   /* 12 sinks: at least 5 + 5 x 2 */
+    {"R,1,R_1,5,convex,10,0,10,0,0,0,0,0,\n", 1},
+    {"R,1,R_1,5,convex,10,0,10,0,0,0,0,3,\n", 0},      /* no sink anywhere, max 3 */
+  };
+  char text[512];
+  for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+    snprintf(text, sizeof text, "%s%s", head, rows[i].row);
+    testutil_write_file(path, text);
+    char args[700];
+    snprintf(args, sizeof args, "merge %s", path);
+    if (rows[i].ok) {
+      int rc = testutil_run(args, tcc_out, TCC_BUF, tcc_err, TCC_BUF);
+      if (rc != 0) fail_msg("row %zu refused: %s", i, tcc_err);
+      assert_string_equal(tcc_out, text);
+    } else {
+      tcc_refused(args, "inconsistent counts");
+    }
+  }
+  remove(path);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_figure_3_8_cli),
@@ -267,6 +303,7 @@ int main(void) {
     cmocka_unit_test(test_census_bytes),
     cmocka_unit_test(test_bad_input_cli),
     cmocka_unit_test(test_rule_catches_neg_R),
+    cmocka_unit_test(test_merge_census_sinks),
   };
   return cmocka_run_group_tests(tests, tcc_setup, NULL);
 }
