@@ -90,7 +90,7 @@ static inline int geom_edges_make(geom_point p, geom_point q, geom_point r, geom
   e->cbx = r.x - q.x, e->cby = r.y - q.y;
   double l = e->bax * e->cay, rr = e->bay * e->cax, perm = fabs(l) + fabs(rr);
   e->twice = fabs(l - rr);
-  return e->twice > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900;
+  return e->twice > 0x1p40 * GEOM_CCW_ERRBOUND_A * perm && perm >= 0x1p-900;
 }
 
 /* The dot product of the edges at vertex v: at p (to q and to r), q, r. */

@@ -31,8 +31,8 @@ static inline double geom_angle(geom_point o, geom_point u, geom_point w, double
 
 /* Twice the area, accurate to a relative 2^-40.  The plain evaluation
 ** fl(l - r), l and r the two products of the orientation determinant, is
-** off by at most bound = (3 + 16 eps) eps (|l| + |r|) (geom_orient's
-** ccwerrboundA, which covers the rounding of the coordinate differences), so
+** off by at most bound = GEOM_CCW_ERRBOUND_A (|l| + |r|) (predicates.h:
+** Shewchuk's bound, which covers the rounding of the differences too), so
 ** when |fl(l - r)| > 2^40 bound its relative error is below 2^-40 and it is
 ** returned as it is (the same bits as before this filter existed).  Below
 ** that, the triangle is flat (the determinant is under 2^-11 of the
@@ -53,7 +53,7 @@ static inline double geom_twice_area_inline(geom_point p, geom_point q, geom_poi
   double det = fabs(l - rr), perm = fabs(l) + fabs(rr);
   /* perm >= 2^-900: the few absolute errors of 2^-1075 that underflow can
   ** add (geom_filter_tiny's argument) are far below 2^-40 eps perm. */
-  if (det > 0x1p40 * (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * perm && perm >= 0x1p-900) return det;
+  if (det > 0x1p40 * GEOM_CCW_ERRBOUND_A * perm && perm >= 0x1p-900) return det;
   return geom_twice_area_flat(p, q, r, det);
 }
 

@@ -34,21 +34,32 @@ static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) 
 ** enough to inline cheaply into their callers' hot loops. */
 #define GEOM_COLD FLIPLAB_COLD
 
+/* The orientation determinant (bx-ax)(cy-ay) - (by-ay)(cx-ax) of finite
+** points, exactly, into det (initialised): every double is a rational, so
+** mpq arithmetic loses nothing.  The one GMP form of it, behind
+** geom_orient_exact and geom_twice_area_gmp. */
+static void geom_orient_det_q(mpq_t det, geom_point a, geom_point b, geom_point c) {
+  mpq_t t[4];
+  for (int i = 0; i < 4; i++) mpq_init(t[i]);
+  mpq_set_d(t[0], b.x); mpq_set_d(det, a.x); mpq_sub(t[0], t[0], det);  /* bx - ax */
+  mpq_set_d(t[1], c.y); mpq_set_d(det, a.y); mpq_sub(t[1], t[1], det);  /* cy - ay */
+  mpq_set_d(t[2], b.y); mpq_sub(t[2], t[2], det);                       /* by - ay */
+  mpq_set_d(t[3], c.x); mpq_set_d(det, a.x); mpq_sub(t[3], t[3], det);  /* cx - ax */
+  mpq_mul(t[0], t[0], t[1]);
+  mpq_mul(t[2], t[2], t[3]);
+  mpq_sub(det, t[0], t[2]);
+  for (int i = 0; i < 4; i++) mpq_clear(t[i]);
+}
+
 /* The exact half of geom_orient (geom.h holds the filter). */
 GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
   atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
   if (!geom_finite4(a, b, c, a)) return 0;
-  mpq_t t[6];
-  for (int i = 0; i < 6; i++) mpq_init(t[i]);
-  mpq_set_d(t[0], b.x); mpq_set_d(t[4], a.x); mpq_sub(t[0], t[0], t[4]);  /* bx - ax */
-  mpq_set_d(t[1], c.y); mpq_set_d(t[4], a.y); mpq_sub(t[1], t[1], t[4]);  /* cy - ay */
-  mpq_set_d(t[2], b.y); mpq_sub(t[2], t[2], t[4]);                        /* by - ay */
-  mpq_set_d(t[3], c.x); mpq_set_d(t[4], a.x); mpq_sub(t[3], t[3], t[4]);  /* cx - ax */
-  mpq_mul(t[4], t[0], t[1]);
-  mpq_mul(t[5], t[2], t[3]);
-  mpq_sub(t[4], t[4], t[5]);
-  int s = mpq_sgn(t[4]);
-  for (int i = 0; i < 6; i++) mpq_clear(t[i]);
+  mpq_t det;
+  mpq_init(det);
+  geom_orient_det_q(det, a, b, c);
+  int s = mpq_sgn(det);
+  mpq_clear(det);
   return s;
 }
 
@@ -148,18 +159,12 @@ static void geom_add_product(double *e, int *n, double a, double b) {
 /* Outside [2^-200, 2^200] (beyond the contract: tests and plugins may go
 ** there) the expansions could underflow or overflow: exact rationals. */
 static GEOM_COLD double geom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
-  mpq_t t[5];
-  for (int i = 0; i < 5; i++) mpq_init(t[i]);
-  mpq_set_d(t[0], q.x); mpq_set_d(t[4], p.x); mpq_sub(t[0], t[0], t[4]);  /* qx - px */
-  mpq_set_d(t[1], r.y); mpq_set_d(t[4], p.y); mpq_sub(t[1], t[1], t[4]);  /* ry - py */
-  mpq_set_d(t[2], q.y); mpq_sub(t[2], t[2], t[4]);                        /* qy - py */
-  mpq_set_d(t[3], r.x); mpq_set_d(t[4], p.x); mpq_sub(t[3], t[3], t[4]);  /* rx - px */
-  mpq_mul(t[0], t[0], t[1]);
-  mpq_mul(t[2], t[2], t[3]);
-  mpq_sub(t[0], t[0], t[2]);
-  mpq_abs(t[0], t[0]);
-  double v = mpq_get_d(t[0]);   /* rounds toward zero */
-  for (int i = 0; i < 5; i++) mpq_clear(t[i]);
+  mpq_t det;
+  mpq_init(det);
+  geom_orient_det_q(det, p, q, r);
+  mpq_abs(det, det);
+  double v = mpq_get_d(det);   /* rounds toward zero */
+  mpq_clear(det);
   return v;
 }
 

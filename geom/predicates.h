@@ -36,6 +36,25 @@ int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d);
 /* eps = 2^-53, half an ulp of 1: the relative error of one rounded operation. */
 #define GEOM_EPS 0x1p-53
 
+/* Shewchuk's stage-A bound of the orientation determinant (his
+** ccwerrboundA).  Write det = (bx-ax)(cy-ay) - (by-ay)(cx-ax) and let
+** l = fl(fl(bx-ax) fl(cy-ay)), r likewise, so fl(det) = fl(l - r).
+** Each of the four differences carries a relative error of at most eps,
+** each product one more rounding, and the final subtraction one more; the
+** sum of these error terms, bounded against |l| + |r| instead of the
+** unknown exact products (which costs the second-order terms), is
+**   |fl(det) - det| <= (3 + 16 eps) eps (|l| + |r|)
+** (Shewchuk 1997, section 4).  So whenever |fl(det)| exceeds
+** GEOM_CCW_ERRBOUND_A (|l| + |r|), fl(det) has the sign of det.  The
+** bound is relative: it assumes no underflow (geom_filter_tiny below) and
+** no overflow (which turns the comparisons false).  Its users:
+** geom_orient_filtered here, lot/'s walk (the same determinant written
+** with differences to the third point), and the area filters of geom/
+** (geom_twice_area_inline, geom_edges_make), which accept a value only
+** 2^40 times above it.  3 + 16 eps = 3 + 2^-49 is exact, so the constant is
+** one double, and multiplying it by 2^40 is exact too. */
+#define GEOM_CCW_ERRBOUND_A ((3.0 + 16.0 * GEOM_EPS) * GEOM_EPS)
+
 /* Shewchuk's bounds are relative, which assumes nothing underflows: a
 ** result in the subnormal range has an absolute error of up to 2^-1075
 ** whatever its size.  When every non-zero coordinate difference is at least
@@ -51,7 +70,7 @@ static inline int geom_filter_tiny(double d) {
 }
 
 /* det = (bx-ax)(cy-ay) - (by-ay)(cx-ax).  With l, r the two products,
-** |fl(det) - det| <= (3 + 16 eps) eps (|l| + |r|) (ccwerrboundA), so a larger
+** |fl(det) - det| <= GEOM_CCW_ERRBOUND_A (|l| + |r|) (above), so a larger
 ** |fl(det)| has the true sign.  Inline: hot loops (hull updates, polygon
 ** checks) decide nearly every test here without a call.  `tiny` = 0 skips
 ** the tiny-difference test (geom_orient_valid below says when that is safe);
@@ -60,7 +79,7 @@ static inline int geom_orient_filtered(geom_point a, geom_point b, geom_point c,
   double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
   double l = bax * cay, r = bay * cax;
   double det = l - r;
-  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
+  double bound = GEOM_CCW_ERRBOUND_A * (fabs(l) + fabs(r));
   if (!tiny || !(geom_filter_tiny(bax) | geom_filter_tiny(bay) | geom_filter_tiny(cax)
                  | geom_filter_tiny(cay))) {
     if (det > bound) return 1;

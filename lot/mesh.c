@@ -237,8 +237,9 @@ static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
 /* q's side of the directed line a -> b from da = a - q and db = b - q:
 ** orient(a, b, q) = orient(q, a, b) = da.x db.y - da.y db.x.  That is
 ** Shewchuk's orient2d(a, b, q) in his own form (differences to the third
-** point), and his bound ccwerrboundA, |fl(det) - det| <= (3 + 16 eps) eps
-** (|l| + |r|) with l, r the two products, covers the rounding of da, db and
+** point), and his bound GEOM_CCW_ERRBOUND_A (geom/predicates.h),
+** |fl(det) - det| <= GEOM_CCW_ERRBOUND_A (|l| + |r|) with l, r the two
+** products, covers the rounding of da, db and
 ** of the products, as for geom_orient_filtered (which takes differences to
 ** a instead); within the coordinate contract nothing under- or overflows
 ** (geom_orient_valid).  So when |fl(det)| is larger, fl(det) has the exact
@@ -246,7 +247,7 @@ static inline geom_point lot_walk_diff(geom_point a, geom_point q) {
 ** geom_orient_valid.  Either way the walk sees the exact sign. */
 static inline double lot_walk_det(geom_point da, geom_point db, int *unsure) {
   double l = da.x * db.y, r = da.y * db.x, det = l - r;
-  double bound = (3.0 + 16.0 * GEOM_EPS) * GEOM_EPS * (fabs(l) + fabs(r));
+  double bound = GEOM_CCW_ERRBOUND_A * (fabs(l) + fabs(r));
   *unsure |= fabs(det) <= bound;
   return det;
 }
