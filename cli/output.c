@@ -9,7 +9,8 @@
 ** cli_outputs_finish with the command's status, which on success closes
 ** every output (checking each flush and close) and renames each temporary
 ** file over its target, and on failure removes them all.  An interrupted run
-** (SIGINT, SIGTERM, SIGHUP, SIGPIPE) or an exit() elsewhere removes them too.
+** (by any signal whose default action ends the process: SIGINT, SIGTERM,
+** SIGQUIT, SIGUSR1, SIGALRM, ...) or an exit() elsewhere removes them too.
 **
 ** Targets that are not regular files (/dev/null, /dev/full, a FIFO, a
 ** terminal, anything under /dev/ or /proc/) cannot be replaced by a rename;
@@ -64,24 +65,63 @@ static void cli_outputs_unlink(void) {
 
 static void cli_outputs_on_signal(int sig) {
   cli_outputs_unlink();
-  signal(sig, SIG_DFL);
-  raise(sig);
+  struct sigaction dfl;
+  memset(&dfl, 0, sizeof dfl);
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  sigaction(sig, &dfl, NULL);
+  raise(sig);   /* blocked until the handler returns, then the default action */
+}
+
+/* Every signal whose default action ends the process (POSIX's "T" and "A"
+** signals, Linux's extras, the real-time ones): an interrupted run removes
+** its temporary files whichever of them stops it.  SIGKILL and SIGSTOP
+** cannot be caught; the faults (SIGSEGV, SIGBUS, ...) are included, so a
+** crash leaves no ".NAME.XXXXXX" either. */
+static const int cli_outputs_sigs[] = {
+  SIGHUP, SIGINT, SIGQUIT, SIGILL, SIGTRAP, SIGABRT, SIGBUS, SIGFPE, SIGUSR1, SIGSEGV,
+  SIGUSR2, SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGSYS,
+#ifdef SIGSTKFLT
+  SIGSTKFLT,
+#endif
+#ifdef SIGPOLL
+  SIGPOLL,
+#endif
+#ifdef SIGPWR
+  SIGPWR,
+#endif
+#ifdef SIGEMT
+  SIGEMT,
+#endif
+#ifdef SIGLOST
+  SIGLOST,
+#endif
+};
+
+/* Hook sig unless the caller chose to ignore it (nohup) or something else
+** already handles it (a sanitizer's report of SIGSEGV): both are left as
+** they are.  While the handler runs every signal is blocked, so a second
+** one cannot interrupt the walk over the table. */
+static void cli_outputs_hook_one(int sig) {
+  struct sigaction sa, old;
+  if (sigaction(sig, NULL, &old) != 0 || old.sa_handler != SIG_DFL ||
+      (old.sa_flags & SA_SIGINFO))
+    return;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = cli_outputs_on_signal;
+  sigfillset(&sa.sa_mask);
+  sigaction(sig, &sa, NULL);
 }
 
 static void cli_outputs_hook(void) {
-  static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
   if (cli_outs_hooked) return;
   cli_outs_hooked = 1;
   atexit(cli_outputs_unlink);
-  for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
-    struct sigaction sa, old;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = cli_outputs_on_signal;
-    sigemptyset(&sa.sa_mask);
-    /* Leave a signal the caller chose to ignore (nohup) ignored. */
-    if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN) continue;
-    sigaction(sigs[i], &sa, NULL);
-  }
+  for (size_t i = 0; i < sizeof cli_outputs_sigs / sizeof cli_outputs_sigs[0]; i++)
+    cli_outputs_hook_one(cli_outputs_sigs[i]);
+#ifdef SIGRTMIN
+  for (int sig = SIGRTMIN; sig <= SIGRTMAX; sig++) cli_outputs_hook_one(sig);
+#endif
 }
 
 static char *cli_strdup(const char *s) {
@@ -356,8 +396,9 @@ int cli_outputs_finish(const char *cmd, int status) {
       ok = 0;
     }
     if (!ok) unlink(o->tmp);
-    free(o->tmp);
+    char *t = o->tmp;       /* unpublished before it is freed: the handler walks it */
     o->tmp = NULL;
+    free(t);
   }
   cli_outputs_free();
   /* Close stdout last so a deferred error (NFS, quota) is not lost. */
