@@ -132,15 +132,17 @@ void flipgraph_prepare(flipgraph_pentagon *p, const geom_point v[5]) {
 void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_eps,
                         flipgraph *out) {
   rule_choice dec[5];
+  rule re = *r;
+  rule_set_tie_eps(&re, tie_eps);
   for (int j = 0; j < 5; j++) {
-    if (r->kind == RULE_QUAD) {
+    if (!rule_is_triangle(&re)) {
       geom_point q[4];
       for (int k = 0; k < 4; k++) q[k] = p->v[(j + 1 + k) % 5];
-      dec[j] = rule_eval(r, q, tie_eps, NULL, NULL);
+      dec[j] = rule_eval(&re, q, NULL, NULL);
     } else {
       const int *t = flipgraph_quad_tri[j];
-      dec[j] = rule_eval_tris(r, &p->tri[t[0]], &p->tri[t[1]], &p->tri[t[2]],
-                              &p->tri[t[3]], tie_eps, NULL, NULL);
+      dec[j] = rule_eval_tris(&re, &p->tri[t[0]], &p->tri[t[1]], &p->tri[t[2]],
+                              &p->tri[t[3]], NULL, NULL);
     }
   }
   flipgraph_from_decisions(dec, p->delaunay_sink, out);

@@ -311,7 +311,7 @@ static int siteflip_decide(const siteflip_cplan *pl, int i, const siteflip_graph
     for (int q = 0; q < g->nquads; q++) {
       const unsigned char *v = g->quad[q].v;
       geom_point pts[4] = {g->p[v[0]], g->p[v[1]], g->p[v[2]], g->p[v[3]]};
-      dec[q] = c->dt ? dtdec[q] : rule_eval(&pl->rules[i], pts, pl->eps, NULL, NULL);
+      dec[q] = c->dt ? dtdec[q] : rule_eval(&pl->rules[i], pts, NULL, NULL);
       if (dec[q] == RULE_EITHER) return 1;
       if (q < 64) b |= (uint64_t)(dec[q] == RULE_BD) << q;
     }
@@ -447,8 +447,8 @@ static uint64_t siteflip_round_units(double x) {
 /* The worst sink's gap, in units; see the GOT shortcut above.  The sign
 ** of a zero total cannot change the gap. */
 static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph *g,
-                                   const double *val, int nv, const siteflip_crule *c,
-                                   int nsinks) {
+                                   const double *val, int nv, const rule *r,
+                                   const siteflip_crule *c, int nsinks) {
   if (nsinks == 1) return 0;
   const double *v = val + c->slot;
   double best, worst;
@@ -458,7 +458,7 @@ static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph
     case JOINT_RSS: siteflip_sink_range(JOINT_RSS, w, g, v, nv, c, nsinks, &best, &worst); break;
     default: siteflip_sink_range(JOINT_SUM, w, g, v, nv, c, nsinks, &best, &worst); break;
   }
-  double gap = siteflip_gap(c->joint, c->msign, best, worst);
+  double gap = rule_gap(r, best, worst);
   if (!(gap > 0)) return 0;
   return siteflip_round_units((gap < 4.0 ? gap : 4.0) / SITEFLIP_GAP_UNIT);
 }
@@ -511,7 +511,7 @@ static void siteflip_tally(const siteflip_cplan *pl, const siteflip_cwork *w,
   if (ns == 0) c->no_sink++;
   else c->multi_sink++;
   if (ns > 1 && !pl->cr[i].quad)
-    c->gap_units += siteflip_gap_units(w, g, w->val, pl->nv, &pl->cr[i], ns);
+    c->gap_units += siteflip_gap_units(w, g, w->val, pl->nv, &pl->rules[i], &pl->cr[i], ns);
 }
 
 /* Running counts of `samples` samples made whole: every sample counts in

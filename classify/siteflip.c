@@ -448,24 +448,22 @@ void siteflip_free(siteflip_graph *g) {
 
 /* ---- one rule ------------------------------------------------------------- */
 
-static rule_choice siteflip_decide(const siteflip_graph *g, const rule *r, double tie_eps,
-                                   int q) {
+static rule_choice siteflip_decide(const siteflip_graph *g, const rule *r, int q) {
   const siteflip_quad *Q = &g->quad[q];
-  if (r->kind == RULE_QUAD) {
+  if (!rule_is_triangle(r)) {
     geom_point pts[4] = {g->p[Q->v[0]], g->p[Q->v[1]], g->p[Q->v[2]], g->p[Q->v[3]]};
-    return rule_eval(r, pts, tie_eps, NULL, NULL);
+    return rule_eval(r, pts, NULL, NULL);
   }
   return rule_eval_tris(r, &g->tri[Q->tri[0]], &g->tri[Q->tri[1]], &g->tri[Q->tri[2]],
-                        &g->tri[Q->tri[3]], tie_eps, NULL, NULL);
+                        &g->tri[Q->tri[3]], NULL, NULL);
 }
 
 double siteflip_node_key(const siteflip_graph *g, const rule *r, int u) {
-  const measure *M = measure_get(r->measure);
-  joint_keyop op = joint_get(r->joint)->keyop;
-  double k = joint_key_identity(r->joint);
+  const measure *M = measure_get(rule_measure(r));
+  double k = rule_key_identity(r);
   for (int f = 0; f < g->per; f++) {
     const geom_tri *t = &g->tri[g->node_tri[(size_t)u * (size_t)g->per + f]];
-    k = joint_key_combine(op, k, joint_key(r->joint, M->sign, M->fn(t, M->ctx)));
+    k = rule_key_add(r, k, rule_key(r, M->fn(t, M->ctx)));
   }
   return k;
 }
@@ -491,7 +489,6 @@ static int siteflip_has_cycle(const siteflip_graph *g, const rule_choice *dec, i
 
 static void siteflip_got(const siteflip_graph *g, const rule *r, const int *sinkv, int nsinks,
                          siteflip_result *res) {
-  const measure *M = measure_get(r->measure);
   double best = 0, worst = 0;
   for (int u = 0; u < g->nnodes; u++) {
     double k = siteflip_node_key(g, r, u);
@@ -509,21 +506,15 @@ static void siteflip_got(const siteflip_graph *g, const rule *r, const int *sink
     }
   }
   res->has_got = 1;
-  res->got_total = joint_unkey(r->joint, M->sign, best);
-  res->worst_gap = res->worst_sink >= 0 ? siteflip_gap(r->joint, M->sign, best, worst) : 0;
-}
-
-/* A NaN total gives 0 by the test tw > tg, whatever den is, so a plain
-** comparison serves as fmax. */
-double siteflip_gap(joint_id j, int s, double best_key, double worst_key) {
-  double tw = joint_unkey_inline(j, s, worst_key), tg = joint_unkey_inline(j, s, best_key);
-  double aw = fabs(tw), ag = fabs(tg), den = aw > ag ? aw : ag;
-  return tw > tg && den > 0 ? (tw - tg) / den : 0;
+  res->got_total = rule_unkey(r, best);
+  res->worst_gap = res->worst_sink >= 0 ? rule_gap(r, best, worst) : 0;
 }
 
 int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
                     rule_choice *dec, int *sinks, siteflip_result *res) {
   memset(res, 0, sizeof *res);
+  rule re = *r;
+  rule_set_tie_eps(&re, tie_eps);
   size_t nn = (size_t)g->nnodes;
   int *outdeg = calloc(nn, sizeof *outdeg), *indeg = calloc(nn, sizeof *indeg);
   int *queue = malloc(nn * sizeof *queue);
@@ -534,7 +525,7 @@ int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
     return -1;
   }
   for (int q = 0; q < g->nquads; q++) {
-    dec[q] = siteflip_decide(g, r, tie_eps, q);
+    dec[q] = siteflip_decide(g, &re, q);
     res->ties |= dec[q] == RULE_EITHER;
   }
   for (int e = 0; e < g->nedges; e++) {
@@ -553,7 +544,7 @@ int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
     res->nsources += indeg[u] == 0;
   }
   res->sink_dt = res->nsinks == 1 && g->delaunay >= 0 ? queue[0] == g->delaunay : -1;
-  if (r->kind == RULE_TRIANGLE) siteflip_got(g, r, queue, res->nsinks, res);
+  if (rule_is_triangle(r)) siteflip_got(g, r, queue, res->nsinks, res);
   res->cycle = siteflip_has_cycle(g, dec, outdeg, queue);
   free(outdeg);
   free(indeg);

@@ -7,11 +7,6 @@
 
 #include "siteflip.h"
 
-/* Relative gap between the worst sink's total and the GOT's, from their
-** keys under joint j for a measure of sign s: (tw - tg) / max(|tw|, |tg|),
-** 0 when tw <= tg or both are 0. */
-double siteflip_gap(joint_id j, int s, double best_key, double worst_key);
-
 /* siteflip_move in steps, for callers that keep DT's decisions: the new
 ** sites and triangles; the exact in-circle decision of every quadrilateral
 ** (rule_eval's for DT: the test is exact, so the vertex order does not

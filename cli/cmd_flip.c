@@ -46,6 +46,7 @@ int cli_cmd_flip(int argc, char **argv) {
                      npos, npos == 1 ? "" : "s");
   rule r;
   if (cli_parse_rule("flip", pos[0], &r) != 0) return 2;
+  rule_set_tie_eps(&r, tie_eps);
   geom_point q[4];
   static const char *const coord[8] = {"x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"};
   for (int k = 0; k < 8; k++) {
@@ -63,7 +64,7 @@ int cli_cmd_flip(int argc, char **argv) {
     return cli_error("flip", "quadrilateral vertex %c (%s %s): %s", "ABCD"[bad],
                      pos[1 + 2 * bad], pos[2 + 2 * bad], geom_polyerr_str(e));
   double ac, bd;
-  rule_choice c = rule_eval(&r, q, tie_eps, &ac, &bd);
+  rule_choice c = rule_eval(&r, q, &ac, &bd);
   printf("rule      %s\n", r.name);
   if (reversed) printf("note      clockwise input relabelled A, D, C, B (same diagonals)\n");
   printf("decision  %s\n", rule_choice_str(c));

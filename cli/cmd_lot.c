@@ -172,9 +172,9 @@ static void cli_lot_status(const lot_stats *st) {
 
 /* --check: 0 when every interior edge is locally optimal. */
 static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-                         const rule *r, double tie_eps) {
+                         const rule *r) {
   lot_check_result c;
-  if (lot_check(p, n, tri, ntri, r, tie_eps, &c) != 0) {
+  if (lot_check(p, n, tri, ntri, r, &c) != 0) {
     printf("check: failed (out of memory)\n");
     return 1;
   }
@@ -189,7 +189,7 @@ static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, siz
   }
   printf("check: ok: locally optimal, re-verified from scratch: %zu interior edges, %zu in "
          "strictly convex quadrilaterals, %s\n", c.interior_edges, c.decided,
-         r->kind == RULE_QUAD && r->quad == RULE_DT
+         rule_is_delaunay(r)
              ? "every one passes the exact empty-circle test"
              : "the rule keeps every one");
   return 0;
@@ -317,6 +317,7 @@ int cli_cmd_lot(int argc, char **argv) {
   lot_options_init(&o, &r);
   if ((rc = cli_lot_validate(&a, &o)) != 0) return rc;
   if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
+  rule_set_tie_eps(&r, a.tie_eps);
   o.r = r;
   o.seed = a.seed;
   o.max_flips = a.max_flips;
@@ -362,7 +363,7 @@ int cli_cmd_lot(int argc, char **argv) {
   else
     printf("time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
            st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
-  int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r, a.tie_eps) != 0;
+  int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r) != 0;
   if (a.compare && strcmp(a.compare, "DT") == 0)
     rc = cli_lot_compare_dt(p, n, &o, tri, st->triangles, &dt, &ndt);
   else if (a.compare)

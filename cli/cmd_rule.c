@@ -150,12 +150,12 @@ static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadc
   for (uint64_t i = 0; i < o->quads; i++) {
     geom_point q[4];
     sampler_quad(o->seed, i, q);
-    rule_choice d = rule_eval(&dt, q, o->tie_eps, NULL, NULL);
+    rule_choice d = rule_eval(&dt, q, NULL, NULL);
     if (d == RULE_EITHER) {
       coc++;
       continue;
     }
-    rule_choice c = rule_eval(r, q, o->tie_eps, NULL, NULL);
+    rule_choice c = rule_eval(r, q, NULL, NULL);
     if (c == RULE_EITHER) {
       ties++;
     } else if (c != d) {
@@ -235,13 +235,13 @@ static void cli_rule_quad_report(const rule *r, const cli_rule_opts *o,
   sampler_quad(o->seed, qc->first, q);
   double ac, bd;
   rule dt = rule_delaunay();
-  rule_choice c = rule_eval(r, q, o->tie_eps, &ac, &bd);
-  rule_choice d = rule_eval(&dt, q, o->tie_eps, NULL, NULL);
+  rule_choice c = rule_eval(r, q, &ac, &bd);
+  rule_choice d = rule_eval(&dt, q, NULL, NULL);
   printf("  verdict: not Delaunay-equivalent; first disagreement, quadrilateral #%llu "
          "ABCD = %.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g: rule %s, DT %s",
          (unsigned long long)qc->first, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x,
          q[3].y, rule_choice_str(c), rule_choice_str(d));
-  if (r->kind == RULE_TRIANGLE) printf(" (F_AC = %.17g, F_BD = %.17g)", ac, bd);
+  if (rule_is_triangle(r)) printf(" (F_AC = %.17g, F_BD = %.17g)", ac, bd);
   printf("\n");
 }
 
@@ -384,6 +384,7 @@ int cli_cmd_rule(int argc, char **argv) {
   cli_rule_opts o;
   int nrules, rc = cli_rule_parse(argc, argv, &o, rules, &nrules);
   if (rc != 0) return rc;
+  for (int r = 0; r < nrules; r++) rule_set_tie_eps(&rules[r], o.tie_eps);
   if (o.svg_dir != NULL && mkdir(o.svg_dir, 0777) != 0 && errno != EEXIST)
     return cli_error("rule", "cannot create --svg-dir '%s': %s", o.svg_dir, strerror(errno));
 

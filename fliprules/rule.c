@@ -49,7 +49,8 @@ void rule_quad_unregister_user(void) {
 /* ---- naming ------------------------------------------------------------ */
 
 rule rule_delaunay(void) {
-  rule r = {.kind = RULE_QUAD, .measure = -1, .joint = JOINT_MIN, .quad = RULE_DT};
+  rule r = {.kind = RULE_QUAD, .measure = -1, .joint = JOINT_MIN, .quad = RULE_DT,
+            .tie_eps = RULE_DEFAULT_TIE_EPS};
   snprintf(r.name, sizeof r.name, "DT");
   return r;
 }
@@ -68,7 +69,8 @@ int rule_triangle(int m, joint_id j, rule *out, char *err, size_t errlen) {
              M->name, J->name, M->name, J->name);
     return -1;
   }
-  *out = (rule){.kind = RULE_TRIANGLE, .measure = m, .joint = j, .quad = -1};
+  *out = (rule){.kind = RULE_TRIANGLE, .measure = m, .joint = j, .sign = (int)M->sign,
+                .quad = -1, .tie_eps = RULE_DEFAULT_TIE_EPS};
   rule_name_join(out->name, sizeof out->name, M->name, J->name);
   return 0;
 }
@@ -107,7 +109,7 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
   snprintf(what, sizeof what, "unknown rule '%.100s'", name);
   for (int i = 0; i < rule_nquads; i++)
     if (strcmp(rule_quads[i].name, name) == 0) {
-      *out = (rule){.kind = RULE_QUAD, .measure = -1, .quad = i};
+      *out = (rule){.kind = RULE_QUAD, .measure = -1, .quad = i, .tie_eps = RULE_DEFAULT_TIE_EPS};
       snprintf(out->name, sizeof out->name, "%s", rule_quads[i].name);
       return 0;
     }
@@ -159,21 +161,19 @@ rule_choice rule_compare(double ac, double bd, double tie_eps) {
 }
 
 rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri *t_acd,
-                           const geom_tri *t_abd, const geom_tri *t_bcd,
-                           double tie_eps, double *ac, double *bd) {
+                           const geom_tri *t_abd, const geom_tri *t_bcd, double *ac, double *bd) {
   const measure *M = measure_get(r->measure);
   return rule_eval_badness(r, M->fn(t_abc, M->ctx), M->fn(t_acd, M->ctx), M->fn(t_abd, M->ctx),
-                           M->fn(t_bcd, M->ctx), tie_eps, ac, bd);
+                           M->fn(t_bcd, M->ctx), ac, bd);
 }
 
 rule_choice rule_eval_badness(const rule *r, double x1, double y1, double x2, double y2,
-                              double tie_eps, double *ac, double *bd) {
-  int s = measure_get(r->measure)->sign;
-  if (ac) *ac = joint_apply(r->joint, s, x1, y1);
-  if (bd) *bd = joint_apply(r->joint, s, x2, y2);
+                              double *ac, double *bd) {
+  if (ac) *ac = joint_apply(r->joint, r->sign, x1, y1);
+  if (bd) *bd = joint_apply(r->joint, r->sign, x2, y2);
   /* Decided in split form: a product or root-sum-square that under- or
   ** overflows a double still decides (joint_compare). */
-  return rule_from_cmp(joint_compare(r->joint, s, x1, y1, x2, y2, tie_eps));
+  return rule_decide(r, x1, y1, x2, y2);
 }
 
 /* Quadrilateral rules see the rotation of ABCD that starts at its
@@ -189,8 +189,7 @@ static rule_choice rule_eval_quad(const rule_quad *Q, const geom_point q[4]) {
   return d;
 }
 
-rule_choice rule_eval(const rule *r, const geom_point q[4], double tie_eps,
-                      double *ac, double *bd) {
+rule_choice rule_eval(const rule *r, const geom_point q[4], double *ac, double *bd) {
   if (r->kind == RULE_QUAD) {
     if (ac) *ac = NAN;
     if (bd) *bd = NAN;
@@ -201,5 +200,36 @@ rule_choice rule_eval(const rule *r, const geom_point q[4], double tie_eps,
   geom_tri_make(&acd, q[0], q[2], q[3]);
   geom_tri_make(&abd, q[0], q[1], q[3]);
   geom_tri_make(&bcd, q[1], q[2], q[3]);
-  return rule_eval_tris(r, &abc, &acd, &abd, &bcd, tie_eps, ac, bd);
+  return rule_eval_tris(r, &abc, &acd, &abd, &bcd, ac, bd);
+}
+
+const rule_quad *rule_quad_of(const rule *r) {
+  return r->kind == RULE_QUAD ? rule_quad_get(r->quad) : NULL;
+}
+
+/* ---- totals and gaps --------------------------------------------------- */
+
+double rule_key_identity(const rule *r) {
+  return joint_key_identity(r->joint);
+}
+
+double rule_total_key(const rule *r, const double *bad, size_t n) {
+  joint_keyop op = joint_get(r->joint)->keyop;
+  double k = joint_key_identity(r->joint);
+  for (size_t t = 0; t < n; t++) k = joint_key_combine(op, k, rule_key(r, bad[t]));
+  return k;
+}
+
+/* Why log space for l_0: its key is ln|T| (sign -1: -ln|T|), so
+** |T1 - T2| / max(|T1|, |T2|) = 1 - exp(-|K1 - K2|), whatever the sign,
+** and a product of thousands of values that no double holds still has a
+** gap.  For the other joints the totals are doubles: their difference
+** over the larger magnitude, 1 when one of them is infinite. */
+double rule_gap(const rule *r, double key1, double key2) {
+  if (key1 == key2 || isnan(key1) || isnan(key2)) return 0;
+  if (r->joint == JOINT_PRODUCT) return -expm1(-fabs(key2 - key1));
+  double t1 = rule_unkey(r, key1), t2 = rule_unkey(r, key2);
+  double m = fmax(fabs(t1), fabs(t2)), d = fabs(t2 - t1);
+  if (!isfinite(m) || !isfinite(d)) return 1;
+  return m > 0 ? d / m : 0;
 }

@@ -34,11 +34,16 @@ typedef struct rule_quad {
   void *ctx;
 } rule_quad;
 
+/* A rule is read through the verbs below (rule_is_triangle, rule_measure,
+** rule_decide, rule_total_key, rule_gap...), never field by field: what a
+** rule means lives here.  The tie tolerance is part of the rule. */
 typedef struct rule {
   rule_kind kind;
   int measure;          /* RULE_TRIANGLE: registry id */
   joint_id joint;       /* RULE_TRIANGLE */
+  int sign;             /* RULE_TRIANGLE: the measure's sign (measure.h), kept for the hot paths */
   int quad;             /* RULE_QUAD: quadrilateral-rule registry id */
+  double tie_eps;       /* relative tie tolerance (docs/rules.md) */
   char name[80];        /* canonical name, e.g. "-alpha_inf", "DT" */
 } rule;
 
@@ -75,23 +80,22 @@ void rule_quad_unregister_user(void);
 ** (equal infinities included); a finite and an infinite value never tie. */
 rule_choice rule_compare(double ac, double bd, double tie_eps);
 
-/* Decide a convex anticlockwise quadrilateral.  For triangle-based rules
-** *ac and *bd (may be NULL) receive f(b(ABC), b(ACD)) and f(b(ABD), b(BCD)). */
-rule_choice rule_eval(const rule *r, const geom_point q[4], double tie_eps,
-                      double *ac, double *bd);
+/* Decide a convex anticlockwise quadrilateral with the rule's tie
+** tolerance.  For triangle-based rules *ac and *bd (may be NULL) receive
+** f(b(ABC), b(ACD)) and f(b(ABD), b(BCD)). */
+rule_choice rule_eval(const rule *r, const geom_point q[4], double *ac, double *bd);
 
 /* The same from the four triangles already made (the hot path of classify):
 ** t_abc, t_acd for diagonal AC, t_abd, t_bcd for BD. */
 rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri *t_acd,
-                           const geom_tri *t_abd, const geom_tri *t_bcd,
-                           double tie_eps, double *ac, double *bd);
+                           const geom_tri *t_abd, const geom_tri *t_bcd, double *ac, double *bd);
 
 /* The same from the four triangles' badness values (a triangulation that
 ** keeps each triangle's measure, as lot/ does): the decision of
 ** rule_eval_tris bit for bit, since a triangle's measure depends only on the
 ** triangle (geom_tri_make's canonical order). */
 rule_choice rule_eval_badness(const rule *r, double b_abc, double b_acd, double b_abd,
-                              double b_bcd, double tie_eps, double *ac, double *bd);
+                              double b_bcd, double *ac, double *bd);
 
 /* DT on ABCD directly: exact, so no canonical rotation is needed. */
 rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d);
@@ -101,5 +105,60 @@ const char *rule_choice_str(rule_choice c);   /* "AC", "BD", "either" */
 /* Every triangle-based rule name "m_j" for the given measures, in table order
 ** (joint-major, as table 3.4), appended to out; returns how many. */
 int rule_list_triangle(const int *measures, int nmeasures, rule *out, int cap);
+
+/* ---- what a rule is ----------------------------------------------------
+** Inline: lot/ and the census ask these on their hot paths. */
+static inline int rule_is_triangle(const rule *r) { return r->kind == RULE_TRIANGLE; }
+static inline int rule_is_delaunay(const rule *r) {
+  return r->kind == RULE_QUAD && r->quad == RULE_DT;
+}
+/* The measure's registry id (-1 for a quadrilateral rule), its sign, the joint. */
+static inline int rule_measure(const rule *r) { return r->kind == RULE_TRIANGLE ? r->measure : -1; }
+static inline int rule_sign(const rule *r) { return r->sign; }
+static inline joint_id rule_joint(const rule *r) { return r->joint; }
+/* The quadrilateral rule (NULL for a triangle-based rule). */
+const rule_quad *rule_quad_of(const rule *r);
+static inline const char *rule_name(const rule *r) { return r->name; }
+static inline double rule_tie_eps(const rule *r) { return r->tie_eps; }
+static inline void rule_set_tie_eps(rule *r, double tie_eps) { r->tie_eps = tie_eps; }
+
+/* ---- deciding from badness values ---------------------------------------
+** rule_decide: a triangle-based rule's decision between the pair (x1, y1)
+** of the triangles on diagonal AC and (x2, y2) on BD, decided in split
+** form with the rule's tolerance (joint_compare); rule_eval_badness bit
+** for bit.  rule_decide_bounds: the same certified from enclosures
+** lo[k] <= value k <= hi[k], in the order x1, y1, x2, y2 (JOINT_LESS:
+** certainly AC; joint_compare_bounds). */
+static inline rule_choice rule_decide(const rule *r, double x1, double y1, double x2, double y2) {
+  int c = joint_compare(r->joint, r->sign, x1, y1, x2, y2, r->tie_eps);
+  return c < 0 ? RULE_AC : c > 0 ? RULE_BD : RULE_EITHER;
+}
+static inline joint_verdict rule_decide_bounds(const rule *r, const double lo[4],
+                                               const double hi[4]) {
+  return joint_compare_bounds(r->joint, r->sign, lo, hi, r->tie_eps);
+}
+
+/* ---- totals of a triangulation ------------------------------------------
+** A triangulation's total is its badness values combined by the rule's
+** joint.  Totals are carried as keys (joint.h: phi(f(x, y)) = phi(x) (+)
+** phi(y)), which neither overflow nor pay a root per value: rule_key of one
+** value, rule_key_add of two keys, rule_total_key of n values (from the
+** identity, in the order given), rule_unkey back to badness units. */
+static inline double rule_key(const rule *r, double b) { return joint_key_inline(r->joint, r->sign, b); }
+static inline double rule_unkey(const rule *r, double k) {
+  return joint_unkey_inline(r->joint, r->sign, k);
+}
+static inline double rule_key_add(const rule *r, double k1, double k2) {
+  return joint_key_combine(joint_get(r->joint)->keyop, k1, k2);
+}
+double rule_key_identity(const rule *r);
+double rule_total_key(const rule *r, const double *bad, size_t n);
+
+/* The relative gap between two totals given as keys: |T1 - T2| / max(|T1|,
+** |T2|), the one formula for every joint (docs/rules.md).  0 for equal
+** keys (equal infinities included) or a NaN; 1 when one total is infinite
+** and the other not; for l_0 computed in log space, -expm1(-|K1 - K2|),
+** so that products beyond the range of a double still have a gap. */
+double rule_gap(const rule *r, double key1, double key2);
 
 #endif

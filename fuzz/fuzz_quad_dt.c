@@ -34,10 +34,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   int rev;
   if (geom_polygon_check(q, 4, &bad, &rev) != GEOM_OK) return 0;
   rule dt = rule_delaunay();
-  rule_choice d = rule_eval(&dt, q, 0, NULL, NULL);
+  rule_choice d = rule_eval(&dt, q, NULL, NULL);
   for (size_t i = 0; i < FUZZ_NRULES; i++) {
     double ac, bd;
-    rule_choice c = rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+    rule_choice c = rule_eval(&rules[i], q, &ac, &bd);
     if (c != RULE_EITHER && d != RULE_EITHER && c != d) {
       fprintf(stderr, "%s says %s, DT %s: (%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g)"
               " values %.17g %.17g\n", fuzz_dt_rules[i], rule_choice_str(c), rule_choice_str(d),

@@ -345,14 +345,6 @@ int got_check_memory(size_t n, int measure, char *err, size_t errlen) {
 
 /* ---- results ---- */
 
-static double got_rel_gap(const got_result *res) {
-  if (res->key2 == res->key) return 0;
-  if (res->joint == JOINT_PRODUCT) return -expm1(-fabs(res->key2 - res->key));
-  double m = fmax(fabs(res->total), fabs(res->total2));
-  if (!isfinite(m) || !isfinite(res->gap)) return 1;
-  return m > 0 ? res->gap / m : 0;
-}
-
 void got_format_total(const got_result *res, double key, char *buf, size_t len) {
   double v = joint_unkey(res->joint, res->sign, key);
   int tiny = v == 0 || !isfinite(v) || fabs(v) < DBL_MIN;
@@ -376,7 +368,7 @@ void got_result_free(got_result *res) {
 
 /* The rule and the size: a triangle-based rule, n >= 3, tables that fit. */
 static int got_solve_check(size_t n, const rule *r, char *err, size_t errlen) {
-  if (r->kind != RULE_TRIANGLE) {
+  if (!rule_is_triangle(r)) {
     snprintf(err, errlen, "rule %s is not triangle-based: GOT needs a measure and a "
              "joint (MEASURE_JOINT, e.g. R_inf)", r->name);
     return -1;
@@ -385,7 +377,7 @@ static int got_solve_check(size_t n, const rule *r, char *err, size_t errlen) {
     snprintf(err, errlen, "a polygon needs at least 3 vertices, got %zu", n);
     return -1;
   }
-  return got_check_memory(n, r->measure, err, errlen);
+  return got_check_memory(n, rule_measure(r), err, errlen);
 }
 
 /* Convex (strictly, anticlockwise) polygons take the unmasked fast path;
@@ -429,18 +421,18 @@ oom:
 
 /* Keys and kernels for the rule (sigma-type measures hand out b^2). */
 static int got_dp_init(got_dp *dp, const geom_point *p, size_t n, const rule *r, int threads) {
-  const measure *m = measure_get(r->measure);
+  const measure *m = measure_get(rule_measure(r));
   dp->n = n;
-  dp->joint = r->joint;
+  dp->joint = rule_joint(r);
   dp->sign = (int)m->sign;
-  dp->op = joint_get(r->joint)->keyop;
-  dp->keyfn = got_keyfn_detect(r->joint, dp->sign);
-  if (got_measure_has_square(r->measure) && dp->sign > 0 &&
+  dp->op = joint_get(rule_joint(r))->keyop;
+  dp->keyfn = got_keyfn_detect(rule_joint(r), dp->sign);
+  if (got_measure_has_square(rule_measure(r)) && dp->sign > 0 &&
       (dp->keyfn == GOT_KEY_SQ || dp->keyfn == GOT_KEY_LOG)) {
     dp->keyfn = dp->keyfn == GOT_KEY_SQ ? GOT_KEY_FROM_SQ_IDENT : GOT_KEY_FROM_SQ_HALFLOG;
-    dp->pd = got_pairs_new_sq(p, n, r->measure, threads);
+    dp->pd = got_pairs_new_sq(p, n, rule_measure(r), threads);
   } else {
-    dp->pd = got_pairs_new(p, n, r->measure, threads);
+    dp->pd = got_pairs_new(p, n, rule_measure(r), threads);
   }
   dp->M = malloc(n * n * sizeof *dp->M);
   dp->K = malloc((n * (n - 1) / 2) * sizeof *dp->K);
@@ -458,18 +450,18 @@ static void got_result_fill(got_result *out, const got_dp *dp, const got_node *n
                             const geom_point *p, const rule *r, const got_options *opt) {
   const size_t n = dp->n, count = n - 2;
   out->n = n;
-  out->measure = r->measure;
-  out->joint = r->joint;
+  out->measure = rule_measure(r);
+  out->joint = rule_joint(r);
   out->sign = dp->sign;
   out->key = dp->M[n - 1];
-  out->total = joint_unkey(r->joint, dp->sign, out->key);
+  out->total = joint_unkey(rule_joint(r), dp->sign, out->key);
   out->has_runner_up = node[0].has2;
   out->tie_eps = opt ? opt->tie_eps : RULE_DEFAULT_TIE_EPS;
   if (out->has_runner_up) {
     out->key2 = node[0].second;
-    out->total2 = joint_unkey(r->joint, dp->sign, out->key2);
+    out->total2 = joint_unkey(rule_joint(r), dp->sign, out->key2);
     out->gap = out->total2 - out->total;
-    out->rel_gap = got_rel_gap(out);
+    out->rel_gap = rule_gap(r, out->key, out->key2);
     out->unique = !(out->rel_gap <= out->tie_eps);
   } else {
     out->key2 = out->total2 = INFINITY;
@@ -480,7 +472,7 @@ static void got_result_fill(got_result *out, const got_dp *dp, const got_node *n
     geom_tri t;
     geom_tri_make(&t, p[node[q].i], p[node[q].k], p[node[q].j]);
     out->tri[q] = (got_triangle){(int)node[q].i, (int)node[q].k, (int)node[q].j,
-                                 measure_eval(r->measure, &t)};
+                                 measure_eval(rule_measure(r), &t)};
   }
   out->ntri = count;
   out->simple = dp->V != NULL;
@@ -507,7 +499,7 @@ int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options
   out->tri = malloc(n * sizeof *out->tri);
   if (rc != 0 || tmp == NULL || node == NULL || out->tri == NULL) {
     snprintf(err, errlen, "out of memory for n = %zu (%.2f GB)", n,
-             got_memory_needed(n, r->measure) / 1e9);
+             got_memory_needed(n, rule_measure(r)) / 1e9);
     rc = -1;
     goto done;
   }

@@ -35,15 +35,15 @@ static int lot_strictly_convex(const geom_point q[4]) {
 
 /* The interior edge u -> v of triangle (u, v, a), v -> u of (v, u, d). */
 static void lot_check_edge(const geom_point *p, uint32_t u, uint32_t v, uint32_t a,
-                           uint32_t d, const rule *r, double tie_eps, lot_check_result *out) {
+                           uint32_t d, const rule *r, lot_check_result *out) {
   const geom_point q[4] = {p[u], p[d], p[v], p[a]};   /* anticlockwise; diagonal q0 q2 */
   int convex = lot_strictly_convex(q);
   out->decided += convex;
   int bad;
-  if (r->kind == RULE_QUAD && r->quad == RULE_DT)
+  if (rule_is_delaunay(r))
     bad = geom_incircle(p[u], p[v], p[a], p[d]) > 0;   /* d strictly inside circle uva */
   else
-    bad = convex && rule_eval(r, q, tie_eps, NULL, NULL) == RULE_BD;
+    bad = convex && rule_eval(r, q, NULL, NULL) == RULE_BD;
   if (bad && out->not_optimal++ == 0) {
     out->bad_edge[0] = u < v ? u : v;
     out->bad_edge[1] = u < v ? v : u;
@@ -51,7 +51,7 @@ static void lot_check_edge(const geom_point *p, uint32_t u, uint32_t v, uint32_t
 }
 
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-              const rule *r, double tie_eps, lot_check_result *out) {
+              const rule *r, lot_check_result *out) {
   *out = (lot_check_result){0};
   lot_dedge *e = malloc(3 * ntri * sizeof *e);
   unsigned char *used = calloc(n ? n : 1, 1);
@@ -86,7 +86,7 @@ int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
       if (u2 != v) valid = 0;   /* the same direction in both: inconsistent */
       else {
         out->interior_edges++;
-        lot_check_edge(p, u, v, a, d, r, tie_eps, out);
+        lot_check_edge(p, u, v, a, d, r, out);
       }
     }
     i = j;
@@ -191,12 +191,12 @@ int lot_compare(const uint32_t *a, size_t na, const uint32_t *b, size_t nb, lot_
 void lot_get_badness(const geom_point *p, const uint32_t *tri, size_t ntri, const rule *r,
                      double *out) {
   for (size_t t = 0; t < ntri; t++) {
-    if (r->kind != RULE_TRIANGLE) {
+    if (!rule_is_triangle(r)) {
       out[t] = NAN;
       continue;
     }
     geom_tri g;
     geom_tri_make(&g, p[tri[3 * t]], p[tri[3 * t + 1]], p[tri[3 * t + 2]]);
-    out[t] = measure_eval(r->measure, &g);
+    out[t] = measure_eval(rule_measure(r), &g);
   }
 }

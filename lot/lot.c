@@ -55,6 +55,8 @@
 
 #define LOT_CYCLE_WINDOW (1u << 20)
 
+/* r is lot's one copy of its rule, the options' tolerance in it: the mesh
+** (its badness cache) and the run (its decisions) both read this one. */
 struct lot {
   lot_mesh m;
   lot_stats st;
@@ -70,6 +72,7 @@ typedef struct lot_entry {
 typedef struct lot_run {
   lot_mesh *m;
   const lot_options *o;
+  const rule *r;        /* the lot's rule (struct lot) */
   lot_stats *st;
   lot_kind kind;
   int star_only;        /* DT insertion: only edges opposite the new point */
@@ -104,7 +107,7 @@ void lot_options_init(lot_options *o, const rule *r) {
   o->algorithm = LOT_INCREMENTAL;
   o->order = LOT_ORDER_SPATIAL;
   o->seed = 1;
-  o->tie_eps = RULE_DEFAULT_TIE_EPS;
+  o->tie_eps = rule_tie_eps(r);
 }
 
 /* ---- the edge queue ---------------------------------------------------- */
@@ -250,18 +253,18 @@ static int lot_prefers_exact(const lot_run *R, uint32_t a, uint32_t b, uint32_t 
   const lot_mesh *m = R->m;
   double x1 = lot_mesh_badness(m, a, b, d), y1 = m->bad[t], y2 = m->bad[u];
   *n1 = (lot_enc){x1, x1};
-  if (R->one_first && (R->o->r.joint == JOINT_SUM ? x1 + R->any.lo >= y1 + y2
-                                                   : x1 >= (y1 > y2 ? y1 : y2)))
+  if (R->one_first && (rule_joint(R->r) == JOINT_SUM ? x1 + R->any.lo >= y1 + y2
+                                                     : x1 >= (y1 > y2 ? y1 : y2)))
     return 0;
   double x2 = lot_mesh_badness(m, a, d, c0);
   *n2 = (lot_enc){x2, x2};
-  return joint_compare(R->o->r.joint, m->meas->sign, x1, x2, y1, y2, R->o->tie_eps) < 0;
+  return rule_decide(R->r, x1, x2, y1, y2) == RULE_AC;
 }
 
 static joint_verdict lot_verdict(const lot_run *R, lot_enc n1, lot_enc n2, lot_enc o1,
                                  lot_enc o2) {
   const double lo[4] = {n1.lo, n2.lo, o1.lo, o2.lo}, hi[4] = {n1.hi, n2.hi, o1.hi, o2.hi};
-  return joint_compare_bounds(R->o->r.joint, R->m->meas->sign, lo, hi, R->o->tie_eps);
+  return rule_decide_bounds(R->r, lo, hi);
 }
 
 /* The same decision with an enclosed cache (lot_internal.h), exact values
@@ -299,8 +302,7 @@ static int lot_prefers_lazy(const lot_run *R, uint32_t a, uint32_t b, uint32_t c
   if (v != JOINT_UNSURE) return v == JOINT_LESS;
   n1->lo = n1->hi = lot_mesh_badness(m, a, b, d);
   n2->lo = n2->hi = lot_mesh_badness(m, a, d, c0);
-  return joint_compare(R->o->r.joint, m->meas->sign, n1->lo, n2->lo, m->enc[t].lo,
-                       m->enc[u].lo, R->o->tie_eps) < 0;
+  return rule_decide(R->r, n1->lo, n2->lo, m->enc[t].lo, m->enc[u].lo) == RULE_AC;
 }
 
 /* Examine the edge opposite corner c; flip it when the rule prefers the
@@ -333,7 +335,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
                         : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_QUAD) {
-      ch = rule_eval(&o->r, q, o->tie_eps, NULL, NULL);
+      ch = rule_eval(R->r, q, NULL, NULL);
     } else {
       ch = o->decide(q, RULE_BD, o->decide_ctx);
     }
@@ -385,27 +387,30 @@ static int lot_push_all(lot_run *R) {
   return 0;
 }
 
-/* What the mesh caches for options o (lot_internal.h). */
-static lot_cache lot_cache_of(const lot_options *o) {
-  if (o->r.kind != RULE_TRIANGLE || o->decide) return LOT_CACHE_NONE;
-  return measure_has_bounds(o->r.measure) && joint_has_bounds(o->r.joint) ? LOT_CACHE_ENCLOSED
-                                                                          : LOT_CACHE_EXACT;
+/* What the mesh caches for rule r and options o (mesh.h). */
+static lot_cache lot_cache_of(const rule *r, const lot_options *o) {
+  if (!rule_is_triangle(r) || o->decide) return LOT_CACHE_NONE;
+  return measure_has_bounds(rule_measure(r)) && joint_has_bounds(rule_joint(r)) ? LOT_CACHE_ENCLOSED
+                                                                                : LOT_CACHE_EXACT;
 }
 
 static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
+  const rule *r = &L->r;
   memset(R, 0, sizeof *R);
   R->m = &L->m;
   R->o = o;
+  R->r = r;
   R->st = &L->st;
   R->kind = o->decide ? LOT_K_HOOK
-          : o->r.kind == RULE_TRIANGLE ? LOT_K_TRI
-          : o->r.quad == RULE_DT ? LOT_K_DT : LOT_K_QUAD;
+          : rule_is_triangle(r) ? LOT_K_TRI
+          : rule_is_delaunay(r) ? LOT_K_DT : LOT_K_QUAD;
   R->track = R->kind >= LOT_K_QUAD;
-  if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(o->r.measure), INFINITY};
+  if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(rule_measure(r)), INFINITY};
   /* Built-in measures only: their floors hold for every value they give
   ** (a user's formula or plugin promises its sign, but nothing checks it). */
-  R->one_first = R->kind == LOT_K_TRI && o->r.measure < MEASURE_BUILTIN_COUNT &&
-                 ((o->r.joint == JOINT_SUM && R->any.lo > -INFINITY) || o->r.joint == JOINT_MAX);
+  joint_id j = rule_joint(r);
+  R->one_first = R->kind == LOT_K_TRI && rule_measure(r) < MEASURE_BUILTIN_COUNT &&
+                 ((j == JOINT_SUM && R->any.lo > -INFINITY) || j == JOINT_MAX);
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
 }
 
@@ -503,15 +508,21 @@ static void lot_finish_stats(lot *L) {
   L->st.distinct = L->st.n - L->st.duplicates;
 }
 
-/* Point L's mesh at o's rule: its measure, the fields it reads and its
-** evaluation from points (triangle rules), for lot_build and lot_reflip. */
-static void lot_use_rule(lot *L, const lot_options *o) {
-  int tri = o->r.kind == RULE_TRIANGLE;
+/* Take o's rule, with o's tolerance, as L's one copy (lot_build and
+** lot_reflip, before the mesh's cache is made for it). */
+static void lot_take_rule(lot *L, const lot_options *o) {
   L->r = o->r;
+  rule_set_tie_eps(&L->r, o->tie_eps);
+}
+
+/* Point the mesh at L's rule: its measure, the fields it reads and its
+** evaluation from points (triangle rules). */
+static void lot_use_rule(lot *L) {
+  int tri = rule_is_triangle(&L->r), mi = rule_measure(&L->r);
   L->m.r = &L->r;
-  L->m.meas = tri ? measure_get(o->r.measure) : NULL;
-  L->m.fields = tri ? measure_fields(o->r.measure) : GEOM_F_ALL;
-  L->m.pts = tri ? measure_points(o->r.measure) : NULL;
+  L->m.meas = tri ? measure_get(mi) : NULL;
+  L->m.fields = tri ? measure_fields(mi) : GEOM_F_ALL;
+  L->m.pts = tri ? measure_points(mi) : NULL;
 }
 
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
@@ -526,10 +537,10 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   lot *L = calloc(1, sizeof *L);
   uint32_t *ord = malloc(n * sizeof *ord);
   lot_run R;
-  if (L == NULL || ord == NULL ||
-      lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(o)) != 0)
-    goto oom;
-  lot_use_rule(L, o);
+  if (L == NULL || ord == NULL) goto oom;
+  lot_take_rule(L, o);
+  if (lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(&L->r, o)) != 0) goto oom;
+  lot_use_rule(L);
   L->st.n = n;
   lot_run_init(&R, L, o);
   R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
@@ -573,8 +584,9 @@ oom:
 
 int lot_reflip(lot *L, const lot_options *o) {
   lot_mesh *m = &L->m;
-  lot_use_rule(L, o);
-  if (lot_mesh_recache(m, lot_cache_of(o)) != 0) return -1;
+  lot_take_rule(L, o);
+  lot_use_rule(L);
+  if (lot_mesh_recache(m, lot_cache_of(&L->r, o)) != 0) return -1;
   lot_run R;
   L->st.flips = 0;
   L->st.status = LOT_CONVERGED;

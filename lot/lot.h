@@ -55,7 +55,7 @@ typedef struct lot_options {
   lot_order order;      /* incremental only */
   uint64_t seed;        /* the random order's seed */
   uint64_t max_flips;   /* 0: lot_default_max_flips(n) */
-  double tie_eps;       /* triangle-based rules' tie tolerance */
+  double tie_eps;       /* the rule's tie tolerance in this run (lot_options_init: r's) */
   lot_decide_fn decide; /* NULL: the rule decides */
   void *decide_ctx;
 } lot_options;
@@ -129,10 +129,10 @@ typedef struct lot_check_result {
 } lot_check_result;
 
 /* Re-verify a triangulation of p (indices into p) from scratch: structure,
-** and local optimality of every interior edge for r (DT: the exact
-** empty-circle test).  0, or -1 when out of memory. */
+** and local optimality of every interior edge for r, with r's tie
+** tolerance (DT: the exact empty-circle test).  0, or -1 when out of memory. */
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-              const rule *r, double tie_eps, lot_check_result *out);
+              const rule *r, lot_check_result *out);
 
 /* Each triangle's badness for the rule: measure_eval on the triangle of p
 ** (NaN for DT and quadrilateral rules). */

@@ -66,7 +66,7 @@ double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
 
 lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   lot_enc e;
-  if (!measure_bounds(m->r->measure, m->p[a], m->p[b], m->p[c], &e.lo, &e.hi))
+  if (!measure_bounds(rule_measure(m->r), m->p[a], m->p[b], m->p[c], &e.lo, &e.hi))
     e.lo = e.hi = lot_mesh_badness(m, a, b, c);
   return e;
 }

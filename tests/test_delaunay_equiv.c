@@ -81,14 +81,14 @@ static void test_dt_equivalent_rules(void **state) {
       continue;
     }
     if (rel < worst_kept) worst_kept = rel;
-    rule_choice d = rule_eval(&dt, q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+    rule_choice d = rule_eval(&dt, q, NULL, NULL);
     assert_true(d == RULE_AC || d == RULE_BD);
     n_ac += d == RULE_AC;
     geom_tri t[4];   /* ABC, ACD, ABD, BCD */
     testutil_quad_tris(q, t);
     for (int i = 0; i < nr; i++) {
       double ac, bd;
-      rule_choice c = rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], RULE_DEFAULT_TIE_EPS, &ac, &bd);
+      rule_choice c = rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], &ac, &bd);
       if (c == d) continue;
       if (c == RULE_EITHER) either[i]++;
       if (disagree[i]++ < 3)

@@ -57,7 +57,7 @@ static void tl_assert_lot(const geom_point *p, size_t n, const lot *L, const uin
                           const rule *r, const char *what) {
   const lot_stats *st = lot_get_stats(L);
   lot_check_result c;
-  assert_int_equal(lot_check(p, n, tri, st->triangles, r, RULE_DEFAULT_TIE_EPS, &c), 0);
+  assert_int_equal(lot_check(p, n, tri, st->triangles, r, &c), 0);
   if (!c.valid || c.not_optimal != 0 || st->status != LOT_CONVERGED)
     fail_msg("%s, rule %s: valid %d, %zu of %zu interior edges not optimal (first %u-%u), "
              "status %d", what, r->name, c.valid, c.not_optimal, c.interior_edges,
@@ -346,7 +346,7 @@ static void test_always_flip_is_a_cycle(void **state) {
     uint32_t *tri = malloc(3 * st->triangles * sizeof *tri);
     lot_get_triangles(L, tri);
     lot_check_result c;
-    assert_int_equal(lot_check(p, n, tri, st->triangles, &dt, 0, &c), 0);
+    assert_int_equal(lot_check(p, n, tri, st->triangles, &dt, &c), 0);
     assert_true(c.valid);
     free(tri);
     lot_free(L);
@@ -373,7 +373,7 @@ static void test_budget(void **state) {
   uint32_t *tri = malloc(3 * st->triangles * sizeof *tri);
   lot_get_triangles(L, tri);
   lot_check_result c;
-  assert_int_equal(lot_check(p, n, tri, st->triangles, &dt, 0, &c), 0);
+  assert_int_equal(lot_check(p, n, tri, st->triangles, &dt, &c), 0);
   assert_true(c.valid);
   assert_true(c.not_optimal > 0);
   free(tri);

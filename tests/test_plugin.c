@@ -108,7 +108,7 @@ static void test_rule109_definition(void **state) {
     testutil_convex_quad(&g, q);
     int clear, want = expect109(q, &clear);
     if (!clear) continue;
-    rule_choice got = rule_eval(&r, q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+    rule_choice got = rule_eval(&r, q, NULL, NULL);
     assert_int_equal(got, want);
     seen[got]++;
     fallback += (dist(q[0], q[2]) < dist(q[1], q[3])) != (got == RULE_AC);
@@ -140,7 +140,7 @@ static void test_rule156_definition(void **state) {
     double mshort = shorter == RULE_AC ? mac : mbd;
     int want = mshort >= thr ? shorter : (mac > mbd ? RULE_AC : RULE_BD);
     fallback += want != shorter;
-    assert_int_equal(rule_eval(&r, q, RULE_DEFAULT_TIE_EPS, NULL, NULL), want);
+    assert_int_equal(rule_eval(&r, q, NULL, NULL), want);
   }
   assert_true(fallback > 100);
 }

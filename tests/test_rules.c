@@ -285,17 +285,16 @@ static void test_appendix_b(void **state) {
   (void)state;
   double s = sqrt(3.0) / 2, s3 = sqrt(3.0), pi = M_PI;
   rule p1 = trule_get("P_1"), a1 = trule_get("-alpha_1"), s2 = trule_get("sigma_2"), dt = trule_get("DT");
-  const double eps = RULE_DEFAULT_TIE_EPS;
   double ac, bd;
 
   geom_point q[4] = {{1, 0}, {0.5, s}, {-1, 0}, {0.5, -s}};
-  assert_int_equal(rule_eval(&p1, q, eps, &ac, &bd), RULE_BD);
+  assert_int_equal(rule_eval(&p1, q, &ac, &bd), RULE_BD);
   TESTUTIL_NEAR(ac, 2 * (3 + s3), 1e-14, 0);
   TESTUTIL_NEAR(bd, 2 + 4 * s3, 1e-14, 0);
-  assert_int_equal(rule_eval(&a1, q, eps, &ac, &bd), RULE_BD);
+  assert_int_equal(rule_eval(&a1, q, &ac, &bd), RULE_BD);
   TESTUTIL_NEAR(ac, -pi / 3, 1e-13, 0);
   TESTUTIL_NEAR(bd, -pi / 2, 1e-13, 0);
-  assert_int_equal(rule_eval(&s2, q, eps, &ac, &bd), RULE_AC);
+  assert_int_equal(rule_eval(&s2, q, &ac, &bd), RULE_AC);
   TESTUTIL_NEAR(ac, pi / 6 * sqrt(4.0 / 3), 1e-12, 0);
   TESTUTIL_NEAR(bd, pi / 6 * sqrt(2.0), 1e-12, 0);
   /* the double quadrilateral is not exactly cocircular: DT is decided */
@@ -304,7 +303,7 @@ static void test_appendix_b(void **state) {
   rule_choice want_dt = sg < 0 ? RULE_BD : RULE_AC;
   print_message("appendix B, unperturbed: fl(sqrt3/2)^2 %s 3/4, so DT = %s\n", sg < 0 ? "<" : ">",
                 rule_choice_str(want_dt));
-  assert_int_equal(rule_eval(&dt, q, eps, NULL, NULL), want_dt);
+  assert_int_equal(rule_eval(&dt, q, NULL, NULL), want_dt);
 
   /* A moved inside the circle BCD: the circle of A'BC no longer reaches D
   ** (A' inside <=> angle A + angle C > 180 <=> angle B + angle D < 180 <=>
@@ -313,13 +312,13 @@ static void test_appendix_b(void **state) {
   const double deltas[] = {1e-3, 1e-6, 1e-9};
   for (size_t i = 0; i < 3; i++) {
     geom_point in[4] = {{1 - deltas[i], 0}, {0.5, s}, {-1, 0}, {0.5, -s}};
-    assert_int_equal(rule_eval(&dt, in, eps, NULL, NULL), RULE_AC);
-    assert_int_equal(rule_eval(&p1, in, eps, NULL, NULL), RULE_BD);
-    assert_int_equal(rule_eval(&a1, in, eps, NULL, NULL), RULE_BD);
+    assert_int_equal(rule_eval(&dt, in, NULL, NULL), RULE_AC);
+    assert_int_equal(rule_eval(&p1, in, NULL, NULL), RULE_BD);
+    assert_int_equal(rule_eval(&a1, in, NULL, NULL), RULE_BD);
     /* A moved outside: DT = BD, sigma_2 still AC */
     geom_point out[4] = {{1 + deltas[i], 0}, {0.5, s}, {-1, 0}, {0.5, -s}};
-    assert_int_equal(rule_eval(&dt, out, eps, NULL, NULL), RULE_BD);
-    assert_int_equal(rule_eval(&s2, out, eps, NULL, NULL), RULE_AC);
+    assert_int_equal(rule_eval(&dt, out, NULL, NULL), RULE_BD);
+    assert_int_equal(rule_eval(&s2, out, NULL, NULL), RULE_AC);
   }
 }
 
@@ -329,20 +328,20 @@ static void test_dt_cocircular(void **state) {
   (void)state;
   rule dt = trule_get("DT");
   geom_point sq[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  assert_int_equal(rule_eval(&dt, sq, RULE_DEFAULT_TIE_EPS, NULL, NULL), RULE_EITHER);
+  assert_int_equal(rule_eval(&dt, sq, NULL, NULL), RULE_EITHER);
   geom_point dia[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-  assert_int_equal(rule_eval(&dt, dia, RULE_DEFAULT_TIE_EPS, NULL, NULL), RULE_EITHER);
+  assert_int_equal(rule_eval(&dt, dia, NULL, NULL), RULE_EITHER);
   geom_point five[4] = {{5, 0}, {3, 4}, {-4, 3}, {0, -5}};
-  assert_int_equal(rule_eval(&dt, five, RULE_DEFAULT_TIE_EPS, NULL, NULL), RULE_EITHER);
+  assert_int_equal(rule_eval(&dt, five, NULL, NULL), RULE_EITHER);
   /* a kite (0,-1) (2,0) (0,1) (-1,0): the circle of ABC has centre (h, 0)
   ** with h^2 + 1 = (2 - h)^2, h = 3/4, radius 5/4; D = (-1,0) is 7/4 from
   ** the centre, strictly outside -> AC */
   geom_point kite[4] = {{0, -1}, {2, 0}, {0, 1}, {-1, 0}};
-  assert_int_equal(rule_eval(&dt, kite, RULE_DEFAULT_TIE_EPS, NULL, NULL), RULE_AC);
+  assert_int_equal(rule_eval(&dt, kite, NULL, NULL), RULE_AC);
   /* the square's triangle rules: everything symmetric ties */
   rule r = trule_get("R_inf");
   double ac, bd;
-  assert_int_equal(rule_eval(&r, sq, RULE_DEFAULT_TIE_EPS, &ac, &bd), RULE_EITHER);
+  assert_int_equal(rule_eval(&r, sq, &ac, &bd), RULE_EITHER);
 }
 
 /* A_1: both triangulations cover the quadrilateral, so the area sums are
@@ -356,7 +355,7 @@ static void test_area_sum_ties(void **state) {
     geom_point q[4];
     testutil_convex_quad(&g, q);
     double ac, bd;
-    rule_choice c = rule_eval(&a1, q, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+    rule_choice c = rule_eval(&a1, q, &ac, &bd);
     if (c != RULE_EITHER) {
       if (bad < 5)
         print_error("-A_1 = %s on (%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g) (%.17g,%.17g): "
@@ -397,11 +396,11 @@ static void test_rotation(void **state) {
     testutil_quad_tris(q, t);
     for (int i = 0; i < nr; i++) {
       double ac0 = 0, bd0 = 0;
-      rule_choice c0 = rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, &ac0, &bd0);
-      assert_int_equal(rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, NULL, NULL), c0);
+      rule_choice c0 = rule_eval(&rules[i], q, &ac0, &bd0);
+      assert_int_equal(rule_eval(&rules[i], q, NULL, NULL), c0);
       if (rules[i].kind == RULE_TRIANGLE) {
         double ac1, bd1;
-        assert_int_equal(rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], RULE_DEFAULT_TIE_EPS, &ac1, &bd1), c0);
+        assert_int_equal(rule_eval_tris(&rules[i], &t[0], &t[1], &t[2], &t[3], &ac1, &bd1), c0);
         assert_memory_equal(&ac0, &ac1, sizeof ac0);
         assert_memory_equal(&bd0, &bd1, sizeof bd0);
       }
@@ -409,7 +408,7 @@ static void test_rotation(void **state) {
         geom_point p[4];
         for (int v = 0; v < 4; v++) p[v] = q[(v + k) % 4];
         double ac = 0, bd = 0;
-        rule_choice c = rule_eval(&rules[i], p, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+        rule_choice c = rule_eval(&rules[i], p, &ac, &bd);
         rule_choice want = (k & 1) ? trule_swap(c0) : c0;
         double wac = (k & 1) ? bd0 : ac0, wbd = (k & 1) ? ac0 : bd0;
         int same = c == want;
@@ -445,8 +444,8 @@ static void test_reflection(void **state) {
     for (int v = 0; v < 4; v++) m[v] = trule_pt(-q[3 - v].x, q[3 - v].y);
     for (int i = 0; i < nr; i++) {
       double ac0 = 0, bd0 = 0, ac = 0, bd = 0;
-      rule_choice c0 = rule_eval(&rules[i], q, RULE_DEFAULT_TIE_EPS, &ac0, &bd0);
-      rule_choice c = rule_eval(&rules[i], m, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+      rule_choice c0 = rule_eval(&rules[i], q, &ac0, &bd0);
+      rule_choice c = rule_eval(&rules[i], m, &ac, &bd);
       if (rules[i].kind == RULE_QUAD) {
         assert_int_equal(c, trule_swap(c0));
         continue;
@@ -507,7 +506,7 @@ static void test_quad_registry(void **state) {
     for (int i = 1; i < 4; i++)
       if (q[i].x < q[lo].x || (q[i].x == q[lo].x && q[i].y < q[lo].y)) lo = i;
     rule_choice want = (lo % 2 == 0) ? RULE_AC : RULE_BD;
-    assert_int_equal(rule_eval(&r, q, RULE_DEFAULT_TIE_EPS, NULL, NULL), want);
+    assert_int_equal(rule_eval(&r, q, NULL, NULL), want);
   }
   assert_int_equal(trule_seen_bad, 0);
   rule_quad dup = qr;
@@ -517,6 +516,50 @@ static void test_quad_registry(void **state) {
   rule x;
   char err[4096];
   assert_int_equal(rule_parse("tests2first", &x, err, sizeof err), -1);
+}
+
+/* The rule verbs: what a rule is, its decision from badness values (with
+** its own tolerance), totals and the one gap formula. */
+static void test_verbs(void **state) {
+  (void)state;
+  rule dt = rule_delaunay(), p1 = trule_get("P_1"), a0 = trule_get("-alpha_inf");
+  assert_true(rule_is_delaunay(&dt) && !rule_is_triangle(&dt));
+  assert_true(rule_is_triangle(&p1) && !rule_is_delaunay(&p1));
+  assert_int_equal(rule_measure(&dt), -1);
+  assert_int_equal(rule_measure(&p1), measure_find("P"));
+  assert_int_equal(rule_joint(&p1), JOINT_SUM);
+  assert_int_equal(rule_sign(&a0), -1);
+  assert_string_equal(rule_name(&a0), "-alpha_inf");
+  assert_null(rule_quad_of(&p1));
+  assert_string_equal(rule_quad_of(&dt)->name, "DT");
+  assert_true(rule_tie_eps(&p1) == RULE_DEFAULT_TIE_EPS);
+  /* 1 + 2 against 1.5 + 1.5 (1 + 1e-13): a tie, then not with tie_eps 0. */
+  assert_int_equal(rule_decide(&p1, 1, 2, 1.5, 1.5 + 1e-13), RULE_EITHER);
+  rule_set_tie_eps(&p1, 0);
+  assert_int_equal(rule_decide(&p1, 1, 2, 1.5, 1.5 + 1e-13), RULE_AC);
+  assert_int_equal(rule_decide(&p1, 1, 2.5, 1.5, 1.5), RULE_BD);
+  double ac, bd;
+  assert_int_equal(rule_eval_badness(&p1, 1, 2, 1.5, 1.5 + 1e-13, &ac, &bd), RULE_AC);
+  assert_true(ac == 3);
+  /* Totals: keys combined from the identity. */
+  const double bad[3] = {1, 2, 4};
+  assert_true(rule_total_key(&p1, bad, 3) == 7);
+  rule p0 = trule_get("P_0"), p2 = trule_get("P_2"), pm = trule_get("P_inf");
+  assert_true(rule_total_key(&pm, bad, 3) == 4);
+  assert_true(rule_unkey(&p2, rule_total_key(&p2, bad, 3)) == sqrt(21));
+  TESTUTIL_NEAR(rule_unkey(&p0, rule_total_key(&p0, bad, 3)), 8, 1e-15, 0);
+  assert_true(rule_total_key(&p1, bad, 0) == rule_key_identity(&p1));
+  /* The gap: |T1 - T2| / max(|T1|, |T2|), in totals, for every joint. */
+  assert_true(rule_gap(&p1, 3, 4) == 0.25 && rule_gap(&p1, 4, 3) == 0.25);
+  assert_true(rule_gap(&p1, 5, 5) == 0 && rule_gap(&p1, 0, 0) == 0);
+  assert_true(rule_gap(&p1, 1, INFINITY) == 1 && rule_gap(&p1, INFINITY, INFINITY) == 0);
+  assert_true(rule_gap(&p1, NAN, 1) == 0);
+  TESTUTIL_NEAR(rule_gap(&p2, rule_key(&p2, 3), rule_key(&p2, 4)), 0.25, 1e-15, 0);
+  TESTUTIL_NEAR(rule_gap(&p0, log(3), log(4)), 0.25, 1e-15, 0);
+  TESTUTIL_NEAR(rule_gap(&p0, 5000, 5000 + log(4.0 / 3)), 0.25, 1e-11, 0);   /* e^5000: no double */
+  assert_true(rule_gap(&p0, -INFINITY, 0) == 1);   /* a zero product against 1 */
+  rule h = trule_get("R_-1");
+  TESTUTIL_NEAR(rule_gap(&h, rule_key(&h, 3), rule_key(&h, 4)), 0.25, 1e-15, 0);
 }
 
 int main(void) {
@@ -533,6 +576,7 @@ int main(void) {
     cmocka_unit_test(test_rotation),
     cmocka_unit_test(test_reflection),
     cmocka_unit_test(test_quad_registry),
+    cmocka_unit_test(test_verbs),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -95,11 +95,13 @@ static void tscale_parse_rules(void) {
 ** rule gives DT's answer whenever (h/L)^2 is far above rounding. */
 static int tscale_abc_tie_ok(const rule *r, const geom_point q[4], rule_choice dt, int p, int q2) {
   double ac, bd;
-  rule_choice c = rule_eval(r, q, RULE_DEFAULT_TIE_EPS, &ac, &bd);
+  rule_choice c = rule_eval(r, q, &ac, &bd);
   if (c != RULE_EITHER) return 0;
   if (!(fabs(ac) >= DBL_MIN && fabs(bd) >= DBL_MIN && isfinite(ac) && isfinite(bd))) return 0;
   if (!(fabs(ac - bd) <= RULE_DEFAULT_TIE_EPS * fmax(fabs(ac), fabs(bd)))) return 0;
-  if (p - q2 <= 20) return rule_eval(r, q, 0, NULL, NULL) == dt;
+  rule exact = *r;
+  rule_set_tie_eps(&exact, 0);
+  if (p - q2 <= 20) return rule_eval(&exact, q, NULL, NULL) == dt;
   return 1;
 }
 
@@ -130,12 +132,12 @@ static void test_thin_quads_and_pentagons(void **state) {
             if (!tscale_make(s, p, q, k, tx, v)) continue;
             cases++;
             if (s->n == 4) {
-              rule_choice d = rule_eval(&dt, v, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+              rule_choice d = rule_eval(&dt, v, NULL, NULL);
               for (int i = 0; i < TSCALE_NRULES; i++) {
                 for (int rot = 0; rot < 4; rot++) {   /* any vertex called A */
                   geom_point r4[4] = {v[rot], v[(rot + 1) % 4], v[(rot + 2) % 4], v[(rot + 3) % 4]};
                   rule_choice want = rot & 1 ? (d == RULE_AC ? RULE_BD : RULE_AC) : d;
-                  rule_choice c = rule_eval(&tscale_rules[i], r4, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+                  rule_choice c = rule_eval(&tscale_rules[i], r4, NULL, NULL);
                   if (c == want) continue;
                   if (strcmp(tscale_dt_rules[i], "abc_1") == 0
                       && tscale_abc_tie_ok(&tscale_rules[i], r4, want, p, q)) {
@@ -166,7 +168,7 @@ static void test_thin_quads_and_pentagons(void **state) {
                     if (one.dec[j] != RULE_EITHER) continue;
                     geom_point q4[4];
                     for (int m = 0; m < 4; m++) q4[m] = v[(j + 1 + m) % 5];
-                    rule_choice dq = rule_eval(&dt, q4, 0, NULL, NULL);
+                    rule_choice dq = rule_eval(&dt, q4, NULL, NULL);
                     ok = tscale_abc_tie_ok(&tscale_rules[i], q4, dq, p, q);
                   }
                   abc_ties += ok;
@@ -213,9 +215,9 @@ static void test_thin_random_directions(void **state) {
     int rev;
     if (geom_polygon_check(q, 4, &badv, &rev) != GEOM_OK) continue;
     cases++;
-    rule_choice d = rule_eval(&dt, q, 0, NULL, NULL);
+    rule_choice d = rule_eval(&dt, q, NULL, NULL);
     for (int i = 0; i < TSCALE_NRULES; i++) {
-      rule_choice c = rule_eval(&tscale_rules[i], q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+      rule_choice c = rule_eval(&tscale_rules[i], q, NULL, NULL);
       if (c == d) continue;
       if (strcmp(tscale_dt_rules[i], "abc_1") == 0 && tscale_abc_tie_ok(&tscale_rules[i], q, d, 0, (int)log2(thin)))
         continue;
@@ -246,9 +248,9 @@ static void test_flat_equal_sides(void **state) {
   TESTUTIL_NEAR(fmax(t.alpha, t.beta), atan2(3.3103697155250992e-28, 6.1065542931650197e-09), 1e-12, 0);
   tscale_parse_rules();
   rule dt = rule_delaunay();
-  rule_choice d = rule_eval(&dt, q, 0, NULL, NULL);
+  rule_choice d = rule_eval(&dt, q, NULL, NULL);
   for (int i = 0; i < TSCALE_NRULES; i++) {
-    rule_choice c = rule_eval(&tscale_rules[i], q, RULE_DEFAULT_TIE_EPS, NULL, NULL);
+    rule_choice c = rule_eval(&tscale_rules[i], q, NULL, NULL);
     if (c != RULE_EITHER && c != d) fail_msg("%s says %s, DT %s", tscale_dt_rules[i],
                                              rule_choice_str(c), rule_choice_str(d));
   }
