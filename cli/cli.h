@@ -30,8 +30,10 @@ int cli_cmd_census(int argc, char **argv);
 ** shown as '?'); returns 2 (usage/input error). */
 int cli_error(const char *cmd, const char *fmt, ...) FLIPLAB_PRINTF(2, 3);
 
-/* Strict number parsing: the whole string, finite, in range.  On failure
-** they print the one-line error naming the option and return -1. */
+/* Strict number parsing of option values: the whole string, finite, in
+** range, read by geom/'s one number parser (geom_count_parse; sizes may be
+** written 1e6; geom_number_scan for reals).  On failure they print the
+** one-line error naming the option and return -1. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s,
                   uint64_t lo, uint64_t hi, uint64_t *out);
 int cli_parse_double(const char *cmd, const char *opt, const char *s,

@@ -1,13 +1,14 @@
 /*
-** util.c: helpers shared by the commands: errors, strict number parsing,
-** option values (output files: output.c).
+** util.c: helpers shared by the commands: errors, strict number parsing
+** of option values through geom/'s one number parser (output files:
+** output.c).
 */
-#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "geom.h"
 
 /* The message is one line of bounded length whatever it echoes: control
 ** characters (a newline inside a quoted CSV field, a tab) become '?', and
@@ -29,20 +30,22 @@ int cli_error(const char *cmd, const char *fmt, ...) {
   return 2;
 }
 
+/* Digits only (geom_count_parse); or, for sizes written in scientific
+** notation (--samples 1e6, digits then 'e', 'E' or '.'), a real
+** (geom_number_parse) that is an integer a double holds exactly. */
 int cli_parse_u64(const char *cmd, const char *opt, const char *s,
                   uint64_t lo, uint64_t hi, uint64_t *out) {
-  char *end;
-  errno = 0;
-  if (s == NULL || *s == '\0' || *s == '-' || *s == '+') goto bad;
-  unsigned long long v = strtoull(s, &end, 10);
-  if (errno == 0 && (*end == 'e' || *end == 'E' || *end == '.')) {
-    /* Scientific notation for sizes (--samples 1e6): accepted when the
-    ** value is an integer that a double holds exactly. */
-    double d = strtod(s, &end);
-    if (*end != '\0' || !(d >= 0 && d <= 0x1p53) || d != floor(d)) goto bad;
-    v = (unsigned long long)d;
-  } else if (errno != 0 || *end != '\0') {
-    goto bad;
+  size_t len = s != NULL ? strlen(s) : 0;
+  uint64_t v;
+  double d;
+  if (len == 0 || *s == '-' || *s == '+') goto bad;
+  if (geom_count_parse(s, len, &v) != 0) {
+    char next = s[strspn(s, "0123456789")];
+    if (next == '\0' || strchr("eE.", next) == NULL ||
+        geom_number_parse(s, len, &d) != GEOM_NUM_OK || !(d >= 0 && d <= 0x1p53) ||
+        d != floor(d))
+      goto bad;
+    v = (uint64_t)d;
   }
   if (v < lo || v > hi) {
     cli_error(cmd, "%s %s is out of range [%llu, %llu]", opt, s,
@@ -56,18 +59,19 @@ bad:
   return -1;
 }
 
+/* geom_number_scan tells an underflow (a value read as 0 or a subnormal:
+** "too small to compute with") from an overflow (not finite). */
 int cli_parse_double(const char *cmd, const char *opt, const char *s,
                      double lo, double hi, double *out) {
-  char *end;
-  errno = 0;
-  if (s == NULL || *s == '\0') goto bad;
-  double v = strtod(s, &end);
-  if (*end != '\0') goto bad;
-  if (errno == ERANGE && fabs(v) <= 1.0) {
+  size_t len = s != NULL ? strlen(s) : 0, used = 0;
+  double v = 0;
+  geom_numerr e = len > 0 ? geom_number_scan(s, len, &v, &used) : GEOM_NUM_NOT_NUMBER;
+  if (used != len || e == GEOM_NUM_NOT_NUMBER || e == GEOM_NUM_NO_MEMORY) goto bad;
+  if (e == GEOM_NUM_OUT_OF_RANGE && fabs(v) <= 1.0) {
     cli_error(cmd, "%s %s is too small in magnitude to compute with", opt, s);
     return -1;
   }
-  if (errno == ERANGE || !isfinite(v)) goto bad;
+  if (e != GEOM_NUM_OK) goto bad;
   if (v < lo || v > hi) {
     cli_error(cmd, "%s %s is out of range [%g, %g]", opt, s, lo, hi);
     return -1;

@@ -13,7 +13,9 @@
 **     its output does not depend on the input being a file or a pipe;
 **   - a NUL byte inside a number (issue 17) is refused by every reader
 **     (lot points, got polygons, classify pentagons, merge of table34 and
-**     census shards), as the same field with the NUL left out is.
+**     census shards), as the same field with the NUL left out is;
+**   - option values are read whole by the same parser: ' 5' and 1e-400 are
+**     no counts, 1.5e1 is one, a subnormal tolerance is too small.
 */
 #define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
@@ -96,6 +98,25 @@ static void test_numbers_out_of_range(void **state) {
   ti_file(p, sizeof p, "poly.csv", "0,0\n1,0\n1,1e999\n");
   ti_refused(TI_RUN("got --rule P_1 --polygon %s", p), 2, "out of range", 300);
   unlink(p);
+}
+
+/* Option values are read whole by geom/'s number parser (cli/util.c): a
+** count with blanks around it, or written as a real that underflows to 0,
+** is refused rather than read as a nearby number; sizes in scientific
+** notation still work; a tolerance below the normal doubles is too small. */
+static void test_option_numbers(void **state) {
+  (void)state;
+  ti_refused(TI_RUN("sample --count 2 --first ' 5'"), 2, "--first expects a non-negative "
+             "integer, got ' 5'", 300);
+  ti_refused(TI_RUN("sample --count 2 --first 1e-400"), 2, "got '1e-400'", 300);
+  ti_refused(TI_RUN("sample --count 2 --first 0x10"), 2, "got '0x10'", 300);
+  ti_refused(TI_RUN("sample --count 2.5"), 2, "got '2.5'", 300);
+  ti_refused(TI_RUN("sample --count 2e13"), 2, "--count 2e13 is out of range [1, 1000000000000]",
+             300);
+  assert_int_equal(TI_RUN("sample --count 2e0 --first 1.5e1 --no-header"), 0);
+  assert_int_equal(testutil_count(ti_out, "\n"), 2);
+  ti_refused(TI_RUN("table34 --samples 10 --tie-eps 1e-310"), 2, "too small in magnitude", 300);
+  ti_refused(TI_RUN("table34 --samples 10 --tie-eps 1e999"), 2, "expects a finite number", 300);
 }
 
 /* Write n bytes (NULs included) to a file of the test directory. */
@@ -235,6 +256,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_formula_input),
     cmocka_unit_test(test_numbers_out_of_range),
+    cmocka_unit_test(test_option_numbers),
     cmocka_unit_test(test_nul_in_field),
     cmocka_unit_test(test_bom),
     cmocka_unit_test(test_classify_names_vertex),
