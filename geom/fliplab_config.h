@@ -69,6 +69,17 @@
 #define FLIPLAB_COLD
 #endif
 
+/* A function (or object) declared in a *_internal.h header: shared by the
+** files of libfliplab, never part of its interface.  Hidden, so that a
+** shared build of the library exports only what the public headers
+** declare (as Lua's LUAI_FUNC); a static library and its tests link as
+** before.  Every declaration of a *_internal.h header carries it. */
+#if defined(__GNUC__)
+#define FLIPLAB_INTERNAL __attribute__((visibility("hidden"))) extern
+#else
+#define FLIPLAB_INTERNAL extern
+#endif
+
 /* GCC/Clang generic vectors (vector_size) and always_inline. */
 #if defined(__GNUC__)
 #define FLIPLAB_HAVE_VECTORS 1

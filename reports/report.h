@@ -163,10 +163,6 @@ typedef int (*report_pentagon_fn)(const geom_point v[5], uint64_t id, uint64_t l
 int report_pentagon_each(FILE *in, const char *name, report_pentagon_fn fn, void *ctx,
                          char *err, size_t errlen);
 
-/* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute
-** value with either quote).  0, or -1 on a write error. */
-int report_xml_text(FILE *f, const char *s);
-
 /* Figure 3.9: type-I % (x) against DT % (y) for every rule that produced
 ** no type-V graph; colour by joint, one <title> per point. */
 int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, int nrows);
@@ -181,10 +177,6 @@ int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, in
 ** coordinates...), drawn below.  0, or -1 on a write error. */
 int report_flipgraph_svg(FILE *f, const flipgraph_pentagon *p, const flipgraph *g,
                          const char *caption);
-
-/* Caption lines (separated by '\n') as monospace text from (x, y) down,
-** 17 px apart, escaped by report_xml_text. */
-void report_svg_caption(FILE *f, double x, double y, const char *caption);
 
 /* ---- flip graphs of small site sets (reports/svg_siteflip.c) ---- */
 
@@ -289,15 +281,6 @@ typedef struct report_got_svg_opts {
 ** readable; vertex numbers up to n = 60. */
 int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
                    size_t ntri, const report_got_svg_opts *o);
-
-/* SVG helpers of svg_got.c shared with svg_lot.c: a <text> line with the
-** XML specials escaped, and the badness colour scale (f in [0, 1]: light
-** yellow = good to dark red = bad) as "#rrggbb". */
-void report_got_text(FILE *f, double x, double y, int size, const char *s);
-void report_got_colour(double f, char *buf, size_t len);
-/* The badness colour scale of a shaded drawing (got, lot): 20 swatches from
-** lo to hi, labelled, with its left edge at x0 and its top at y. */
-void report_got_legend(FILE *f, double x0, double y, double lo, double hi);
 
 /* ---- fliplab lot (reports/csv_lot.c, reports/svg_lot.c) ---- */
 

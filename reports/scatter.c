@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "joint.h"
-#include "report.h"
+#include "report_internal.h"
 
 /* Legend entries: the joints (their colours live with them, in joints/),
 ** then quadrilateral rules such as DT, then groups mixing several of these.
@@ -59,7 +59,7 @@ static double report_pc(uint64_t k, uint64_t n) {
   return n ? 100.0 * (double)k / (double)n : 0;
 }
 
-static void report_svg_axes(FILE *f, double lo) {
+static void report_scatter_axes(FILE *f, double lo) {
   double step = (100 - lo) / 10 >= 5 ? 10 : ((100 - lo) > 20 ? 5 : 2);
   for (double t = lo; t <= 100 + 1e-9; t += step) {
     double x = report_px(t, lo), y = report_py(t, lo);
@@ -91,7 +91,7 @@ static void report_svg_axes(FILE *f, double lo) {
 }
 
 /* The legend lists exactly the entries used[] marks (what was drawn). */
-static void report_svg_legend(FILE *f, const int used[REPORT_NKINDS]) {
+static void report_scatter_legend(FILE *f, const int used[REPORT_NKINDS]) {
   int x = PX0 + 14, y = PY0 + 16, n = 0;
   for (int k = 0; k < REPORT_NKINDS; k++) n += used[k] != 0;
   fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"230\" height=\"%d\" fill=\"#fff\" "
@@ -115,7 +115,7 @@ static void report_svg_legend(FILE *f, const int used[REPORT_NKINDS]) {
 }
 
 /* Draw one group; returns its legend entry. */
-static int report_svg_point(FILE *f, const report_row *rows, int nrows,
+static int report_scatter_point(FILE *f, const report_row *rows, int nrows,
                             const report_group *g, double lo, uint64_t n) {
   int kind = report_kind(rows[g->first].joint);
   int shown = 0;
@@ -183,10 +183,10 @@ int report_scatter_svg(FILE *f, const report_meta *m, const report_row *rows, in
   if (m->has_seed) fprintf(f, ", seed %llu", (unsigned long long)m->seed);
   fprintf(f, "; %d rules without type-V graphs; hover a point for its rules</text>\n",
           nplot);
-  report_svg_axes(f, lo);
+  report_scatter_axes(f, lo);
   int used[REPORT_NKINDS] = {0};
-  for (int k = 0; k < ng; k++) used[report_svg_point(f, rows, nrows, &g[k], lo, n)] = 1;
-  report_svg_legend(f, used);
+  for (int k = 0; k < ng; k++) used[report_scatter_point(f, rows, nrows, &g[k], lo, n)] = 1;
+  report_scatter_legend(f, used);
   fprintf(f, "</svg>\n");
   free(g);
   return ferror(f) ? -1 : 0;

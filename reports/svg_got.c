@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <stdio.h>
-#include "report.h"
+#include "report_internal.h"
 
 #define REPORT_GOT_SIZE 1000.0
 #define REPORT_GOT_MARGIN 12.0
@@ -36,40 +36,13 @@ static double report_got_py(const report_got_view *v, double y) {
   return REPORT_GOT_TOP + v->margin - REPORT_GOT_MARGIN + (v->maxy - y) * v->s;
 }
 
-/* Light yellow (good) to dark red (bad), piecewise linear through 4 stops. */
-void report_got_colour(double f, char *buf, size_t len) {
-  static const double stop[4][3] = {
-    {255, 247, 214}, {253, 174, 97}, {215, 48, 39}, {103, 0, 13}};
-  if (!(f >= 0)) f = 0;
-  if (f > 1) f = 1;
-  double x = f * 3;
-  int q = x >= 3 ? 2 : (int)x;
-  double u = x - q;
-  int c[3];
-  for (int a = 0; a < 3; a++) c[a] = (int)lround(stop[q][a] + u * (stop[q + 1][a] - stop[q][a]));
-  snprintf(buf, len, "#%02x%02x%02x", c[0], c[1], c[2]);
-}
-
-/* A line of text, with the XML specials escaped. */
-void report_got_text(FILE *f, double x, double y, int size, const char *s) {
-  fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%d\">", x, y, size);
-  report_xml_text(f, s);
-  fputs("</text>\n", f);
-}
-
 /* Scale and page size; labels get a wider margin. */
 static report_got_view report_got_fit(const geom_point *p, size_t n, int shade) {
-  report_got_view v = {p[0].x, p[0].y, 1, REPORT_GOT_MARGIN, 0, 0, 0, 0};
-  double maxx = p[0].x, miny = p[0].y;
-  for (size_t q = 1; q < n; q++) {
-    if (p[q].x < v.minx) v.minx = p[q].x;
-    if (p[q].x > maxx) maxx = p[q].x;
-    if (p[q].y < miny) miny = p[q].y;
-    if (p[q].y > v.maxy) v.maxy = p[q].y;
-  }
+  report_svg_box b = report_svg_bbox(p, n);
+  report_got_view v = {b.minx, b.maxy, report_svg_fit_scale(&b, REPORT_GOT_SIZE),
+                       REPORT_GOT_MARGIN, 0, 0, 0, 0};
   if (n <= REPORT_GOT_LABEL_N) v.margin = 2 * REPORT_GOT_MARGIN + 8;
-  double w = maxx - v.minx, h = v.maxy - miny, big = w > h ? w : h;
-  v.s = big > 0 ? REPORT_GOT_SIZE / big : 1;
+  double w = b.maxx - b.minx, h = b.maxy - b.miny;
   v.width = w * v.s + 2 * v.margin;
   v.height = h * v.s + REPORT_GOT_TOP + 2 * v.margin - REPORT_GOT_MARGIN + (shade ? 24 : 0);
   if (v.width < 400) v.width = 400;
@@ -94,7 +67,7 @@ static void report_got_shade(FILE *f, const report_got_view *v, const geom_point
   for (size_t q = 0; q < ntri; q++) {
     char col[16];
     double fr = bmax > bmin ? (t[q].badness - bmin) / (bmax - bmin) : 0;
-    if (isfinite(t[q].badness)) report_got_colour(fr, col, sizeof col);
+    if (isfinite(t[q].badness)) report_svg_colour(fr, col, sizeof col);
     else snprintf(col, sizeof col, "#999999");
     const geom_point *a = &p[t[q].i], *b = &p[t[q].k], *c = &p[t[q].j];
     fprintf(f, "<polygon fill=\"%s\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", col,
@@ -202,19 +175,6 @@ static void report_got_labels(FILE *f, const report_got_view *v, const geom_poin
   fprintf(f, "</g>\n");
 }
 
-void report_got_legend(FILE *f, double x0, double y, double lo, double hi) {
-  for (int s = 0; s < 20; s++) {
-    char col[16];
-    report_got_colour(s / 19.0, col, sizeof col);
-    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
-            x0 + 120 + 10 * s, y, col);
-  }
-  fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">badness %.4g</text>\n",
-          x0, y + 9, lo);
-  fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">%.4g</text>\n",
-          x0 + 325, y + 9, hi);
-}
-
 int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t,
                    size_t ntri, const report_got_svg_opts *o) {
   int shade = o && o->shade;
@@ -223,7 +183,7 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
              "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n",
           v.width, v.height, v.width, v.height);
   fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
-  if (o && o->title) report_got_text(f, REPORT_GOT_MARGIN, 20, 14, o->title);
+  if (o && o->title) report_svg_text(f, REPORT_GOT_MARGIN, 20, 14, o->title);
   double bmin, bmax;
   report_got_tri_range(t, ntri, &bmin, &bmax);
   if (shade) report_got_shade(f, &v, p, t, ntri, bmin, bmax);
@@ -231,7 +191,7 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
   if (o && o->overlay && report_got_overlay(f, &v, p, n, t, ntri, o) != 0) return -1;
   report_got_outline(f, &v, p, n);
   if (n <= REPORT_GOT_LABEL_N) report_got_labels(f, &v, p, n, o ? o->labels : NULL);
-  if (shade && bmax >= bmin) report_got_legend(f, REPORT_GOT_MARGIN, v.height - 18, bmin, bmax);
+  if (shade && bmax >= bmin) report_svg_colour_legend(f, REPORT_GOT_MARGIN, v.height - 18, bmin, bmax);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }

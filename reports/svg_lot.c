@@ -7,7 +7,7 @@
 */
 #include <math.h>
 #include <stdio.h>
-#include "report.h"
+#include "report_internal.h"
 
 #define REPORT_LOT_SIZE 600.0
 #define REPORT_LOT_MARGIN 14.0
@@ -41,11 +41,11 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
                                   int shade, double lo, double hi) {
   double hair = n > 2000 ? 0.2 : n > 300 ? 0.4 : 0.8;
   double dot = n > 2000 ? 0.5 : n > 300 ? 1.0 : 2.0;
-  if (pn->caption) report_got_text(f, v->x0, REPORT_LOT_TOP + 12, 13, pn->caption);
+  if (pn->caption) report_svg_text(f, v->x0, REPORT_LOT_TOP + 12, 13, pn->caption);
   for (size_t t = 0; shade && pn->badness && t < pn->ntri; t++) {
     char col[16] = "#dddddd";
     double b = pn->badness[t];
-    if (isfinite(b)) report_got_colour(hi > lo ? (b - lo) / (hi - lo) : 0, col, sizeof col);
+    if (isfinite(b)) report_svg_colour(hi > lo ? (b - lo) / (hi - lo) : 0, col, sizeof col);
     const uint32_t *w = pn->tri + 3 * t;
     fprintf(f, "<polygon fill=\"%s\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", col,
             report_lot_px(v, p[w[0]].x), report_lot_py(v, p[w[0]].y),
@@ -69,16 +69,10 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
 
 int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
                    int npanels, int shade, const char *title) {
-  report_lot_view v = {p[0].x, p[0].y, 1, REPORT_LOT_MARGIN};
-  double maxx = p[0].x, miny = p[0].y;
-  for (size_t q = 1; q < n; q++) {
-    if (p[q].x < v.minx) v.minx = p[q].x;
-    if (p[q].x > maxx) maxx = p[q].x;
-    if (p[q].y < miny) miny = p[q].y;
-    if (p[q].y > v.maxy) v.maxy = p[q].y;
-  }
-  double w = maxx - v.minx, h = v.maxy - miny, big = w > h ? w : h;
-  v.s = big > 0 ? REPORT_LOT_SIZE / big : 1;
+  report_svg_box b = report_svg_bbox(p, n);
+  report_lot_view v = {b.minx, b.maxy, report_svg_fit_scale(&b, REPORT_LOT_SIZE),
+                       REPORT_LOT_MARGIN};
+  double w = b.maxx - b.minx, h = b.maxy - b.miny;
   double pw = w * v.s + 2 * REPORT_LOT_MARGIN;
   double width = pw * npanels, height = h * v.s + REPORT_LOT_TOP + REPORT_LOT_CAPTION +
                                         REPORT_LOT_MARGIN + (shade ? 26 : 0);
@@ -87,14 +81,14 @@ int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_pane
              "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n"
              "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
           width, height, width, height);
-  if (title) report_got_text(f, REPORT_LOT_MARGIN, 20, 14, title);
+  if (title) report_svg_text(f, REPORT_LOT_MARGIN, 20, 14, title);
   double lo, hi;
   report_lot_range(panels, npanels, &lo, &hi);
   for (int k = 0; k < npanels; k++) {
     v.x0 = REPORT_LOT_MARGIN + k * pw;
     report_lot_panel_draw(f, p, n, &panels[k], &v, shade, lo, hi);
   }
-  if (shade && hi >= lo) report_got_legend(f, REPORT_LOT_MARGIN, height - 20, lo, hi);
+  if (shade && hi >= lo) report_svg_colour_legend(f, REPORT_LOT_MARGIN, height - 20, lo, hi);
   fprintf(f, "</svg>\n");
   return ferror(f) ? -1 : 0;
 }

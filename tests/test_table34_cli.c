@@ -224,6 +224,20 @@ static void test_measures_option(void **state) {
   assert_non_null(strstr(tt_err, "nosuch"));
 }
 
+/* s with the five XML specials escaped, as every SVG of fliplab writes
+** text (an independent spelling: reports/svg.c is what is tested). */
+static void tt_xml(char *buf, size_t len, const char *s) {
+  static const char *const special = "&<>\"'";
+  static const char *const entity[] = {"&amp;", "&lt;", "&gt;", "&quot;", "&apos;"};
+  size_t n = 0;
+  buf[0] = '\0';
+  for (; *s && n + 7 < len; s++) {
+    const char *e = strchr(special, *s);
+    if (e != NULL) n += (size_t)snprintf(buf + n, len - n, "%s", entity[e - special]);
+    else buf[n++] = *s, buf[n] = '\0';
+  }
+}
+
 /* The plot names every rule without type V in a hover title, and no other. */
 static void test_plot(void **state) {
   (void)state;
@@ -237,15 +251,10 @@ static void test_plot(void **state) {
   assert_non_null(strstr(s, "<svg"));
   assert_non_null(strstr(s, "</svg>"));
   for (int i = 0; i < n; i++) {
-    char a[256], b[256], *name = NULL;
-    size_t len = 0;
-    FILE *m = open_memstream(&name, &len);   /* the name as the SVG spells it */
-    assert_non_null(m);
-    assert_int_equal(report_xml_text(m, rows[i].rule), 0);
-    assert_int_equal(fclose(m), 0);
+    char a[256], b[256], name[256];
+    tt_xml(name, sizeof name, rows[i].rule);   /* the name as the SVG spells it */
     snprintf(a, sizeof a, ">%s: type I", name);
     snprintf(b, sizeof b, "\n%s: type I", name);
-    free(name);
     int named = strstr(s, a) != NULL || strstr(s, b) != NULL;
     if (named != (rows[i].c.type[FLIPGRAPH_V] == 0))
       fail_msg("rule %s: named %d, type V %llu", rows[i].rule, named,

@@ -1,0 +1,83 @@
+/*
+** report_internal.h: what the files of reports/ share and nobody else
+** needs: the SVG kit (reports/svg.c: text, view fit, colour scale, the
+** frames and arrows of the flip-graph pictures) and the CSV helpers of the
+** writers and readers.  Not installed; report.h is the public face.
+*/
+#ifndef FLIPLAB_REPORT_INTERNAL_H
+#define FLIPLAB_REPORT_INTERNAL_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "fliplab_config.h"
+#include "report.h"
+
+/* ---- text (reports/svg.c) ---- */
+
+/* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute
+** value with either quote).  0, or -1 on a write error. */
+FLIPLAB_INTERNAL int report_xml_text(FILE *f, const char *s);
+
+/* A <text> line at (x, y) of the given font size, escaped. */
+FLIPLAB_INTERNAL void report_svg_text(FILE *f, double x, double y, int size, const char *s);
+
+/* Caption lines (separated by '\n') as monospace text from (x, y) down,
+** REPORT_SVG_LINE px apart, escaped; and how many lines a caption has (0
+** for NULL or ""), for the picture's height. */
+#define REPORT_SVG_LINE 17.0
+FLIPLAB_INTERNAL void report_svg_caption(FILE *f, double x, double y, const char *caption);
+FLIPLAB_INTERNAL int report_svg_caption_lines(const char *caption);
+
+/* ---- view fit (reports/svg.c) ---- */
+
+/* The bounding box of n >= 1 points, and the scale that makes its larger
+** side `size` px (1 when the points coincide). */
+typedef struct report_svg_box {
+  double minx, miny, maxx, maxy;
+} report_svg_box;
+FLIPLAB_INTERNAL report_svg_box report_svg_bbox(const geom_point *p, size_t n);
+FLIPLAB_INTERNAL double report_svg_fit_scale(const report_svg_box *b, double size);
+
+/* ---- the badness colour scale of shaded drawings (got, lot) ---- */
+
+/* f in [0, 1] (clamped; NaN as 0): light yellow = good to dark red = bad,
+** as "#rrggbb". */
+FLIPLAB_INTERNAL void report_svg_colour(double f, char *buf, size_t len);
+/* 20 swatches from lo to hi, labelled, left edge at x0, top at y. */
+FLIPLAB_INTERNAL void report_svg_colour_legend(FILE *f, double x0, double y, double lo,
+                                               double hi);
+
+/* ---- directed flip graphs (svg_flipgraph.c, svg_siteflip.c) ---- */
+
+/* The XML declaration, the <svg> element of w x h px, the arrowhead marker
+** and the white background. */
+FLIPLAB_INTERNAL void report_svg_graph_open(FILE *f, double w, double h);
+
+/* The flip between the frames (side `box`) centred at a and b: an arrow
+** from a to b, or a dashed line when `either`, cut `pad` px outside both
+** frames; nothing when the frames leave no room. */
+FLIPLAB_INTERNAL void report_svg_flip(FILE *f, double box, double pad, double width, double ax,
+                                      double ay, double bx, double by, int either);
+
+/* A triangulation's frame and tags in a flip graph: sinks in a thick green
+** frame, sources in a dashed red one, the others thin grey; the name T<k>
+** below, the role above, "DT" in the lower right corner.  One style; the
+** two pictures differ only in sizes. */
+typedef enum report_svg_role {
+  REPORT_SVG_PLAIN, REPORT_SVG_SINK, REPORT_SVG_SOURCE
+} report_svg_role;
+typedef struct report_svg_node_style {
+  double box, rx;                  /* frame side, corner radius */
+  double sink_width, source_width; /* frame strokes */
+  const char *source_dash;         /* a source frame's dash pattern */
+  int name_size, name_bold;        /* the name T<k> ... */
+  double name_gap;                 /* ... this far below the frame's centre line + box/2 */
+  int role_size;                   /* the role label's font size */
+  double tag_gap;                  /* role above / DT inside the frame, px */
+} report_svg_node_style;
+FLIPLAB_INTERNAL void report_svg_node_frame(FILE *f, const report_svg_node_style *st, double cx,
+                                            double cy, report_svg_role role);
+FLIPLAB_INTERNAL void report_svg_node_tags(FILE *f, const report_svg_node_style *st, double cx,
+                                           double cy, int name, report_svg_role role, int dt);
+
+#endif
