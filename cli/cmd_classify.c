@@ -55,11 +55,13 @@ static void cli_classify_row(FILE *out, size_t id, const rule *r, const flipgrap
   char dec[6];
   for (int j = 0; j < 5; j++) dec[j] = letter[g->dec[j]];
   dec[5] = '\0';
-  fprintf(out, "%zu,", id);
-  report_csv_field(out, r->name);
-  fprintf(out, ",%s,%s,", dec, flipgraph_type_name(g->type));
-  for (int s = 0; s < g->nsinks && s < 2; s++) fprintf(out, s ? " %d" : "%d", g->sink[s]);
-  fprintf(out, ",%d\n", g->delaunay ? 1 : 0);
+  char num[24], sink[24] = "";
+  snprintf(num, sizeof num, "%zu", id);
+  if (g->nsinks >= 1) snprintf(sink, sizeof sink, "%d", g->sink[0]);
+  if (g->nsinks >= 2) snprintf(sink, sizeof sink, "%d %d", g->sink[0], g->sink[1]);
+  const char *field[6] = {num, r->name, dec, flipgraph_type_name(g->type), sink,
+                          g->delaunay ? "1" : "0"};
+  report_csv_row(out, field, 6);
 }
 
 typedef struct cli_classify_opts {
@@ -161,7 +163,8 @@ static int cli_classify_stream(const cli_classify_opts *o, FILE *in, FILE *out) 
       rewind(in);
     }
   }
-  fputs("id,rule,decisions,type,sink,dt\n", out);
+  static const char *const head[6] = {"id", "rule", "decisions", "type", "sink", "dt"};
+  report_csv_row(out, head, 6);
   cli_progress_start(&run.prog, "classify");
   int rc = report_pentagon_each(in, o->in, cli_classify_one, &run, err, sizeof err);
   cli_progress_finish(&run.prog);

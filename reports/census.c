@@ -54,11 +54,7 @@ static double report_census_mean_gap(const report_census_row *r) {
 }
 
 static int report_census_csv(FILE *f, const report_census_row *rows, int nrows) {
-  for (int i = 0; i < REPORT_CENSUS_NCOLS; i++) {
-    if (i) fputc(',', f);
-    report_csv_field(f, report_census_header[i]);
-  }
-  fputc('\n', f);
+  report_csv_row(f, report_census_header, REPORT_CENSUS_NCOLS);
   for (int r = 0; r < nrows; r++) {
     const report_census_row *w = &rows[r];
     const siteflip_counts *c = &w->c;
@@ -74,11 +70,7 @@ static int report_census_csv(FILE *f, const report_census_row *rows, int nrows) 
     if (!isnan(mg)) snprintf(num[13], 40, "%.17g", mg);
     const char *field[REPORT_CENSUS_NCOLS] = {w->measure, w->joint, w->rule, num[3], w->sampler};
     for (int k = 5; k < REPORT_CENSUS_NCOLS; k++) field[k] = num[k];
-    for (int k = 0; k < REPORT_CENSUS_NCOLS; k++) {
-      if (k) fputc(',', f);
-      report_csv_field(f, field[k]);
-    }
-    fputc('\n', f);
+    report_csv_row(f, field, REPORT_CENSUS_NCOLS);
   }
   return ferror(f) ? -1 : 0;
 }

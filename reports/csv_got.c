@@ -1,7 +1,7 @@
 /*
 ** csv_got.c: CSV for `fliplab got`: reading a polygon (the point file of
 ** report_points_read, then checked) and writing its GOT's triangles through
-** libcsv (report_csv_field).
+** libcsv (report_csv_row).
 **
 ** Every input error names its line: those of report_points_read, and what
 ** geom_simple_polygon_check rejects: a duplicate vertex (its line), two edges that cross or touch
@@ -45,11 +45,7 @@ int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *
 
 int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *map) {
   static const char *const head[4] = {"i", "j", "k", "badness"};
-  for (int q = 0; q < 4; q++) {
-    if (q) fputc(',', f);
-    report_csv_field(f, head[q]);
-  }
-  fputc('\n', f);
+  report_csv_row(f, head, 4);
   for (size_t q = 0; q < ntri; q++) {
     size_t v[3] = {(size_t)t[q].i, (size_t)t[q].k, (size_t)t[q].j};
     for (int a = 0; a < 3; a++)
@@ -57,15 +53,11 @@ int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *ma
     for (int a = 0; a < 2; a++)
       for (int b = 0; b < 2 - a; b++)
         if (v[b] > v[b + 1]) { size_t s = v[b]; v[b] = v[b + 1]; v[b + 1] = s; }
-    char buf[40];
-    for (int a = 0; a < 3; a++) {
-      snprintf(buf, sizeof buf, "%zu", v[a]);
-      report_csv_field(f, buf);
-      fputc(',', f);
-    }
-    snprintf(buf, sizeof buf, "%.17g", t[q].badness);
-    report_csv_field(f, buf);
-    fputc('\n', f);
+    char num[4][40];
+    const char *field[4] = {num[0], num[1], num[2], num[3]};
+    for (int a = 0; a < 3; a++) snprintf(num[a], sizeof num[a], "%zu", v[a]);
+    snprintf(num[3], sizeof num[3], "%.17g", t[q].badness);
+    report_csv_row(f, field, 4);
   }
   return ferror(f) ? -1 : 0;
 }

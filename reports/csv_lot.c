@@ -1,6 +1,6 @@
 /*
 ** csv_lot.c: CSV for `fliplab lot`: writing a triangulation's triangles
-** through libcsv (report_csv_field); the points are read by
+** through libcsv (report_csv_row); the points are read by
 ** report_points_read (csv_points.c).
 */
 #include <math.h>
@@ -10,23 +10,14 @@
 
 int report_lot_csv(FILE *f, const uint32_t *tri, size_t ntri, const double *badness) {
   static const char *const head[4] = {"i", "j", "k", "badness"};
-  for (int q = 0; q < 4; q++) {
-    if (q) fputc(',', f);
-    report_csv_field(f, head[q]);
-  }
-  fputc('\n', f);
-  char buf[40];
+  report_csv_row(f, head, 4);
+  char num[4][40];
+  const char *field[4] = {num[0], num[1], num[2], num[3]};
   for (size_t t = 0; t < ntri && !ferror(f); t++) {
-    for (int a = 0; a < 3; a++) {
-      snprintf(buf, sizeof buf, "%u", (unsigned)tri[3 * t + a]);
-      report_csv_field(f, buf);
-      fputc(',', f);
-    }
-    if (badness && !isnan(badness[t])) {
-      snprintf(buf, sizeof buf, "%.17g", badness[t]);
-      report_csv_field(f, buf);
-    }
-    fputc('\n', f);
+    for (int a = 0; a < 3; a++) snprintf(num[a], sizeof num[a], "%u", (unsigned)tri[3 * t + a]);
+    num[3][0] = '\0';   /* empty: no badness */
+    if (badness && !isnan(badness[t])) snprintf(num[3], sizeof num[3], "%.17g", badness[t]);
+    report_csv_row(f, field, 4);
   }
   return ferror(f) ? -1 : 0;
 }

@@ -60,42 +60,54 @@ int report_csv_write(FILE *f, const report_row *rows, int nrows) {
   return report_csv_write_run(f, rows, nrows, NULL);
 }
 
-int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const report_run *run) {
-  int ncols = run != NULL ? REPORT_CSV_NCOLS : 10;
-  for (int i = 0; i < ncols; i++) {
+int report_csv_row(FILE *f, const char *const *fields, int n) {
+  for (int i = 0; i < n; i++) {
     if (i > 0) fputc(',', f);
-    report_csv_field(f, report_csv_header[i]);
+    report_csv_field(f, fields[i]);
   }
-  if (run != NULL && run->sampler != NULL) fputs(",sampler", f);
   fputc('\n', f);
+  return ferror(f) ? -1 : 0;
+}
+
+/* tie_eps in the fewest digits that read back bit for bit, so merge
+** compares it exactly. */
+static void report_shortest(char *buf, size_t len, double x) {
+  for (int d = 1; d <= 17; d++) {
+    snprintf(buf, len, "%.*g", d, x);
+    if (strtod(buf, NULL) == x) break;
+  }
+}
+
+/* The fields of one counts row (what report_csv_header names); their count. */
+static int report_counts_fields(const report_row *row, const report_run *run, int nrows,
+                                char num[REPORT_CSV_NCOLS][32], const char **field) {
+  const flipgraph_counts *c = &row->c;
+  const uint64_t v[7] = {c->samples, c->type[0], c->type[1], c->type[2], c->type[3],
+                         c->type[4], c->dt};
+  field[0] = row->measure;
+  field[1] = row->joint;
+  field[2] = row->rule;
+  for (int k = 0; k < 7; k++) snprintf(num[3 + k], 32, "%llu", (unsigned long long)v[k]);
+  if (run == NULL) return 10;
+  const uint64_t w[6] = {run->seed, 0, run->first, run->end, run->total, (uint64_t)nrows};
+  for (int k = 0; k < 6; k++) snprintf(num[10 + k], 32, "%llu", (unsigned long long)w[k]);
+  report_shortest(num[11], 32, run->tie_eps);
+  return REPORT_CSV_NCOLS;
+}
+
+int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const report_run *run) {
+  const char *field[REPORT_CSV_NCOLS + 1];
+  char num[REPORT_CSV_NCOLS][32];
+  int ncols = run != NULL ? REPORT_CSV_NCOLS : 10;
+  for (int i = 0; i < ncols; i++) field[i] = report_csv_header[i];
+  int sampler = run != NULL && run->sampler != NULL;
+  if (sampler) field[ncols] = "sampler";
+  report_csv_row(f, field, ncols + sampler);
+  for (int i = 3; i < REPORT_CSV_NCOLS; i++) field[i] = num[i];
   for (int r = 0; r < nrows; r++) {
-    const flipgraph_counts *c = &rows[r].c;
-    report_csv_field(f, rows[r].measure);
-    fputc(',', f);
-    report_csv_field(f, rows[r].joint);
-    fputc(',', f);
-    report_csv_field(f, rows[r].rule);
-    fprintf(f, ",%llu", (unsigned long long)c->samples);
-    for (int t = 0; t < FLIPGRAPH_NTYPES; t++)
-      fprintf(f, ",%llu", (unsigned long long)c->type[t]);
-    fprintf(f, ",%llu", (unsigned long long)c->dt);
-    /* tie_eps in the fewest digits that read back bit for bit, so merge
-    ** compares it exactly. */
-    if (run != NULL) {
-      char eps[32];
-      for (int d = 1; d <= 17; d++) {
-        snprintf(eps, sizeof eps, "%.*g", d, run->tie_eps);
-        if (strtod(eps, NULL) == run->tie_eps) break;
-      }
-      fprintf(f, ",%llu,%s,%llu,%llu,%llu,%d", (unsigned long long)run->seed, eps,
-              (unsigned long long)run->first, (unsigned long long)run->end,
-              (unsigned long long)run->total, nrows);
-      if (run->sampler != NULL) {
-        fputc(',', f);
-        report_csv_field(f, run->sampler);
-      }
-    }
-    fputc('\n', f);
+    int n = report_counts_fields(&rows[r], run, nrows, num, field);
+    if (sampler) field[n++] = run->sampler;
+    report_csv_row(f, field, n);
   }
   return ferror(f) ? -1 : 0;
 }
@@ -103,20 +115,18 @@ int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const repor
 int report_pentagon_header(FILE *f) {
   static const char *const names[10] = {"x1", "y1", "x2", "y2", "x3",
                                         "y3", "x4", "y4", "x5", "y5"};
-  for (int i = 0; i < 10; i++) {
-    if (i > 0) fputc(',', f);
-    report_csv_field(f, names[i]);
-  }
-  fputc('\n', f);
-  return ferror(f) ? -1 : 0;
+  return report_csv_row(f, names, 10);
 }
 
 int report_pentagon_write(FILE *f, const geom_point v[5]) {
   /* %.17g round-trips every double exactly (17 significant digits). */
-  for (int i = 0; i < 5; i++)
-    fprintf(f, "%s%.17g,%.17g", i ? "," : "", v[i].x, v[i].y);
-  fputc('\n', f);
-  return ferror(f) ? -1 : 0;
+  char num[10][32];
+  const char *field[10];
+  for (int i = 0; i < 10; i++) {
+    snprintf(num[i], 32, "%.17g", i % 2 ? v[i / 2].y : v[i / 2].x);
+    field[i] = num[i];
+  }
+  return report_csv_row(f, field, 10);
 }
 
 /* ---------------------------------------------------------------- reading */

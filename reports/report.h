@@ -112,6 +112,10 @@ int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const repor
 /* Write one CSV field, quoted through libcsv only when it contains a comma,
 ** quote, CR, LF, or leading/trailing blanks (which a reader would trim). */
 int report_csv_field(FILE *f, const char *s);
+/* One CSV record: the n fields through report_csv_field, separated by
+** commas, ended by LF; every CSV writer of reports/ writes through it.
+** 0, or -1 once the stream has an error. */
+int report_csv_row(FILE *f, const char *const *fields, int n);
 
 /* Read a counts CSV written by report_csv_write.  Checks the header, the
 ** field counts, the numbers and their consistency (types sum to samples,
@@ -263,7 +267,7 @@ int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *
 
 /* Triangles as CSV: header "i,j,k,badness", one row per triangle, vertex
 ** indices ascending.  map[v] (may be NULL) renumbers vertices, e.g. back
-** to the input's order.  Fields go through report_csv_field (libcsv). */
+** to the input's order.  Rows go through report_csv_row (libcsv). */
 int report_got_csv(FILE *f, const got_triangle *t, size_t ntri, const size_t *map);
 
 typedef struct report_got_svg_opts {
