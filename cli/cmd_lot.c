@@ -222,11 +222,30 @@ static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *
   return 0;
 }
 
+/* LOT's total (key) against GOT's: equal when the keys are within the sum
+** of their certified error bounds (got_cert_err_of), i.e. floating point
+** cannot tell them apart; without a bound, within the rule's tie tolerance,
+** which the line says. */
+static void cli_lot_got_verdict(const rule *r, const got_result *res, double key) {
+  char lt[64], gt[64];
+  got_format_total(res, key, lt, sizeof lt);
+  got_format_total(res, res->key, gt, sizeof gt);
+  double rel = rule_gap(r, key, res->key), bound = res->cert_err + got_cert_err_of(res, key);
+  int certified = isfinite(bound);
+  int equal = key == res->key || (certified ? fabs(key - res->key) <= bound : rel <= rule_tie_eps(r));
+  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, ", lt, gt,
+         equal ? "equal" : "NOT equal", rel);
+  if (certified) printf("GOT computed to within rounding)\n");
+  else printf("%s the tie tolerance %g; no certified bound: %s)\n", equal ? "within" : "beyond",
+              rule_tie_eps(r), res->cert_why ? res->cert_why
+                                             : "no forward error bound for the LOT's total");
+}
+
 /* --compare GOT: convex position only. */
 static int cli_lot_compare_got(const geom_point *p, const lot *L, const rule *r,
                                const double *bad, size_t ntri, const cli_lot_args *a) {
   const lot_stats *st = lot_get_stats(L);
-  if (r->kind != RULE_TRIANGLE)
+  if (!rule_is_triangle(r))
     return cli_error(CMD, "--compare GOT needs a triangle-based rule (MEASURE_JOINT)");
   size_t h = st->hull;
   uint32_t *hull = malloc(h * sizeof *hull);
@@ -248,26 +267,16 @@ static int cli_lot_compare_got(const geom_point *p, const lot *L, const rule *r,
                    "distinct points are hull corners)", h, st->distinct);
     goto done;
   }
-  if (got_check_memory(h, r->measure, err, sizeof err) != 0) {
+  if (got_check_memory(h, rule_measure(r), err, sizeof err) != 0) {
     rc = cli_error(CMD, "--compare GOT: %s", err);
     goto done;
   }
-  got_options go = {(int)a->threads, a->tie_eps};
+  got_options go = {(int)a->threads, rule_tie_eps(r)};
   if (got_solve(poly, h, r, &go, &res, err, sizeof err) != 0) {
     rc = cli_error(CMD, "%s", err);
     goto done;
   }
-  int s = measure_get(r->measure)->sign;
-  double key = joint_key_identity(r->joint);
-  for (size_t t = 0; t < ntri; t++)
-    key = joint_key_combine(joint_get(r->joint)->keyop, key, joint_key(r->joint, s, bad[t]));
-  char lt[64], gt[64];
-  got_format_total(&res, key, lt, sizeof lt);
-  got_format_total(&res, res.key, gt, sizeof gt);
-  double rel = fabs(key - res.key) / fmax(fmax(fabs(key), fabs(res.key)), 1e-300);
-  int equal = key == res.key || rel <= 1e-9;
-  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, GOT computed "
-         "to within rounding)\n", lt, gt, equal ? "equal" : "NOT equal", key == res.key ? 0 : rel);
+  cli_lot_got_verdict(r, &res, rule_total_key(r, bad, ntri));
 done:
   got_result_free(&res);
   free(hull);

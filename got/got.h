@@ -82,6 +82,9 @@ typedef struct got_result {
   double cert_err, cert_err2, cert_gap, cert_bound;
   int cert_unique;
   const char *cert_why;
+  /* The error model behind them, for keys made from measure_eval values
+  ** (got_cert_err_of); NaN when none is known. */
+  double cert_rho, cert_alpha;
   double seconds;       /* wall time: validation, diagonals, DP, backtracking */
   int threads;          /* threads used */
 } got_result;
@@ -100,6 +103,15 @@ int got_check_memory(size_t n, int measure, char *err, size_t errlen);
 int got_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
               got_result *out, char *err, size_t errlen);
 void got_result_free(got_result *res);
+
+/* The certified bound E(K) on |exact key - K| for the floating key K of any
+** triangulation of the solved polygon whose n - 2 badness values come
+** from measure_eval and are keyed and combined by the rule (rule_key,
+** rule_key_add, in any order), such as a LOT's; INFINITY when no bound is
+** known (res->cert_why).  A triangulation whose key K satisfies
+** |K - res->key| <= res->cert_err + got_cert_err_of(res, K) cannot be told
+** from the optimum in floating point. */
+double got_cert_err_of(const got_result *res, double key);
 
 /* The total of a key, readable: a plain number, or "exp(K)" / "-exp(-K)"
 ** when the l_0 product under/overflows a double. */

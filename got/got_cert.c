@@ -188,9 +188,24 @@ static double got_cert_bound(double K, size_t m, joint_keyop op, double rho, dou
   return isfinite(E) ? E * (1 + 0x1p-40) : INFINITY;
 }
 
+/* The key shape of values keyed one by one (joint_key of measure_eval),
+** whatever the DP's kernels hand out. */
+static got_keyfn got_keyfn_plain(got_keyfn keyfn) {
+  return keyfn == GOT_KEY_FROM_SQ_IDENT ? GOT_KEY_SQ
+       : keyfn == GOT_KEY_FROM_SQ_HALFLOG ? GOT_KEY_LOG : keyfn;
+}
+
+double got_cert_err_of(const got_result *res, double key) {
+  if (isnan(res->cert_rho) || isnan(res->cert_alpha) || !isfinite(key) || res->n < 3)
+    return INFINITY;
+  return got_cert_bound(key, res->n - 2, joint_get(res->joint)->keyop, res->cert_rho,
+                        res->cert_alpha);
+}
+
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op) {
   double wx, wy, rho = 0, alpha = 0;
+  res->cert_rho = res->cert_alpha = NAN;
   res->cert_err = res->cert_err2 = INFINITY;
   res->cert_unique = 0;
   res->cert_why = NULL;
@@ -201,6 +216,12 @@ void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn
     res->cert_why = "no forward error bound for a user-defined measure";
   else if (got_key_model(res->measure, keyfn, wx, wy, &rho, &alpha) != 0)
     res->cert_why = "no forward error bound for this measure and joint (docs/got.md)";
+  double prho, palpha;
+  if (res->cert_why == NULL &&
+      got_key_model(res->measure, got_keyfn_plain(keyfn), wx, wy, &prho, &palpha) == 0) {
+    res->cert_rho = prho;
+    res->cert_alpha = palpha;
+  }
   if (res->cert_why == NULL && isfinite(res->key)) {
     res->cert_err = got_cert_bound(res->key, n - 2, op, rho, alpha);
     if (res->has_runner_up && isfinite(res->key2))

@@ -128,6 +128,21 @@ static void test_compare_got(void **state) {
   assert_int_equal(tlc_run("lot --rule -r_1 --random 40 --sampler circle --compare GOT"), 0);
   assert_non_null(strstr(tlc_out, "compare GOT: LOT total "));
   assert_non_null(strstr(tlc_out, ": equal ("));
+  /* Equal by the certified bounds of got (-alpha: a forward error model),
+  ** by the rule's tolerance where there is none (R), and a worse LOT (P_1)
+  ** is told apart by both. */
+  assert_int_equal(tlc_run("lot --rule -alpha_inf --random 60 --sampler circle --compare GOT"), 0);
+  assert_non_null(strstr(tlc_out, ": equal (relative difference "));
+  assert_non_null(strstr(tlc_out, "GOT computed to within rounding)"));
+  assert_int_equal(tlc_run("lot --rule -r_1 --random 400 --sampler circle --compare GOT"), 0);
+  assert_non_null(strstr(tlc_out, ": equal ("));
+  assert_non_null(strstr(tlc_out, "within the tie tolerance 1e-12; no certified bound: "));
+  assert_int_equal(tlc_run("lot --rule P_1 --random 40 --sampler circle --compare GOT"), 0);
+  assert_non_null(strstr(tlc_out, ": NOT equal (relative difference 0.0166, GOT computed"));
+  /* The gap is the relative difference of the totals, not of their keys:
+  ** for l_2 the keys are sums of squares, about twice as far apart. */
+  assert_int_equal(tlc_run("lot --rule P_2 --random 40 --sampler circle --compare GOT"), 0);
+  assert_non_null(strstr(tlc_out, ": NOT equal (relative difference 0.013, "));
   assert_int_not_equal(tlc_run("lot --rule P_1 --random 40 --compare GOT"), 0);
   assert_true(testutil_one_line(tlc_err));
   assert_non_null(strstr(tlc_err, "convex position"));
