@@ -16,7 +16,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "report.h"
+#include "report_internal.h"
 #include "measure.h"
 #include "joint.h"
 

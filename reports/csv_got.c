@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "report.h"
+#include "report_internal.h"
 
 int report_got_read_polygon(const char *path, geom_point **out, size_t *n, int *reversed,
                             char *err, size_t errlen) {

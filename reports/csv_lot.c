@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "report.h"
+#include "report_internal.h"
 
 int report_lot_csv(FILE *f, const uint32_t *tri, size_t ntri, const double *badness) {
   static const char *const head[4] = {"i", "j", "k", "badness"};

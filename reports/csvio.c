@@ -17,7 +17,7 @@
 #include "fliplab_config.h"
 #include "joint.h"
 #include "measure.h"
-#include "report.h"
+#include "report_internal.h"
 
 /* Bounds on what a reader accepts (a crafted file must not take all memory
 ** or time): fields per record, bytes per field, rules per counts file (every

@@ -101,19 +101,12 @@ uint64_t report_type_iv(const report_row *rows, int nrows);
 ** on every row:  seed,tie_eps,first,end,total,rules
 ** = sampler seed, tie tolerance (%.17g), the sample range [first, end) the
 ** counts cover out of the run's total samples, and the file's row count
-** (a file cut at a row boundary is caught by it). */
-#define REPORT_CSV_NCOLS 16
-extern const char *const report_csv_header[REPORT_CSV_NCOLS];
-
-
+** (a file cut at a row boundary is caught by it).  report_write writes the
+** run columns when m->run is set. */
 int report_csv_write(FILE *f, const report_row *rows, int nrows);   /* the ten columns */
-int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const report_run *run);
-
-/* Write one CSV field, quoted through libcsv only when it contains a comma,
-** quote, CR, LF, or leading/trailing blanks (which a reader would trim). */
-int report_csv_field(FILE *f, const char *s);
-/* One CSV record: the n fields through report_csv_field, separated by
-** commas, ended by LF; every CSV writer of reports/ writes through it.
+/* One CSV record: the n fields, each quoted through libcsv only when it
+** needs it (a comma, quote, CR, LF, or leading/trailing blanks), separated
+** by commas, ended by LF; every CSV writer of reports/ writes through it.
 ** 0, or -1 once the stream has an error. */
 int report_csv_row(FILE *f, const char *const *fields, int n);
 
@@ -225,11 +218,6 @@ void report_census_row_from_rule(report_census_row *row, const rule *r, int site
 ** samples with a sink of the worst sink's relative gap to the GOT (empty
 ** for rules that are not triangle-based, and both empty with no sample to
 ** average).  Both read back into exact integer sums (docs/sitesets.md). */
-#define REPORT_CENSUS_NCOLS 14
-/* The most rows a census CSV may hold: every measure with every joint, and
-** every quadrilateral rule. */
-#define REPORT_CENSUS_MAX_ROWS (MEASURE_MAX * JOINT_COUNT + RULE_QUAD_MAX)
-extern const char *const report_census_header[REPORT_CENSUS_NCOLS];
 int report_census_write(FILE *f, report_format fmt, const report_census_meta *m,
                         const report_census_row *rows, int nrows);
 

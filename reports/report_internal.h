@@ -12,6 +12,25 @@
 #include "fliplab_config.h"
 #include "report.h"
 
+/* ---- CSV (reports/csvio.c, reports/census.c) ---- */
+
+/* Write one CSV field, quoted through libcsv only when it contains a comma,
+** quote, CR, LF, or leading/trailing blanks (which a reader would trim). */
+FLIPLAB_INTERNAL int report_csv_field(FILE *f, const char *s);
+
+/* The columns of a counts CSV (report.h) and the writer of the ten plus
+** the run columns (report_write's CSV with m->run). */
+#define REPORT_CSV_NCOLS 16
+FLIPLAB_INTERNAL const char *const report_csv_header[REPORT_CSV_NCOLS];
+FLIPLAB_INTERNAL int report_csv_write_run(FILE *f, const report_row *rows, int nrows,
+                                          const report_run *run);
+
+/* The columns of a census CSV (report.h), and the most rows one may hold:
+** every measure with every joint, and every quadrilateral rule. */
+#define REPORT_CENSUS_NCOLS 14
+#define REPORT_CENSUS_MAX_ROWS (MEASURE_MAX * JOINT_COUNT + RULE_QUAD_MAX)
+FLIPLAB_INTERNAL const char *const report_census_header[REPORT_CENSUS_NCOLS];
+
 /* ---- text (reports/svg.c) ---- */
 
 /* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute

@@ -9,7 +9,7 @@
 #include <string.h>
 #include "measure.h"
 #include "joint.h"
-#include "report.h"
+#include "report_internal.h"
 
 
 /* The four rows of a joint block: label and which count they show. */

@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "report.h"
+#include "report_internal.h"
 #include "testutil.h"
 
 /* The whole of a stream as a NUL-terminated string (caller frees). */
