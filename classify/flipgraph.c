@@ -162,9 +162,9 @@ struct flipgraph_plan {
   int nslots, slot_measure[MEASURE_MAX];
   int eval_all;                      /* use measure_eval_all (see plan_new) */
   double slot_sign[QUADVEC_PAD(MEASURE_MAX)];   /* -1.0 for measures <= 0, else 1.0 */
-  int ngroup[JOINT_COUNT];           /* triangle rules grouped by joint */
-  int joint_used[JOINT_COUNT];       /* ngroup[j] > 0 */
-  flipgraph_item *group[JOINT_COUNT];
+  int ngroup[JOINT_CAPACITY];           /* triangle rules grouped by joint */
+  int joint_used[JOINT_CAPACITY];       /* ngroup[j] > 0 */
+  flipgraph_item *group[JOINT_CAPACITY];
   int ndt, *dt;                      /* DT rules */
   int nquad, *quad;                  /* other quadrilateral rules */
   flipgraph graph[FLIPGRAPH_NCODES]; /* code -> graph (delaunay unset) */
@@ -175,7 +175,7 @@ struct flipgraph_plan {
 void flipgraph_plan_free(flipgraph_plan *pl) {
   if (pl == NULL) return;
   free(pl->rules);
-  for (int j = 0; j < JOINT_COUNT; j++) free(pl->group[j]);
+  for (int j = 0; j < JOINT_CAPACITY; j++) free(pl->group[j]);
   free(pl->dt);
   free(pl->quad);
   free(pl);
@@ -192,9 +192,9 @@ flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps
   pl->rules = malloc(n * sizeof *pl->rules);
   pl->dt = malloc(n * sizeof *pl->dt);
   pl->quad = malloc(n * sizeof *pl->quad);
-  for (int j = 0; j < JOINT_COUNT; j++) pl->group[j] = malloc(n * sizeof(flipgraph_item));
+  for (int j = 0; j < JOINT_CAPACITY; j++) pl->group[j] = malloc(n * sizeof(flipgraph_item));
   int ok = pl->rules && pl->dt && pl->quad;
-  for (int j = 0; j < JOINT_COUNT; j++) ok = ok && pl->group[j];
+  for (int j = 0; j < JOINT_CAPACITY; j++) ok = ok && pl->group[j];
   if (!ok) goto fail;
   memcpy(pl->rules, rules, (size_t)nrules * sizeof *rules);
   for (int i = 0; i < nrules; i++) {
@@ -206,7 +206,7 @@ flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps
       continue;
     }
     if (r->kind != RULE_TRIANGLE || r->measure < 0 || r->measure >= measure_count()
-        || (unsigned)r->joint >= JOINT_COUNT)
+        || joint_get(r->joint) == NULL)
       goto fail;
     int slot = 0;
     while (slot < pl->nslots && pl->slot_measure[slot] != r->measure) slot++;
@@ -255,8 +255,8 @@ typedef struct flipgraph_work {
   double mag[10][FLIPGRAPH_SLOTS];   /* scratch of quadvec_run */
   double h[10][FLIPGRAPH_SLOTS];
   long long flags[FLIPGRAPH_SLOTS];
-  unsigned long long code[JOINT_COUNT][FLIPGRAPH_SLOTS];   /* decision codes */
-  long long tie[JOINT_COUNT][FLIPGRAPH_SLOTS];
+  unsigned long long code[JOINT_CAPACITY][FLIPGRAPH_SLOTS];   /* decision codes */
+  long long tie[JOINT_CAPACITY][FLIPGRAPH_SLOTS];
 } flipgraph_work;
 
 /* Padding lanes hold harmless values (never read back). */
@@ -300,7 +300,7 @@ static void flipgraph_plan_codes(const flipgraph_plan *pl, const flipgraph_penta
     }
   }
   flipgraph_all_codes(pl, w);
-  for (int j = 0; j < JOINT_COUNT; j++)
+  for (int j = 0; j < JOINT_CAPACITY; j++)
     for (int k = 0; k < pl->ngroup[j]; k++)
       codes[pl->group[j][k].rule] = (unsigned char)w->code[j][pl->group[j][k].slot];
   for (int k = 0; k < pl->ndt; k++) codes[pl->dt[k]] = (unsigned char)dt_code;

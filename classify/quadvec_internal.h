@@ -46,12 +46,12 @@ typedef struct quadvec_batch {
   const unsigned long long *bd_weight, *tie_weight;   /* per quadrilateral */
   const double *sign;               /* per slot: -1.0 for measures <= 0, else 1.0 */
   double tie_eps;
-  const int *joint_used;            /* [JOINT_COUNT]: 0 skips the joint */
+  const int *joint_used;            /* [JOINT_CAPACITY]: 0 skips the joint */
   const double *val;                /* [ntris][stride]: the measure of slot s on row t */
   double *mag, *h;                  /* scratch [ntris][stride] */
   long long *flags;                 /* scratch [stride] */
-  unsigned long long *code;         /* out [JOINT_COUNT][stride] */
-  long long *tie;                   /* out [JOINT_COUNT][stride] */
+  unsigned long long *code;         /* out [JOINT_CAPACITY][stride] */
+  long long *tie;                   /* out [JOINT_CAPACITY][stride] */
 } quadvec_batch;
 
 /* Flags of a slot (rewrite 5 below). */
@@ -76,8 +76,8 @@ void quadvec_use_scalar(int on);
 #define QUADVEC_VECTOR 0
 #endif
 
-/* h of rewrite 2 for the harmonic and l_2 joints. */
-#define QUADVEC_H(j, x) ((j) == JOINT_HARMONIC ? 1.0 / (x) : (x) * (x))
+/* h of rewrite 2 for the harmonic and l_2 forms (the joint table's vec). */
+#define QUADVEC_H(v, x) ((v) == JOINT_VEC_HARMONIC ? 1.0 / (x) : (x) * (x))
 
 /* ---- why the engine decides as rule_eval_tris does ----------------------
 **
@@ -127,6 +127,9 @@ void quadvec_use_scalar(int on);
 **    with a magnitude +inf (rewrite 2), is decided again by joint_compare,
 **    one quadrilateral at a time (quadvec_fix_lanes).
 **
+** A joint of form JOINT_VEC_NONE (the table's power means) has no fast
+** path: every slot of it is decided as in rewrite 5, by joint_compare.
+**
 ** Values sit triangle-major (val[t][slot]) so that the loops over slots
 ** (all measures of one joint) run on contiguous memory.
 */
@@ -145,18 +148,19 @@ typedef unsigned long long quadvec_vu __attribute__((vector_size(8 * QUADVEC_LAN
   ((quadvec_vd)(((m) & (quadvec_vi)(a)) | (~(m) & (quadvec_vi)(b))))
 #define QUADVEC_VABS(x) ((quadvec_vd)((quadvec_vi)(x) & 0x7fffffffffffffffLL))
 
-/* *out = the joint on magnitudes of the lanes at pa and pb (after h). */
-QUADVEC_INLINE void quadvec_vc(joint_id j, const double *pa, const double *pb,
+/* *out = the joint of form v on magnitudes of the lanes at pa and pb
+** (after h). */
+QUADVEC_INLINE void quadvec_vc(joint_vec v, const double *pa, const double *pb,
                                quadvec_vd *out) {
   quadvec_vd a, b, r;
   memcpy(&a, pa, sizeof a);
   memcpy(&b, pb, sizeof b);
-  switch (j) {
-    case JOINT_MIN: r = QUADVEC_VSEL(a < b, a, b); break;
-    case JOINT_MAX: r = QUADVEC_VSEL(a > b, a, b); break;
-    case JOINT_HARMONIC: r = 1.0 / (a + b); break;
-    case JOINT_PRODUCT: r = a * b; break;
-    case JOINT_RSS: {
+  switch (v) {
+    case JOINT_VEC_MIN: r = QUADVEC_VSEL(a < b, a, b); break;
+    case JOINT_VEC_MAX: r = QUADVEC_VSEL(a > b, a, b); break;
+    case JOINT_VEC_HARMONIC: r = 1.0 / (a + b); break;
+    case JOINT_VEC_PRODUCT: r = a * b; break;
+    case JOINT_VEC_RSS: {
       /* sqrt() must keep errno semantics, which stops GCC vectorising it;
       ** SSE2's sqrtpd is the same correctly rounded IEEE square root. */
       double x[QUADVEC_LANES];
@@ -171,7 +175,10 @@ QUADVEC_INLINE void quadvec_vc(joint_id j, const double *pa, const double *pb,
       memcpy(&r, x, sizeof r);
       break;
     }
-    default: r = a + b; break;
+    case JOINT_VEC_SUM:
+    case JOINT_VEC_NONE:   /* never called: quadvec_joints_vector skips it */
+      r = a + b;
+      break;
   }
   *out = r;
 }
@@ -196,7 +203,7 @@ QUADVEC_INLINE void quadvec_magnitudes_vector(const quadvec_batch *b) {
 
 /* Rewrite 4 on one quadrilateral: 1 (and *tie, *ac set) when every lane's
 ** sums decide, 0 to take the exact path. */
-QUADVEC_INLINE int quadvec_filter(joint_id j, const double *src, const ptrdiff_t *o, double k,
+QUADVEC_INLINE int quadvec_filter(joint_vec v, const double *src, const ptrdiff_t *o, double k,
                                   quadvec_vi *tie, quadvec_vi *lt) {
   quadvec_vd a0, a1, b0, b1;
   memcpy(&a0, &src[o[0]], sizeof a0);
@@ -221,16 +228,16 @@ QUADVEC_INLINE int quadvec_filter(joint_id j, const double *src, const ptrdiff_t
 #endif
   /* f_AC < f_BD iff s_AC > s_BD (harmonic: 1/s decreases) or s_AC < s_BD (l_2). */
   *tie = eq;
-  *lt = j == JOINT_HARMONIC ? sa > sb : sa < sb;
+  *lt = v == JOINT_VEC_HARMONIC ? sa > sb : sa < sb;
   return 1;
 }
 
-/* Codes of every slot under joint j; see the comment at the top for why
-** each step is joint_compare's arithmetic. */
-QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
+/* Codes of every slot under joint j, of form v; see the comment at the top
+** for why each step is joint_compare's arithmetic. */
+QUADVEC_INLINE void quadvec_joint_vector(joint_vec v, int j, const quadvec_batch *b) {
   const int nv = QUADVEC_PAD(b->nslots), st = b->stride;
-  const int finite_p = j != JOINT_MIN && j != JOINT_MAX;
-  const int hj = j == JOINT_HARMONIC || j == JOINT_RSS;
+  const int finite_p = v != JOINT_VEC_MIN && v != JOINT_VEC_MAX;
+  const int hj = v == JOINT_VEC_HARMONIC || v == JOINT_VEC_RSS;
   const int filter = hj && b->tie_eps >= 0 && b->tie_eps <= 0.125;
   const double eps = b->tie_eps, k = 4 * b->tie_eps + 0x1p-45;
   /* The per-triangle inputs: raw values for min and max, magnitudes for
@@ -238,7 +245,7 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
   const double *src = finite_p ? b->mag : b->val;
   if (hj) {
     for (int t = 0; t < b->ntris; t++)
-      for (int s = 0; s < nv; s++) b->h[t * st + s] = QUADVEC_H(j, b->mag[t * st + s]);
+      for (int s = 0; s < nv; s++) b->h[t * st + s] = QUADVEC_H(v, b->mag[t * st + s]);
     src = b->h;
   }
   for (int s = 0; s < nv; s += QUADVEC_LANES) {
@@ -252,10 +259,10 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
     for (int q = 0; q < b->nquads; q++) {
       const ptrdiff_t *o = b->qoff[q];
       quadvec_vi tie, lt;
-      if (!(filter && quadvec_filter(j, src + s, o, k, &tie, &lt))) {
+      if (!(filter && quadvec_filter(v, src + s, o, k, &tie, &lt))) {
         quadvec_vd fa, fb;
-        quadvec_vc(j, &src[s + o[0]], &src[s + o[1]], &fa);
-        quadvec_vc(j, &src[s + o[2]], &src[s + o[3]], &fb);
+        quadvec_vc(v, &src[s + o[0]], &src[s + o[1]], &fa);
+        quadvec_vc(v, &src[s + o[2]], &src[s + o[3]], &fb);
         quadvec_vd aa = QUADVEC_VABS(fa), ab = QUADVEC_VABS(fb);
         quadvec_vd big = QUADVEC_VSEL(aa > ab, aa, ab);
         /* big != inf is |fa| != inf && |fb| != inf on lanes without NaN
@@ -279,15 +286,17 @@ QUADVEC_INLINE void quadvec_joint_vector(joint_id j, const quadvec_batch *b) {
   }
 }
 
-/* One specialised copy of the loops per joint. */
-QUADVEC_INLINE void quadvec_joints_vector(joint_id j, const quadvec_batch *b) {
-  switch (j) {
-    case JOINT_MIN: quadvec_joint_vector(JOINT_MIN, b); break;
-    case JOINT_HARMONIC: quadvec_joint_vector(JOINT_HARMONIC, b); break;
-    case JOINT_PRODUCT: quadvec_joint_vector(JOINT_PRODUCT, b); break;
-    case JOINT_SUM: quadvec_joint_vector(JOINT_SUM, b); break;
-    case JOINT_RSS: quadvec_joint_vector(JOINT_RSS, b); break;
-    default: quadvec_joint_vector(JOINT_MAX, b); break;
+/* One specialised copy of the loops per form of the joint table; a joint
+** without one is left to quadvec_fix_lanes. */
+QUADVEC_INLINE void quadvec_joints_vector(int j, const quadvec_batch *b) {
+  switch (joint_get((joint_id)j)->vec) {
+    case JOINT_VEC_MIN: quadvec_joint_vector(JOINT_VEC_MIN, j, b); break;
+    case JOINT_VEC_HARMONIC: quadvec_joint_vector(JOINT_VEC_HARMONIC, j, b); break;
+    case JOINT_VEC_PRODUCT: quadvec_joint_vector(JOINT_VEC_PRODUCT, j, b); break;
+    case JOINT_VEC_SUM: quadvec_joint_vector(JOINT_VEC_SUM, j, b); break;
+    case JOINT_VEC_RSS: quadvec_joint_vector(JOINT_VEC_RSS, j, b); break;
+    case JOINT_VEC_MAX: quadvec_joint_vector(JOINT_VEC_MAX, j, b); break;
+    case JOINT_VEC_NONE: break;
   }
 }
 
@@ -304,8 +313,8 @@ QUADVEC_INLINE void quadvec_run(const quadvec_batch *b) {
     return;
   }
   quadvec_magnitudes_vector(&c);
-  for (int j = 0; j < JOINT_COUNT; j++)
-    if (c.joint_used[j]) quadvec_joints_vector((joint_id)j, &c);
+  for (int j = 0, nj = joint_count(); j < nj; j++)
+    if (c.joint_used[j]) quadvec_joints_vector(j, &c);
   quadvec_fix_lanes(b);
 }
 #else

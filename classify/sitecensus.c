@@ -74,11 +74,11 @@ typedef struct siteflip_cplan {
   int slot_measure[MEASURE_MAX];      /* in increasing order */
   int nruns, run_slot[MEASURE_MAX], run_len[MEASURE_MAX];   /* slots of consecutive measures */
   double slot_sign[SITEFLIP_SLOTS];   /* -1.0 for measures <= 0, else 1.0 (padding too) */
-  int joint_used[JOINT_COUNT];
+  int joint_used[JOINT_CAPACITY];
   siteflip_crule *cr;
   double eps;
-  int nentries;                       /* JOINT_COUNT * nv */
-  int entry_rule[JOINT_COUNT * SITEFLIP_SLOTS];   /* first rule of each entry, -1 */
+  int nentries;                       /* joint_count() * nv */
+  int entry_rule[JOINT_CAPACITY * SITEFLIP_SLOTS];   /* first rule of each entry, -1 */
   int first_quad;                     /* first quadrilateral rule, -1 */
 } siteflip_cplan;
 
@@ -91,19 +91,19 @@ typedef struct siteflip_cwork {
   double *val, *mag, *h;     /* values, magnitudes, scratch: [triangle][nv] */
   size_t valcap, magcap, hcap;
   long long flags[SITEFLIP_SLOTS];
-  unsigned long long bits[JOINT_COUNT * SITEFLIP_SLOTS];  /* [joint][nv]: BD decisions by quadrilateral */
-  long long tie[JOINT_COUNT * SITEFLIP_SLOTS];            /* [joint][nv]: non-zero: some tie */
+  unsigned long long bits[JOINT_CAPACITY * SITEFLIP_SLOTS];  /* [joint][nv]: BD decisions by quadrilateral */
+  long long tie[JOINT_CAPACITY * SITEFLIP_SLOTS];            /* [joint][nv]: non-zero: some tie */
   ptrdiff_t qoff[QUADVEC_MAX_QUADS][4];   /* quadrilaterals' triangle rows, times nv */
   rule_choice *dec, *dtdec;          /* one rule's decisions; DT's */
   size_t deccap, dtcap;
   uint64_t *qmask, *want;
   /* Packed graphs (siteflip_count_entries), by entry of bits: sink
   ** masks, and the running counts of siteflip_flush. */
-  uint64_t emask[JOINT_COUNT * SITEFLIP_SLOTS];
-  uint64_t etie[JOINT_COUNT * SITEFLIP_SLOTS], eone[JOINT_COUNT * SITEFLIP_SLOTS];
-  uint64_t edt[JOINT_COUNT * SITEFLIP_SLOTS];
-  uint64_t eother[JOINT_COUNT * SITEFLIP_SLOTS];   /* 1: no sink or several, no tie */
-  int emulti[JOINT_COUNT * SITEFLIP_SLOTS + 1];
+  uint64_t emask[JOINT_CAPACITY * SITEFLIP_SLOTS];
+  uint64_t etie[JOINT_CAPACITY * SITEFLIP_SLOTS], eone[JOINT_CAPACITY * SITEFLIP_SLOTS];
+  uint64_t edt[JOINT_CAPACITY * SITEFLIP_SLOTS];
+  uint64_t eother[JOINT_CAPACITY * SITEFLIP_SLOTS];   /* 1: no sink or several, no tie */
+  int emulti[JOINT_CAPACITY * SITEFLIP_SLOTS + 1];
   unsigned char *out;
   double *key;
   int *sinks;
@@ -153,7 +153,7 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
       pl->has_dt |= c->dt;
       continue;
     }
-    if (r->measure < 0 || r->measure >= measure_count() || (unsigned)r->joint >= JOINT_COUNT)
+    if (r->measure < 0 || r->measure >= measure_count() || joint_get(r->joint) == NULL)
       return -1;
     pl->joint_used[r->joint] = 1;
     c->joint = r->joint;
@@ -163,7 +163,7 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
   }
   siteflip_cplan_slots(pl);
   pl->nv = QUADVEC_PAD(pl->nslots);
-  pl->nentries = JOINT_COUNT * pl->nv;
+  pl->nentries = joint_count() * pl->nv;
   for (int e = 0; e < pl->nentries; e++) pl->entry_rule[e] = -1;
   pl->first_quad = -1;
   for (int i = nrules - 1; i >= 0; i--) {   /* chains in rule order */
@@ -412,11 +412,11 @@ static int siteflip_ctz(uint64_t m) {   /* m != 0 */
 }
 
 /* The least and greatest total in key space over the nsinks sinks (each
-** siteflip_node_key's arithmetic, with the plan's values), for joint j:
-** called with a constant j, so each joint gets its own loop with the key
-** inline.  Plain comparisons pick the extremes: a NaN total is skipped as
-** fmin and fmax would skip it. */
-static inline void siteflip_sink_range(joint_id j, const siteflip_cwork *w,
+** siteflip_node_key's arithmetic, with the plan's values), for a joint of
+** key shape sh and exponent p: called with a constant sh, so each shape
+** gets its own loop with the key inline.  Plain comparisons pick the
+** extremes: a NaN total is skipped as fmin and fmax would skip it. */
+static inline void siteflip_sink_range(joint_shape sh, double p, const siteflip_cwork *w,
                                        const siteflip_graph *g, const double *v, int nv,
                                        const siteflip_crule *c, int nsinks, double *lo,
                                        double *hi) {
@@ -427,7 +427,7 @@ static inline void siteflip_sink_range(joint_id j, const siteflip_cwork *w,
     const int *t = g->node_tri + (size_t)w->sinks[s] * (size_t)per;
     double k = c->key0;
     if (op == JOINT_KEY_ADD)
-      for (int f = 0; f < per; f++) k += joint_key_inline(j, ms, v[t[f] * nv]);
+      for (int f = 0; f < per; f++) k += joint_key_shape(sh, p, ms, v[t[f] * nv]);
     else
       for (int f = 0; f < per; f++) k = joint_key_combine(op, k, v[t[f] * nv]);
     best = k < best ? k : best;
@@ -451,12 +451,25 @@ static uint64_t siteflip_gap_units(const siteflip_cwork *w, const siteflip_graph
                                    const siteflip_crule *c, int nsinks) {
   if (nsinks == 1) return 0;
   const double *v = val + c->slot;
-  double best, worst;
-  switch (c->joint) {
-    case JOINT_HARMONIC: siteflip_sink_range(JOINT_HARMONIC, w, g, v, nv, c, nsinks, &best, &worst); break;
-    case JOINT_PRODUCT: siteflip_sink_range(JOINT_PRODUCT, w, g, v, nv, c, nsinks, &best, &worst); break;
-    case JOINT_RSS: siteflip_sink_range(JOINT_RSS, w, g, v, nv, c, nsinks, &best, &worst); break;
-    default: siteflip_sink_range(JOINT_SUM, w, g, v, nv, c, nsinks, &best, &worst); break;
+  double best = 0, worst = 0;
+  const joint *J = joint_get(c->joint);
+  const double p = J->p;
+  switch (J->key) {
+    case JOINT_SHAPE_SAME:
+      siteflip_sink_range(JOINT_SHAPE_SAME, p, w, g, v, nv, c, nsinks, &best, &worst);
+      break;
+    case JOINT_SHAPE_NEGRECIP:
+      siteflip_sink_range(JOINT_SHAPE_NEGRECIP, p, w, g, v, nv, c, nsinks, &best, &worst);
+      break;
+    case JOINT_SHAPE_LOG:
+      siteflip_sink_range(JOINT_SHAPE_LOG, p, w, g, v, nv, c, nsinks, &best, &worst);
+      break;
+    case JOINT_SHAPE_SQUARE:
+      siteflip_sink_range(JOINT_SHAPE_SQUARE, p, w, g, v, nv, c, nsinks, &best, &worst);
+      break;
+    case JOINT_SHAPE_POWER:
+      siteflip_sink_range(JOINT_SHAPE_POWER, p, w, g, v, nv, c, nsinks, &best, &worst);
+      break;
   }
   double gap = rule_gap(r, best, worst);
   if (!(gap > 0)) return 0;

@@ -171,7 +171,8 @@ static void cli_got_runner_up(const got_result *res) {
   if (!res->unique)
     printf("runner-up: tie (relative gap %.3g <= tie-eps %.3g): the optimum is NOT unique\n",
            res->rel_gap, res->tie_eps);
-  else if (res->joint == JOINT_PRODUCT && !(fabs(res->gap) > 0 && isfinite(res->gap)))
+  else if (joint_get(res->joint)->key == JOINT_SHAPE_LOG &&
+           !(fabs(res->gap) > 0 && isfinite(res->gap)))
     printf("runner-up: %s (relative gap %.6g): the optimum is unique\n", b, res->rel_gap);
   else
     printf("runner-up: %s (gap %.6g, relative %.6g): the optimum is unique\n", b, res->gap,
@@ -179,14 +180,15 @@ static void cli_got_runner_up(const got_result *res) {
 }
 
 /* The certified verdict (got_cert.c): gap and bound in key units, which
-** are the totals' units for l_1, l_inf and l_-inf. */
+** are the totals' units when the joint table names none. */
 static void cli_got_certified(const got_result *res) {
   if (!res->has_runner_up) {
     printf("certified: unique optimum (the only triangulation)\n");
     return;
   }
-  const char *units = res->joint == JOINT_RSS ? "; key units: sums of squares"
-                    : res->joint == JOINT_HARMONIC ? "; key units: -sums of reciprocals" : "";
+  const char *ku = joint_get(res->joint)->key_units;
+  char units[80] = "";
+  if (ku != NULL) snprintf(units, sizeof units, "; key units: %s", ku);
   if (res->cert_unique)
     printf("certified: unique optimum (gap %.3g > error bound %.3g%s)\n", res->cert_gap,
            res->cert_bound, units);
@@ -259,7 +261,7 @@ static void cli_got_summary(const cli_got_args *a, const rule *r, const got_resu
   const joint *jt = joint_get(r->joint);
   printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", r->name,
          m->name, jt->symbol, res->n, desc, a->tie_eps);
-  if (r->joint == JOINT_PRODUCT)
+  if (jt->key == JOINT_SHAPE_LOG)
     printf("total badness: %s (key %s = %.17g)\n", tot,
            res->sign >= 0 ? "ln B" : "-ln|B|", res->key);
   else

@@ -81,10 +81,12 @@ static void rule_valid_names(char *err, size_t errlen, const char *what) {
   size_t used = (size_t)snprintf(err, errlen, "%s: expected DT", what);
   for (int i = 1; i < rule_nquads && used < errlen; i++)
     used += (size_t)snprintf(err + used, errlen - used, ", %s", rule_quads[i].name);
+  char joints[64];
+  joint_names(joints, sizeof joints);
   if (used < errlen)
     snprintf(err + used, errlen - used,
-             " or MEASURE_JOINT with MEASURE in {%s} and JOINT in {-inf,-1,0,1,2,inf}",
-             measures);
+             " or MEASURE_JOINT with MEASURE in {%s} and JOINT in {%s} or a real p "
+             "(the power mean l_p)", measures, joints);
 }
 
 const char *rule_name_split(const char *name, char *measure, size_t mlen) {
@@ -119,7 +121,12 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
     rule_valid_names(err, errlen, what);
     return -1;
   }
-  int m = measure_find(mname), j = joint_find(jname);
+  char jerr[160];
+  int m = measure_find(mname), j = joint_parse(jname, jerr, sizeof jerr);
+  if (m >= 0 && j < -1) {   /* a p the table cannot take */
+    snprintf(err, errlen, "rule '%.60s': %s", name, jerr);
+    return -1;
+  }
   if (m < 0 || j < 0) {
     if (m < 0) snprintf(what, sizeof what, "unknown measure '%.60s' in rule '%.60s'", mname, name);
     else snprintf(what, sizeof what, "unknown joint '%.30s' in rule '%.60s'", jname, name);
@@ -220,14 +227,14 @@ double rule_total_key(const rule *r, const double *bad, size_t n) {
   return k;
 }
 
-/* Why log space for l_0: its key is ln|T| (sign -1: -ln|T|), so
+/* Why log space for l_0 (the joint table's log key): its key is ln|T| (sign -1: -ln|T|), so
 ** |T1 - T2| / max(|T1|, |T2|) = 1 - exp(-|K1 - K2|), whatever the sign,
 ** and a product of thousands of values that no double holds still has a
 ** gap.  For the other joints the totals are doubles: their difference
 ** over the larger magnitude, 1 when one of them is infinite. */
 double rule_gap(const rule *r, double key1, double key2) {
   if (key1 == key2 || isnan(key1) || isnan(key2)) return 0;
-  if (r->joint == JOINT_PRODUCT) return -expm1(-fabs(key2 - key1));
+  if (joint_get(r->joint)->key == JOINT_SHAPE_LOG) return -expm1(-fabs(key2 - key1));
   double t1 = rule_unkey(r, key1), t2 = rule_unkey(r, key2);
   double m = fmax(fabs(t1), fabs(t2)), d = fabs(t2 - t1);
   if (!isfinite(m) || !isfinite(d)) return 1;

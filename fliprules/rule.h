@@ -144,9 +144,9 @@ static inline joint_verdict rule_decide_bounds(const rule *r, const double lo[4]
 ** phi(y)), which neither overflow nor pay a root per value: rule_key of one
 ** value, rule_key_add of two keys, rule_total_key of n values (from the
 ** identity, in the order given), rule_unkey back to badness units. */
-static inline double rule_key(const rule *r, double b) { return joint_key_inline(r->joint, r->sign, b); }
+static inline double rule_key(const rule *r, double b) { return joint_key(r->joint, r->sign, b); }
 static inline double rule_unkey(const rule *r, double k) {
-  return joint_unkey_inline(r->joint, r->sign, k);
+  return joint_unkey(r->joint, r->sign, k);
 }
 static inline double rule_key_add(const rule *r, double k1, double k2) {
   return joint_key_combine(joint_get(r->joint)->keyop, k1, k2);

@@ -70,7 +70,12 @@
 ** area within u |A|, sigma^2 = (sqrt(x))^2 within 3u of 2.2.
 ** Keys: square, x^2 (1 + u): relative (1 + rho)^2 (1 + u) - 1; absolute
 ** 2 b_max alpha + alpha^2 + u (b_max + alpha)^2.  -1/x: relative rho + 2u;
-** absolute errors: no bound.
+** absolute errors: no bound.  Power keys +-x^p (a power mean l_p): with
+** x^ = x (1 + d), |d| <= rho, (x^)^p = x^p (1 + d)^p lies within a factor
+** (1 - rho)^-|p| of x^p either way, and pow adds at most 2 ulps (glibc
+** documents 1; the one other assumption here, as for atan2): relative
+** (1 - rho)^-|p| (1 + 4u) - 1, computed as e + 4u (1 + e) with e =
+** expm1(-|p| log1p(-rho)) (no cancellation); absolute errors: no bound.
 **
 ** Scale guard.  The relative bounds assume no underflow: see
 ** got_cert_scale (non-zero coordinates at least 2^-118 in magnitude, ranges
@@ -143,8 +148,8 @@ static int got_cert_scale(const geom_point *p, size_t n, double *wx, double *wy)
 
 /* The key error model (rho relative, alpha absolute, in key units) of a
 ** measure under a key shape; 0, or -1 when there is none. */
-static int got_key_model(int measure, got_keyfn keyfn, double wx, double wy, double *rho,
-                         double *alpha) {
+static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, double wy,
+                         double *rho, double *alpha) {
   if (measure < 0 || measure >= MEASURE_BUILTIN_COUNT) return -1;
   got_errmodel em = got_errmodels[measure];
   if (measure == MEASURE_SIGMA && keyfn == GOT_KEY_FROM_SQ_IDENT)
@@ -167,7 +172,15 @@ static int got_key_model(int measure, got_keyfn keyfn, double wx, double wy, dou
       if (em.kind != GOT_ERR_REL) return -1;
       r += 2 * GOT_U;
       break;
-    default:
+    case GOT_KEY_POWER: {
+      if (em.kind != GOT_ERR_REL) return -1;
+      double e = expm1(-fabs(p) * log1p(-r));
+      r = e + 4 * GOT_U * (1 + e);
+      break;
+    }
+    case GOT_KEY_LOG:            /* logarithms: no bound (above) */
+    case GOT_KEY_NEGLOGNEG:
+    case GOT_KEY_FROM_SQ_HALFLOG:
       return -1;
   }
   *rho = r * (1 + 0x1p-40);
@@ -204,7 +217,7 @@ double got_cert_err_of(const got_result *res, double key) {
 
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op) {
-  double wx, wy, rho = 0, alpha = 0;
+  double wx, wy, rho = 0, alpha = 0, jp = joint_get(res->joint)->p;
   res->cert_rho = res->cert_alpha = NAN;
   res->cert_err = res->cert_err2 = INFINITY;
   res->cert_unique = 0;
@@ -214,11 +227,11 @@ void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn
                    "ranges <= 2^169)";
   else if (res->measure >= MEASURE_BUILTIN_COUNT)
     res->cert_why = "no forward error bound for a user-defined measure";
-  else if (got_key_model(res->measure, keyfn, wx, wy, &rho, &alpha) != 0)
+  else if (got_key_model(res->measure, keyfn, jp, wx, wy, &rho, &alpha) != 0)
     res->cert_why = "no forward error bound for this measure and joint (docs/got.md)";
   double prho, palpha;
   if (res->cert_why == NULL &&
-      got_key_model(res->measure, got_keyfn_plain(keyfn), wx, wy, &prho, &palpha) == 0) {
+      got_key_model(res->measure, got_keyfn_plain(keyfn), jp, wx, wy, &prho, &palpha) == 0) {
     res->cert_rho = prho;
     res->cert_alpha = palpha;
   }

@@ -36,38 +36,18 @@
 
 #define GOT_TILE 32
 
-/* How a measure value becomes a key.  The joint module defines the keys;
-** the loops below need them in bulk, so we recognise the common shapes
-** (checked against joint_key on probe values) and fall back to calling
-** joint_key per value for anything else. */
-static double got_keyfn_one(got_keyfn f, double x) {
-  switch (f) {
-    case GOT_KEY_IDENT: return x;
-    case GOT_KEY_SQ: return x * x;
-    case GOT_KEY_NEGSQ: return -(x * x);
-    case GOT_KEY_NEGRECIP: return -1 / x;
-    case GOT_KEY_LOG: return log(x);
-    case GOT_KEY_NEGLOGNEG: return -log(-x);
-    default: return NAN;
+/* How a measure value becomes a key: the bulk form of the key shape the
+** joint table gives (joint.h), for measures of sign s (0 and +1 take the
+** form for values >= 0, as joint_key does). */
+static got_keyfn got_keyfn_of(joint_shape sh, int s) {
+  switch (sh) {
+    case JOINT_SHAPE_SAME: return GOT_KEY_IDENT;
+    case JOINT_SHAPE_SQUARE: return s >= 0 ? GOT_KEY_SQ : GOT_KEY_NEGSQ;
+    case JOINT_SHAPE_NEGRECIP: return GOT_KEY_NEGRECIP;   /* -(-1/-x) is -1/x bit for bit */
+    case JOINT_SHAPE_LOG: return s >= 0 ? GOT_KEY_LOG : GOT_KEY_NEGLOGNEG;
+    case JOINT_SHAPE_POWER: return GOT_KEY_POWER;
   }
-}
-
-static got_keyfn got_keyfn_detect(joint_id jt, int s) {
-  static const double probes[3][4] = {
-    {-3.5, -0.25, 0.75, 12.0},       /* s = 0: both signs */
-    {0.25, 0.75, 3.5, 12.0},         /* s = +1 */
-    {-0.25, -0.75, -3.5, -12.0},     /* s = -1 */
-  };
-  const double *pr = probes[s > 0 ? 1 : s < 0 ? 2 : 0];
-  for (int f = 0; f < GOT_KEY_GENERIC; f++) {
-    int ok = 1;
-    for (int q = 0; q < 4 && ok; q++) {
-      double want = joint_key(jt, s, pr[q]), got = got_keyfn_one((got_keyfn)f, pr[q]);
-      ok = (want == got);
-    }
-    if (ok) return (got_keyfn)f;
-  }
-  return GOT_KEY_GENERIC;
+  return GOT_KEY_POWER;
 }
 
 typedef struct got_dp {
@@ -77,6 +57,7 @@ typedef struct got_dp {
   int sign;
   joint_keyop op;
   got_keyfn keyfn;
+  double p;             /* the joint's exponent (GOT_KEY_POWER) */
   double *M;            /* n x n keys, mirrored */
   int32_t *K;           /* packed upper triangle: argmin k */
   const unsigned char *V;   /* simple polygons: n x n, 1 = edge or valid diagonal;
@@ -101,8 +82,8 @@ GOT_CLONES static void got_keys(const got_dp *dp, double *t, size_t m) {
       got_log_inplace(t, m, 1.0);
       for (size_t q = 0; q < m; q++) t[q] *= 0.5;
       return;
-    default:
-      for (size_t q = 0; q < m; q++) t[q] = joint_key(dp->joint, dp->sign, t[q]);
+    case GOT_KEY_POWER:
+      for (size_t q = 0; q < m; q++) t[q] = joint_key_shape(JOINT_SHAPE_POWER, dp->p, dp->sign, t[q]);
       return;
   }
 }
@@ -348,7 +329,7 @@ int got_check_memory(size_t n, int measure, char *err, size_t errlen) {
 void got_format_total(const got_result *res, double key, char *buf, size_t len) {
   double v = joint_unkey(res->joint, res->sign, key);
   int tiny = v == 0 || !isfinite(v) || fabs(v) < DBL_MIN;
-  if (res->joint == JOINT_PRODUCT && tiny && isfinite(key)) {
+  if (joint_get(res->joint)->key == JOINT_SHAPE_LOG && tiny && isfinite(key)) {
     /* key = ln|B| for values >= 0, -ln|B| for values <= 0 */
     if (res->sign >= 0) snprintf(buf, len, "exp(%.17g)", key);
     else snprintf(buf, len, "-exp(%.17g)", -key);
@@ -425,8 +406,10 @@ static int got_dp_init(got_dp *dp, const geom_point *p, size_t n, const rule *r,
   dp->n = n;
   dp->joint = rule_joint(r);
   dp->sign = (int)m->sign;
-  dp->op = joint_get(rule_joint(r))->keyop;
-  dp->keyfn = got_keyfn_detect(rule_joint(r), dp->sign);
+  const joint *J = joint_get(rule_joint(r));
+  dp->op = J->keyop;
+  dp->p = J->p;
+  dp->keyfn = got_keyfn_of(J->key, dp->sign);
   if (got_measure_has_square(rule_measure(r)) && dp->sign > 0 &&
       (dp->keyfn == GOT_KEY_SQ || dp->keyfn == GOT_KEY_LOG)) {
     dp->keyfn = dp->keyfn == GOT_KEY_SQ ? GOT_KEY_FROM_SQ_IDENT : GOT_KEY_FROM_SQ_HALFLOG;

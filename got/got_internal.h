@@ -32,11 +32,11 @@ got_pairs *got_pairs_new_sq(const geom_point *p, size_t n, int measure, int thre
 void got_sqrt_inplace(double *t, size_t m);
 void got_log_inplace(double *t, size_t m, double sign);   /* sign * log(sign * t) */
 
-/* How a measure value becomes a key in bulk (got_dp.c recognises the
-** common shapes of joint_key; GENERIC calls joint_key per value). */
+/* How a measure value becomes a key in bulk (got_dp.c: from the key shape
+** of the joint table and the measure's sign; POWER is +-|x|^p, joint.h). */
 typedef enum got_keyfn {
   GOT_KEY_IDENT, GOT_KEY_SQ, GOT_KEY_NEGSQ, GOT_KEY_NEGRECIP,
-  GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_GENERIC,
+  GOT_KEY_LOG, GOT_KEY_NEGLOGNEG, GOT_KEY_POWER,
   GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (got_measure_has_square) */
 } got_keyfn;
 

@@ -8,6 +8,7 @@
 ** the flip rules need for bit-for-bit independence of the vertex order.
 */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "joint.h"
 
@@ -25,42 +26,80 @@ static double joint_product(double x, double y) { return x * y; }
 static double joint_sum(double x, double y) { return x + y; }
 static double joint_rss(double x, double y) { return sqrt(x * x + y * y); }
 
+/* One row of the table: the public part, the joint on magnitudes, its
+** identity, and room for the names of a row made at run time. */
 typedef struct joint_impl {
   joint pub;
-  double (*g)(double, double);
+  double (*g)(double p, double x, double y);   /* on values >= 0 */
   double identity;                  /* of g on values >= 0 */
+  char text[3][48];                 /* name, symbol, description of a made row */
 } joint_impl;
 
-static const joint_impl joint_table[JOINT_COUNT] = {
-  [JOINT_MIN] = {{"-inf", "l_-inf", "min(x, y)", 0, JOINT_KEY_MIN, "min", "#0072B2"},
-                 joint_min, INFINITY},
-  [JOINT_HARMONIC] = {{"-1", "l_-1", "1/(1/x + 1/y), harmonic", 1, JOINT_KEY_ADD, "harmonic", "#E69F00"},
-                      joint_harmonic, INFINITY},
-  [JOINT_PRODUCT] = {{"0", "l_0", "x*y, product (geometric)", 1, JOINT_KEY_ADD, "product", "#009E73"},
-                     joint_product, 1.0},
-  [JOINT_SUM] = {{"1", "l_1", "x + y, sum", 1, JOINT_KEY_ADD, "sum", "#D55E00"},
-                 joint_sum, 0.0},
-  [JOINT_RSS] = {{"2", "l_2", "sqrt(x^2 + y^2), root-sum-square", 1, JOINT_KEY_ADD,
-                 "root-sum-sq", "#CC79A7"},
-                 joint_rss, 0.0},
-  [JOINT_MAX] = {{"inf", "l_inf", "max(x, y)", 0, JOINT_KEY_MAX, "max", "#56B4E9"},
-                 joint_max, -INFINITY},
+static double joint_g_min(double p, double x, double y) { (void)p; return joint_min(x, y); }
+static double joint_g_max(double p, double x, double y) { (void)p; return joint_max(x, y); }
+static double joint_g_harmonic(double p, double x, double y) { (void)p; return joint_harmonic(x, y); }
+static double joint_g_product(double p, double x, double y) { (void)p; return joint_product(x, y); }
+static double joint_g_sum(double p, double x, double y) { (void)p; return joint_sum(x, y); }
+static double joint_g_rss(double p, double x, double y) { (void)p; return joint_rss(x, y); }
+
+/* The table: the six built-in joints at their fixed ids; rows from
+** JOINT_COUNT up are made by joint_parse (joint_power.c). */
+static joint_impl joint_table[JOINT_CAPACITY] = {
+  [JOINT_MIN] = {{.name = "-inf", .symbol = "l_-inf", .desc = "min(x, y)", .needs_sign = 0,
+                  .keyop = JOINT_KEY_MIN, .word = "min", .colour = "#0072B2", .p = -INFINITY,
+                  .key = JOINT_SHAPE_SAME, .vec = JOINT_VEC_MIN, .bounds = 1},
+                 joint_g_min, INFINITY, {""}},
+  [JOINT_HARMONIC] = {{.name = "-1", .symbol = "l_-1", .desc = "1/(1/x + 1/y), harmonic",
+                       .needs_sign = 1, .keyop = JOINT_KEY_ADD, .word = "harmonic",
+                       .colour = "#E69F00", .p = -1, .key = JOINT_SHAPE_NEGRECIP,
+                       .key_units = "-sums of reciprocals", .vec = JOINT_VEC_HARMONIC},
+                      joint_g_harmonic, INFINITY, {""}},
+  [JOINT_PRODUCT] = {{.name = "0", .symbol = "l_0", .desc = "x*y, product (geometric)",
+                      .needs_sign = 1, .keyop = JOINT_KEY_ADD, .word = "product",
+                      .colour = "#009E73", .p = 0, .key = JOINT_SHAPE_LOG,
+                      .vec = JOINT_VEC_PRODUCT, .split = 1},
+                     joint_g_product, 1.0, {""}},
+  [JOINT_SUM] = {{.name = "1", .symbol = "l_1", .desc = "x + y, sum", .needs_sign = 1,
+                  .keyop = JOINT_KEY_ADD, .word = "sum", .colour = "#D55E00", .p = 1,
+                  .key = JOINT_SHAPE_SAME, .vec = JOINT_VEC_SUM, .bounds = 1},
+                 joint_g_sum, 0.0, {""}},
+  [JOINT_RSS] = {{.name = "2", .symbol = "l_2", .desc = "sqrt(x^2 + y^2), root-sum-square",
+                  .needs_sign = 1, .keyop = JOINT_KEY_ADD, .word = "root-sum-sq",
+                  .colour = "#CC79A7", .p = 2, .key = JOINT_SHAPE_SQUARE,
+                  .key_units = "sums of squares", .vec = JOINT_VEC_RSS, .split = 1},
+                 joint_g_rss, 0.0, {""}},
+  [JOINT_MAX] = {{.name = "inf", .symbol = "l_inf", .desc = "max(x, y)", .needs_sign = 0,
+                  .keyop = JOINT_KEY_MAX, .word = "max", .colour = "#56B4E9", .p = INFINITY,
+                  .key = JOINT_SHAPE_SAME, .vec = JOINT_VEC_MAX, .bounds = 1},
+                 joint_g_max, -INFINITY, {""}},
 };
+static int joint_nrows = JOINT_COUNT;
 
 const joint *joint_get(joint_id j) {
-  return (unsigned)j < JOINT_COUNT ? &joint_table[j].pub : NULL;
+  return (unsigned)j < (unsigned)joint_nrows ? &joint_table[j].pub : NULL;
+}
+
+int joint_count(void) {
+  return joint_nrows;
+}
+
+void joint_names(char *buf, size_t len) {
+  size_t used = 0;
+  if (len > 0) buf[0] = '\0';
+  for (int j = 0; j < JOINT_COUNT && used < len; j++)
+    used += (size_t)snprintf(buf + used, len - used, "%s%s", j ? "," : "", joint_table[j].pub.name);
 }
 
 int joint_find(const char *name) {
-  for (int j = 0; j < JOINT_COUNT; j++)
-    if (strcmp(joint_table[j].pub.name, name) == 0) return j;
-  return -1;
+  char err[160];
+  int j = joint_parse(name, err, sizeof err);
+  return j >= 0 ? j : -1;
 }
 
 double joint_apply(joint_id j, int s, double x, double y) {
   const joint_impl *J = &joint_table[j];
-  if (!J->pub.needs_sign || s >= 0) return J->g(x, y);
-  return -J->g(-x, -y);
+  if (!J->pub.needs_sign || s >= 0) return J->g(J->pub.p, x, y);
+  return -J->g(J->pub.p, -x, -y);
 }
 
 /* ---- comparisons ---------------------------------------------------------- */
@@ -105,7 +144,7 @@ static double joint_split_mag(joint_id j, double u, double v, int *e) {
 
 double joint_apply_split(joint_id j, int s, double x, double y, int *e) {
   *e = 0;
-  if (j != JOINT_PRODUCT && j != JOINT_RSS) return joint_apply(j, s, x, y);
+  if (!joint_table[j].pub.split) return joint_apply(j, s, x, y);
   if (s >= 0) return joint_split_mag(j, x, y, e);
   return -joint_split_mag(j, -x, -y, e);
 }
@@ -132,9 +171,9 @@ static double joint_apply_plain(joint_id j, int s, double x, double y) {
 ** can no longer tie with it (for tie_eps < 1) nor change the order. */
 int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
                   double tie_eps) {
-  /* Only the product and the root-sum-square have a split form; for the
-  ** other joints e1 = e2 = 0 below and this is the same comparison. */
-  if (j != JOINT_PRODUCT && j != JOINT_RSS)
+  /* For the joints without a split form e1 = e2 = 0 below and this is the
+  ** same comparison. */
+  if (!joint_table[j].pub.split)
     return joint_compare_values(joint_apply_plain(j, s, x1, y1), joint_apply_plain(j, s, x2, y2),
                                 tie_eps);
   int e1, e2;
@@ -213,7 +252,7 @@ joint_verdict joint_compare_bounds(joint_id j, int s, const double lo[4], const 
 }
 
 int joint_has_bounds(joint_id j) {
-  return j == JOINT_MIN || j == JOINT_MAX || j == JOINT_SUM;
+  return joint_table[j].pub.bounds;
 }
 
 double joint_identity(joint_id j, int s) {
@@ -227,11 +266,11 @@ double joint_identity(joint_id j, int s) {
 ** increasing in x and adds the same way, since the leading minus turns
 ** "larger magnitude" into "smaller value". */
 double joint_key(joint_id j, int s, double x) {
-  return joint_key_inline(j, s, x);
+  return joint_key_shape(joint_table[j].pub.key, joint_table[j].pub.p, s, x);
 }
 
 double joint_unkey(joint_id j, int s, double k) {
-  return joint_unkey_inline(j, s, k);
+  return joint_unkey_shape(joint_table[j].pub.key, joint_table[j].pub.p, s, k);
 }
 
 double joint_key_identity(joint_id j) {
@@ -240,4 +279,15 @@ double joint_key_identity(joint_id j) {
     case JOINT_KEY_MAX: return -INFINITY;
     default: return 0.0;
   }
+}
+
+/* ---- names ---------------------------------------------------------------- */
+
+int joint_parse(const char *name, char *err, size_t errlen) {
+  for (int j = 0; j < joint_nrows; j++)
+    if (strcmp(joint_table[j].pub.name, name) == 0) return j;
+  char names[64];
+  joint_names(names, sizeof names);
+  snprintf(err, errlen, "unknown joint '%.30s': expected one of {%s}", name, names);
+  return -1;
 }

@@ -16,7 +16,12 @@
 #define FLIPLAB_JOINT_H
 
 #include <math.h>
+#include <stddef.h>
 
+/* The built-in joints keep ids 0 .. JOINT_COUNT-1; the power means l_p of
+** other exponents (joint_find) get the ids from JOINT_COUNT up, in the
+** order they are first named, below JOINT_CAPACITY (arrays indexed by a
+** joint id have JOINT_CAPACITY entries; joint_count() ids are defined now). */
 typedef enum joint_id {
   JOINT_MIN,       /* l_-inf */
   JOINT_HARMONIC,  /* l_-1 */
@@ -24,24 +29,63 @@ typedef enum joint_id {
   JOINT_SUM,       /* l_1 */
   JOINT_RSS,       /* l_2 */
   JOINT_MAX,       /* l_inf */
-  JOINT_COUNT
+  JOINT_COUNT      /* the built-in joints */
 } joint_id;
+
+#define JOINT_CAPACITY 16
 
 /* How keys combine. */
 typedef enum joint_keyop { JOINT_KEY_ADD, JOINT_KEY_MIN, JOINT_KEY_MAX } joint_keyop;
 
+/* The key K on magnitudes u >= 0 (see "Keys" above): phi(x) = K(x) for
+** measures >= 0, -K(-x) for measures <= 0. */
+typedef enum joint_shape {
+  JOINT_SHAPE_SAME,      /* K(u) = u (min, max, sum) */
+  JOINT_SHAPE_NEGRECIP,  /* -1/u (harmonic) */
+  JOINT_SHAPE_LOG,       /* log u (product) */
+  JOINT_SHAPE_SQUARE,    /* u^2 (root-sum-square) */
+  JOINT_SHAPE_POWER      /* u^p for p > 0, -u^p for p < 0 (a power mean) */
+} joint_shape;
+
+/* The form the vector engines of classify/ compute a joint in (their
+** rewrites are written for these); JOINT_VEC_NONE: no fast path, each
+** quadrilateral is decided by joint_compare. */
+typedef enum joint_vec {
+  JOINT_VEC_MIN, JOINT_VEC_MAX, JOINT_VEC_SUM, JOINT_VEC_PRODUCT, JOINT_VEC_HARMONIC,
+  JOINT_VEC_RSS, JOINT_VEC_NONE
+} joint_vec;
+
+/* One row of the joint table: everything any part of fliplab knows about
+** a joint. */
 typedef struct joint {
-  const char *name;     /* command-line suffix: "-inf", "-1", "0", "1", "2", "inf" */
+  const char *name;     /* command-line suffix: "-inf", "-1", "0", "1", "2", "inf", "3" */
   const char *symbol;   /* "l_-inf" ... */
   const char *desc;
-  int needs_sign;       /* 1 if the measure must keep one sign */
+  int needs_sign;       /* 1 if the measure must keep one sign (applied to magnitudes) */
   joint_keyop keyop;
   const char *word;     /* one word for tables: "min", "harmonic", ... */
   const char *colour;   /* its colour in pictures (Okabe-Ito, colour-blind safe) */
+  double p;             /* the l_p exponent: -inf, -1, 0, 1, 2, inf, or a power mean's */
+  joint_shape key;      /* the key's shape */
+  const char *key_units;   /* what the keys of a total add up ("sums of squares"),
+                              NULL when a key is the value itself or its logarithm */
+  joint_vec vec;        /* the vector engines' form */
+  int split;            /* joint_compare decides in split form (joint_apply_split) */
+  int bounds;           /* joint_compare_bounds can certify verdicts */
 } joint;
 
+/* The row of id j, NULL for an id no joint has. */
 const joint *joint_get(joint_id j);
-int joint_find(const char *name);   /* -1 if unknown */
+/* The id of a joint name: a built-in one, or a real p written as a decimal
+** number ("3", "-2", "0.5", "1.0e1"), the power mean l_p (docs/joints.md):
+** a p of -1, 0, 1 or 2 is the built-in joint, any other one a row made on
+** first use.  -1 if the name is no joint, or names a new p when the table
+** is full; joint_parse says which in err. */
+int joint_find(const char *name);
+int joint_parse(const char *name, char *err, size_t errlen);
+int joint_count(void);
+/* "-inf, -1, 0, 1, 2, inf" into buf: the built-in names, for messages. */
+void joint_names(char *buf, size_t len);
 
 /* f(x, y) for a measure of sign s (+1: values >= 0, -1: values <= 0). */
 double joint_apply(joint_id j, int s, double x, double y);
@@ -96,26 +140,37 @@ double joint_key(joint_id j, int s, double x);
 double joint_unkey(joint_id j, int s, double k);
 double joint_key_identity(joint_id j);
 
-/* The definitions of joint_key and joint_unkey, inline for loops that key
-** many values (the census's sinks): no call, no table.  With K the key on
-** magnitudes (x >= 0: -1/x, log x, x^2, or x itself), a measure of sign -1
-** takes -K(-x) (joint_key's comment in joint.c says why); the identity
-** keys need no sign case, -(-x) being x bit for bit. */
-static inline double joint_key_inline(joint_id j, int s, double x) {
-  switch (j) {
-    case JOINT_HARMONIC: return s >= 0 ? -1.0 / x : -(-1.0 / -x);
-    case JOINT_PRODUCT: return s >= 0 ? log(x) : -log(-x);
-    case JOINT_RSS: return s >= 0 ? x * x : -((-x) * (-x));
-    default: return x;
-  }
+/* The definitions of joint_key and joint_unkey by the row's shape and p,
+** inline for loops that key many values (the census's sinks: called with a
+** constant shape, each gets its own loop).  With K the key on magnitudes
+** (u >= 0: u, -1/u, log u, u^2, +-u^p), a measure of sign -1 takes -K(-x)
+** (joint_key's comment in joint.c says why); the identity keys need no
+** sign case, -(-x) being x bit for bit. */
+static inline double joint_key_power(double p, double u) {
+  return p > 0 ? pow(u, p) : -pow(u, p);
 }
-static inline double joint_unkey_inline(joint_id j, int s, double k) {
-  switch (j) {
-    case JOINT_HARMONIC: return s >= 0 ? -1.0 / k : -(-1.0 / -k);
-    case JOINT_PRODUCT: return s >= 0 ? exp(k) : -exp(-k);
-    case JOINT_RSS: return s >= 0 ? sqrt(k) : -sqrt(-k);
-    default: return k;
+static inline double joint_unkey_power(double p, double k) {
+  return p > 0 ? pow(k, 1 / p) : pow(-k, 1 / p);
+}
+static inline double joint_key_shape(joint_shape sh, double p, int s, double x) {
+  switch (sh) {
+    case JOINT_SHAPE_SAME: return x;
+    case JOINT_SHAPE_NEGRECIP: return s >= 0 ? -1.0 / x : -(-1.0 / -x);
+    case JOINT_SHAPE_LOG: return s >= 0 ? log(x) : -log(-x);
+    case JOINT_SHAPE_SQUARE: return s >= 0 ? x * x : -((-x) * (-x));
+    case JOINT_SHAPE_POWER: return s >= 0 ? joint_key_power(p, x) : -joint_key_power(p, -x);
   }
+  return x;
+}
+static inline double joint_unkey_shape(joint_shape sh, double p, int s, double k) {
+  switch (sh) {
+    case JOINT_SHAPE_SAME: return k;
+    case JOINT_SHAPE_NEGRECIP: return s >= 0 ? -1.0 / k : -(-1.0 / -k);
+    case JOINT_SHAPE_LOG: return s >= 0 ? exp(k) : -exp(-k);
+    case JOINT_SHAPE_SQUARE: return s >= 0 ? sqrt(k) : -sqrt(-k);
+    case JOINT_SHAPE_POWER: return s >= 0 ? joint_unkey_power(p, k) : -joint_unkey_power(p, -k);
+  }
+  return k;
 }
 static inline double joint_key_combine(joint_keyop op, double k1, double k2) {
   return op == JOINT_KEY_ADD ? k1 + k2

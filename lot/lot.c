@@ -69,6 +69,8 @@ typedef struct lot_entry {
   uint32_t c, u, v;     /* the edge opposite corner c, from u to v when pushed */
 } lot_entry;
 
+enum { LOT_FIRST_SUM = 1, LOT_FIRST_MAX = 2 };
+
 typedef struct lot_run {
   lot_mesh *m;
   const lot_options *o;
@@ -78,7 +80,8 @@ typedef struct lot_run {
   int star_only;        /* DT insertion: only edges opposite the new point */
   int stopped;          /* cycle or budget: no more flips */
   lot_enc any;          /* encloses every value of the measure (measure_floor) */
-  int one_first;        /* exact cache: the first new triangle may decide (lot_prefers_exact) */
+  int one_first;        /* exact cache: the first new triangle may decide (lot_prefers_exact):
+                           0, or LOT_FIRST_SUM / LOT_FIRST_MAX, the joint's form */
   lot_entry *stk;
   size_t ns, cap;
   /* cycle detection (quadrilateral rules) */
@@ -253,7 +256,7 @@ static int lot_prefers_exact(const lot_run *R, uint32_t a, uint32_t b, uint32_t 
   const lot_mesh *m = R->m;
   double x1 = lot_mesh_badness(m, a, b, d), y1 = m->bad[t], y2 = m->bad[u];
   *n1 = (lot_enc){x1, x1};
-  if (R->one_first && (rule_joint(R->r) == JOINT_SUM ? x1 + R->any.lo >= y1 + y2
+  if (R->one_first && (R->one_first == LOT_FIRST_SUM ? x1 + R->any.lo >= y1 + y2
                                                      : x1 >= (y1 > y2 ? y1 : y2)))
     return 0;
   double x2 = lot_mesh_badness(m, a, d, c0);
@@ -408,9 +411,11 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(rule_measure(r)), INFINITY};
   /* Built-in measures only: their floors hold for every value they give
   ** (a user's formula or plugin promises its sign, but nothing checks it). */
-  joint_id j = rule_joint(r);
-  R->one_first = R->kind == LOT_K_TRI && rule_measure(r) < MEASURE_BUILTIN_COUNT &&
-                 ((j == JOINT_SUM && R->any.lo > -INFINITY) || j == JOINT_MAX);
+  /* The joint table's form says whether f is x + y or max(x, y). */
+  joint_vec v = joint_get(rule_joint(r))->vec;
+  R->one_first = R->kind != LOT_K_TRI || rule_measure(r) >= MEASURE_BUILTIN_COUNT ? 0
+               : v == JOINT_VEC_SUM && R->any.lo > -INFINITY ? LOT_FIRST_SUM
+               : v == JOINT_VEC_MAX ? LOT_FIRST_MAX : 0;
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
 }
 

@@ -329,10 +329,12 @@ static int report_counts_names(report_countsread *cr, char **f, report_row *row,
   if (row->measure[0] == '\0' && row->joint[0] == '\0') return 0;
   if (row->measure[0] == '\0' || joint_find(row->joint) < 0 ||
       !rule_name_is(row->rule, row->measure, row->joint)) {
+    char joints[64];
+    joint_names(joints, sizeof joints);
     report_errf(cr->err, cr->errlen,
                 "%s line %llu: rule '%.40s' does not match its measure '%.40s' and joint "
-                "'%.16s' (expected MEASURE_JOINT with a joint -inf, -1, 0, 1, 2 or inf)",
-                cr->name, ln, row->rule, row->measure, row->joint);
+                "'%.16s' (expected MEASURE_JOINT with a joint in {%s} or a real p)",
+                cr->name, ln, row->rule, row->measure, row->joint, joints);
     return -1;
   }
   return 0;

@@ -18,7 +18,7 @@
 /* Legend entries: the joints (their colours live with them, in joints/),
 ** then quadrilateral rules such as DT, then groups mixing several of these.
 ** Only entries that some drawn circle uses appear in the legend. */
-enum { REPORT_QUAD = JOINT_COUNT, REPORT_MIXED, REPORT_NKINDS };
+enum { REPORT_QUAD = JOINT_CAPACITY, REPORT_MIXED, REPORT_NKINDS };
 #define REPORT_QUAD_COLOUR "#000000"
 #define REPORT_MIXED_COLOUR "#FFFFFF"
 
@@ -41,7 +41,7 @@ static int report_kind(const char *joint) {
 }
 
 static const char *report_kind_colour(int k) {
-  return k < JOINT_COUNT ? joint_get((joint_id)k)->colour
+  return k < REPORT_QUAD ? joint_get((joint_id)k)->colour
        : k == REPORT_QUAD ? REPORT_QUAD_COLOUR : REPORT_MIXED_COLOUR;
 }
 
@@ -103,7 +103,7 @@ static void report_scatter_legend(FILE *f, const int used[REPORT_NKINDS]) {
     if (!used[k]) continue;
     fprintf(f, "<circle cx=\"%d\" cy=\"%d\" r=\"5\" fill=\"%s\" stroke=\"#333\"/>"
                "<text x=\"%d\" y=\"%d\">", x + 5, yy - 4, report_kind_colour(k), x + 16, yy);
-    if (k < JOINT_COUNT)
+    if (k < REPORT_QUAD)
       fprintf(f, "%s (%s)", joint_get((joint_id)k)->symbol, joint_get((joint_id)k)->word);
     else
       fputs(k == REPORT_QUAD ? "quadrilateral rule (DT)" : "several joints", f);

@@ -110,7 +110,7 @@ static int report_layout_make(report_layout *L, const report_meta *m,
   L->col = malloc(cap * sizeof *L->col);
   L->block = malloc((cap + JOINT_COUNT) * sizeof *L->block);
   if (L->col == NULL || L->block == NULL) return -1;
-  for (int j = 0; j < JOINT_COUNT; j++)
+  for (int j = 0; j < joint_count(); j++)
     for (int i = 0; i < nrows; i++)
       if (rows[i].measure[0] && strcmp(rows[i].joint, joint_get((joint_id)j)->name) == 0) {
         L->block[L->nblocks++] = joint_get((joint_id)j)->name;
