@@ -503,7 +503,7 @@ static void formula_sample_tri(int k, uint64_t *rng, geom_tri *t) {
 ** one.  Non-finite values on degenerate-looking samples are skipped (they
 ** will be reported if a run ever meets such a triangle). */
 static int formula_sign_from_samples(formula *f, char *err, size_t errlen) {
-  uint64_t rng = 0x5EED5167ull;
+  uint64_t rng = GEOM_STATE_FORMULA_SIGNS;
   int neg = 0, pos = 0, finite = 0;
   geom_tri bad_t;
   double bad_v = 0;

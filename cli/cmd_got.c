@@ -149,7 +149,7 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
   *p = malloc(*n * sizeof **p);
   if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
   sampler_rng g;
-  sampler_seed(&g, a->seed, 0);
+  sampler_seed(&g, a->seed, GEOM_STREAM_GOT_POLYGON);
   const cli_got_sampler *s = &cli_got_samplers[a->sampler ? cli_got_sampler_find(a->sampler) : 0];
   int src = s->fn(&g, *n, *p);
   if (src == SAMPLER_ENOMEM) return cli_error(CMD, "out of memory");

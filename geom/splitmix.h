@@ -4,6 +4,7 @@
 ** drawn.  Used to seed the samplers' streams (pentagon/), to draw the sample
 ** triangles a formula's sign is inferred from (badness/), and by the tests.
 ** Header-only: both are a handful of integer operations on hot paths.
+** Below them, the registry of every random stream fliplab draws from.
 */
 #ifndef FLIPLAB_SPLITMIX_H
 #define FLIPLAB_SPLITMIX_H
@@ -36,5 +37,50 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
   *p = (geom_point){x, y};
   return x * x + y * y < 1;
 }
+
+/* ---- the registry of random streams ------------------------------------
+**
+** Every random number of fliplab comes from one of the streams listed here,
+** so that two consumers never share one by accident and a new one can see
+** which values are taken.  The values are part of the output contract:
+** changing one changes every sample drawn from it (tests/golden.sh).
+**
+** Streams of sampler_seed(g, seed, stream) (pentagon/sampler.h), with the
+** user's --seed:
+**   GEOM_STREAM_SAMPLE(i)   sample i of a census or table: pentagon i of
+**                           every pentagon sampler (table34, rule,
+**                           classify's inputs via sample), site set i of
+**                           every site sampler (census, rule --sites); so
+**                           sample i depends on (seed, i) alone, whatever
+**                           the threads and shards.  Indices run from 0 up
+**                           to the 2^40 samples a run may ask for.
+**   quadrilateral i         stream i of the seed xor GEOM_SALT_QUAD
+**                           (sampler_quad: the Delaunay-equivalence check
+**                           of `rule`), unrelated to pentagon i.
+**   GEOM_STREAM_GOT_POLYGON `got --random N`: the polygon samplers (star,
+**                           monotone, convex, ...) of cli/cmd_got.c.
+**   GEOM_STREAM_POINTS      "points" in ASCII: sampler_points, the point
+**                           sets of `lot --random`.
+**   GEOM_STREAM_BRIO        "brio": lot's biased randomised insertion order.
+**   GEOM_STREAM_RANDOM_ORDER "rand": lot's uniformly random insertion order.
+** One run never draws two of these from one seed under the same number:
+** lot draws its points, then one order, and no samples; "points" (about
+** 1.2e14) lies above every sample index anyway; got draws only its polygon
+** (stream 0, which is sample 0's stream of another command).
+**
+** Fixed generator states (no user seed):
+**   GEOM_STATE_FORMULA_SIGNS the splitmix64 counter of the sample triangles
+**                           a user formula's sign is inferred from
+**                           (badness/formula.c): the same triangles every run.
+**   GEOM_STATE_LOT_WALK     the xorshift64 state of the mesh's point-location
+**                           walk (lot/mesh.c), reset with every mesh. */
+#define GEOM_STREAM_SAMPLE(i) ((uint64_t)(i))
+#define GEOM_SALT_QUAD 0x51A7C0DE5EEDF00Dull
+#define GEOM_STREAM_GOT_POLYGON 0ull
+#define GEOM_STREAM_POINTS 0x706f696e7473ull          /* "points" */
+#define GEOM_STREAM_BRIO 0x6272696full                /* "brio" */
+#define GEOM_STREAM_RANDOM_ORDER 0x72616e64ull        /* "rand" */
+#define GEOM_STATE_FORMULA_SIGNS 0x5EED5167ull
+#define GEOM_STATE_LOT_WALK 0x9e3779b97f4a7c15ull
 
 #endif

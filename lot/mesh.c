@@ -19,6 +19,7 @@
 #include <string.h>
 #include "lot_internal.h"
 #include "measure.h"
+#include "splitmix.h"
 
 /* The cache's array for its kind (the other one freed): 0, or -1. */
 static int lot_cache_alloc(lot_mesh *m, lot_cache cache) {
@@ -39,7 +40,7 @@ int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache) {
   m->inp = malloc((size_t)np * sizeof *m->inp);
   m->tv = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tv);
   m->tn = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tn);
-  m->walk = 0x9e3779b97f4a7c15ull;
+  m->walk = GEOM_STATE_LOT_WALK;
   if (!m->p || !m->inp || !m->tv || !m->tn || lot_cache_alloc(m, cache) != 0) {
     lot_mesh_free(m);
     return -1;

@@ -99,7 +99,7 @@ int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *
   uint32_t rounds = 1;
   while (rounds < 15 && ((uint64_t)1 << (rounds + 7)) < n) rounds++;
   sampler_rng g;
-  sampler_seed(&g, seed, 0x6272696f);   /* "brio" */
+  sampler_seed(&g, seed, GEOM_STREAM_BRIO);
   for (uint32_t i = 0; i < n; i++) {
     uint32_t x = (uint32_t)((p[i].x / 2 - minx / 2) * scale);
     uint32_t y = (uint32_t)((p[i].y / 2 - miny / 2) * scale);
@@ -116,7 +116,7 @@ int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *
 
 void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord) {
   sampler_rng g;
-  sampler_seed(&g, seed, 0x72616e64);   /* "rand" */
+  sampler_seed(&g, seed, GEOM_STREAM_RANDOM_ORDER);
   for (uint32_t i = 0; i < n; i++) ord[i] = i;
   for (uint32_t i = n; i > 1; i--) {
     uint32_t j = (uint32_t)(sampler_next(&g) % i);

@@ -162,7 +162,7 @@ static void sampler_lexfirst(const geom_point *h, int n, geom_point *v) {
 
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v) {
   sampler_rng g;
-  sampler_seed(&g, seed, index);
+  sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
   geom_point h[SAMPLER_HULL_MAX];
   int m = 0;
   while (m != n) {
@@ -179,10 +179,9 @@ void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
 /* Quadrilateral i of seed S: four points uniform in the unit disc, drawn
 ** again until they are in strictly convex position, ordered anticlockwise
 ** from the one with the smallest angle about their centroid.  The stream
-** is (S xor a salt, i), so quadrilateral i and pentagon i are unrelated.
+** is (S xor GEOM_SALT_QUAD, i), so quadrilateral i and pentagon i are
+** unrelated (the registry of streams: geom/splitmix.h).
 ** atan2 only orders the points; the convexity test is exact. */
-#define SAMPLER_QUAD_SALT 0x51A7C0DE5EEDF00Dull
-
 static void sampler_by_angle(geom_point q[4], double cx, double cy) {
   double ang[4];
   for (int k = 0; k < 4; k++) ang[k] = atan2(q[k].y - cy, q[k].x - cx);
@@ -199,7 +198,7 @@ static void sampler_by_angle(geom_point q[4], double cx, double cy) {
 
 void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]) {
   sampler_rng g;
-  sampler_seed(&g, seed ^ SAMPLER_QUAD_SALT, index);
+  sampler_seed(&g, seed ^ GEOM_SALT_QUAD, index);
   for (;;) {
     double cx = 0, cy = 0;
     for (int k = 0; k < 4; k++) {
@@ -229,7 +228,7 @@ static int sampler_pentagon_polygon(uint64_t seed, uint64_t index, geom_point v[
   sampler_rng g;
   geom_point h[5];
   int rc;
-  sampler_seed(&g, seed, index);
+  sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
   while ((rc = draw(&g, 5, h)) == -1) {}
   if (rc != 0) return rc;
   sampler_lexfirst(h, 5, v);
@@ -250,7 +249,7 @@ static int sampler_pentagon_dischull(uint64_t seed, uint64_t index, geom_point v
   sampler_rng g;
   geom_point h[SAMPLER_HULL_MAX];
   int m;
-  sampler_seed(&g, seed, index);
+  sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
   do {
     m = 0;
     for (int k = 0; k < 5; k++) m = sampler_hull_add(h, m, sampler_disc(&g));

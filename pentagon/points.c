@@ -26,7 +26,7 @@ const char *sampler_points_name(sampler_points_kind k) {
 
 void sampler_points(sampler_points_kind k, uint64_t seed, size_t n, geom_point *out) {
   sampler_rng g;
-  sampler_seed(&g, seed, 0x706f696e7473ull);   /* "points" */
+  sampler_seed(&g, seed, GEOM_STREAM_POINTS);
   size_t side = (size_t)ceil(sqrt((double)n));
   while (side * side < n) side++;
   for (size_t i = 0; i < n; i++) {

@@ -19,6 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "geom.h"
+#include "splitmix.h"   /* the registry of streams every sampler_seed names */
 
 /* A small fast generator (the state of one stream). */
 typedef struct sampler_rng { uint64_t s[4]; } sampler_rng;

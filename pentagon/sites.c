@@ -50,7 +50,7 @@ int sampler_sites(int kind, uint64_t seed, uint64_t index, int n, geom_point *ou
     return 0;
   }
   sampler_rng g;
-  sampler_seed(&g, seed, index);
+  sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
   do {
     for (int i = 0; i < n; i++) out[i] = sampler_point(&g, kind);
   } while (sampler_degenerate(out, n));

@@ -235,6 +235,28 @@ static void test_hull_degenerate(void **state) {
   }
 }
 
+/* The registry of streams (geom/splitmix.h): the tags spell what their
+** comments say, the fixed values stay what every recorded output was drawn
+** with, and no two tags coincide. */
+static void test_stream_registry(void **state) {
+  (void)state;
+  static const struct { uint64_t tag; const char *ascii; } tags[] = {
+    {GEOM_STREAM_POINTS, "points"}, {GEOM_STREAM_BRIO, "brio"},
+    {GEOM_STREAM_RANDOM_ORDER, "rand"}};
+  for (size_t k = 0; k < sizeof tags / sizeof tags[0]; k++) {
+    uint64_t v = 0;
+    for (const char *c = tags[k].ascii; *c; c++) v = v << 8 | (unsigned char)*c;
+    assert_true(v == tags[k].tag);
+    assert_true(tags[k].tag != GEOM_STREAM_GOT_POLYGON);
+    for (size_t j = 0; j < k; j++) assert_true(tags[j].tag != tags[k].tag);
+  }
+  assert_true(GEOM_STREAM_GOT_POLYGON == 0);
+  assert_true(GEOM_SALT_QUAD == 0x51A7C0DE5EEDF00Dull);
+  assert_true(GEOM_STATE_FORMULA_SIGNS == 0x5EED5167ull);
+  assert_true(GEOM_STATE_LOT_WALK == 0x9e3779b97f4a7c15ull);
+  assert_true(GEOM_STREAM_SAMPLE(12345) == 12345);
+}
+
 static void test_deviates(void **state) {
   (void)state;
   sampler_rng g;
@@ -266,6 +288,7 @@ int main(void) {
     cmocka_unit_test(test_is_iteration_method),
     cmocka_unit_test(test_hull_degenerate),
     cmocka_unit_test(test_deviates),
+    cmocka_unit_test(test_stream_registry),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
