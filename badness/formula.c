@@ -227,38 +227,8 @@ void formula_clear_errors(void) {
 
 /* ---- parsing a definition ------------------------------------------------ */
 
-static int formula_name_char(int c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-         (c != '\0' && strchr("'/-.()+*^", c) != NULL);
-}
-
 int formula_check_name(const char *name, char *err, size_t errlen) {
-  size_t n = strlen(name);
-  int letter = 0;
-  if (n == 0) {
-    snprintf(err, errlen, "the measure name is empty");
-    return -1;
-  }
-  if (n >= FORMULA_NAME_MAX) {
-    snprintf(err, errlen, "measure name '%.20s...' is %zu characters long; at most %d", name,
-             n, FORMULA_NAME_MAX - 1);
-    return -1;
-  }
-  for (size_t i = 0; i < n; i++) {
-    unsigned char c = (unsigned char)name[i];
-    if (!formula_name_char(c)) {
-      snprintf(err, errlen,
-               "measure name '%s' has the character '%c'; use letters, digits and ' / - . ( ) + * ^ "
-               "('_' separates measure and joint in rule names)",
-               name, c);
-      return -1;
-    }
-    if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) letter = 1;
-  }
-  if (!letter) {
-    snprintf(err, errlen, "measure name '%s' needs at least one letter", name);
-    return -1;
-  }
+  if (measure_check_name("measure", name, err, errlen) != 0) return -1;
   int id = measure_find(name);
   if (id >= 0) {
     snprintf(err, errlen, "measure '%s' already exists (%s)", name,

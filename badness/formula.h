@@ -23,7 +23,7 @@
 #include "measure.h"
 
 #define FORMULA_MAX 32          /* formulas per process */
-#define FORMULA_NAME_MAX 32     /* longest NAME, terminator included */
+#define FORMULA_NAME_MAX MEASURE_NAME_MAX     /* longest NAME, terminator included */
 /* Longest definition text.  muParser formats its error messages into a
 ** fixed buffer and overflows it (a crash, not an error) on a bad token of
 ** about 2,000 characters; refusing longer definitions up front keeps every
@@ -41,9 +41,8 @@ extern const char formula_vars[];
 ** position in the whole definition text; unknown variables are named). */
 int formula_define(const char *def, char *err, size_t errlen);
 
-/* Is name acceptable for a user measure (letters, digits and ' / - . ( ) + * ^,
-** at least one letter, no '_' (rule names split at the last '_'), no blank
-** or ','), and not taken?  0, or -1 with the reason in err. */
+/* Is name acceptable for a user measure (measure_check_name's alphabet) and
+** not taken?  0, or -1 with the reason in err. */
 int formula_check_name(const char *name, char *err, size_t errlen);
 
 /* Record a bad value of a user measure (thread-safe; only the first one is

@@ -260,3 +260,50 @@ measure_points_fn measure_points(int id) {
 unsigned measure_fields(int id) {
   return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_fields[id] : GEOM_F_ALL;
 }
+
+/* ---- user names -------------------------------------------------------- */
+
+static int measure_name_char(int c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+         (c != '\0' && strchr("'/-.()+*^", c) != NULL);
+}
+
+/* A printable bad character is quoted with the name; any other byte (a
+** newline, a tab) is named by its code and the name cut before it, so the
+** message stays one line. */
+int measure_check_name(const char *what, const char *name, char *err, size_t errlen) {
+  size_t n = strlen(name);
+  int letter = 0;
+  if (n == 0) {
+    snprintf(err, errlen, "the %s name is empty", what);
+    return -1;
+  }
+  for (size_t i = 0; i < n; i++) {
+    unsigned char c = (unsigned char)name[i];
+    if (c < 0x20 || c >= 0x7f) {
+      snprintf(err, errlen, "%s name '%.*s...' has the byte 0x%02x; use letters, digits and "
+               "' / - . ( ) + * ^", what, (int)(i < 20 ? i : 20), name, c);
+      return -1;
+    }
+  }
+  if (n >= MEASURE_NAME_MAX) {
+    snprintf(err, errlen, "%s name '%.20s...' is %zu characters long; at most %d", what, name,
+             n, MEASURE_NAME_MAX - 1);
+    return -1;
+  }
+  for (size_t i = 0; i < n; i++) {
+    unsigned char c = (unsigned char)name[i];
+    if (!measure_name_char(c)) {
+      snprintf(err, errlen,
+               "%s name '%s' has the character '%c'; use letters, digits and ' / - . ( ) + * ^ "
+               "('_' separates measure and joint in rule names)", what, name, c);
+      return -1;
+    }
+    letter |= (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+  }
+  if (!letter) {
+    snprintf(err, errlen, "%s name '%s' needs at least one letter", what, name);
+    return -1;
+  }
+  return 0;
+}

@@ -48,6 +48,16 @@ enum {
 int measure_count(void);
 const measure *measure_get(int id);
 int measure_find(const char *name);             /* -1 if unknown */
+
+/* The alphabet of names users give, to measures (formulas, plugins) and to
+** quadrilateral rules (plugins) alike (docs/plugins.md): 1 to
+** MEASURE_NAME_MAX - 1 characters among letters, digits and ' / - . ( ) +
+** * ^, at least one letter; no '_' (rule names split at the last '_'), no
+** blank, ',' or control character (names go into CSV rows and one-line
+** messages).  what ("measure", "rule") opens the message.  Whether the
+** name is taken is the registry's to say.  0, or -1 with the reason. */
+#define MEASURE_NAME_MAX 32
+int measure_check_name(const char *what, const char *name, char *err, size_t errlen);
 int measure_register(const measure *m);         /* new id, or -1 if full or taken */
 void measure_unregister_user(void);             /* drop user measures (tests) */
 

@@ -141,36 +141,48 @@ static int cli_classify_one(const geom_point v[5], uint64_t id, uint64_t line, i
   return 0;
 }
 
-static int cli_classify_ok(const geom_point v[5], uint64_t id, uint64_t line, int rev,
-                           void *ctx) {
-  (void)v, (void)id, (void)line, (void)rev, (void)ctx;
-  return 0;
+/* The held rows to standard output, once the run has succeeded; 1 when
+** they could not be kept.  A failed write to standard output stops the
+** copy and is reported by cli_close_out, as for any command. */
+static int cli_classify_release(FILE *held, FILE *out) {
+  char buf[1 << 14];
+  size_t n;
+  int bad = fflush(held) != 0 || ferror(held);
+  rewind(held);
+  while (!bad && (n = fread(buf, 1, sizeof buf, held)) > 0)
+    if (fwrite(buf, 1, n, out) != n) break;
+  bad |= ferror(held) != 0;
+  fclose(held);
+  if (bad) cli_error(CMD, "cannot keep the rows in a temporary file: %s", strerror(errno));
+  return bad;
 }
 
+/* A failing run prints no row: a bad input row, a bad value of a user
+** measure or a plugin rule's bad answer may come after many good rows.  A
+** file output is discarded on failure (output.c); rows meant for standard
+** output, which cannot be taken back, are held in a temporary file and
+** released only when the whole input has been classified. */
 static int cli_classify_stream(const cli_classify_opts *o, FILE *in, FILE *out) {
-  cli_classify_run run = {.o = o, .in = in, .out = out};
+  FILE *w = out == stdout ? tmpfile() : out;
+  if (w == NULL) return cli_error(CMD, "cannot make a temporary file: %s", strerror(errno));
+  cli_classify_run run = {.o = o, .in = in, .out = w};
   struct stat st;
   char err[512];
-  if (in != stdin && fstat(fileno(in), &st) == 0 && S_ISREG(st.st_mode)) {
+  if (in != stdin && fstat(fileno(in), &st) == 0 && S_ISREG(st.st_mode))
     run.size = (uint64_t)st.st_size;
-    /* Standard output cannot be taken back: a bad row must be found
-    ** before the first line is written.  A file can be read twice (a file
-    ** output is discarded on failure anyway; stdin is read once, so rows
-    ** before a bad one are printed). */
-    if (out == stdout) {
-      if (report_pentagon_each(in, o->in, cli_classify_ok, NULL, err, sizeof err) != 0)
-        return cli_error(CMD, "%s", err);
-      rewind(in);
-    }
-  }
   static const char *const head[6] = {"id", "rule", "decisions", "type", "sink", "dt"};
-  report_csv_row(out, head, 6);
+  report_csv_row(w, head, 6);
   cli_progress_start(&run.prog, "classify");
   int rc = report_pentagon_each(in, o->in, cli_classify_one, &run, err, sizeof err);
   cli_progress_finish(&run.prog);
-  if (rc < 0) return cli_error(CMD, "%s", err);   /* bad input: exit 2 */
-  if (cli_close_out(out) != 0) return 1;          /* rc > 0: a write failed */
-  return cli_userdefs_failed(CMD) ? 1 : 0;
+  /* Bad input (exit 2) or a bad value (1); else rc > 0: a write failed,
+  ** which closing the output (or the held rows' check) reports. */
+  int failed = rc < 0 ? cli_error(CMD, "%s", err) : cli_userdefs_failed(CMD);
+  if (w != out) {
+    if (failed) fclose(w);
+    return failed ? failed : cli_classify_release(w, out) || cli_close_out(out) != 0;
+  }
+  return failed ? failed : cli_close_out(out) != 0 || rc > 0;
 }
 
 int cli_cmd_classify(int argc, char **argv) {

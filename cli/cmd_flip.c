@@ -65,10 +65,13 @@ int cli_cmd_flip(int argc, char **argv) {
                      pos[1 + 2 * bad], pos[2 + 2 * bad], geom_polyerr_str(e));
   double ac, bd;
   rule_choice c = rule_eval(&r, q, &ac, &bd);
-  printf("rule      %s\n", r.name);
+  /* Decided fully before anything is printed: a bad value of a user
+  ** measure or a plugin rule's bad answer fails the command, no result. */
+  if (cli_userdefs_failed("flip")) return 1;
+  printf("rule      %s\n", rule_name(&r));
   if (reversed) printf("note      clockwise input relabelled A, D, C, B (same diagonals)\n");
   printf("decision  %s\n", rule_choice_str(c));
-  if (r.kind == RULE_TRIANGLE) {
+  if (rule_is_triangle(&r)) {
     printf("f(AC)     %.17g\n", ac);
     printf("f(BD)     %.17g\n", bd);
     printf("tie-eps   %g\n", tie_eps);

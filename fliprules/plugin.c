@@ -59,13 +59,10 @@ static rule_choice plugin_rule_fn(const geom_point q[4], void *ctx) {
 }
 
 /* Quadrilateral-rule names follow the measure-name alphabet (no '_', so
-** "NAME" can never be read as MEASURE_JOINT) and must be new. */
+** "NAME" can never be read as MEASURE_JOINT; nothing that splits a line
+** of `list` or a CSV row) and must be new. */
 static int plugin_check_rule_name(const char *name, char *err, size_t errlen) {
-  if (strchr(name, '_') != NULL || strlen(name) == 0 || strlen(name) >= FORMULA_NAME_MAX) {
-    snprintf(err, errlen, "rule name '%.40s' must be 1-%d characters without '_'", name,
-             FORMULA_NAME_MAX - 1);
-    return -1;
-  }
+  if (measure_check_name("rule", name, err, errlen) != 0) return -1;
   for (int i = 0; i < rule_quad_count(); i++)
     if (strcmp(rule_quad_get(i)->name, name) == 0) {
       snprintf(err, errlen, "rule '%s' already exists", name);

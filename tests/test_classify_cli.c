@@ -340,6 +340,36 @@ static void test_bad_rows(void **state) {
   unlink(in);
 }
 
+/* A failing classify writes no row to standard output: a user measure's
+** NaN or a plugin rule's bad answer met after good rows, and a bad row on
+** standard input (read once) after good ones. */
+static void test_fails_quietly(void **state) {
+  (void)state;
+  int st = TC_RUN("--define 'q >= 0 : sqrt(1.6 - a)' classify --input %s --rule q_1", tc_pent);
+  assert_int_equal(st, 1);
+  assert_string_equal(tc_out, "");
+  assert_non_null(strstr(tc_err, "not finite"));
+  assert_true(testutil_one_line(tc_err));
+  st = TC_RUN("--plugin " FLIPLAB_BUILD_DIR "/plugins/badret.so classify --input %s --rule badret",
+              tc_pent);
+  assert_int_equal(st, 1);
+  assert_string_equal(tc_out, "");
+  assert_non_null(strstr(tc_err, "returned 7"));
+  char in[512];
+  tc_path(in, sizeof in, "badstdin.csv");
+  FILE *f = fopen(in, "wb");
+  fputs("x1,y1,x2,y2,x3,y3,x4,y4,x5,y5\n0,0,1,0,1.5,0.5,1,1,0,1\n0,0,1,1\n", f);
+  fclose(f);
+  st = testutil_run_in(in, "classify --input -", tc_out, TC_CAP, tc_err, TC_CAP);
+  assert_int_equal(st, 2);
+  assert_string_equal(tc_out, "");
+  assert_non_null(strstr(tc_err, "line 3"));
+  st = testutil_run_in(tc_pent, "classify --input - --rule DT", tc_out, TC_CAP, tc_err, TC_CAP);
+  assert_int_equal(st, 0);
+  assert_non_null(strstr(tc_out, "id,rule,decisions,type,sink,dt\n1,DT,"));
+  unlink(in);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_sample_exact),
@@ -348,6 +378,7 @@ int main(void) {
     cmocka_unit_test(test_orientation),
     cmocka_unit_test(test_rules_and_input),
     cmocka_unit_test(test_bad_rows),
+    cmocka_unit_test(test_fails_quietly),
   };
   return cmocka_run_group_tests(tests, tc_setup, tc_teardown);
 }

@@ -289,6 +289,23 @@ static void test_help_version(void **state) {
   assert_true(tcli_contains_ci(tcli_err, "usage"));
 }
 
+/* A failing flip prints no result: a user measure's NaN or a plugin rule's
+** answer outside AC, BD, EITHER is found before the first line. */
+static void test_flip_fails_quietly(void **state) {
+  (void)state;
+  static const char *const runs[] = {
+    "--define 'q >= 0 : sqrt(1.2 - a)' flip q_1 0 0 3 0 3 3 0 3",
+    "--plugin " FLIPLAB_BUILD_DIR "/plugins/badret.so flip badret 0 0 1 0 1 1 0 1",
+  };
+  static const char *const want[] = {"not finite", "returned 7"};
+  for (int i = 0; i < 2; i++) {
+    assert_int_equal(tcli_run(runs[i]), 1);
+    assert_string_equal(tcli_out, "");
+    assert_true(testutil_one_line(tcli_err));
+    if (strstr(tcli_err, want[i]) == NULL) fail_msg("%s: %s", runs[i], tcli_err);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_flip_p1),
@@ -296,6 +313,7 @@ int main(void) {
     cmocka_unit_test(test_flip_clockwise),
     cmocka_unit_test(test_flip_extreme),
     cmocka_unit_test(test_flip_errors),
+    cmocka_unit_test(test_flip_fails_quietly),
     cmocka_unit_test(test_list),
     cmocka_unit_test(test_help_version),
   };

@@ -216,6 +216,7 @@ static void test_refusals(void **state) {
   refused(PLUGIN_DIR "nothere.so", "No such file");
   refused(PLUGIN_DIR "badabi.so", "ABI 42");
   refused(PLUGIN_DIR "noentry.so", "does not export fliplab_plugin_entry");
+  refused(PLUGIN_DIR "badname.so", "rule name 'bad...' has the byte 0x0a");   /* a newline */
   refused(PLUGIN_DIR "rule109.so", "already exists");
   refused(PLUGIN_DIR "rule156.so", "already exists");
   refused(FLIPLAB_SOURCE_DIR "/CMakeLists.txt", "cannot load");

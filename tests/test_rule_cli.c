@@ -238,6 +238,7 @@ static void test_refusals(void **state) {
   refused("--plugin " PLUGINS "nothere.so rule DT", 2, "No such file");
   refused("--plugin " PLUGINS "badabi.so rule DT", 2, "ABI");
   refused("--plugin " PLUGINS "noentry.so rule DT", 2, "fliplab_plugin_entry");
+  refused("--plugin " PLUGINS "badname.so list", 2, "has the byte 0x0a");
   refused("--plugin " PLUGINS "rule109.so --plugin " PLUGINS "rule109.so list", 2, "already exists");
   refused("--define 'z = a - 1' rule z_1", 2, "both signs");
   refused("rule nosuch_1", 2, "unknown measure");
