@@ -20,10 +20,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <omp.h>
 #include "flipgraph.h"
 #include "measure.h"
-#include "quadvec_internal.h"
+#include "census_internal.h"
 #include "sampler.h"
 
 #define FLIPGRAPH_NCODES 243
@@ -150,23 +149,13 @@ void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_e
 
 /* ---- plans: many rules per pentagon -------------------------------------- */
 
-typedef struct flipgraph_item {
-  int rule;          /* index into the caller's list */
-  int slot;          /* column of the values table */
-} flipgraph_item;
-
+/* The shared plan (census_internal.h: rules checked, slots, joints) and
+** what is the pentagon's own: the code tables. */
 struct flipgraph_plan {
   int nrules;
   double tie_eps;
-  rule *rules;                       /* copy */
-  int nslots, slot_measure[MEASURE_MAX];
-  int eval_all;                      /* use measure_eval_all (see plan_new) */
-  double slot_sign[QUADVEC_PAD(MEASURE_MAX)];   /* -1.0 for measures <= 0, else 1.0 */
-  int ngroup[JOINT_CAPACITY];           /* triangle rules grouped by joint */
-  int joint_used[JOINT_CAPACITY];       /* ngroup[j] > 0 */
-  flipgraph_item *group[JOINT_CAPACITY];
-  int ndt, *dt;                      /* DT rules */
-  int nquad, *quad;                  /* other quadrilateral rules */
+  rule *rules;                       /* copy, what cp points to */
+  census_plan cp;
   flipgraph graph[FLIPGRAPH_NCODES]; /* code -> graph (delaunay unset) */
   unsigned char code_type[FLIPGRAPH_NCODES];   /* code -> type */
   signed char code_sink1[FLIPGRAPH_NCODES];    /* code -> sink if type I, else -2 */
@@ -174,10 +163,8 @@ struct flipgraph_plan {
 
 void flipgraph_plan_free(flipgraph_plan *pl) {
   if (pl == NULL) return;
+  census_plan_free(&pl->cp);
   free(pl->rules);
-  for (int j = 0; j < JOINT_CAPACITY; j++) free(pl->group[j]);
-  free(pl->dt);
-  free(pl->quad);
   free(pl);
 }
 
@@ -187,54 +174,16 @@ flipgraph_plan *flipgraph_plan_new(const rule *rules, int nrules, double tie_eps
   if (pl == NULL) return NULL;
   pl->nrules = nrules;
   pl->tie_eps = tie_eps;
-  for (int s = 0; s < QUADVEC_PAD(MEASURE_MAX); s++) pl->slot_sign[s] = 1.0;
-  size_t n = nrules > 0 ? (size_t)nrules : 1;
-  pl->rules = malloc(n * sizeof *pl->rules);
-  pl->dt = malloc(n * sizeof *pl->dt);
-  pl->quad = malloc(n * sizeof *pl->quad);
-  for (int j = 0; j < JOINT_CAPACITY; j++) pl->group[j] = malloc(n * sizeof(flipgraph_item));
-  int ok = pl->rules && pl->dt && pl->quad;
-  for (int j = 0; j < JOINT_CAPACITY; j++) ok = ok && pl->group[j];
-  if (!ok) goto fail;
-  memcpy(pl->rules, rules, (size_t)nrules * sizeof *rules);
-  for (int i = 0; i < nrules; i++) {
-    const rule *r = &rules[i];
-    if (r->kind == RULE_QUAD) {
-      if (r->quad < 0 || r->quad >= rule_quad_count()) goto fail;
-      if (r->quad == RULE_DT) pl->dt[pl->ndt++] = i;
-      else pl->quad[pl->nquad++] = i;
-      continue;
-    }
-    if (r->kind != RULE_TRIANGLE || r->measure < 0 || r->measure >= measure_count()
-        || joint_get(r->joint) == NULL)
-      goto fail;
-    int slot = 0;
-    while (slot < pl->nslots && pl->slot_measure[slot] != r->measure) slot++;
-    if (slot == pl->nslots) {
-      int neg = measure_get(r->measure)->sign == MEASURE_NONPOS;
-      pl->slot_measure[slot] = r->measure;
-      pl->slot_sign[slot] = neg ? -1.0 : 1.0;
-      pl->nslots++;
-    }
-    flipgraph_item it = {i, slot};
-    pl->group[r->joint][pl->ngroup[r->joint]++] = it;
-    pl->joint_used[r->joint] = 1;
-  }
+  pl->rules = malloc((nrules > 0 ? (size_t)nrules : 1) * sizeof *pl->rules);
+  if (pl->rules == NULL) goto fail;
+  if (nrules > 0) memcpy(pl->rules, rules, (size_t)nrules * sizeof *rules);
+  if (census_plan_make(&pl->cp, pl->rules, nrules) != 0) goto fail;
   for (int code = 0; code < FLIPGRAPH_NCODES; code++) {
     rule_choice dec[5];
     for (int j = 0, c = code; j < 5; j++, c /= 3) dec[j] = (rule_choice)(c % 3);
     flipgraph_shape(dec, &pl->graph[code]);
     pl->code_type[code] = (unsigned char)pl->graph[code].type;
     pl->code_sink1[code] = (signed char)(pl->graph[code].type == FLIPGRAPH_I ? pl->graph[code].sink[0] : -2);
-  }
-  /* measure_eval_all computes every registered measure without a call per
-  ** built-in: the fast way, unless it would also run user measures (maybe
-  ** slow formulas) that no rule of the plan needs. */
-  pl->eval_all = 1;
-  for (int m = MEASURE_BUILTIN_COUNT; m < measure_count(); m++) {
-    int used = 0;
-    for (int k = 0; k < pl->nslots; k++) used |= pl->slot_measure[k] == m;
-    if (!used) pl->eval_all = 0;
   }
   return pl;
 fail:
@@ -248,7 +197,7 @@ fail:
 static const unsigned long long flipgraph_bd_weight[5] = {1, 3, 9, 27, 81};
 static const unsigned long long flipgraph_tie_weight[5] = {2, 6, 18, 54, 162};
 
-#define FLIPGRAPH_SLOTS QUADVEC_PAD(MEASURE_MAX)
+#define FLIPGRAPH_SLOTS CENSUS_SLOTS
 
 typedef struct flipgraph_work {
   double val[10][FLIPGRAPH_SLOTS];   /* measure of slot s on triangle t */
@@ -276,9 +225,10 @@ static const ptrdiff_t flipgraph_quad_off[5][4] = {FLIPGRAPH_QUADS(FLIPGRAPH_OFF
 __attribute__((target_clones("avx2", "default")))
 #endif
 static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
-  const quadvec_batch b = {pl->nslots, FLIPGRAPH_SLOTS, 10, 5, flipgraph_quad_off,
-                     flipgraph_bd_weight, flipgraph_tie_weight, pl->slot_sign, pl->tie_eps,
-                     pl->joint_used, &w->val[0][0], &w->mag[0][0], &w->h[0][0], w->flags,
+  const census_plan *cp = &pl->cp;
+  const quadvec_batch b = {cp->nslots, FLIPGRAPH_SLOTS, 10, 5, flipgraph_quad_off,
+                     flipgraph_bd_weight, flipgraph_tie_weight, cp->slot_sign, pl->tie_eps,
+                     cp->joint_used, &w->val[0][0], &w->mag[0][0], &w->h[0][0], w->flags,
                      &w->code[0][0], &w->tie[0][0]};
   quadvec_run(&b);
 }
@@ -287,27 +237,31 @@ static void flipgraph_all_codes(const flipgraph_plan *pl, flipgraph_work *w) {
 ** DT code is dt_code. */
 static void flipgraph_plan_codes(const flipgraph_plan *pl, const flipgraph_pentagon *p,
                                  int dt_code, flipgraph_work *w, unsigned char *codes) {
-  if (pl->eval_all) {
+  const census_plan *cp = &pl->cp;
+  if (cp->eval_all_ok) {
     double all[MEASURE_MAX];
     for (int t = 0; t < 10; t++) {
       measure_eval_all(&p->tri[t], all);
-      for (int s = 0; s < pl->nslots; s++) w->val[t][s] = all[pl->slot_measure[s]];
+      for (int s = 0; s < cp->nslots; s++) w->val[t][s] = all[cp->slot_measure[s]];
     }
   } else {
-    for (int s = 0; s < pl->nslots; s++) {
-      const measure *m = measure_get(pl->slot_measure[s]);
+    for (int s = 0; s < cp->nslots; s++) {
+      const measure *m = measure_get(cp->slot_measure[s]);
       for (int t = 0; t < 10; t++) w->val[t][s] = m->fn(&p->tri[t], m->ctx);
     }
   }
   flipgraph_all_codes(pl, w);
-  for (int j = 0; j < JOINT_CAPACITY; j++)
-    for (int k = 0; k < pl->ngroup[j]; k++)
-      codes[pl->group[j][k].rule] = (unsigned char)w->code[j][pl->group[j][k].slot];
-  for (int k = 0; k < pl->ndt; k++) codes[pl->dt[k]] = (unsigned char)dt_code;
-  for (int k = 0; k < pl->nquad; k++) {
-    flipgraph g;
-    flipgraph_classify(p, &pl->rules[pl->quad[k]], pl->tie_eps, &g);
-    codes[pl->quad[k]] = (unsigned char)flipgraph_code(g.dec);
+  for (int i = 0; i < pl->nrules; i++) {
+    const census_item *it = &cp->item[i];
+    if (it->kind == CENSUS_TRIANGLE) {
+      codes[i] = (unsigned char)w->code[it->joint][it->slot];
+    } else if (it->kind == CENSUS_DT) {
+      codes[i] = (unsigned char)dt_code;
+    } else {
+      flipgraph g;
+      flipgraph_classify(p, &pl->rules[i], pl->tie_eps, &g);
+      codes[i] = (unsigned char)flipgraph_code(g.dec);
+    }
   }
 }
 
@@ -323,7 +277,7 @@ void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
   rule_choice dec[5];
   flipgraph_work w;
   flipgraph_work_init(&w);
-  int dt_code = pl->ndt > 0 ? flipgraph_dt_decisions(p->v, dec) : 0;
+  int dt_code = pl->cp.ndt > 0 ? flipgraph_dt_decisions(p->v, dec) : 0;
   flipgraph_plan_codes(pl, p, dt_code, &w, codes);
   for (int i = 0; i < pl->nrules; i++) {
     out[i] = pl->graph[codes[i]];
@@ -335,60 +289,60 @@ void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
 
 /* ---- tally --------------------------------------------------------------- */
 
-/* Each thread adds into its own counts; the totals are integer sums, so
-** neither the thread count nor the scheduling can change them. */
-typedef struct flipgraph_range {
+/* A tally's state: per thread (census_loop's thread numbers) its counts,
+** decision codes and (with a hook) graphs, rows of nr. */
+typedef struct flipgraph_tallyctx {
   const flipgraph_plan *pl;
   const flipgraph_run *run;
-  int thread;
-  unsigned char *codes;     /* nrules */
-  flipgraph *graphs;        /* nrules, when the run has a hook */
-  int *failed;              /* set when run->sampler fails (out of memory) */
-} flipgraph_range;
+  size_t nr;
+  flipgraph_counts *all;
+  unsigned char *codes;
+  flipgraph *graphs;        /* when the run has a hook */
+} flipgraph_tallyctx;
 
-static void flipgraph_hook(const flipgraph_range *t, uint64_t i, const flipgraph_pentagon *p) {
+static void flipgraph_hook(const flipgraph_tallyctx *t, int thread, uint64_t i,
+                           const flipgraph_pentagon *p) {
   const flipgraph_plan *pl = t->pl;
+  const unsigned char *codes = t->codes + (size_t)thread * t->nr;
+  flipgraph *graphs = t->graphs + (size_t)thread * t->nr;
   for (int r = 0; r < pl->nrules; r++) {
-    flipgraph *g = &t->graphs[r];
-    *g = pl->graph[t->codes[r]];
+    flipgraph *g = &graphs[r];
+    *g = pl->graph[codes[r]];
     g->delaunay = g->type == FLIPGRAPH_I && p->delaunay_sink >= 0
                && g->sink[0] == p->delaunay_sink;
   }
-  t->run->each(t->run->each_ctx, t->thread, i, p, t->graphs);
+  t->run->each(t->run->each_ctx, thread, i, p, graphs);
 }
 
-static void flipgraph_tally_range(const flipgraph_range *t, uint64_t lo, uint64_t hi,
-                                  flipgraph_counts *c) {
+/* One chunk (a census_range_fn): -1 when run->sampler runs out of memory. */
+static int flipgraph_tally_range(void *ctx, int thread, uint64_t lo, uint64_t hi) {
+  const flipgraph_tallyctx *t = ctx;
   const flipgraph_plan *pl = t->pl;
+  const flipgraph_run *run = t->run;
+  unsigned char *codes = t->codes + (size_t)thread * t->nr;
+  flipgraph_counts *c = t->all + (size_t)thread * t->nr;
   flipgraph_pentagon p;
   flipgraph_work w;
   geom_point v[5];
   flipgraph_work_init(&w);
   for (uint64_t i = lo; i < hi; i++) {
-    if (t->run->sampler == NULL) {
-      sampler_pentagon(t->run->seed, i, v);
-    } else if (t->run->sampler(t->run->seed, i, v) != 0) {
-#pragma omp atomic write
-      *t->failed = 1;
-      return;
-    }
+    if (run->sampler == NULL) sampler_pentagon(run->seed, i, v);
+    else if (run->sampler(run->seed, i, v) != 0) return -1;
     int dt_code = flipgraph_prepare_code(&p, v);
-    flipgraph_plan_codes(pl, &p, dt_code, &w, t->codes);
+    flipgraph_plan_codes(pl, &p, dt_code, &w, codes);
     for (int r = 0; r < pl->nrules; r++) {
-      int code = t->codes[r];
+      int code = codes[r];
       c[r].type[pl->code_type[code]]++;
       c[r].dt += pl->code_sink1[code] == p.delaunay_sink;
     }
-    if (t->run->each != NULL) flipgraph_hook(t, i, &p);
+    if (run->each != NULL) flipgraph_hook(t, thread, i, &p);
   }
   for (int r = 0; r < pl->nrules; r++) c[r].samples += hi - lo;
+  return 0;
 }
 
 int flipgraph_tally_threads(int threads, uint64_t count) {
-  if (threads <= 0) threads = omp_get_max_threads();
-  uint64_t nchunks = (count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK;
-  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
-  return threads;
+  return census_threads(threads, count, FLIPGRAPH_CHUNK);
 }
 
 /* Per-thread sums, added in thread order (integers: any order gives the same). */
@@ -403,58 +357,33 @@ static void flipgraph_tally_sum(const flipgraph_counts *all, int threads, int nr
     }
 }
 
-static int flipgraph_tally_loop(const flipgraph_plan *pl, const flipgraph_run *run, int threads,
-                                flipgraph_counts *all, unsigned char *codes, flipgraph *graphs) {
-  int failed = 0;
-  size_t nr = pl->nrules > 0 ? (size_t)pl->nrules : 1;
-  uint64_t nchunks = (run->count + FLIPGRAPH_CHUNK - 1) / FLIPGRAPH_CHUNK, done = 0;
-#pragma omp parallel num_threads(threads)
-  {
-    int me = omp_get_thread_num();
-    flipgraph_range t = {pl, run, me, codes + (size_t)me * nr,
-                         graphs ? graphs + (size_t)me * nr : NULL, &failed};
-#pragma omp for schedule(dynamic, 1)
-    for (uint64_t k = 0; k < nchunks; k++) {
-      uint64_t lo = run->first + k * FLIPGRAPH_CHUNK;
-      uint64_t hi = k + 1 == nchunks ? run->first + run->count : lo + FLIPGRAPH_CHUNK;
-      flipgraph_tally_range(&t, lo, hi, all + (size_t)me * nr);
-      uint64_t now;
-#pragma omp atomic capture
-      now = done += hi - lo;
-      if (run->progress != NULL && me == 0) run->progress(now, run->count, run->progress_ctx);
-    }
-  }
-  if (run->progress != NULL) run->progress(run->count, run->count, run->progress_ctx);
-  return failed ? -1 : 0;
-}
-
 int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
                         flipgraph_counts *out) {
   if (run->first + run->count < run->first || (nrules > 0 && out == NULL)) return -1;
   flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, run->tie_eps);
   if (pl == NULL) return -1;
   int threads = flipgraph_tally_threads(run->threads, run->count);
-  size_t nr = nrules > 0 ? (size_t)nrules : 1;
-  flipgraph_counts *all = calloc((size_t)threads * nr, sizeof *all);
-  unsigned char *codes = malloc((size_t)threads * nr);
-  flipgraph *graphs = run->each ? malloc((size_t)threads * nr * sizeof *graphs) : NULL;
+  size_t nr = nrules > 0 ? (size_t)nrules : 1, cells = (size_t)threads * nr;
+  flipgraph_tallyctx t = {pl, run, nr, calloc(cells, sizeof *t.all), malloc(cells),
+                          run->each ? malloc(cells * sizeof *t.graphs) : NULL};
+  census_loop loop = {run->first, run->count, FLIPGRAPH_CHUNK, threads, flipgraph_tally_range,
+                      &t, run->progress, run->progress_ctx};
   int rc = -1;
-  if (all != NULL && codes != NULL && (run->each == NULL || graphs != NULL)) {
-    if (flipgraph_tally_loop(pl, run, threads, all, codes, graphs) == 0) {
-      flipgraph_tally_sum(all, threads, nrules, out);
-      rc = 0;
-    }
+  if (t.all != NULL && t.codes != NULL && (run->each == NULL || t.graphs != NULL) &&
+      census_loop_run(&loop) == 0) {
+    flipgraph_tally_sum(t.all, threads, nrules, out);
+    rc = 0;
   }
-  free(all);
-  free(codes);
-  free(graphs);
+  free(t.all);
+  free(t.codes);
+  free(t.graphs);
   flipgraph_plan_free(pl);
   return rc;
 }
 
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
-                    flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx) {
+                    flipgraph_counts *out, census_progress_fn progress, void *ctx) {
   flipgraph_run run = {seed, first, count, tie_eps, threads, progress, ctx, NULL, NULL, NULL};
   return flipgraph_tally_run(rules, nrules, &run, out);
 }

@@ -11,6 +11,7 @@
 #define FLIPLAB_FLIPGRAPH_H
 
 #include <stdint.h>
+#include "census.h"
 #include "geom.h"
 #include "rule.h"
 #include "sampler.h"
@@ -54,10 +55,9 @@ const char *flipgraph_type_name(flipgraph_type t);   /* "I" .. "V" */
 ** (sampler_pentagon) under every rule and add the outcomes to out[0..nrules-1].
 ** threads <= 0 means all cores.  Counts do not depend on the thread count.
 ** progress (may be NULL) is called now and then from one thread. */
-typedef void (*flipgraph_progress_fn)(uint64_t done, uint64_t total, void *ctx);
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
-                    flipgraph_counts *out, flipgraph_progress_fn progress, void *ctx);
+                    flipgraph_counts *out, census_progress_fn progress, void *ctx);
 
 /* The same tally with a per-sample hook: each(ctx, thread, index, p, g) is
 ** called for every pentagon after its classification, with g[0..nrules-1]
@@ -76,7 +76,7 @@ typedef struct flipgraph_run {
   uint64_t seed, first, count;
   double tie_eps;
   int threads;                        /* <= 0: all cores */
-  flipgraph_progress_fn progress;     /* may be NULL */
+  census_progress_fn progress;        /* may be NULL */
   void *progress_ctx;
   flipgraph_sample_fn each;           /* may be NULL */
   void *each_ctx;

@@ -45,15 +45,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <omp.h>
 #include "siteflip_internal.h"
 #include "measure.h"
 #include "joint.h"
-#include "quadvec_internal.h"
+#include "census_internal.h"
 #include "sampler.h"
 
 #define SITEFLIP_CHUNK 256
-#define SITEFLIP_SLOTS QUADVEC_PAD(MEASURE_MAX)
+#define SITEFLIP_SLOTS CENSUS_SLOTS
 
 typedef struct siteflip_crule {
   int quad;              /* whole-quadrilateral rule */
@@ -67,14 +66,13 @@ typedef struct siteflip_crule {
   double key0;           /* the identity of keyop */
 } siteflip_crule;
 
+/* The shared plan (census_internal.h: rules checked, slots in measure
+** order with their signs, joints in use) and what the site sets add. */
 typedef struct siteflip_cplan {
+  census_plan cp;
   const rule *rules;
-  int nrules, nslots, nv, eval_all;   /* nv: slots padded to whole vectors */
-  int has_dt;                         /* some rule is DT */
-  int slot_measure[MEASURE_MAX];      /* in increasing order */
+  int nrules, nv, eval_all;           /* nv: slots padded to whole vectors */
   int nruns, run_slot[MEASURE_MAX], run_len[MEASURE_MAX];   /* slots of consecutive measures */
-  double slot_sign[SITEFLIP_SLOTS];   /* -1.0 for measures <= 0, else 1.0 (padding too) */
-  int joint_used[JOINT_CAPACITY];
   siteflip_crule *cr;
   double eps;
   int nentries;                       /* joint_count() * nv */
@@ -110,77 +108,69 @@ typedef struct siteflip_cwork {
   size_t nodecap;
 } siteflip_cwork;
 
-/* One slot per measure of the (valid) triangle rules, in measure order,
-** so that siteflip_values copies runs of consecutive measures. */
-static void siteflip_cplan_slots(siteflip_cplan *pl) {
-  unsigned char used[MEASURE_MAX] = {0};
-  int slot_of[MEASURE_MAX];
-  for (int i = 0; i < pl->nrules; i++)
-    if (!pl->cr[i].quad) used[pl->rules[i].measure] = 1;
-  for (int m = 0; m < MEASURE_MAX; m++) {
-    if (!used[m]) continue;
-    int s = pl->nslots++;
-    slot_of[m] = s;
-    pl->slot_measure[s] = m;
-    pl->slot_sign[s] = measure_get(m)->sign < 0 ? -1.0 : 1.0;
-    if (s > 0 && pl->slot_measure[s - 1] == m - 1) {
+/* Runs of consecutive measures among the slots, which siteflip_values
+** copies as blocks out of measure_eval_all. */
+static void siteflip_cplan_runs(siteflip_cplan *pl) {
+  const census_plan *cp = &pl->cp;
+  for (int s = 0; s < cp->nslots; s++) {
+    if (s > 0 && cp->slot_measure[s - 1] == cp->slot_measure[s] - 1) {
       pl->run_len[pl->nruns - 1]++;
     } else {
       pl->run_slot[pl->nruns] = s;
       pl->run_len[pl->nruns++] = 1;
     }
   }
-  for (int i = 0; i < pl->nrules; i++)
-    if (!pl->cr[i].quad) pl->cr[i].slot = slot_of[pl->rules[i].measure];
 }
 
-/* 0, -1 for a rule the plan cannot hold, -2 when memory ran out. */
-static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
-  memset(pl, 0, sizeof *pl);
-  pl->rules = rules;
-  pl->nrules = nrules;
-  pl->eps = eps;
-  pl->cr = calloc((size_t)nrules + 1, sizeof *pl->cr);
-  if (pl->cr == NULL) return -2;   /* out of memory, told apart from a bad rule */
-  for (int s = 0; s < SITEFLIP_SLOTS; s++) pl->slot_sign[s] = 1.0;
-  for (int i = 0; i < nrules; i++) {
-    const rule *r = &rules[i];
-    siteflip_crule *c = &pl->cr[i];
-    if (r->kind == RULE_QUAD) {
-      if (r->quad < 0 || r->quad >= rule_quad_count()) return -1;
-      c->quad = 1;
-      c->dt = r->quad == RULE_DT;
-      pl->has_dt |= c->dt;
-      continue;
-    }
-    if (r->measure < 0 || r->measure >= measure_count() || joint_get(r->joint) == NULL)
-      return -1;
-    pl->joint_used[r->joint] = 1;
-    c->joint = r->joint;
-    c->msign = measure_get(r->measure)->sign;
-    c->keyop = joint_get(r->joint)->keyop;
-    c->key0 = joint_key_identity(r->joint);
-  }
-  siteflip_cplan_slots(pl);
-  pl->nv = QUADVEC_PAD(pl->nslots);
+/* The entries (joint, slot) of bits and tie, each with its chain of rules
+** in rule order; the quadrilateral rules' chain. */
+static void siteflip_cplan_chains(siteflip_cplan *pl) {
   pl->nentries = joint_count() * pl->nv;
   for (int e = 0; e < pl->nentries; e++) pl->entry_rule[e] = -1;
   pl->first_quad = -1;
-  for (int i = nrules - 1; i >= 0; i--) {   /* chains in rule order */
+  for (int i = pl->nrules - 1; i >= 0; i--) {
     siteflip_crule *c = &pl->cr[i];
     int *head = c->quad ? &pl->first_quad : &pl->entry_rule[c->bit = c->joint * pl->nv + c->slot];
     c->next = *head;
     *head = i;
   }
+}
+
+/* 0, -1 for a rule the plan cannot hold, -2 when memory ran out
+** (siteflip_cplan_free after either). */
+static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules, double eps) {
+  memset(pl, 0, sizeof *pl);
+  pl->rules = rules;
+  pl->nrules = nrules;
+  pl->eps = eps;
+  int rc = census_plan_make(&pl->cp, rules, nrules);
+  if (rc != 0) return rc;
+  if ((pl->cr = calloc((size_t)nrules + 1, sizeof *pl->cr)) == NULL) return -2;
+  for (int i = 0; i < nrules; i++) {
+    const rule *r = &rules[i];
+    const census_item *it = &pl->cp.item[i];
+    siteflip_crule *c = &pl->cr[i];
+    c->quad = it->kind != CENSUS_TRIANGLE;
+    c->dt = it->kind == CENSUS_DT;
+    if (c->quad) continue;
+    c->slot = it->slot;
+    c->joint = it->joint;
+    c->msign = measure_get(r->measure)->sign;
+    c->keyop = joint_get(r->joint)->keyop;
+    c->key0 = joint_key_identity(r->joint);
+  }
+  siteflip_cplan_runs(pl);
+  pl->nv = QUADVEC_PAD(pl->cp.nslots);
+  siteflip_cplan_chains(pl);
   /* measure_eval_all when it is cheaper than calls: many slots, and no
   ** unused user measure (maybe a slow formula) would run. */
-  pl->eval_all = pl->nslots > 4;
-  for (int m = MEASURE_BUILTIN_COUNT; m < measure_count(); m++) {
-    int used = 0;
-    for (int k = 0; k < pl->nslots; k++) used |= pl->slot_measure[k] == m;
-    if (!used) pl->eval_all = 0;
-  }
+  pl->eval_all = pl->cp.nslots > 4 && pl->cp.eval_all_ok;
   return 0;
+}
+
+static void siteflip_cplan_free(siteflip_cplan *pl) {
+  free(pl->cr);
+  census_plan_free(&pl->cp);
 }
 
 static void siteflip_cwork_free(siteflip_cwork *w) {
@@ -328,9 +318,9 @@ __attribute__((target_clones("avx2", "default")))
 #endif
 static void siteflip_all_bits(const siteflip_cplan *pl, const siteflip_graph *g,
                               siteflip_cwork *w) {
-  const quadvec_batch b = {pl->nslots, pl->nv, g->ntris, g->nquads, (const ptrdiff_t (*)[4])w->qoff,
-                           NULL, NULL, pl->slot_sign, pl->eps,
-                           pl->joint_used, w->val, w->mag, w->h, w->flags, w->bits, w->tie};
+  const quadvec_batch b = {pl->cp.nslots, pl->nv, g->ntris, g->nquads, (const ptrdiff_t (*)[4])w->qoff,
+                           NULL, NULL, pl->cp.slot_sign, pl->eps,
+                           pl->cp.joint_used, w->val, w->mag, w->h, w->flags, w->bits, w->tie};
   quadvec_run(&b);
 }
 
@@ -485,13 +475,14 @@ static void siteflip_values(const siteflip_cplan *pl, const siteflip_graph *g, d
       measure_eval_all(&g->tri[t], all);
       for (int k = 0; k < pl->nruns; k++) {
         const int s0 = pl->run_slot[k], len = pl->run_len[k];
-        const double *src = all + pl->slot_measure[s0];
+        const double *src = all + pl->cp.slot_measure[s0];
         for (int s = 0; s < len; s++) row[s0 + s] = src[s];
       }
     } else {
-      for (int s = 0; s < pl->nslots; s++) row[s] = measure_eval(pl->slot_measure[s], &g->tri[t]);
+      for (int s = 0; s < pl->cp.nslots; s++)
+        row[s] = measure_eval(pl->cp.slot_measure[s], &g->tri[t]);
     }
-    for (int s = pl->nslots; s < pl->nv; s++) row[s] = 1.0;
+    for (int s = pl->cp.nslots; s < pl->nv; s++) row[s] = 1.0;
   }
 }
 
@@ -668,7 +659,7 @@ static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork 
   }
   if (*owned) {
     siteflip_cwork_masks(w, g, pl->nv);
-    if (pl->has_dt) siteflip_dt_decisions(g, w->dtdec);
+    if (pl->cp.ndt > 0) siteflip_dt_decisions(g, w->dtdec);
   } else {
     /* siteflip_move, keeping DT's decisions for the DT rule. */
     siteflip_move_tris(g, p);
@@ -720,62 +711,63 @@ static int siteflip_census_args(int sampler, int n, uint64_t first, uint64_t cou
   return 0;
 }
 
+/* A census's state: the plan, the sampler, and per thread (census_loop's
+** thread numbers) its work space and its counts, rows of nr. */
+typedef struct siteflip_censusctx {
+  const siteflip_cplan *pl;
+  int sampler, n;
+  uint64_t seed;
+  size_t nr;
+  siteflip_cwork *work;
+  siteflip_counts *all;
+} siteflip_censusctx;
+
+/* One chunk (a census_range_fn): -1 when memory ran out. */
+static int siteflip_census_range(void *ctx, int thread, uint64_t lo, uint64_t hi) {
+  const siteflip_censusctx *c = ctx;
+  return siteflip_range(c->pl, &c->work[thread], c->sampler, c->n, c->seed, lo, hi,
+                        c->all + (size_t)thread * c->nr);
+}
+
+/* The per-thread counts made whole and added to out, in thread order. */
+static void siteflip_census_sum(const siteflip_censusctx *c, int threads, uint64_t count,
+                                siteflip_counts *out) {
+  for (size_t r = 0; r < (size_t)c->pl->nrules; r++) {
+    siteflip_counts tot = {0};
+    for (int t = 0; t < threads; t++) siteflip_counts_add(&tot, &c->all[(size_t)t * c->nr + r]);
+    siteflip_counts_finish(&tot, count);
+    siteflip_counts_add(&out[r], &tot);
+  }
+}
+
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
                     uint64_t first, uint64_t count, double tie_eps, int threads,
-                    siteflip_counts *out, siteflip_progress_fn progress, void *ctx,
+                    siteflip_counts *out, census_progress_fn progress, void *ctx,
                     char *err, size_t errlen) {
   if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0) return -1;
   siteflip_cplan pl;
   int rc = siteflip_cplan_make(&pl, rules, nrules, tie_eps);
   if (rc != 0) {
-    free(pl.cr);
+    siteflip_cplan_free(&pl);
     snprintf(err, errlen, "%s", rc == -2 ? "out of memory" : "invalid rule list");
     return -1;
   }
-  if (threads <= 0) threads = omp_get_max_threads();
-  uint64_t nchunks = (count + SITEFLIP_CHUNK - 1) / SITEFLIP_CHUNK;
-  if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
+  threads = census_threads(threads, count, SITEFLIP_CHUNK);
   size_t nr = nrules > 0 ? (size_t)nrules : 1;
-  siteflip_counts *all = calloc((size_t)threads * nr, sizeof *all);
-  if (all == NULL) {
-    free(pl.cr);
-    snprintf(err, errlen, "out of memory");
-    return -1;
-  }
-  uint64_t done = 0;
-  int failed = 0;
-#pragma omp parallel num_threads(threads)
-  {
-    int me = omp_get_thread_num();
-    siteflip_cwork w;
-    memset(&w, 0, sizeof w);
-#pragma omp for schedule(dynamic, 1)
-    for (uint64_t k = 0; k < nchunks; k++) {
-      uint64_t lo = first + k * SITEFLIP_CHUNK;
-      uint64_t hi = k + 1 == nchunks ? first + count : lo + SITEFLIP_CHUNK;
-      if (failed) continue;
-      if (siteflip_range(&pl, &w, sampler, n, seed, lo, hi, all + (size_t)me * nr) != 0) {
-#pragma omp atomic write
-        failed = 1;
-      }
-      uint64_t now;
-#pragma omp atomic capture
-      now = done += hi - lo;
-      if (progress != NULL && me == 0) progress(now, count, ctx);
-    }
-    siteflip_cwork_free(&w);
-  }
-  if (progress != NULL && !failed) progress(count, count, ctx);
-  for (int r = 0; r < nrules && !failed; r++) {
-    siteflip_counts tot = {0};
-    for (int t = 0; t < threads; t++) siteflip_counts_add(&tot, &all[(size_t)t * nr + r]);
-    siteflip_counts_finish(&tot, count);
-    siteflip_counts_add(&out[r], &tot);
-  }
-  free(all);
-  free(pl.cr);
-  if (failed) snprintf(err, errlen, "out of memory enumerating triangulations");
-  return failed ? -1 : 0;
+  siteflip_censusctx c = {&pl, sampler, n, seed, nr, calloc((size_t)threads, sizeof *c.work),
+                          calloc((size_t)threads * nr, sizeof *c.all)};
+  census_loop loop = {first, count, SITEFLIP_CHUNK, threads, siteflip_census_range, &c,
+                      progress, ctx};
+  rc = c.work != NULL && c.all != NULL ? 0 : -2;
+  if (rc == 0 && census_loop_run(&loop) != 0) rc = -1;
+  if (rc == 0) siteflip_census_sum(&c, threads, count, out);
+  for (int t = 0; c.work != NULL && t < threads; t++) siteflip_cwork_free(&c.work[t]);
+  free(c.work);
+  free(c.all);
+  siteflip_cplan_free(&pl);
+  if (rc != 0)
+    snprintf(err, errlen, "%s", rc == -2 ? "out of memory" : "out of memory enumerating triangulations");
+  return rc != 0 ? -1 : 0;
 }
 
 int64_t siteflip_find_multi(const rule *r, int sampler, int n, uint64_t seed, uint64_t first,
@@ -800,7 +792,7 @@ int64_t siteflip_find_multi(const rule *r, int sampler, int n, uint64_t seed, ui
       }
       if (owned) siteflip_free(g);
     }
-  free(pl.cr);
+  siteflip_cplan_free(&pl);
   siteflip_cwork_free(&w);
   return found;
 }

@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "census.h"
 #include "geom.h"
 #include "rule.h"
 
@@ -118,14 +119,12 @@ typedef struct siteflip_counts {
 ** the same bits. */
 #define SITEFLIP_GAP_UNIT 0x1p-20
 
-typedef void (*siteflip_progress_fn)(uint64_t done, uint64_t total, void *ctx);
-
 /* Census of samples first .. first+count-1 of sampler `sampler` (a
 ** sampler_sites_kind) with n sites, seed `seed`, under every rule, added to
 ** out[0..nrules-1].  threads <= 0: all cores.  0, or -1 with err. */
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
                     uint64_t first, uint64_t count, double tie_eps, int threads,
-                    siteflip_counts *out, siteflip_progress_fn progress, void *ctx,
+                    siteflip_counts *out, census_progress_fn progress, void *ctx,
                     char *err, size_t errlen);
 
 /* The first sample in [first, first+count) where rule r has two or more

@@ -107,7 +107,7 @@ typedef struct cli_progress {
 } cli_progress;
 
 void cli_progress_start(cli_progress *p, const char *label);
-/* A flipgraph_progress_fn: ctx is the cli_progress. */
+/* A census_progress_fn: ctx is the cli_progress. */
 void cli_progress_update(uint64_t done, uint64_t total, void *ctx);
 void cli_progress_finish(cli_progress *p);
 

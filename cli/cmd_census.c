@@ -157,10 +157,7 @@ int cli_cmd_census(int argc, char **argv) {
   int st = cli_census_parse(argc, argv, &o);
   if (st != 0) return st > 0 ? 0 : 2;
   uint64_t first = 0, count = o.samples;
-  if (o.shard_n > 0) {   /* (K-1)S and KS stay below 1e18: S <= 1e12, N <= 1e6 */
-    first = (o.shard_k - 1) * o.samples / o.shard_n;
-    count = o.shard_k * o.samples / o.shard_n - first;
-  }
+  if (o.shard_n > 0) census_shard_range(o.samples, o.shard_k, o.shard_n, &first, &count);
   rule *rules;
   int nrules = cli_census_rules(&o, &rules);
   if (nrules < 0) return 2;

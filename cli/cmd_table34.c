@@ -178,17 +178,34 @@ static int cli_table34_rules(const char *measures, rule **rules) {
   return n;
 }
 
+/* Count samples [first, first + count) under every rule, with progress;
+** 0, or -1 after a one-line error. */
+static int cli_table34_tally(const cli_table34_opts *o, const rule *rules, int nrules,
+                             uint64_t first, uint64_t count, flipgraph_counts *counts) {
+  cli_progress prog;
+  cli_progress_start(&prog, "table34");
+  /* The iteration method is the tally's own default (sampler NULL). */
+  flipgraph_run run = {.seed = o->seed, .first = first, .count = count, .tie_eps = o->tie_eps,
+                       .threads = (int)o->threads, .progress = cli_progress_update,
+                       .progress_ctx = &prog,
+                       .sampler = o->sampler == &sampler_pentagons_table[0] ? NULL
+                                                                            : o->sampler->draw};
+  int t = flipgraph_tally_run(rules, nrules, &run, counts);
+  cli_progress_finish(&prog);
+  if (t != 0) {
+    cli_error(CMD, "out of memory");   /* the tally fails only to allocate */
+    return -1;
+  }
+  return cli_userdefs_failed(CMD) ? -1 : 0;
+}
+
 int cli_cmd_table34(int argc, char **argv) {
   cli_table34_opts o;
   int st = cli_table34_parse(argc, argv, &o);
   if (st != 0) return st > 0 ? 0 : 2;
 
   uint64_t first = 0, count = o.samples;
-  if (o.shard_n > 0) {
-    /* (K-1)S and KS fit: S <= 1e12 and N <= 1e6, so both stay below 1e18. */
-    first = (o.shard_k - 1) * o.samples / o.shard_n;
-    count = o.shard_k * o.samples / o.shard_n - first;
-  }
+  if (o.shard_n > 0) census_shard_range(o.samples, o.shard_k, o.shard_n, &first, &count);
   rule *rules;
   int nrules = cli_table34_rules(o.measures, &rules);
   if (nrules < 0) return 2;
@@ -204,26 +221,9 @@ int cli_cmd_table34(int argc, char **argv) {
   if ((out = cli_open_out(CMD, o.out)) == NULL) goto done;
   if (o.plot != NULL && (plot = cli_open_out(CMD, o.plot)) == NULL) goto done;
 
-  if (count > 0) {
-    cli_progress prog;
-    cli_progress_start(&prog, "table34");
-    /* The iteration method is the tally's own default (sampler NULL). */
-    flipgraph_run run = {.seed = o.seed, .first = first, .count = count, .tie_eps = o.tie_eps,
-                         .threads = (int)o.threads, .progress = cli_progress_update,
-                         .progress_ctx = &prog,
-                         .sampler = o.sampler == &sampler_pentagons_table[0] ? NULL
-                                                                             : o.sampler->draw};
-    int t = flipgraph_tally_run(rules, nrules, &run, counts);
-    cli_progress_finish(&prog);
-    if (t != 0) {
-      cli_error(CMD, "out of memory");   /* the tally fails only to allocate */
-      rc = 1;
-      goto done;
-    }
-    if (cli_userdefs_failed(CMD)) {
-      rc = 1;
-      goto done;
-    }
+  if (count > 0 && cli_table34_tally(&o, rules, nrules, first, count, counts) != 0) {
+    rc = 1;
+    goto done;
   }
   for (int r = 0; r < nrules; r++) {
     counts[r].samples = count;

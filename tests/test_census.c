@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "census.h"
 #include "flipgraph.h"
 #include "measure.h"
 #include "quadvec_internal.h"
@@ -281,6 +282,48 @@ static void test_census_bad_args(void **state) {
   assert_int_equal(c.samples, 0);
 }
 
+/* Shard k of n of total: [first, end), checked against the plain formula
+** wherever (k-1) total and k total fit in 64 bits. */
+static void tc_shard(uint64_t total, uint64_t k, uint64_t n, uint64_t *first, uint64_t *end) {
+  uint64_t count;
+  assert_int_equal(census_shard_range(total, k, n, first, &count), 0);
+  *end = *first + count;
+  assert_true(*first <= *end && *end <= total);
+  if (total <= UINT64_MAX / n) {
+    assert_int_equal(*first, (k - 1) * total / n);
+    assert_int_equal(*end, k * total / n);
+  }
+}
+
+/* census_shard_range: the shards 1/n .. n/n tile [0, total) in order, also
+** where (k-1) total overflows 64 bits (all shards for small n, the seams at
+** 1, n/3 and n-1 for large n); a bad k/n is refused. */
+static void test_census_shard_range(void **state) {
+  (void)state;
+  static const uint64_t totals[] = {0, 1, 7, 1000, 999983, 1000000000000ull, UINT64_MAX};
+  static const uint64_t ns[] = {1, 2, 3, 7, 1000, 1000000, 4294967296ull};
+  for (size_t a = 0; a < sizeof totals / sizeof totals[0]; a++)
+    for (size_t b = 0; b < sizeof ns / sizeof ns[0]; b++) {
+      uint64_t total = totals[a], n = ns[b], f, e, f2, e2;
+      tc_shard(total, 1, n, &f, &e);
+      assert_int_equal(f, 0);
+      tc_shard(total, n, n, &f, &e);
+      assert_int_equal(e, total);
+      const uint64_t seams[3] = {1, n / 3 > 0 ? n / 3 : 1, n > 1 ? n - 1 : 1};
+      for (uint64_t i = 0, k = 1; n > 1000 ? i < 3 : k < n; i++, k++) {
+        if (n > 1000) k = seams[i];
+        tc_shard(total, k, n, &f, &e);
+        tc_shard(total, k + 1, n, &f2, &e2);
+        assert_int_equal(e, f2);
+      }
+    }
+  uint64_t f, c;
+  assert_int_equal(census_shard_range(10, 0, 3, &f, &c), -1);
+  assert_int_equal(census_shard_range(10, 4, 3, &f, &c), -1);
+  assert_int_equal(census_shard_range(10, 1, 0, &f, &c), -1);
+  assert_int_equal(census_shard_range(10, 1, (1ull << 32) + 1, &f, &c), -1);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_census_equals_direct),
@@ -290,6 +333,7 @@ int main(void) {
     cmocka_unit_test(test_census_threads),
     cmocka_unit_test(test_census_rule_order),
     cmocka_unit_test(test_census_bad_args),
+    cmocka_unit_test(test_census_shard_range),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
