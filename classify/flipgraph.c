@@ -387,3 +387,7 @@ int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first
   flipgraph_run run = {seed, first, count, tie_eps, threads, progress, ctx, NULL, NULL, NULL};
   return flipgraph_tally_run(rules, nrules, &run, out);
 }
+
+void flipgraph_use_portable(int on) {
+  quadvec_use_scalar(on);
+}

@@ -119,4 +119,10 @@ void flipgraph_plan_run(const flipgraph_plan *pl, const flipgraph_pentagon *p,
                         flipgraph *out);
 void flipgraph_plan_free(flipgraph_plan *pl);
 
+/* The engines behind plans and the site-set census decide in vector lanes
+** where the compiler offers them; on = 1 switches every later batch to the
+** portable form, 0 back (where vectors exist).  Both give the same bits;
+** the tests compare them.  Switch only while no tally runs. */
+void flipgraph_use_portable(int on);
+
 #endif

@@ -22,7 +22,6 @@
 #include "census.h"
 #include "flipgraph.h"
 #include "measure.h"
-#include "quadvec_internal.h"
 #include "rule.h"
 #include "sampler.h"
 #include "siteflip.h"
@@ -151,11 +150,11 @@ static void test_census_vector_equals_scalar(void **state) {
     for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
       for (int n = 5; n <= 8; n++) {
         uint64_t count = n == 8 ? 20 : 150;
-        quadvec_use_scalar(0);
+        flipgraph_use_portable(0);
         tc_census_eps(rules, nr, kind, n, 0, count, 2, eps[e], v);
-        quadvec_use_scalar(1);
+        flipgraph_use_portable(1);
         tc_census_eps(rules, nr, kind, n, 0, count, 2, eps[e], s);
-        quadvec_use_scalar(0);
+        flipgraph_use_portable(0);
         for (int r = 0; r < nr; r++)
           if (memcmp(&v[r], &s[r], sizeof v[r]) != 0)
             fail_msg("%s, %s %d sites, tie_eps %g: vector and scalar engines differ", rules[r].name,

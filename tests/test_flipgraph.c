@@ -27,7 +27,6 @@
 
 #include "measure.h"
 #include "flipgraph.h"
-#include "quadvec_internal.h"
 #include "rule.h"
 #include "sampler.h"
 #include "testutil.h"
@@ -387,21 +386,21 @@ static void test_extremes_and_engines(void **state) {
     for (size_t e = 0; e < sizeof eps / sizeof eps[0]; e++) {
       flipgraph_plan *pl = flipgraph_plan_new(rules, n, eps[e]);
       assert_non_null(pl);
-      quadvec_use_scalar(scalar);
+      flipgraph_use_portable(scalar);
       for (uint64_t i = 0; i < 1500; i++) {
         sampler_pentagon(17 + e, i, v);
         tfg_check_pentagon(pl, rules, n, v, i < 50, eps[e]);
       }
-      quadvec_use_scalar(0);
+      flipgraph_use_portable(0);
       flipgraph_plan_free(pl);
     }
   static flipgraph_counts vec[TFG_MAXRULES], sca[TFG_MAXRULES];
   memset(vec, 0, sizeof vec);
   memset(sca, 0, sizeof sca);
   assert_int_equal(flipgraph_tally(rules, n, 5, 0, 20000, TFG_EPS, 2, vec, NULL, NULL), 0);
-  quadvec_use_scalar(1);
+  flipgraph_use_portable(1);
   assert_int_equal(flipgraph_tally(rules, n, 5, 0, 20000, TFG_EPS, 2, sca, NULL, NULL), 0);
-  quadvec_use_scalar(0);
+  flipgraph_use_portable(0);
   assert_memory_equal(vec, sca, (size_t)n * sizeof vec[0]);
   measure_unregister_user();
 }
