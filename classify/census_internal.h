@@ -48,8 +48,8 @@ typedef struct census_plan {
 
 /* 0; -1 for a rule naming an unknown measure, joint or quadrilateral rule;
 ** -2 out of memory.  census_plan_free after either (it frees the items). */
-int census_plan_make(census_plan *pl, const rule *rules, int nrules);
-void census_plan_free(census_plan *pl);
+FLIPLAB_INTERNAL int census_plan_make(census_plan *pl, const rule *rules, int nrules);
+FLIPLAB_INTERNAL void census_plan_free(census_plan *pl);
 
 /* The loop.  Samples [first, first + count) are cut into chunks of `chunk`
 ** ascending indices handed out dynamically to `threads` threads; range(ctx,
@@ -66,10 +66,10 @@ typedef struct census_loop {
   census_progress_fn progress;       /* may be NULL */
   void *progress_ctx;
 } census_loop;
-int census_loop_run(const census_loop *l);
+FLIPLAB_INTERNAL int census_loop_run(const census_loop *l);
 
 /* The thread count for `threads` (<= 0: all cores): never more threads than
 ** chunks of work, and at least one. */
-int census_threads(int threads, uint64_t count, uint64_t chunk);
+FLIPLAB_INTERNAL int census_threads(int threads, uint64_t count, uint64_t chunk);
 
 #endif

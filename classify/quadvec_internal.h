@@ -59,16 +59,16 @@ typedef struct quadvec_batch {
 #define QUADVEC_INF 2LL    /* a magnitude +inf */
 
 /* The portable engine: the whole batch (quadvec.c). */
-void quadvec_run_scalar(const quadvec_batch *b);
+FLIPLAB_INTERNAL void quadvec_run_scalar(const quadvec_batch *b);
 
 /* After the vector engine: the slots that rewrite 5 sends to joint_compare. */
-void quadvec_fix_lanes(const quadvec_batch *b);
+FLIPLAB_INTERNAL void quadvec_fix_lanes(const quadvec_batch *b);
 
 /* Whether the portable engine is in use: without generic vectors, built
 ** with -DQUADVEC_SCALAR, or after quadvec_use_scalar(1) (tests: both
 ** engines give the same bits; switch only while no batch runs). */
-int quadvec_scalar_on(void);
-void quadvec_use_scalar(int on);
+FLIPLAB_INTERNAL int quadvec_scalar_on(void);
+FLIPLAB_INTERNAL void quadvec_use_scalar(int on);
 
 #if FLIPLAB_HAVE_VECTORS && !defined(QUADVEC_SCALAR)
 #define QUADVEC_VECTOR 1

@@ -11,8 +11,8 @@
 ** sites and triangles; the exact in-circle decision of every quadrilateral
 ** (rule_eval's for DT: the test is exact, so the vertex order does not
 ** matter); the Delaunay node from them (-1 unless unique). */
-void siteflip_move_tris(siteflip_graph *g, const geom_point *p);
-void siteflip_dt_decisions(const siteflip_graph *g, rule_choice *d);
-int siteflip_delaunay_of(const siteflip_graph *g, const rule_choice *d);
+FLIPLAB_INTERNAL void siteflip_move_tris(siteflip_graph *g, const geom_point *p);
+FLIPLAB_INTERNAL void siteflip_dt_decisions(const siteflip_graph *g, rule_choice *d);
+FLIPLAB_INTERNAL int siteflip_delaunay_of(const siteflip_graph *g, const rule_choice *d);
 
 #endif

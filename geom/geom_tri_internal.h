@@ -45,7 +45,7 @@ static inline double geom_angle(geom_point o, geom_point u, geom_point w, double
 /* The slow path, out of line (geom.c): det for non-finite points, else the
 ** exact value.  A call on the fast path's far side keeps the inlined
 ** callers' registers free. */
-double geom_twice_area_flat(geom_point p, geom_point q, geom_point r, double det);
+FLIPLAB_INTERNAL double geom_twice_area_flat(geom_point p, geom_point q, geom_point r, double det);
 
 static inline double geom_twice_area_inline(geom_point p, geom_point q, geom_point r) {
   double bax = q.x - p.x, bay = q.y - p.y, cax = r.x - p.x, cay = r.y - p.y;

@@ -19,17 +19,19 @@
 #endif
 
 /* Number of n x n double tables the measure's kernel reads (0, 1 or 2). */
-int got_kernel_tables(int measure);
+FLIPLAB_INTERNAL int got_kernel_tables(int measure);
 
 /* Measures defined as the square root of something (sigma) can hand out
 ** b^2 directly: the l_2 key is b^2 and the l_0 key is log(b^2) / 2, so
 ** the sqrt is skipped (the keys then differ from joint_key(b) in the last
 ** bit only).  got_pairs_new_sq makes got_pairs_eval return b^2. */
-int got_measure_has_square(int measure);
+FLIPLAB_INTERNAL int got_measure_has_square(int measure);
+FLIPLAB_INTERNAL
 got_pairs *got_pairs_new_sq(const geom_point *p, size_t n, int measure, int threads);
 
 /* Bulk math for the kernels and keys (see got_kernels.c for accuracy). */
-void got_sqrt_inplace(double *t, size_t m);
+FLIPLAB_INTERNAL void got_sqrt_inplace(double *t, size_t m);
+FLIPLAB_INTERNAL
 void got_log_inplace(double *t, size_t m, double sign);   /* sign * log(sign * t) */
 
 /* How a measure value becomes a key in bulk (got_dp.c: from the key shape
@@ -43,11 +45,13 @@ typedef enum got_keyfn {
 
 /* The certified verdict (got_cert.c): from the DP's keys, the rule's key
 ** shape and the polygon, fill res->cert_* (see got.h). */
+FLIPLAB_INTERNAL
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op);
 
 /* got_solve, with force_mask = 1 running the simple-polygon (masked)
 ** programme even on convex input (tests and benchmarks compare the two). */
+FLIPLAB_INTERNAL
 int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                  int force_mask, got_result *out, char *err, size_t errlen);
 

@@ -80,38 +80,40 @@ static inline int lot_is_ghost(const lot_mesh *m, uint32_t t) {
 /* Where a point lies (lot_mesh_locate). */
 typedef enum lot_where { LOT_IN_TRIANGLE, LOT_ON_EDGE, LOT_ON_VERTEX, LOT_OUTSIDE } lot_where;
 
-int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache);
+FLIPLAB_INTERNAL int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache);
 /* Switch the cache to another kind and fill it for every triangle (reflip);
 ** 0, or -1 when out of memory. */
-int lot_mesh_recache(lot_mesh *m, lot_cache cache);
-void lot_mesh_free(lot_mesh *m);
+FLIPLAB_INTERNAL int lot_mesh_recache(lot_mesh *m, lot_cache cache);
+FLIPLAB_INTERNAL void lot_mesh_free(lot_mesh *m);
 /* The first triangle a, b, c (anticlockwise) and its three ghosts. */
-void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+FLIPLAB_INTERNAL void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* Locate vertex k's point: *c is a triangle's corner (IN_TRIANGLE: 3t;
 ** ON_EDGE: the corner opposite the edge; ON_VERTEX: the vertex's corner;
 ** OUTSIDE: a ghost triangle's ghost corner, the point seeing its edge). */
-lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c);
+FLIPLAB_INTERNAL lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c);
 /* Insert vertex k at a located place.  The corners whose opposite edge
 ** is now a candidate for flipping (the edges opposite k, and the halves of
 ** a split edge, with a real triangle on both sides) are stored in *cand
 ** (grown as needed); returns how many, or -1 when out of memory. */
+FLIPLAB_INTERNAL
 long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t **cand,
                      size_t *candcap);
 /* Flip the edge opposite corner c (both triangles real): t = (a, b, c0)
 ** and t' = (d, c0, b) become (a, b, d) and (d, c0, a), keeping a at its
 ** corner in t and d at its corner in t'.  bad_t and bad_u go to an exact
 ** cache; an enclosed one is the caller's to update (lot.c). */
-void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u);
+FLIPLAB_INTERNAL void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u);
 /* The badness of triangle (a, b, c) for m->r (triangle-based rules). */
-double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+FLIPLAB_INTERNAL double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* An enclosure of it (measure_bounds), or the exact value where there is none. */
-lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
+FLIPLAB_INTERNAL lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* Triangle t's enclosure made exact (computed once, then cached). */
-void lot_mesh_exact(lot_mesh *m, uint32_t t);
+FLIPLAB_INTERNAL void lot_mesh_exact(lot_mesh *m, uint32_t t);
 
 /* Insertion orders (lot/order.c): ord[0..n-1] = input indices. */
+FLIPLAB_INTERNAL
 int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *ord);
-void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord);
-int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord);
+FLIPLAB_INTERNAL void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord);
+FLIPLAB_INTERNAL int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord);
 
 #endif
