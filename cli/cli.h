@@ -9,6 +9,7 @@
 #ifndef FLIPLAB_CLI_H
 #define FLIPLAB_CLI_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include "fliplab_config.h"
@@ -39,27 +40,124 @@ int cli_parse_u64(const char *cmd, const char *opt, const char *s,
 int cli_parse_double(const char *cmd, const char *opt, const char *s,
                      double lo, double hi, double *out);
 
-/* The value of an option "--name VALUE" at argv[*i]; advances *i.
-** NULL (after printing the error) when the value is missing. */
-const char *cli_optarg(const char *cmd, int argc, char **argv, int *i);
-
-/* Is opt one of the help spellings? */
+/* Is opt one of the help spellings (--help, -h, help)? */
 int cli_is_help(const char *opt);
 
-/* ---- help and "did you mean" (cli/hint.c) ---- */
+/* ---- option tables (cli/options.c) ------------------------------------------
+**
+** Each command describes its options in one table of rows: name, argument,
+** help line, kind, bounds, default and destination (an offset into the
+** command's options struct).  One parser (cli_options_parse) reads every
+** command's arguments from its table, cli_help prints the table, and the
+** "did you mean" of a mistyped option (cli/hint.c) searches its names. */
+typedef enum cli_kind {
+  CLI_FLAG,     /* no value: stores .set into an int (default .idef) */
+  CLI_U64,      /* uint64_t in [lo, hi] (default .def); .bad: own out-of-range message */
+  CLI_DOUBLE,   /* double in [dlo, dhi] (default .ddef) */
+  CLI_STRING,   /* const char * (default .sdef); .ext: the output extension it must
+                ** have ("csv", "svg"), .check: a validator printing its own error */
+  CLI_CHOICE,   /* int: the index of the value in .names (NULL-terminated), or what
+                ** .find says (-1: unknown); default .idef; .bad: the error, '%s' = value */
+  CLI_CALL      /* .call reads the value (and writes the default when it is NULL) */
+} cli_kind;
 
-/* One option of a command: its help line lists it with its default. */
-typedef struct cli_option {
+typedef struct cli_option cli_option;
+/* A setter: v is the value (a flag's own name for a flag), or NULL to store
+** the row's default; dst is the row's destination.  0, or 2 after the
+** one-line error. */
+typedef int (*cli_option_fn)(const char *cmd, const cli_option *o, const char *v, void *dst);
+
+struct cli_option {
   const char *name;   /* "--samples" */
   const char *arg;    /* "N", or NULL for a flag */
-  const char *dflt;   /* the default as help shows it, or NULL (flags, required) */
-  const char *help;   /* one short line */
-} cli_option;
+  const char *dflt;   /* help's default when it is no value of the row ("all cores",
+                      ** "required", "none"), else NULL: printed from the default */
+  const char *help;   /* one short line; continuation lines indented by 21 */
+  cli_kind kind;
+  size_t off;         /* the destination: offset in the command's options struct */
+  uint64_t lo, hi, def;
+  double dlo, dhi, ddef;
+  const char *sdef;
+  int idef, set;
+  const char *ext;
+  int (*check)(const char *v);
+  const char *const *names;
+  int (*find)(const char *v);
+  const char *bad;
+  cli_option_fn call;
+};
 #define CLI_NOPTS(table) (sizeof(table) / sizeof((table)[0]))
 
-/* "usage", a blank line, "about" (ends with '\n'), then every option. */
+/* offsetof(T, F), refused by the compiler unless field F has type `type`. */
+#define CLI_AT(T, F, type) (offsetof(T, F) + 0 * sizeof(&((T *)0)->F == (type *)0))
+
+#define CLI_OPT_FLAG(N, H, T, F) \
+  {.name = N, .help = H, .kind = CLI_FLAG, .off = CLI_AT(T, F, int), .set = 1}
+#define CLI_OPT_U64(N, A, H, T, F, LO, HI, DEF) \
+  {.name = N, .arg = A, .help = H, .kind = CLI_U64, .off = CLI_AT(T, F, uint64_t), .lo = LO, \
+   .hi = HI, .def = DEF}
+#define CLI_OPT_STRING(N, A, D, H, T, F) \
+  {.name = N, .arg = A, .dflt = D, .help = H, .kind = CLI_STRING, .off = CLI_AT(T, F, const char *)}
+/* A file to write, with the extension it must have (NULL: any). */
+#define CLI_OPT_FILE(N, A, D, EXT, H, T, F) \
+  {.name = N, .arg = A, .dflt = D, .help = H, .kind = CLI_STRING, \
+   .off = CLI_AT(T, F, const char *), .ext = EXT}
+
+/* The rows every command shares. */
+#define CLI_MAX_THREADS 1024
+#define CLI_OPT_SEED(H, T, F) CLI_OPT_U64("--seed", "S", H, T, F, 0, UINT64_MAX, 1)
+#define CLI_OPT_THREADS(H, T, F) \
+  {.name = "--threads", .arg = "T", .dflt = "all cores", .help = H, .kind = CLI_U64, \
+   .off = CLI_AT(T, F, uint64_t), .lo = 1, .hi = CLI_MAX_THREADS}
+/* The rules' relative tie tolerance in [0, HI], RULE_DEFAULT_TIE_EPS unless given. */
+#define CLI_OPT_TIE_EPS(H, HI, T, F) \
+  {.name = "--tie-eps", .arg = "E", .help = H, .kind = CLI_DOUBLE, .off = CLI_AT(T, F, double), \
+   .dlo = 0, .dhi = HI, .ddef = RULE_DEFAULT_TIE_EPS}
+#define CLI_OPT_OUT(A, D, EXT, H, T, F) CLI_OPT_FILE("--out", A, D, EXT, H, T, F)
+/* --shard K/N (cli_parse_shard) into a cli_shard, {0, 0} when not given. */
+typedef struct cli_shard { uint64_t k, n; } cli_shard;
+#define CLI_OPT_SHARD(H, T, F) \
+  {.name = "--shard", .arg = "K/N", .dflt = "none", .help = H, .kind = CLI_CALL, \
+   .off = CLI_AT(T, F, cli_shard), .call = cli_option_shard}
+int cli_option_shard(const char *cmd, const cli_option *o, const char *v, void *dst);
+/* --format into a report_format (default DEF), BAD the error for an unknown one. */
+#define CLI_OPT_FORMAT(D, H, DEF, BAD, T, F) \
+  {.name = "--format", .arg = "F", .dflt = D, .help = H, .kind = CLI_CALL, \
+   .off = CLI_AT(T, F, report_format), .idef = DEF, .bad = BAD, .call = cli_option_format}
+int cli_option_format(const char *cmd, const cli_option *o, const char *v, void *dst);
+/* Rules, repeatable and comma lists (cli_parse_rule_list), appended to a
+** cli_rules whose r and cap the command sets before parsing (n = 0 by
+** default); cli_option_rules is the setter, cli_rules_add the same for a
+** positional argument. */
+struct rule;
+typedef struct cli_rules { struct rule *r; int n, cap; } cli_rules;
+int cli_option_rules(const char *cmd, const cli_option *o, const char *v, void *dst);
+int cli_rules_add(const char *cmd, const char *list, cli_rules *rules);
+
+/* A command: its name, help and table; positional handles an argument
+** that is no option of the table (NULL: it is an unknown option). */
+typedef struct cli_spec {
+  const char *cmd, *usage, *about;
+  const cli_option *opts;
+  size_t nopts;
+  int (*positional)(const char *cmd, const char *arg, void *dst);   /* 0, or 2 after the error */
+} cli_spec;
+
+/* Every row's default into dst, then argv[1..argc-1] in order: 0; 1 after
+** printing the help (a help spelling where an option may stand); 2 after
+** the one-line error.  *given (may be NULL): bit i set when row i was
+** given.  cli_option_given: was the row named `name` given? */
+int cli_options_parse(const cli_spec *s, int argc, char **argv, void *dst, uint64_t *given);
+int cli_option_given(const cli_spec *s, uint64_t given, const char *name);
+
+/* "usage", a blank line, "about" (ends with '\n'), then every option with
+** its default; cli_spec_help prints a command's to stdout. */
 void cli_help(FILE *f, const char *usage, const char *about, const cli_option *o, size_t n);
+void cli_spec_help(const cli_spec *s);
 const cli_option *cli_option_find(const char *name, const cli_option *o, size_t n);
+
+/* ---- "did you mean" (cli/hint.c) ---- */
+
 /* "unknown option '--sed': did you mean '--seed'?"; returns 2. */
 int cli_unknown_option(const char *cmd, const char *opt, const cli_option *o, size_t n);
 int cli_unknown_command(const char *name, const char *const *names, size_t n);
@@ -91,6 +189,8 @@ uint64_t cli_terminal_columns(int fixed, int per);
 ** and --plugin FILE.so.  cli_userdefs_take removes them from argv (updating
 ** *argc) after registering what they define; returns 0, or 2 after an error. */
 int cli_userdefs_take(int *argc, char **argv);
+/* The global options' help lines (their table is in cli/userdefs.c). */
+void cli_userdefs_help(FILE *f);
 /* After a run: if a user measure produced a bad value (NaN, infinite, wrong
 ** sign), print it as cmd's one-line error and return 1; else 0. */
 int cli_userdefs_failed(const char *cmd);

@@ -29,26 +29,44 @@
 #define CMD "classify"
 #define CLI_MAX_RULES 1024
 
-static const cli_option cli_classify_opts_help[] = {
-  {"--input", "FILE.csv", "required", "pentagons, one per row ('-': standard input)"},
-  {"--rule", "R", "the 120 rules of table 3.4, then DT",
-   "rules, repeatable or a comma list: R_inf,-alpha_inf,DT"},
-  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules"},
-  {"--out", "FILE.csv", "stdout", "output file"},
-};
+typedef struct cli_classify_opts {
+  const char *in, *out;
+  double eps;
+  cli_rules rules;
+} cli_classify_opts;
 
-static void cli_classify_usage(void) {
-  cli_help(stdout, "usage: fliplab classify --input FILE.csv [options]",
-           "Classify the directed flip graph of every pentagon of FILE.csv under every rule.\n"
-           "Input: rows x1,y1,...,x5,y5 (the header line x1,y1,...,y5 is optional), either\n"
-           "orientation: a clockwise row p1..p5 is renumbered v0..v4 = p1,p5,p4,p3,p2.\n"
-           "Output: id,rule,decisions,type,sink,dt per pentagon and rule, where id is the\n"
-           "pentagon's row (1-based, header excluded); decisions = five letters for Q_0..Q_4\n"
-           "(A = diagonal v_{j+1}v_{j+3}, B = v_{j+2}v_{j+4}, E = either); type I..V;\n"
-           "sink = i for the fan T_i (two, space-separated, for type III; empty for IV, V);\n"
-           "dt = 1 if type I with the Delaunay triangulation as sink (docs/formats.md).\n",
-           cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help));
+#define T cli_classify_opts
+static const cli_option cli_classify_opts_help[] = {
+  CLI_OPT_STRING("--input", "FILE.csv", "required", "pentagons, one per row ('-': standard input)",
+                 T, in),
+  {.name = "--rule", .arg = "R", .dflt = "the 120 rules of table 3.4, then DT",
+   .help = "rules, repeatable or a comma list: R_inf,-alpha_inf,DT", .kind = CLI_CALL,
+   .off = CLI_AT(T, rules, cli_rules), .call = cli_option_rules},
+  CLI_OPT_TIE_EPS("relative tie tolerance of the rules", 1, T, eps),
+  CLI_OPT_OUT("FILE.csv", "stdout", "csv", "output file", T, out),
+};
+#undef T
+
+/* The pentagons come with --input, not as arguments. */
+static int cli_classify_positional(const char *cmd, const char *arg, void *dst) {
+  (void)dst;
+  if (strncmp(arg, "--", 2) == 0)
+    return cli_unknown_option(cmd, arg, cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help));
+  return cli_error(cmd, "unexpected argument '%s': the pentagons are read with --input %s", arg,
+                   arg);
 }
+
+static const cli_spec cli_classify_spec = {
+  CMD, "usage: fliplab classify --input FILE.csv [options]",
+  "Classify the directed flip graph of every pentagon of FILE.csv under every rule.\n"
+  "Input: rows x1,y1,...,x5,y5 (the header line x1,y1,...,y5 is optional), either\n"
+  "orientation: a clockwise row p1..p5 is renumbered v0..v4 = p1,p5,p4,p3,p2.\n"
+  "Output: id,rule,decisions,type,sink,dt per pentagon and rule, where id is the\n"
+  "pentagon's row (1-based, header excluded); decisions = five letters for Q_0..Q_4\n"
+  "(A = diagonal v_{j+1}v_{j+3}, B = v_{j+2}v_{j+4}, E = either); type I..V;\n"
+  "sink = i for the fan T_i (two, space-separated, for type III; empty for IV, V);\n"
+  "dt = 1 if type I with the Delaunay triangulation as sink (docs/formats.md).\n",
+  cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help), cli_classify_positional};
 
 static void cli_classify_row(FILE *out, size_t id, const rule *r, const flipgraph *g) {
   static const char letter[3] = {'A', 'B', 'E'};   /* RULE_AC, RULE_BD, RULE_EITHER */
@@ -64,48 +82,16 @@ static void cli_classify_row(FILE *out, size_t id, const rule *r, const flipgrap
   report_csv_row(out, field, 6);
 }
 
-typedef struct cli_classify_opts {
-  const char *in, *out;
-  double eps;
-  rule *rules;
-  int nrules;
-} cli_classify_opts;
-
 /* 0, 1 after --help, or 2 after a usage error (printed). */
 static int cli_classify_parse(int argc, char **argv, cli_classify_opts *o) {
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *val;
-    if (cli_is_help(a)) {
-      cli_classify_usage();
-      return 1;
-    }
-    if (strcmp(a, "--input") == 0) {
-      if ((o->in = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
-    } else if (strcmp(a, "--out") == 0) {
-      if ((o->out = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_check_out_ext(CMD, a, o->out, "csv") != 0)
-        return 2;
-    } else if (strcmp(a, "--tie-eps") == 0) {
-      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_parse_double(CMD, a, val, 0, 1, &o->eps) != 0)
-        return 2;
-    } else if (strcmp(a, "--rule") == 0) {
-      if ((val = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_parse_rule_list(CMD, val, o->rules, &o->nrules, CLI_MAX_RULES) != 0)
-        return 2;
-    } else if (strncmp(a, "--", 2) != 0) {
-      return cli_error(CMD, "unexpected argument '%s': the pentagons are read with --input %s",
-                       a, a);
-    } else {
-      return cli_unknown_option(CMD, a, cli_classify_opts_help, CLI_NOPTS(cli_classify_opts_help));
-    }
-  }
+  int st = cli_options_parse(&cli_classify_spec, argc, argv, o, NULL);
+  if (st != 0) return st;
   if (o->in == NULL)
     return cli_error(CMD, "--input FILE.csv is required (try: fliplab classify --help)");
-  if (o->nrules == 0) {
-    o->nrules = rule_list_triangle(measure_table34, MEASURE_TABLE34_COUNT, o->rules,
-                                   CLI_MAX_RULES - 1);
-    o->rules[o->nrules++] = rule_delaunay();
+  if (o->rules.n == 0) {
+    o->rules.n = rule_list_triangle(measure_table34, MEASURE_TABLE34_COUNT, o->rules.r,
+                                    CLI_MAX_RULES - 1);
+    o->rules.r[o->rules.n++] = rule_delaunay();
   }
   return 0;
 }
@@ -128,10 +114,10 @@ static int cli_classify_one(const geom_point v[5], uint64_t id, uint64_t line, i
   (void)rev;
   flipgraph_pentagon p;
   flipgraph_prepare(&p, v);
-  for (int r = 0; r < o->nrules; r++) {
+  for (int r = 0; r < o->rules.n; r++) {
     flipgraph g;
-    flipgraph_classify(&p, &o->rules[r], o->eps, &g);
-    cli_classify_row(run->out, (size_t)id, &o->rules[r], &g);
+    flipgraph_classify(&p, &o->rules.r[r], o->eps, &g);
+    cli_classify_row(run->out, (size_t)id, &o->rules.r[r], &g);
   }
   if ((id & 1023) == 0) {
     if (ferror(run->out)) return 1;
@@ -186,13 +172,12 @@ static int cli_classify_stream(const cli_classify_opts *o, FILE *in, FILE *out) 
 }
 
 int cli_cmd_classify(int argc, char **argv) {
-  cli_classify_opts o = {.eps = RULE_DEFAULT_TIE_EPS};
-  o.rules = malloc(CLI_MAX_RULES * sizeof *o.rules);
-  if (o.rules == NULL) return cli_error(CMD, "out of memory");
+  cli_classify_opts o = {.rules = {malloc(CLI_MAX_RULES * sizeof(rule)), 0, CLI_MAX_RULES}};
+  if (o.rules.r == NULL) return cli_error(CMD, "out of memory");
   int rc = cli_classify_parse(argc, argv, &o);
   FILE *in = NULL, *out = NULL;
   if (rc != 0) {
-    free(o.rules);
+    free(o.rules.r);
     return rc == 1 ? 0 : rc;
   }
   in = strcmp(o.in, "-") == 0 ? stdin : fopen(o.in, "rb");
@@ -204,6 +189,6 @@ int cli_cmd_classify(int argc, char **argv) {
     rc = cli_classify_stream(&o, in, out);
   /* On failure the output is discarded by cli_outputs_finish (main). */
   if (in != NULL && in != stdin) fclose(in);
-  free(o.rules);
+  free(o.rules.r);
   return rc;
 }

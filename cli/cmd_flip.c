@@ -7,40 +7,45 @@
 #include "cli.h"
 #include "rule.h"
 
-static const cli_option cli_flip_opts[] = {
-  {"--tie-eps", "E", "1e-12", "relative tolerance under which the two joint values tie"},
+typedef struct cli_flip_opts {
+  double tie_eps;
+  const char *pos[9];     /* RULE and the 8 coordinates */
+  int npos;
+} cli_flip_opts;
+
+static const cli_option cli_flip_table[] = {
+  CLI_OPT_TIE_EPS("relative tolerance under which the two joint values tie", 1, cli_flip_opts,
+                  tie_eps),
 };
 
-static int cli_flip_usage(void) {
-  cli_help(stdout, "usage: fliplab flip RULE x1 y1 x2 y2 x3 y3 x4 y4 [options]",
-           "Decides which diagonal of the convex quadrilateral ABCD the rule prefers:\n"
-           "AC (A=(x1,y1) to C=(x3,y3)), BD, or either (a tie within the tie tolerance,\n"
-           "relative).  For a triangle-based rule MEASURE_JOINT both joint values are\n"
-           "printed: f(AC) = f(b(ABC), b(ACD)), f(BD) = f(b(ABD), b(BCD)).\n"
-           "The quadrilateral must be strictly convex; clockwise input is accepted and\n"
-           "relabelled A, D, C, B (anticlockwise, same diagonals), which is noted.\n"
-           "Rules, measures, joints and ties: docs/rules.md, docs/measures.md, docs/joints.md.\n",
-           cli_flip_opts, CLI_NOPTS(cli_flip_opts));
+/* A leading '-' is a rule or a negative number, never an option here. */
+static int cli_flip_positional(const char *cmd, const char *arg, void *dst) {
+  cli_flip_opts *o = dst;
+  if (strncmp(arg, "--", 2) == 0 && strlen(arg) > 2)
+    return cli_unknown_option(cmd, arg, cli_flip_table, CLI_NOPTS(cli_flip_table));
+  if (o->npos == 9) return cli_error(cmd, "too many arguments: expected RULE and 8 coordinates");
+  o->pos[o->npos++] = arg;
   return 0;
 }
 
+static const cli_spec cli_flip_spec = {
+  "flip", "usage: fliplab flip RULE x1 y1 x2 y2 x3 y3 x4 y4 [options]",
+  "Decides which diagonal of the convex quadrilateral ABCD the rule prefers:\n"
+  "AC (A=(x1,y1) to C=(x3,y3)), BD, or either (a tie within the tie tolerance,\n"
+  "relative).  For a triangle-based rule MEASURE_JOINT both joint values are\n"
+  "printed: f(AC) = f(b(ABC), b(ACD)), f(BD) = f(b(ABD), b(BCD)).\n"
+  "The quadrilateral must be strictly convex; clockwise input is accepted and\n"
+  "relabelled A, D, C, B (anticlockwise, same diagonals), which is noted.\n"
+  "Rules, measures, joints and ties: docs/rules.md, docs/measures.md, docs/joints.md.\n",
+  cli_flip_table, CLI_NOPTS(cli_flip_table), cli_flip_positional};
+
 int cli_cmd_flip(int argc, char **argv) {
-  double tie_eps = RULE_DEFAULT_TIE_EPS;
-  const char *pos[9];
-  int npos = 0;
-  for (int i = 1; i < argc; i++) {
-    if (cli_is_help(argv[i])) return cli_flip_usage();
-    if (strcmp(argv[i], "--tie-eps") == 0) {
-      const char *v = cli_optarg("flip", argc, argv, &i);
-      if (v == NULL || cli_parse_double("flip", "--tie-eps", v, 0, 1, &tie_eps) != 0) return 2;
-      continue;
-    }
-    /* A leading '-' is a rule or a negative number, never an option here. */
-    if (strncmp(argv[i], "--", 2) == 0 && strlen(argv[i]) > 2)
-      return cli_unknown_option("flip", argv[i], cli_flip_opts, CLI_NOPTS(cli_flip_opts));
-    if (npos == 9) return cli_error("flip", "too many arguments: expected RULE and 8 coordinates");
-    pos[npos++] = argv[i];
-  }
+  cli_flip_opts o = {0};
+  int st = cli_options_parse(&cli_flip_spec, argc, argv, &o, NULL);
+  if (st != 0) return st == 1 ? 0 : st;
+  const char *const *pos = o.pos;
+  int npos = o.npos;
+  double tie_eps = o.tie_eps;
   if (npos != 9)
     return cli_error("flip", "expected RULE and 8 coordinates (x1 y1 ... x4 y4), got %d argument%s",
                      npos, npos == 1 ? "" : "s");

@@ -13,58 +13,39 @@
 
 #define CMD "flipgraph"
 
-static const cli_option cli_flipgraph_help[] = {
-  {"--rule", "RULE", "required", "DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)"},
-  {"--points", "FILE.csv", "required", "the sites: CSV rows x,y (optional header x,y)"},
-  {"--svg", "FILE.svg", "none", "draw the directed flip graph (at most 64 triangulations)"},
-  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rule"},
-  {"--out", "FILE", "stdout", "write the report to FILE"},
-};
-
-static void cli_flipgraph_usage(void) {
-  cli_help(stdout, "usage: fliplab flipgraph --rule RULE --points FILE.csv [options]",
-           "Enumerate every triangulation of a set of 3 to 12 sites (any position, convex\n"
-           "or not), direct the flip graph by RULE and report: triangulations, flip edges,\n"
-           "sinks (the LOTs; triangles as 1-based site numbers), sources, ties, cycle,\n"
-           "sink is DT, GOT (triangle-based rules, by brute force) and the worst sink's\n"
-           "relative gap to it (docs/sitesets.md).\n",
-           cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
-}
-
 typedef struct cli_flipgraph_opts {
   const char *rule, *points, *svg, *out;
   double tie_eps;
 } cli_flipgraph_opts;
 
+#define T cli_flipgraph_opts
+static const cli_option cli_flipgraph_help[] = {
+  CLI_OPT_STRING("--rule", "RULE", "required",
+                 "DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)", T, rule),
+  CLI_OPT_STRING("--points", "FILE.csv", "required",
+                 "the sites: CSV rows x,y (optional header x,y)", T, points),
+  CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
+               "draw the directed flip graph (at most 64 triangulations)", T, svg),
+  CLI_OPT_TIE_EPS("relative tie tolerance of the rule", 1, T, tie_eps),
+  CLI_OPT_OUT("FILE", "stdout", NULL, "write the report to FILE", T, out),
+};
+#undef T
+
+static const cli_spec cli_flipgraph_spec = {
+  CMD, "usage: fliplab flipgraph --rule RULE --points FILE.csv [options]",
+  "Enumerate every triangulation of a set of 3 to 12 sites (any position, convex\n"
+  "or not), direct the flip graph by RULE and report: triangulations, flip edges,\n"
+  "sinks (the LOTs; triangles as 1-based site numbers), sources, ties, cycle,\n"
+  "sink is DT, GOT (triangle-based rules, by brute force) and the worst sink's\n"
+  "relative gap to it (docs/sitesets.md).\n",
+  cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help), NULL};
+
+/* 0, 1 after --help, 2 after an error. */
 static int cli_flipgraph_parse(int argc, char **argv, cli_flipgraph_opts *o) {
-  *o = (cli_flipgraph_opts){.tie_eps = RULE_DEFAULT_TIE_EPS};
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (cli_is_help(a)) {
-      cli_flipgraph_usage();
-      return 1;
-    }
-    const char **slot = strcmp(a, "--rule") == 0     ? &o->rule
-                      : strcmp(a, "--points") == 0   ? &o->points
-                      : strcmp(a, "--svg") == 0      ? &o->svg
-                      : strcmp(a, "--out") == 0      ? &o->out
-                                                     : NULL;
-    if (slot != NULL) {
-      if ((*slot = cli_optarg(CMD, argc, argv, &i)) == NULL) return -1;
-    } else if (strcmp(a, "--tie-eps") == 0) {
-      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_parse_double(CMD, a, v, 0, 1, &o->tie_eps) != 0)
-        return -1;
-    } else {
-      cli_unknown_option(CMD, a, cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help));
-      return -1;
-    }
-  }
-  if ((o->svg != NULL && cli_check_out_ext(CMD, "--svg", o->svg, "svg") != 0)) return -1;
-  if (o->rule == NULL || o->points == NULL) {
-    cli_error(CMD, "--rule and --points are required (try: fliplab flipgraph --help)");
-    return -1;
-  }
+  int st = cli_options_parse(&cli_flipgraph_spec, argc, argv, o, NULL);
+  if (st != 0) return st;
+  if (o->rule == NULL || o->points == NULL)
+    return cli_error(CMD, "--rule and --points are required (try: fliplab flipgraph --help)");
   return 0;
 }
 
@@ -121,7 +102,7 @@ static int cli_flipgraph_svg(const char *path, const siteflip_graph *g, const ru
 int cli_cmd_flipgraph(int argc, char **argv) {
   cli_flipgraph_opts o;
   int st = cli_flipgraph_parse(argc, argv, &o);
-  if (st != 0) return st > 0 ? 0 : 2;
+  if (st != 0) return st == 1 ? 0 : st;
   rule r;
   char err[4096];
   if (cli_parse_rule(CMD, o.rule, &r) != 0) return 2;

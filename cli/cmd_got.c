@@ -20,42 +20,6 @@
 #define CLI_GOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
 #define CLI_GOT_PRINT_N 50               /* list triangles by default up to this n */
 
-static const cli_option cli_got_opts[] = {
-  {"--rule", "RULE", "required", "triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2"},
-  {"--polygon", "FILE.csv", "none: give --polygon or --random",
-   "CSV, one vertex 'x,y' per row (optional header 'x,y'; '-':\n"
-   "                     standard input): any simple polygon (no repeated vertex,\n"
-   "                     no two edges crossing or touching; collinear vertices\n"
-   "                     allowed), either orientation (clockwise input is reversed\n"
-   "                     keeping vertex 0; printed indices are always the file's\n"
-   "                     rows, 0-based)"},
-  {"--random", "N", "none", "a random N-gon, anticlockwise (see --sampler)"},
-  {"--seed", "S", "1", "the random polygon's seed"},
-  {"--sampler", "NAME", "vector",
-   "convex: vector (thesis 6.4) or circle (random angles on the\n"
-   "                     unit circle: cocircular up to rounding); simple: star\n"
-   "                     (sorted random angles, radii in [0.2, 1]) or monotone\n"
-   "                     (x-monotone, from random points in the unit square)"},
-  {"--threads", "T", "all cores", "OpenMP threads; results do not depend on T"},
-  {"--tie-eps", "E", "1e-12", "relative tolerance under which the runner-up ties"},
-  {"--csv", "FILE.csv", "none", "write the triangles: i,j,k,badness (docs/formats.md)"},
-  {"--svg", "FILE.svg", "none", "draw the polygon and its GOT"},
-  {"--shade", NULL, NULL, "with --svg: fill the triangles by badness (light = good)"},
-  {"--compare", "DT", "none", "diagonals and triangles shared with the Delaunay triangulation\n"
-   "                     (convex polygons only)"},
-  {"--print-triangles", NULL, NULL, "list the triangles (the default when n <= 50)"},
-  {"--no-triangles", NULL, NULL, "do not list them (the default when n > 50)"},
-};
-
-static void cli_got_usage(void) {
-  cli_help(stdout, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]",
-           "Globally optimal triangulation GOT(b_f) of a simple polygon (convex or not):\n"
-           "the thesis's Algorithm 1 over the polygon's valid diagonals, Theta(n^3) time\n"
-           "and Theta(n^2) memory, ties broken towards the smallest split vertex k\n"
-           "(docs/got.md).\n",
-           cli_got_opts, CLI_NOPTS(cli_got_opts));
-}
-
 /* The --random samplers, by name; the first is the default. */
 typedef struct cli_got_sampler {
   const char *name, *what;
@@ -76,53 +40,74 @@ static int cli_got_sampler_find(const char *name) {
 }
 
 typedef struct cli_got_args {
-  const char *rule, *polygon, *sampler, *csv, *svg, *compare;
+  const char *rule, *polygon, *csv, *svg;
+  int sampler;          /* index in cli_got_samplers */
+  int compare;          /* 0: --compare DT, -1: none */
   uint64_t random, seed, threads;
   double tie_eps;
   int shade, print;     /* print: -1 default, 0 no, 1 yes */
 } cli_got_args;
 
+static const char *const cli_got_compares[] = {"DT", NULL};
+
+#define T cli_got_args
+static const cli_option cli_got_opts[] = {
+  CLI_OPT_STRING("--rule", "RULE", "required",
+                 "triangle-based rule MEASURE_JOINT, e.g. P_1, R_inf, sigma_2", T, rule),
+  CLI_OPT_STRING("--polygon", "FILE.csv", "none: give --polygon or --random",
+                 "CSV, one vertex 'x,y' per row (optional header 'x,y'; '-':\n"
+                 "                     standard input): any simple polygon (no repeated vertex,\n"
+                 "                     no two edges crossing or touching; collinear vertices\n"
+                 "                     allowed), either orientation (clockwise input is reversed\n"
+                 "                     keeping vertex 0; printed indices are always the file's\n"
+                 "                     rows, 0-based)", T, polygon),
+  {.name = "--random", .arg = "N", .dflt = "none",
+   .help = "a random N-gon, anticlockwise (see --sampler)", .kind = CLI_U64,
+   .off = CLI_AT(T, random, uint64_t), .lo = 3, .hi = CLI_GOT_MAX_N},
+  CLI_OPT_SEED("the random polygon's seed", T, seed),
+  {.name = "--sampler", .arg = "NAME", .dflt = "vector",
+   .help = "convex: vector (thesis 6.4) or circle (random angles on the\n"
+           "                     unit circle: cocircular up to rounding); simple: star\n"
+           "                     (sorted random angles, radii in [0.2, 1]) or monotone\n"
+           "                     (x-monotone, from random points in the unit square)",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, sampler, int), .find = cli_got_sampler_find,
+   .bad = "unknown sampler '%s' (valid: vector, circle, star, monotone)"},
+  CLI_OPT_THREADS("OpenMP threads; results do not depend on T", T, threads),
+  CLI_OPT_TIE_EPS("relative tolerance under which the runner-up ties", 1, T, tie_eps),
+  CLI_OPT_FILE("--csv", "FILE.csv", "none", "csv",
+               "write the triangles: i,j,k,badness (docs/formats.md)", T, csv),
+  CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg", "draw the polygon and its GOT", T, svg),
+  CLI_OPT_FLAG("--shade", "with --svg: fill the triangles by badness (light = good)", T, shade),
+  {.name = "--compare", .arg = "DT", .dflt = "none",
+   .help = "diagonals and triangles shared with the Delaunay triangulation\n"
+           "                     (convex polygons only)",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, compare, int), .names = cli_got_compares, .idef = -1,
+   .bad = "--compare supports DT only, got '%s'"},
+  {.name = "--print-triangles", .help = "list the triangles (the default when n <= 50)",
+   .kind = CLI_FLAG, .off = CLI_AT(T, print, int), .set = 1, .idef = -1},
+  {.name = "--no-triangles", .help = "do not list them (the default when n > 50)",
+   .kind = CLI_FLAG, .off = CLI_AT(T, print, int), .set = 0, .idef = -1},
+};
+#undef T
+
+static const cli_spec cli_got_spec = {
+  CMD, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]",
+  "Globally optimal triangulation GOT(b_f) of a simple polygon (convex or not):\n"
+  "the thesis's Algorithm 1 over the polygon's valid diagonals, Theta(n^3) time\n"
+  "and Theta(n^2) memory, ties broken towards the smallest split vertex k\n"
+  "(docs/got.md).\n",
+  cli_got_opts, CLI_NOPTS(cli_got_opts), NULL};
+
+/* 0, 1 after --help, 2 after an error. */
 static int cli_got_parse(int argc, char **argv, cli_got_args *a) {
-  for (int i = 1; i < argc; i++) {
-    const char *o = argv[i], *v = NULL;
-    int val = strcmp(o, "--rule") == 0 || strcmp(o, "--polygon") == 0 ||
-              strcmp(o, "--random") == 0 || strcmp(o, "--seed") == 0 ||
-              strcmp(o, "--sampler") == 0 || strcmp(o, "--threads") == 0 ||
-              strcmp(o, "--tie-eps") == 0 || strcmp(o, "--csv") == 0 ||
-              strcmp(o, "--svg") == 0 || strcmp(o, "--compare") == 0;
-    if (val && (v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
-    if (strcmp(o, "--rule") == 0) a->rule = v;
-    else if (strcmp(o, "--polygon") == 0) a->polygon = v;
-    else if (strcmp(o, "--sampler") == 0) a->sampler = v;
-    else if (strcmp(o, "--csv") == 0) {
-      if (cli_check_out_ext(CMD, o, a->csv = v, "csv") != 0) return 2;
-    } else if (strcmp(o, "--svg") == 0) {
-      if (cli_check_out_ext(CMD, o, a->svg = v, "svg") != 0) return 2;
-    }
-    else if (strcmp(o, "--compare") == 0) a->compare = v;
-    else if (strcmp(o, "--random") == 0) {
-      if (cli_parse_u64(CMD, o, v, 3, CLI_GOT_MAX_N, &a->random) != 0) return 2;
-    } else if (strcmp(o, "--seed") == 0) {
-      if (cli_parse_u64(CMD, o, v, 0, UINT64_MAX, &a->seed) != 0) return 2;
-    } else if (strcmp(o, "--threads") == 0) {
-      if (cli_parse_u64(CMD, o, v, 1, 1024, &a->threads) != 0) return 2;
-    } else if (strcmp(o, "--tie-eps") == 0) {
-      if (cli_parse_double(CMD, o, v, 0, 1, &a->tie_eps) != 0) return 2;
-    } else if (strcmp(o, "--shade") == 0) a->shade = 1;
-    else if (strcmp(o, "--print-triangles") == 0) a->print = 1;
-    else if (strcmp(o, "--no-triangles") == 0) a->print = 0;
-    else return cli_unknown_option(CMD, o, cli_got_opts, CLI_NOPTS(cli_got_opts));
-  }
+  uint64_t given;
+  int st = cli_options_parse(&cli_got_spec, argc, argv, a, &given);
+  if (st != 0) return st;
   if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule P_1)");
   if ((a->polygon != NULL) == (a->random != 0))
     return cli_error(CMD, "give exactly one of --polygon FILE.csv and --random N");
-  if (a->sampler && cli_got_sampler_find(a->sampler) < 0)
-    return cli_error(CMD, "unknown sampler '%s' (valid: vector, circle, star, monotone)",
-                     a->sampler);
-  if (a->sampler && a->polygon)
+  if (cli_option_given(&cli_got_spec, given, "--sampler") && a->polygon)
     return cli_error(CMD, "--sampler applies to --random only");
-  if (a->compare && strcmp(a->compare, "DT") != 0)
-    return cli_error(CMD, "--compare supports DT only, got '%s'", a->compare);
   if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
   return 0;
 }
@@ -150,7 +135,7 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
   if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
   sampler_rng g;
   sampler_seed(&g, a->seed, GEOM_STREAM_GOT_POLYGON);
-  const cli_got_sampler *s = &cli_got_samplers[a->sampler ? cli_got_sampler_find(a->sampler) : 0];
+  const cli_got_sampler *s = &cli_got_samplers[a->sampler];
   int src = s->fn(&g, *n, *p);
   if (src == SAMPLER_ENOMEM) return cli_error(CMD, "out of memory");
   if (src != 0)
@@ -236,17 +221,9 @@ static int cli_got_is_convex(const geom_point *p, size_t n) {
 /* Help, options and the rule; 0 to go on, otherwise the exit code (-1:
 ** help printed, exit 0). */
 static int cli_got_setup(int argc, char **argv, cli_got_args *a, rule *r) {
-  for (int i = 1; i < argc; i++)
-    if (cli_is_help(argv[i])) {
-      cli_got_usage();
-      return -1;
-    }
   memset(a, 0, sizeof *a);
-  a->seed = 1;
-  a->tie_eps = RULE_DEFAULT_TIE_EPS;
-  a->print = -1;
   int rc = cli_got_parse(argc, argv, a);
-  if (rc != 0) return rc;
+  if (rc != 0) return rc == 1 ? -1 : rc;
   if (cli_parse_rule(CMD, a->rule, r) != 0) return 2;
   if (r->kind != RULE_TRIANGLE)
     return cli_error(CMD, "rule %s is not triangle-based: GOT needs a measure and a joint "
@@ -298,12 +275,12 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
     char title[300];
     snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s%s", r->name, res->n, tot,
              a->shade ? "; shaded by triangle badness" : "",
-             a->compare ? "; dashed red: Delaunay diagonals not in the GOT" : "");
+             a->compare >= 0 ? "; dashed red: Delaunay diagonals not in the GOT" : "");
     report_got_svg_opts so = {.shade = a->shade, .title = title, .labels = map};
     /* --compare DT: the Delaunay diagonals the GOT lacks, dashed on top. */
-    got_triangle *dt = a->compare ? malloc(res->n * sizeof *dt) : NULL;
+    got_triangle *dt = a->compare >= 0 ? malloc(res->n * sizeof *dt) : NULL;
     int unique;
-    if (a->compare && dt == NULL) return cli_error(CMD, "out of memory");
+    if (a->compare >= 0 && dt == NULL) return cli_error(CMD, "out of memory");
     if (dt != NULL && got_delaunay(p, res->n, dt, &unique) == 0) {
       so.overlay = dt;
       so.noverlay = res->n - 2;
@@ -328,7 +305,7 @@ int cli_cmd_got(int argc, char **argv) {
   memset(&res, 0, sizeof res);
   rc = cli_got_polygon(&a, &r, &p, &n, &map, desc, sizeof desc);
   if (rc != 0) goto done;
-  int convex = a.compare ? cli_got_is_convex(p, n) : 1;
+  int convex = a.compare >= 0 ? cli_got_is_convex(p, n) : 1;
   if (convex < 0) {
     rc = cli_error(CMD, "out of memory");
     goto done;
@@ -349,7 +326,7 @@ int cli_cmd_got(int argc, char **argv) {
   char tot[64];
   got_format_total(&res, res.key, tot, sizeof tot);
   cli_got_summary(&a, &r, &res, desc, tot);
-  if (a.compare && cli_got_compare(p, n, &res) != 0) {
+  if (a.compare >= 0 && cli_got_compare(p, n, &res) != 0) {
     rc = 1;
     goto done;
   }

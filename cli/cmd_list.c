@@ -19,18 +19,22 @@ static int cli_list_width(const char *s, int width) {
   return width;
 }
 
+static int cli_list_positional(const char *cmd, const char *arg, void *dst) {
+  (void)dst;
+  return cli_error(cmd, "unexpected argument '%s'", arg);
+}
+
+static const cli_spec cli_list_spec = {
+  "list", "usage: fliplab list",
+  "Lists the badness measures (name, thesis symbol, sign domain, meaning),\n"
+  "the joint functions and the quadrilateral rules.  A triangle-based rule\n"
+  "is named MEASURE_JOINT, e.g. R_inf, -alpha_inf, P_1, -r2/A_0.  Formulas and\n"
+  "meanings: docs/measures.md, docs/joints.md, docs/rules.md.\n",
+  NULL, 0, cli_list_positional};
+
 int cli_cmd_list(int argc, char **argv) {
-  for (int i = 1; i < argc; i++) {
-    if (cli_is_help(argv[i])) {
-      cli_help(stdout, "usage: fliplab list",
-               "Lists the badness measures (name, thesis symbol, sign domain, meaning),\n"
-               "the joint functions and the quadrilateral rules.  A triangle-based rule\n"
-               "is named MEASURE_JOINT, e.g. R_inf, -alpha_inf, P_1, -r2/A_0.  Formulas and\n"
-               "meanings: docs/measures.md, docs/joints.md, docs/rules.md.\n", NULL, 0);
-      return 0;
-    }
-    return cli_error("list", "unexpected argument '%s'", argv[i]);
-  }
+  int st = cli_options_parse(&cli_list_spec, argc, argv, NULL, NULL);
+  if (st != 0) return st == 1 ? 0 : st;
   printf("Badness measures (%d; small is good, angles in radians):\n", measure_count());
   printf("  %-9s %-9s %-5s %s\n", "name", "symbol", "sign", "description");
   for (int m = 0; m < measure_count(); m++) {

@@ -19,115 +19,101 @@
 #define CMD "lot"
 #define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
 
-static const cli_option cli_lot_opts[] = {
-  {"--rule", "RULE", "required",
-   "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
-   "                     measure with a joint, or a --plugin quadrilateral rule"},
-  {"--points", "FILE.csv", "none: give --points or --random",
-   "CSV, one point 'x,y' per row (optional header 'x,y');\n"
-   "                     output indices are the file's rows, 0-based"},
-  {"--random", "N", "none", "N random points from --sampler"},
-  {"--sampler", "NAME", "uniform",
-   "uniform (unit square), normal, disc, grid (integer grid,\n"
-   "                     row by row), parabola ((i, i^2), i = N..1), circle"},
-  {"--seed", "S", "1", "the sampler's and the random order's seed"},
-  {"--algorithm", "A", "incremental",
-   "incremental: insert, then flip back to a LOT; flip: a\n"
-   "                     sweep triangulation, then Lawson's flip algorithm"},
-  {"--order", "O", "spatial",
-   "insertion order: spatial (BRIO rounds along a Hilbert\n"
-   "                     curve), random, input"},
-  {"--max-flips", "N", "1000 n + 10^7", "stop after N flips: status 'budget exhausted'"},
-  {"--check", NULL, NULL, "re-verify local optimality of every interior edge from scratch"},
-  {"--compare", "DT|GOT", "none",
-   "DT: edges and triangles shared with the exact Delaunay\n"
-   "                     triangulation; GOT (convex position, triangle rule):\n"
-   "                     the LOT's total badness against the GOT's"},
-  {"--out", "FILE.csv", "none",
-   "write the triangles: i,j,k,badness (anticlockwise;\n"
-   "                     badness empty for DT and quadrilateral rules)"},
-  {"--svg", "FILE.svg", "none", "draw the LOT (next to the DT with --compare DT)"},
-  {"--shade", NULL, NULL, "with --svg: fill the triangles by badness (light = good)"},
-  {"--tie-eps", "E", "1e-12", "relative tolerance under which a triangle rule ties"},
-  {"--threads", "T", "all cores",
-   "OpenMP threads for --compare GOT; the LOT itself is\n"
-   "                     sequential and does not depend on T"},
-};
-
-static void cli_lot_usage(void) {
-  cli_help(stdout, "usage: fliplab lot --rule RULE (--points FILE.csv | --random N) [options]",
-           "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
-           "edge of a strictly convex quadrilateral is the diagonal the rule keeps\n"
-           "(docs/lot.md).  Exit status 0 (also for status cycle or budget exhausted),\n"
-           "1 when --check fails, 2 for bad usage or input.\n",
-           cli_lot_opts, CLI_NOPTS(cli_lot_opts));
-}
-
 typedef struct cli_lot_args {
-  const char *rule, *points, *sampler, *algorithm, *order, *compare, *out, *svg;
+  const char *rule, *points, *out, *svg;
+  int sampler, algorithm, order, compare;   /* compare: 0 DT, 1 GOT, -1 none */
   uint64_t random, seed, max_flips, threads;
   double tie_eps;
   int check, shade;
 } cli_lot_args;
 
-static int cli_lot_value_opt(const char *o) {
-  const cli_option *op = cli_option_find(o, cli_lot_opts, CLI_NOPTS(cli_lot_opts));
-  return op != NULL && op->arg != NULL;
-}
+/* Indexed by lot_algorithm and lot_order. */
+static const char *const cli_lot_algorithms[] = {"incremental", "flip", NULL};
+static const char *const cli_lot_order_name[] = {"spatial", "input", "random", NULL};
+static const char *const cli_lot_compares[] = {"DT", "GOT", NULL};
 
-static int cli_lot_parse(int argc, char **argv, cli_lot_args *a) {
-  for (int i = 1; i < argc; i++) {
-    const char *o = argv[i], *v = NULL;
-    if (cli_lot_value_opt(o) && (v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
-    if (strcmp(o, "--rule") == 0) a->rule = v;
-    else if (strcmp(o, "--points") == 0) a->points = v;
-    else if (strcmp(o, "--sampler") == 0) a->sampler = v;
-    else if (strcmp(o, "--algorithm") == 0) a->algorithm = v;
-    else if (strcmp(o, "--order") == 0) a->order = v;
-    else if (strcmp(o, "--compare") == 0) a->compare = v;
-    else if (strcmp(o, "--out") == 0) {
-      if (cli_check_out_ext(CMD, o, a->out = v, "csv") != 0) return 2;
-    } else if (strcmp(o, "--svg") == 0) {
-      if (cli_check_out_ext(CMD, o, a->svg = v, "svg") != 0) return 2;
-    }
-    else if (strcmp(o, "--random") == 0) {
-      if (cli_parse_u64(CMD, o, v, 3, CLI_LOT_MAX_N, &a->random) != 0) return 2;
-    } else if (strcmp(o, "--seed") == 0) {
-      if (cli_parse_u64(CMD, o, v, 0, UINT64_MAX, &a->seed) != 0) return 2;
-    } else if (strcmp(o, "--max-flips") == 0) {
-      if (cli_parse_u64(CMD, o, v, 1, UINT64_MAX, &a->max_flips) != 0) return 2;
-    } else if (strcmp(o, "--threads") == 0) {
-      if (cli_parse_u64(CMD, o, v, 1, 1024, &a->threads) != 0) return 2;
-    } else if (strcmp(o, "--tie-eps") == 0) {
-      if (cli_parse_double(CMD, o, v, 0, 1, &a->tie_eps) != 0) return 2;
-    } else if (strcmp(o, "--check") == 0) a->check = 1;
-    else if (strcmp(o, "--shade") == 0) a->shade = 1;
-    else return cli_unknown_option(CMD, o, cli_lot_opts, CLI_NOPTS(cli_lot_opts));
-  }
+/* --sampler: a sampler_points_kind, SAMPLER_UNIFORM by default. */
+static int cli_lot_sampler(const char *cmd, const cli_option *o, const char *v, void *dst) {
+  (void)o;
+  int k = v != NULL ? sampler_points_find(v) : SAMPLER_UNIFORM;
+  if (k < 0) return cli_error(cmd, "unknown sampler '%s' (valid: %s)", v, sampler_points_names);
+  *(int *)dst = k;
   return 0;
 }
 
-static int cli_lot_validate(const cli_lot_args *a, lot_options *o) {
+#define T cli_lot_args
+static const cli_option cli_lot_opts[] = {
+  CLI_OPT_STRING("--rule", "RULE", "required",
+                 "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
+                 "                     measure with a joint, or a --plugin quadrilateral rule",
+                 T, rule),
+  CLI_OPT_STRING("--points", "FILE.csv", "none: give --points or --random",
+                 "CSV, one point 'x,y' per row (optional header 'x,y');\n"
+                 "                     output indices are the file's rows, 0-based", T, points),
+  {.name = "--random", .arg = "N", .dflt = "none", .help = "N random points from --sampler",
+   .kind = CLI_U64, .off = CLI_AT(T, random, uint64_t), .lo = 3, .hi = CLI_LOT_MAX_N},
+  {.name = "--sampler", .arg = "NAME", .dflt = "uniform",
+   .help = "uniform (unit square), normal, disc, grid (integer grid,\n"
+           "                     row by row), parabola ((i, i^2), i = N..1), circle",
+   .kind = CLI_CALL, .off = CLI_AT(T, sampler, int), .call = cli_lot_sampler},
+  CLI_OPT_SEED("the sampler's and the random order's seed", T, seed),
+  {.name = "--algorithm", .arg = "A",
+   .help = "incremental: insert, then flip back to a LOT; flip: a\n"
+           "                     sweep triangulation, then Lawson's flip algorithm",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, algorithm, int), .names = cli_lot_algorithms,
+   .idef = LOT_INCREMENTAL, .bad = "unknown algorithm '%s' (valid: incremental, flip)"},
+  {.name = "--order", .arg = "O",
+   .help = "insertion order: spatial (BRIO rounds along a Hilbert\n"
+           "                     curve), random, input",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, order, int), .names = cli_lot_order_name,
+   .idef = LOT_ORDER_SPATIAL, .bad = "unknown order '%s' (valid: input, random, spatial)"},
+  {.name = "--max-flips", .arg = "N", .dflt = "1000 n + 10^7",
+   .help = "stop after N flips: status 'budget exhausted'", .kind = CLI_U64,
+   .off = CLI_AT(T, max_flips, uint64_t), .lo = 1, .hi = UINT64_MAX},
+  CLI_OPT_FLAG("--check", "re-verify local optimality of every interior edge from scratch", T,
+               check),
+  {.name = "--compare", .arg = "DT|GOT", .dflt = "none",
+   .help = "DT: edges and triangles shared with the exact Delaunay\n"
+           "                     triangulation; GOT (convex position, triangle rule):\n"
+           "                     the LOT's total badness against the GOT's",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, compare, int), .names = cli_lot_compares, .idef = -1,
+   .bad = "unknown --compare '%s' (valid: DT, GOT)"},
+  CLI_OPT_OUT("FILE.csv", "none", "csv",
+              "write the triangles: i,j,k,badness (anticlockwise;\n"
+              "                     badness empty for DT and quadrilateral rules)", T, out),
+  CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
+               "draw the LOT (next to the DT with --compare DT)", T, svg),
+  CLI_OPT_FLAG("--shade", "with --svg: fill the triangles by badness (light = good)", T, shade),
+  CLI_OPT_TIE_EPS("relative tolerance under which a triangle rule ties", 1, T, tie_eps),
+  CLI_OPT_THREADS("OpenMP threads for --compare GOT; the LOT itself is\n"
+                  "                     sequential and does not depend on T", T, threads),
+};
+#undef T
+
+static const cli_spec cli_lot_spec = {
+  CMD, "usage: fliplab lot --rule RULE (--points FILE.csv | --random N) [options]",
+  "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
+  "edge of a strictly convex quadrilateral is the diagonal the rule keeps\n"
+  "(docs/lot.md).  Exit status 0 (also for status cycle or budget exhausted),\n"
+  "1 when --check fails, 2 for bad usage or input.\n",
+  cli_lot_opts, CLI_NOPTS(cli_lot_opts), NULL};
+
+/* The options into a and o: 0, 1 after --help, 2 after an error. */
+static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o) {
+  uint64_t given;
+  int st = cli_options_parse(&cli_lot_spec, argc, argv, a, &given);
+  if (st != 0) return st;
   if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule DT or --rule P_1)");
   if ((a->points != NULL) == (a->random != 0))
     return cli_error(CMD, "give exactly one of --points FILE.csv and --random N");
-  if (a->sampler && sampler_points_find(a->sampler) < 0)
-    return cli_error(CMD, "unknown sampler '%s' (valid: %s)", a->sampler, sampler_points_names);
-  if (a->sampler && a->points) return cli_error(CMD, "--sampler applies to --random only");
-  if (a->algorithm && strcmp(a->algorithm, "incremental") != 0 &&
-      strcmp(a->algorithm, "flip") != 0)
-    return cli_error(CMD, "unknown algorithm '%s' (valid: incremental, flip)", a->algorithm);
-  if (a->algorithm && strcmp(a->algorithm, "flip") == 0) o->algorithm = LOT_FLIP;
-  if (a->order) {
-    if (strcmp(a->order, "spatial") == 0) o->order = LOT_ORDER_SPATIAL;
-    else if (strcmp(a->order, "random") == 0) o->order = LOT_ORDER_RANDOM;
-    else if (strcmp(a->order, "input") == 0) o->order = LOT_ORDER_INPUT;
-    else return cli_error(CMD, "unknown order '%s' (valid: input, random, spatial)", a->order);
+  if (cli_option_given(&cli_lot_spec, given, "--sampler") && a->points)
+    return cli_error(CMD, "--sampler applies to --random only");
+  if (cli_option_given(&cli_lot_spec, given, "--algorithm")) o->algorithm = a->algorithm;
+  if (cli_option_given(&cli_lot_spec, given, "--order")) {
+    o->order = a->order;
     if (o->algorithm == LOT_FLIP)
       return cli_error(CMD, "--order applies to --algorithm incremental only");
   }
-  if (a->compare && strcmp(a->compare, "DT") != 0 && strcmp(a->compare, "GOT") != 0)
-    return cli_error(CMD, "unknown --compare '%s' (valid: DT, GOT)", a->compare);
   if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
   return 0;
 }
@@ -146,7 +132,7 @@ static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char
   if (lot_check_memory(*n, err, sizeof err) != 0) return cli_error(CMD, "--random: %s", err);
   *p = malloc(*n * sizeof **p);
   if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
-  int k = a->sampler ? sampler_points_find(a->sampler) : SAMPLER_UNIFORM;
+  int k = a->sampler;
   sampler_points((sampler_points_kind)k, a->seed, *n, *p);
   snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
            sampler_points_name((sampler_points_kind)k), (unsigned long long)a->seed);
@@ -307,24 +293,14 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
   return 0;
 }
 
-static const char *const cli_lot_order_name[] = {"spatial", "input", "random"};
-
 int cli_cmd_lot(int argc, char **argv) {
-  for (int i = 1; i < argc; i++)
-    if (cli_is_help(argv[i])) {
-      cli_lot_usage();
-      return 0;
-    }
-  cli_lot_args a = {0};
-  a.seed = 1;
-  a.tie_eps = RULE_DEFAULT_TIE_EPS;
-  int rc = cli_lot_parse(argc, argv, &a);
-  if (rc != 0) return rc;
+  cli_lot_args a;
   rule r = rule_delaunay();
   char err[512];
   lot_options o;
   lot_options_init(&o, &r);
-  if ((rc = cli_lot_validate(&a, &o)) != 0) return rc;
+  int rc = cli_lot_parse(argc, argv, &a, &o);
+  if (rc != 0) return rc == 1 ? 0 : rc;
   if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
   rule_set_tie_eps(&r, a.tie_eps);
   o.r = r;
@@ -373,9 +349,9 @@ int cli_cmd_lot(int argc, char **argv) {
     printf("time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
            st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
   int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r) != 0;
-  if (a.compare && strcmp(a.compare, "DT") == 0)
+  if (a.compare == 0)
     rc = cli_lot_compare_dt(p, n, &o, tri, st->triangles, &dt, &ndt);
-  else if (a.compare)
+  else if (a.compare == 1)
     rc = cli_lot_compare_got(p, L, &r, bad, st->triangles, &a);
   if (rc == 0) rc = cli_lot_write(&a, p, n, tri, st->triangles, bad, dt, ndt, &r);
   if (rc == 0 && check_failed) rc = 1;

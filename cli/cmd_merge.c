@@ -23,23 +23,6 @@
 
 #define CMD "merge"
 
-static const cli_option cli_merge_help[] = {
-  {"--out", "FILE", "stdout", "write the merged table to FILE"},
-  {"--format", "F", "csv", "csv, text or md: the table as table34 prints it"},
-  {"--columns", "C", "all in one block", "text: at most C measures per block"},
-  {"--plot", "FILE.svg", "none", "also draw type-I % against DT % (thesis figure 3.9)"},
-};
-
-static void cli_merge_usage(void) {
-  cli_help(stdout, "usage: fliplab merge A.csv B.csv ... [options]",
-           "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`),\n"
-           "or census CSV files (`fliplab census --shard K/N --format csv`; no --plot).\n"
-           "They must come from one run: same seed, tie tolerance, samples and measures,\n"
-           "sample ranges that tile without gap or overlap, no file twice (docs/merge.md).\n"
-           "A file name '-' reads standard input.\n",
-           cli_merge_help, CLI_NOPTS(cli_merge_help));
-}
-
 typedef struct cli_merge_opts {
   const char *out, *plot;
   report_format fmt;
@@ -48,31 +31,42 @@ typedef struct cli_merge_opts {
   int nfiles;
 } cli_merge_opts;
 
+#define T cli_merge_opts
+static const cli_option cli_merge_help[] = {
+  CLI_OPT_OUT("FILE", "stdout", NULL, "write the merged table to FILE", T, out),
+  CLI_OPT_FORMAT("csv", "csv, text or md: the table as table34 prints it", REPORT_CSV,
+                 "--format must be csv, text or md, got '%s'", T, fmt),
+  {.name = "--columns", .arg = "C", .dflt = "all in one block",
+   .help = "text: at most C measures per block", .kind = CLI_U64,
+   .off = CLI_AT(T, columns, uint64_t), .lo = 1, .hi = MEASURE_MAX},
+  CLI_OPT_FILE("--plot", "FILE.svg", "none", "svg",
+               "also draw type-I % against DT % (thesis figure 3.9)", T, plot),
+};
+#undef T
+
+/* A file to merge ('-': standard input); other names starting with '-'
+** are unknown options. */
+static int cli_merge_positional(const char *cmd, const char *arg, void *dst) {
+  cli_merge_opts *o = dst;
+  if (arg[0] == '-' && arg[1] != '\0')
+    return cli_unknown_option(cmd, arg, cli_merge_help, CLI_NOPTS(cli_merge_help));
+  o->files[o->nfiles++] = arg;
+  return 0;
+}
+
+static const cli_spec cli_merge_spec = {
+  CMD, "usage: fliplab merge A.csv B.csv ... [options]",
+  "Sum table34 CSV files (the shards of `fliplab table34 --shard K/N --format csv`),\n"
+  "or census CSV files (`fliplab census --shard K/N --format csv`; no --plot).\n"
+  "They must come from one run: same seed, tie tolerance, samples and measures,\n"
+  "sample ranges that tile without gap or overlap, no file twice (docs/merge.md).\n"
+  "A file name '-' reads standard input.\n",
+  cli_merge_help, CLI_NOPTS(cli_merge_help), cli_merge_positional};
+
 /* 0, 1 after --help, or 2 after a usage error (printed). */
 static int cli_merge_parse(int argc, char **argv, cli_merge_opts *o) {
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (cli_is_help(a)) {
-      cli_merge_usage();
-      return 1;
-    }
-    if (strcmp(a, "--out") == 0 || strcmp(a, "--plot") == 0 || strcmp(a, "--format") == 0) {
-      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL) return 2;
-      if (a[2] == 'o') o->out = v;
-      else if (a[2] == 'p' && cli_check_out_ext(CMD, a, v, "svg") != 0) return 2;
-      else if (a[2] == 'p') o->plot = v;
-      else if (report_format_parse(v, &o->fmt) != 0)
-        return cli_error(CMD, "--format must be csv, text or md, got '%s'", v);
-    } else if (strcmp(a, "--columns") == 0) {
-      if ((v = cli_optarg(CMD, argc, argv, &i)) == NULL ||
-          cli_parse_u64(CMD, a, v, 1, MEASURE_MAX, &o->columns) != 0)
-        return 2;
-    } else if (a[0] == '-' && a[1] != '\0') {
-      return cli_unknown_option(CMD, a, cli_merge_help, CLI_NOPTS(cli_merge_help));
-    } else {
-      o->files[o->nfiles++] = a;
-    }
-  }
+  int st = cli_options_parse(&cli_merge_spec, argc, argv, o, NULL);
+  if (st != 0) return st;
   if (o->nfiles == 0) return cli_error(CMD, "no input files (try: fliplab merge --help)");
   return 0;
 }
@@ -277,7 +271,7 @@ static const cli_merge_kind *cli_merge_kind_of(const cli_merge_opts *o) {
 }
 
 int cli_cmd_merge(int argc, char **argv) {
-  cli_merge_opts o = {.fmt = REPORT_CSV};
+  cli_merge_opts o = {0};
   o.files = calloc((size_t)argc, sizeof *o.files);
   if (o.files == NULL) return cli_error(CMD, "out of memory");
   int rc = cli_merge_parse(argc, argv, &o);

@@ -40,6 +40,7 @@ typedef struct cli_rule_opts {
   const char *svg_dir;
   const char *sites;          /* site sets beyond pentagons (cli/rule_sites.c) */
   uint64_t site_samples;
+  cli_rules rules;            /* the arguments */
 } cli_rule_opts;
 
 typedef struct cli_rule_found {
@@ -52,30 +53,44 @@ typedef struct cli_rule_quadcheck {
   uint64_t first;                     /* lowest disagreeing index, or UINT64_MAX */
 } cli_rule_quadcheck;
 
+#define T cli_rule_opts
 static const cli_option cli_rule_opts_help[] = {
-  {"--samples", "N", "100000", "random convex pentagons (iteration method), at most 2^40"},
-  {"--seed", "S", "1", "sampler seed: pentagon i is table34's pentagon i of seed S"},
-  {"--witnesses", "K", "3", "witness pentagons printed per non-type-I outcome, at most 100"},
-  {"--svg-dir", "DIR", "none", "draw each witness's directed flip graph into DIR"},
-  {"--quads", "M", "100000", "random convex quadrilaterals for the Delaunay-equivalence check"},
-  {"--tie-eps", "E", "1e-12", "relative tie tolerance of the rules, at most 1e-3"},
-  {"--threads", "T", "all cores", "threads; no output depends on T"},
-  {"--sites", "LIST", "disc:5,convex:6",
-   "also census these site sets (SAMPLER:N, or none): a verdict\n"
-   "                     and a witness set each (docs/sitesets.md)"},
-  {"--site-samples", "S", "20000", "site sets per --sites entry"},
+  CLI_OPT_U64("--samples", "N", "random convex pentagons (iteration method), at most 2^40", T,
+              samples, 1, 1ull << 40, 100000),
+  CLI_OPT_SEED("sampler seed: pentagon i is table34's pentagon i of seed S", T, seed),
+  CLI_OPT_U64("--witnesses", "K", "witness pentagons printed per non-type-I outcome, at most 100",
+              T, witnesses, 0, CLI_RULE_WITNESS_MAX, 3),
+  CLI_OPT_STRING("--svg-dir", "DIR", "none", "draw each witness's directed flip graph into DIR",
+                 T, svg_dir),
+  CLI_OPT_U64("--quads", "M", "random convex quadrilaterals for the Delaunay-equivalence check",
+              T, quads, 0, 1ull << 40, 100000),
+  CLI_OPT_TIE_EPS("relative tie tolerance of the rules, at most 1e-3", 1e-3, T, tie_eps),
+  CLI_OPT_THREADS("threads; no output depends on T", T, threads),
+  {.name = "--sites", .arg = "LIST", .sdef = "disc:5,convex:6",
+   .help = "also census these site sets (SAMPLER:N, or none): a verdict\n"
+           "                     and a witness set each (docs/sitesets.md)",
+   .kind = CLI_STRING, .off = CLI_AT(T, sites, const char *), .check = cli_rule_sites_check},
+  CLI_OPT_U64("--site-samples", "S", "site sets per --sites entry", T, site_samples, 1,
+              1ull << 40, 20000),
 };
+#undef T
 
-static void cli_rule_usage(FILE *f) {
-  cli_help(f, "usage: fliplab rule RULE... [options]",
-           "Tests each flip rule (MEASURE_JOINT, DT, or a plugin's rule; several may be given,\n"
-           "also as a comma list) on random convex pentagons and quadrilaterals: flip-graph\n"
-           "types I-V with 95% Wilson intervals, agreement with Delaunay, verdicts, and the\n"
-           "witness pentagons of the lowest sample indices (the same for any --threads).\n"
-           "User measures: fliplab --define 'q = a*b*c' rule q_1; plugins: fliplab --plugin\n"
-           "FILE.so rule NAME.  Types and verdicts: docs/classification.md.\n",
-           cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
+/* RULE...: rules, also comma lists; "--" too (no rule, said so). */
+static int cli_rule_positional(const char *cmd, const char *arg, void *dst) {
+  if (strncmp(arg, "--", 2) == 0 && strcmp(arg, "--") != 0)
+    return cli_unknown_option(cmd, arg, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
+  return cli_rules_add(cmd, arg, &((cli_rule_opts *)dst)->rules);
 }
+
+static const cli_spec cli_rule_spec = {
+  "rule", "usage: fliplab rule RULE... [options]",
+  "Tests each flip rule (MEASURE_JOINT, DT, or a plugin's rule; several may be given,\n"
+  "also as a comma list) on random convex pentagons and quadrilaterals: flip-graph\n"
+  "types I-V with 95% Wilson intervals, agreement with Delaunay, verdicts, and the\n"
+  "witness pentagons of the lowest sample indices (the same for any --threads).\n"
+  "User measures: fliplab --define 'q = a*b*c' rule q_1; plugins: fliplab --plugin\n"
+  "FILE.so rule NAME.  Types and verdicts: docs/classification.md.\n",
+  cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help), cli_rule_positional};
 
 /* ---- statistics ----------------------------------------------------------- */
 
@@ -334,55 +349,19 @@ static void cli_rule_print(const rule *r, const cli_rule_opts *o, const flipgrap
 
 /* ---- the command ------------------------------------------------------------- */
 
-static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o, rule *rules, int *nrules) {
-  *o = (cli_rule_opts){100000, 1, 3, 100000, 0, RULE_DEFAULT_TIE_EPS, NULL,
-                       "disc:5,convex:6", 20000};
-  *nrules = 0;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (strncmp(a, "--", 2) != 0 || strcmp(a, "--") == 0) {
-      if (cli_parse_rule_list("rule", a, rules, nrules, CLI_RULE_MAX) != 0) return 2;
-      continue;
-    }
-    if (cli_option_find(a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help)) == NULL)
-      return cli_unknown_option("rule", a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
-    if ((v = cli_optarg("rule", argc, argv, &i)) == NULL) return 2;
-    if (strcmp(a, "--samples") == 0) {
-      if (cli_parse_u64("rule", a, v, 1, 1ull << 40, &o->samples)) return 2;
-    } else if (strcmp(a, "--seed") == 0) {
-      if (cli_parse_u64("rule", a, v, 0, UINT64_MAX, &o->seed)) return 2;
-    } else if (strcmp(a, "--witnesses") == 0) {
-      if (cli_parse_u64("rule", a, v, 0, CLI_RULE_WITNESS_MAX, &o->witnesses)) return 2;
-    } else if (strcmp(a, "--quads") == 0) {
-      if (cli_parse_u64("rule", a, v, 0, 1ull << 40, &o->quads)) return 2;
-    } else if (strcmp(a, "--threads") == 0) {
-      if (cli_parse_u64("rule", a, v, 0, 1024, &o->threads)) return 2;
-    } else if (strcmp(a, "--tie-eps") == 0) {
-      if (cli_parse_double("rule", a, v, 0, 1e-3, &o->tie_eps)) return 2;
-    } else if (strcmp(a, "--svg-dir") == 0) {
-      o->svg_dir = v;
-    } else if (strcmp(a, "--sites") == 0) {
-      if (cli_rule_sites_check(v) != 0) return 2;
-      o->sites = v;
-    } else if (strcmp(a, "--site-samples") == 0) {
-      if (cli_parse_u64("rule", a, v, 1, 1ull << 40, &o->site_samples)) return 2;
-    } else {
-      return cli_unknown_option("rule", a, cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help));
-    }
-  }
-  if (*nrules == 0) return cli_error("rule", "no rule given (try: fliplab rule --help)");
+/* 0, 1 after --help, 2 after an error. */
+static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o) {
+  int st = cli_options_parse(&cli_rule_spec, argc, argv, o, NULL);
+  if (st != 0) return st;
+  if (o->rules.n == 0) return cli_error("rule", "no rule given (try: fliplab rule --help)");
   return 0;
 }
 
 int cli_cmd_rule(int argc, char **argv) {
-  for (int i = 1; i < argc; i++)
-    if (cli_is_help(argv[i])) {
-      cli_rule_usage(stdout);
-      return 0;
-    }
   static rule rules[CLI_RULE_MAX];
-  cli_rule_opts o;
-  int nrules, rc = cli_rule_parse(argc, argv, &o, rules, &nrules);
+  cli_rule_opts o = {.rules = {rules, 0, CLI_RULE_MAX}};
+  int rc = cli_rule_parse(argc, argv, &o), nrules = o.rules.n;
+  if (rc == 1) return 0;
   if (rc != 0) return rc;
   for (int r = 0; r < nrules; r++) rule_set_tie_eps(&rules[r], o.tie_eps);
   if (o.svg_dir != NULL && mkdir(o.svg_dir, 0777) != 0 && errno != EEXIST)

@@ -1,7 +1,8 @@
 /*
-** hint.c: help and "did you mean" for every command: the option tables'
-** help text, and suggestions for mistyped commands, options, rules and
-** measures.  One home: every command reports an unknown name through here.
+** hint.c: "did you mean" for every command: suggestions for mistyped
+** commands, options (from the option tables' rows, cli/options.c), rules
+** and measures.  One home: every command reports an unknown name through
+** here.
 **
 ** A suggestion is the candidate at the smallest edit distance (insertions,
 ** deletions, substitutions and swaps of neighbours, each costing one), if
@@ -74,32 +75,6 @@ const char *cli_closest(const char *s, const char *const *names, size_t n) {
 }
 
 /* ---- options ---------------------------------------------------------------- */
-
-/* Each option on one line, name and argument in a column of 18; a default
-** that would run the line past 80 characters goes on the next line. */
-void cli_help(FILE *f, const char *usage, const char *about, const cli_option *o, size_t n) {
-  fprintf(f, "%s\n\n%s\noptions:\n", usage, about);
-  for (size_t i = 0; i < n; i++) {
-    char head[48];
-    snprintf(head, sizeof head, "%s%s%s", o[i].name, o[i].arg ? " " : "", o[i].arg ? o[i].arg : "");
-    fprintf(f, "  %-18s %s", head, o[i].help);
-    if (o[i].dflt != NULL) {
-      const char *last = strrchr(o[i].help, '\n');
-      size_t col = last ? strlen(last + 1) : 21 + strlen(o[i].help);
-      if (col + strlen(o[i].dflt) + 12 > 80) fprintf(f, "\n%21s", "");
-      else fputc(' ', f);
-      fprintf(f, "(default: %s)", o[i].dflt);
-    }
-    fputc('\n', f);
-  }
-  fprintf(f, "  %-18s %s\n", "--help", "this help");
-}
-
-const cli_option *cli_option_find(const char *name, const cli_option *o, size_t n) {
-  for (size_t i = 0; i < n; i++)
-    if (strcmp(o[i].name, name) == 0) return &o[i];
-  return NULL;
-}
 
 int cli_unknown_option(const char *cmd, const char *opt, const cli_option *o, size_t n) {
   const char *names[64];

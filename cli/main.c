@@ -31,17 +31,9 @@ static void cli_usage(FILE *out) {
                "       fliplab COMMAND --help | fliplab --version\n\ncommands:\n");
   for (size_t i = 0; i < CLI_NCOMMANDS; i++)
     fprintf(out, "  %-9s %s\n", cli_commands[i].name, cli_commands[i].summary);
-  fprintf(out, "\nglobal options (before or after the command, repeatable):\n"
-               "  --define 'NAME = EXPR'  a badness measure from a formula (muParser syntax);\n"
-               "                          'NAME <= 0 : EXPR' or 'NAME >= 0 : EXPR' declares its sign.\n"
-               "                          Variables, per triangle: a b c (sides, a >= b >= c),\n"
-               "                          alpha beta gamma (angles in radians, ascending; alpha\n"
-               "                          opposite c), A (area), P (perimeter), R (circumradius),\n"
-               "                          r (inradius), h (shortest altitude), rx ry (coordinate\n"
-               "                          ranges), x1 y1 x2 y2 x3 y3 (vertices, lexicographic),\n"
-               "                          and the constant pi.  Small is good.\n"
-               "  --plugin FILE.so        load measures and quadrilateral rules from a plugin\n"
-               "\nRules are MEASURE_JOINT (e.g. P_1, -alpha_inf) or DT; fliplab list shows them.\n"
+  fprintf(out, "\nglobal options (before or after the command, repeatable):\n");
+  cli_userdefs_help(out);
+  fprintf(out, "\nRules are MEASURE_JOINT (e.g. P_1, -alpha_inf) or DT; fliplab list shows them.\n"
                "Definitions, formats and methods: docs/README.md in the source tree, installed\n"
                "as share/doc/fliplab/README.md.\n");
 }

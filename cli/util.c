@@ -82,16 +82,3 @@ bad:
   cli_error(cmd, "%s expects a finite number, got '%s'", opt, s ? s : "");
   return -1;
 }
-
-const char *cli_optarg(const char *cmd, int argc, char **argv, int *i) {
-  if (*i + 1 >= argc) {
-    cli_error(cmd, "option %s needs a value", argv[*i]);
-    return NULL;
-  }
-  *i += 1;
-  return argv[*i];
-}
-
-int cli_is_help(const char *opt) {
-  return strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0 || strcmp(opt, "help") == 0;
-}
