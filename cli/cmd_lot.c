@@ -293,6 +293,22 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
   return 0;
 }
 
+/* The header, counts, status and time lines. */
+static void cli_lot_summary(const rule *r, const char *desc, const lot_options *o,
+                            const lot_stats *st, double tie_eps) {
+  int flip = o->algorithm == LOT_FLIP;
+  printf("# fliplab lot: rule %s, %s, %s algorithm%s%s, tie-eps %.3g\n", r->name, desc,
+         flip ? "flip" : "incremental", flip ? "" : ", order ",
+         flip ? "" : cli_lot_order_name[o->order], tie_eps);
+  printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
+  printf("triangles: %zu\n", st->triangles);
+  printf("flips: %llu\n", (unsigned long long)st->flips);
+  cli_lot_status(st);
+  printf(flip ? "time: %.4f s (initial triangulation %.4f s, flips %.4f s)\n"
+              : "time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
+         st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
+}
+
 int cli_cmd_lot(int argc, char **argv) {
   cli_lot_args a;
   rule r = rule_delaunay();
@@ -334,20 +350,7 @@ int cli_cmd_lot(int argc, char **argv) {
   lot_get_triangles(L, tri);
   lot_get_badness(p, tri, st->triangles, &r, bad);
 
-  printf("# fliplab lot: rule %s, %s, %s algorithm%s%s, tie-eps %.3g\n", r.name, desc,
-         o.algorithm == LOT_FLIP ? "flip" : "incremental",
-         o.algorithm == LOT_FLIP ? "" : ", order ",
-         o.algorithm == LOT_FLIP ? "" : cli_lot_order_name[o.order], a.tie_eps);
-  printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
-  printf("triangles: %zu\n", st->triangles);
-  printf("flips: %llu\n", (unsigned long long)st->flips);
-  cli_lot_status(st);
-  if (o.algorithm == LOT_FLIP)
-    printf("time: %.4f s (initial triangulation %.4f s, flips %.4f s)\n",
-           st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
-  else
-    printf("time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
-           st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
+  cli_lot_summary(&r, desc, &o, st, a.tie_eps);
   int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r) != 0;
   if (a.compare == 0)
     rc = cli_lot_compare_dt(p, n, &o, tri, st->triangles, &dt, &ndt);

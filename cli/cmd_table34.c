@@ -157,6 +157,33 @@ static int cli_table34_tally(const cli_table34_opts *o, const rule *rules, int n
   return cli_userdefs_failed(CMD) ? -1 : 0;
 }
 
+/* The table into out and the scatter plot into plot (if not NULL), which
+** are closed or discarded; the exit status. */
+static int cli_table34_write(const cli_table34_opts *o, const report_row *rows, int nrules,
+                             uint64_t first, uint64_t count, FILE *out, FILE *plot) {
+  const char *sampler = o->sampler == 0 ? NULL : sampler_pentagons_table[o->sampler].name;
+  report_run run = {.known = 1, .seed = o->seed, .tie_eps = o->tie_eps, .first = first,
+                    .end = first + count, .total = o->samples, .rules = (uint64_t)nrules,
+                    .sampler = sampler};
+  report_meta meta = {.samples = count, .has_seed = 1, .seed = o->seed, .has_tie_eps = 1,
+                      .tie_eps = o->tie_eps, .shard_k = o->shard.k, .shard_n = o->shard.n,
+                      .shard_first = first, .shard_total = o->samples,
+                      .text_columns = (int)o->columns, .run = &run, .sampler = sampler};
+  uint64_t iv = report_type_iv(rows, nrules);
+  if (iv > 0)
+    fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "
+                    "rules, which theorem 1 rules out: this is a bug\n",
+            (unsigned long long)iv);
+  /* A failed write sets the stream's error flag, which cli_close_out
+  ** reports (once, naming the file). */
+  int rc = cli_finish_out(CMD, out, report_write(out, o->format, &meta, rows, nrules));
+  if (rc == 0 && plot != NULL)
+    rc = cli_finish_out(CMD, plot, report_scatter_svg(plot, &meta, rows, nrules));
+  else
+    cli_abort_out(plot);
+  return rc;
+}
+
 int cli_cmd_table34(int argc, char **argv) {
   cli_table34_opts o;
   int st = cli_table34_parse(argc, argv, &o);
@@ -187,27 +214,7 @@ int cli_cmd_table34(int argc, char **argv) {
     counts[r].samples = count;
     report_row_from_rule(&rows[r], &rules[r], &counts[r]);
   }
-  const char *sampler = o.sampler == 0 ? NULL : sampler_pentagons_table[o.sampler].name;
-  report_run run = {.known = 1, .seed = o.seed, .tie_eps = o.tie_eps, .first = first,
-                    .end = first + count, .total = o.samples, .rules = (uint64_t)nrules,
-                    .sampler = sampler};
-  report_meta meta = {.samples = count, .has_seed = 1, .seed = o.seed, .has_tie_eps = 1,
-                      .tie_eps = o.tie_eps, .shard_k = o.shard.k, .shard_n = o.shard.n,
-                      .shard_first = first, .shard_total = o.samples,
-                      .text_columns = (int)o.columns, .run = &run, .sampler = sampler};
-  uint64_t iv = report_type_iv(rows, nrules);
-  if (iv > 0)
-    fprintf(stderr, "fliplab table34: WARNING: %llu type-IV flip graphs from triangle-based "
-                    "rules, which theorem 1 rules out: this is a bug\n",
-            (unsigned long long)iv);
-  /* A failed write sets the stream's error flag, which cli_close_out
-  ** reports (once, naming the file). */
-  int w = report_write(out, o.format, &meta, rows, nrules);
-  rc = cli_finish_out(CMD, out, w);
-  if (rc == 0 && plot != NULL)
-    rc = cli_finish_out(CMD, plot, report_scatter_svg(plot, &meta, rows, nrules));
-  else
-    cli_abort_out(plot);
+  rc = cli_table34_write(&o, rows, nrules, first, count, out, plot);
   out = plot = NULL;
 done:
   cli_abort_out(out);     /* only on an early exit: nothing to keep */

@@ -3,6 +3,10 @@
 **  - every command listed by `fliplab --help` has a `--help` that lists its
 **    options, each option taking a value shows its default (or says it is
 **    required), and every listed option is one the command accepts;
+**  - the one option parser: every value option without its value is one
+**    line naming it; the shared rows (--seed, --threads, --tie-eps) have
+**    the same bounds, messages and defaults in every command, --tie-eps's
+**    printed from RULE_DEFAULT_TIE_EPS;
 **  - `fliplab --help` names every formula variable;
 **  - "did you mean" for commands, options, rules and measures, including
 **    the sign forms (alpha for -alpha), and a useful word for an undefined
@@ -23,6 +27,7 @@
 #include <unistd.h>
 
 #include "formula.h"
+#include "rule.h"
 #include "testutil.h"
 
 #define TH_CAP 65536
@@ -59,6 +64,37 @@ static int th_commands(char names[][32], int cap) {
   return n;
 }
 
+/* What one parser and its shared rows promise of a value option: its
+** value missing is one line naming it; --tie-eps shows the rule library's
+** default; --seed, --threads and --tie-eps have the same bounds and
+** messages in every command. */
+static void th_option_rows(const char *cmd, const char *name, const char *entry) {
+  char want[2400];
+  snprintf(want, sizeof want, "fliplab %s: option %s needs a value\n", cmd, name);
+  if (th_run("%s %s", cmd, name) != 2 || strcmp(th_err, want) != 0)
+    fail_msg("%s %s (no value): '%s', want '%s'", cmd, name, th_err, want);
+  if (strcmp(name, "--tie-eps") == 0) {
+    snprintf(want, sizeof want, "(default: %g)", RULE_DEFAULT_TIE_EPS);
+    if (strstr(entry, want) == NULL) fail_msg("%s --tie-eps: '%s' lacks %s", cmd, entry, want);
+    snprintf(want, sizeof want, "fliplab %s: --tie-eps -1 is out of range [0, ", cmd);
+    if (th_run("%s --tie-eps -1", cmd, "") != 2 || strncmp(th_err, want, strlen(want)) != 0)
+      fail_msg("%s --tie-eps -1: '%s'", cmd, th_err);
+  }
+  if (strcmp(name, "--threads") == 0) {
+    snprintf(want, sizeof want, "fliplab %s: --threads 0 is out of range [1, 1024]\n", cmd);
+    if (th_run("%s --threads 0", cmd, "") != 2 || strcmp(th_err, want) != 0)
+      fail_msg("%s --threads 0: '%s', want '%s'", cmd, th_err, want);
+    assert_non_null(strstr(entry, "(default: all cores)"));
+  }
+  if (strcmp(name, "--seed") == 0) {
+    snprintf(want, sizeof want, "fliplab %s: --seed expects a non-negative integer, got "
+             "'-1'\n", cmd);
+    if (th_run("%s --seed -1", cmd, "") != 2 || strcmp(th_err, want) != 0)
+      fail_msg("%s --seed -1: '%s', want '%s'", cmd, th_err, want);
+    assert_non_null(strstr(entry, "(default: 1)"));
+  }
+}
+
 static void test_command_help(void **state) {
   (void)state;
   char cmds[32][32];
@@ -89,6 +125,7 @@ static void test_command_help(void **state) {
         snprintf(entry, sizeof entry, "%.*s", (int)(next - l), l);
         if (strstr(entry, "(default: ") == NULL)
           fail_msg("%s --help: %s shows no default: %s", cmds[c], name, entry);
+        th_option_rows(cmds[c], name, entry);
       }
       if (strcmp(name, "--help") != 0) {
         char unknown[96];
