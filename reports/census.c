@@ -14,6 +14,7 @@
 ** the unsharded run.
 */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "report_internal.h"
@@ -53,23 +54,24 @@ static double report_census_mean_gap(const report_census_row *r) {
   return (double)r->c.gap_units * SITEFLIP_GAP_UNIT / (double)d;
 }
 
+/* The counts table of census CSVs (below, with the reader). */
+static const report_table report_census_kind;
+
 static int report_census_csv(FILE *f, const report_census_row *rows, int nrows) {
   report_csv_row(f, report_census_header, REPORT_CENSUS_NCOLS);
   for (int r = 0; r < nrows; r++) {
     const report_census_row *w = &rows[r];
     const siteflip_counts *c = &w->c;
-    char num[REPORT_CENSUS_NCOLS][40];
+    char num[REPORT_CENSUS_NCOLS][32];
     double ms = report_census_mean_sinks(c), mg = report_census_mean_gap(w);
-    snprintf(num[3], 40, "%d", w->sites);
-    const uint64_t v[7] = {c->samples, c->tie, c->no_sink, c->one_sink, c->multi_sink,
-                           c->sink_dt, 0};
-    for (int k = 0; k < 6; k++) snprintf(num[5 + k], 40, "%llu", (unsigned long long)v[k]);
-    num[11][0] = num[13][0] = '\0';   /* empty: nothing to average */
-    if (!isnan(ms)) snprintf(num[11], 40, "%.17g", ms);
-    snprintf(num[12], 40, "%llu", (unsigned long long)c->max_sinks);
-    if (!isnan(mg)) snprintf(num[13], 40, "%.17g", mg);
+    snprintf(num[3], 32, "%d", w->sites);
     const char *field[REPORT_CENSUS_NCOLS] = {w->measure, w->joint, w->rule, num[3], w->sampler};
-    for (int k = 5; k < REPORT_CENSUS_NCOLS; k++) field[k] = num[k];
+    report_table_format(&report_census_kind, w, num, field);   /* the integer columns */
+    num[11][0] = num[13][0] = '\0';   /* empty: nothing to average */
+    if (!isnan(ms)) snprintf(num[11], 32, "%.17g", ms);
+    if (!isnan(mg)) snprintf(num[13], 32, "%.17g", mg);
+    field[11] = num[11];
+    field[13] = num[13];
     report_csv_row(f, field, REPORT_CENSUS_NCOLS);
   }
   return ferror(f) ? -1 : 0;
@@ -169,12 +171,8 @@ int report_census_write(FILE *f, report_format fmt, const report_census_meta *m,
 /* ---- reading ---------------------------------------------------------------- */
 
 typedef struct report_census_reader {
-  const char *name;
-  report_census_row *rows;
-  int n, cap, header_seen;
-  const size_t *len;     /* the current record's field lengths */
-  char *err;
-  size_t errlen;
+  report_tableread tr;
+  int header_seen;
 } report_census_reader;
 
 static int report_census_mean(const char *s, size_t len, uint64_t denom, double scale,
@@ -200,12 +198,12 @@ static int report_census_named(const report_census_row *row, const char *gap) {
   return rule_name_is(row->rule, row->measure, row->joint);
 }
 
-static int report_census_fields(report_census_reader *cr, report_census_row *row, char **f,
-                                unsigned long long ln) {
+static int report_census_names(report_tableread *r, report_census_row *row, char **f,
+                               unsigned long long ln) {
   if (strlen(f[0]) >= sizeof row->measure || strlen(f[1]) >= sizeof row->joint ||
       strlen(f[2]) >= sizeof row->rule || f[2][0] == '\0' || strlen(f[4]) >= sizeof row->sampler) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: rule or sampler name empty or too long",
-             cr->name, ln);
+    snprintf(r->err, r->errlen, "%s line %llu: rule or sampler name empty or too long",
+             r->name, ln);
     return -1;
   }
   strcpy(row->measure, f[0]);
@@ -213,44 +211,60 @@ static int report_census_fields(report_census_reader *cr, report_census_row *row
   strcpy(row->rule, f[2]);
   strcpy(row->sampler, f[4]);
   if (!report_census_named(row, f[13])) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: rule '%.40s' does not match measure '%.40s' "
-             "and joint '%.16s' (or has a gap without a measure)", cr->name, ln, row->rule,
+    snprintf(r->err, r->errlen, "%s line %llu: rule '%.40s' does not match measure '%.40s' "
+             "and joint '%.16s' (or has a gap without a measure)", r->name, ln, row->rule,
              row->measure, row->joint);
-    return -1;
-  }
-  uint64_t sites;
-  siteflip_counts *c = &row->c;
-  uint64_t *dst[8] = {&c->samples, &c->tie, &c->no_sink, &c->one_sink, &c->multi_sink,
-                      &c->sink_dt};
-  int col[8] = {5, 6, 7, 8, 9, 10};
-  if (geom_count_parse(f[3], cr->len[3], &sites) != 0 || sites < 3 || sites > SITEFLIP_MAX_SITES) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: sites '%s' is not a site count 3..%d",
-             cr->name, ln, f[3], SITEFLIP_MAX_SITES);
-    return -1;
-  }
-  row->sites = (int)sites;
-  for (int k = 0; k < 6; k++)
-    if (geom_count_parse(f[col[k]], cr->len[col[k]], dst[k]) != 0) {
-      snprintf(cr->err, cr->errlen, "%s line %llu: %s '%s' is not a count", cr->name, ln,
-               report_census_header[col[k]], f[col[k]]);
-      return -1;
-    }
-  if (geom_count_parse(f[12], cr->len[12], &c->max_sinks) != 0 ||
-      report_census_mean(f[11], cr->len[11], c->samples - (c->tie <= c->samples ? c->tie : 0), 1.0, &c->sinks) != 0 ||
-      report_census_mean(f[13], cr->len[13], c->one_sink + c->multi_sink, SITEFLIP_GAP_UNIT, &c->gap_units) != 0) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: bad mean_sinks, max_sinks or mean_worst_gap",
-             cr->name, ln);
     return -1;
   }
   return 0;
 }
 
-/* The sinks of the untied samples: none for no_sink, one for one_sink,
-** 2 to max_sinks for each multi_sink sample, so one_sink + 2 multi_sink <=
-** sinks <= one_sink + max_sinks multi_sink, and max_sinks is 0 without a
-** sink, 1 without a multi-sink sample, at least 2 with one (a row whose
-** mean_sinks exceeds its max_sinks fails the upper bound). */
-static int report_census_sinks_consistent(const siteflip_counts *c) {
+/* The kind's fields of a census row (report_table.fields): names, sites,
+** and the two means read back into their sums (the integer columns are
+** read: the means' denominators). */
+static int report_census_fields(report_tableread *r, char **f, void *p, unsigned long long ln) {
+  report_census_row *row = p;
+  siteflip_counts *c = &row->c;
+  uint64_t sites;
+  if (report_census_names(r, row, f, ln) != 0) return -1;
+  if (geom_count_parse(f[3], r->len[3], &sites) != 0 || sites < 3 || sites > SITEFLIP_MAX_SITES) {
+    snprintf(r->err, r->errlen, "%s line %llu: sites '%.40s' is not a site count 3..%d",
+             r->name, ln, f[3], SITEFLIP_MAX_SITES);
+    return -1;
+  }
+  row->sites = (int)sites;
+  uint64_t untied = c->samples - (c->tie <= c->samples ? c->tie : 0);
+  if (report_census_mean(f[11], r->len[11], untied, 1.0, &c->sinks) != 0 ||
+      report_census_mean(f[13], r->len[13], c->one_sink + c->multi_sink, SITEFLIP_GAP_UNIT,
+                         &c->gap_units) != 0) {
+    snprintf(r->err, r->errlen, "%s line %llu: bad mean_sinks or mean_worst_gap", r->name, ln);
+    return -1;
+  }
+  return 0;
+}
+
+/* The check rows of a census row.  The untied samples have no sink, one
+** (one_sink) or 2 to max_sinks (multi_sink) sinks each, so one_sink + 2
+** multi_sink <= sinks <= one_sink + max_sinks multi_sink, and max_sinks is
+** 0 without a sink, 1 without a multi-sink sample, at least 2 with one (a
+** row whose mean_sinks exceeds its max_sinks fails the upper bound). */
+static int report_census_parts_sum(const void *p) {
+  const siteflip_counts *c = &((const report_census_row *)p)->c;
+  uint64_t parts[4] = {c->tie, c->no_sink, c->one_sink, c->multi_sink}, sum = 0;
+  for (int k = 0; k < 4; k++) {
+    if (parts[k] > c->samples - sum) return 0;
+    sum += parts[k];
+  }
+  return sum == c->samples;
+}
+
+static int report_census_dt_le(const void *p) {
+  const siteflip_counts *c = &((const report_census_row *)p)->c;
+  return c->sink_dt <= c->one_sink;
+}
+
+static int report_census_sinks_fit(const void *p) {
+  const siteflip_counts *c = &((const report_census_row *)p)->c;
   uint64_t one = c->one_sink, multi = c->multi_sink;
   if (one + multi == 0) return c->max_sinks == 0 && c->sinks == 0;
   if (multi == 0) return c->max_sinks == 1 && c->sinks == one;
@@ -259,117 +273,73 @@ static int report_census_sinks_consistent(const siteflip_counts *c) {
   return extra / multi + (extra % multi != 0) <= c->max_sinks;
 }
 
-static int report_census_consistent(const siteflip_counts *c) {
-  uint64_t parts[4] = {c->tie, c->no_sink, c->one_sink, c->multi_sink}, sum = 0;
-  for (int k = 0; k < 4; k++) {
-    if (parts[k] > c->samples - sum) return 0;
-    sum += parts[k];
-  }
-  return sum == c->samples && c->sink_dt <= c->one_sink && report_census_sinks_consistent(c);
+static int report_census_same(const void *pa, const void *pb, int i, const char *what,
+                              char *err, size_t errlen) {
+  const report_census_row *a = pa, *b = pb;
+  if (strcmp(a->rule, b->rule) == 0 && strcmp(a->measure, b->measure) == 0 &&
+      strcmp(a->joint, b->joint) == 0 && a->sites == b->sites &&
+      strcmp(a->sampler, b->sampler) == 0)
+    return 0;
+  snprintf(err, errlen, "%s row %d is '%s' (%d sites, %s), the first file has '%s' (%d sites, %s)",
+           what, i + 1, b->rule, b->sites, b->sampler, a->rule, a->sites, a->sampler);
+  return -1;
 }
+
+#define REPORT_CENSUS_COL(col, field, op) {col, offsetof(report_census_row, c.field), op}
+static const report_countcol report_census_intcols[9] = {
+  REPORT_CENSUS_COL(5, samples, REPORT_ADD_SUM), REPORT_CENSUS_COL(6, tie, REPORT_ADD_SUM),
+  REPORT_CENSUS_COL(7, no_sink, REPORT_ADD_SUM), REPORT_CENSUS_COL(8, one_sink, REPORT_ADD_SUM),
+  REPORT_CENSUS_COL(9, multi_sink, REPORT_ADD_SUM),
+  REPORT_CENSUS_COL(10, sink_dt, REPORT_ADD_SUM),
+  REPORT_CENSUS_COL(12, max_sinks, REPORT_ADD_MAX),
+  REPORT_CENSUS_COL(-1, sinks, REPORT_ADD_SUM),       /* from mean_sinks */
+  REPORT_CENSUS_COL(-1, gap_units, REPORT_ADD_SUM)};  /* from mean_worst_gap */
+static const report_countcheck report_census_checks[3] = {
+  {"tie + no_sink + one_sink + multi_sink must be samples", report_census_parts_sum},
+  {"sink_dt <= one_sink", report_census_dt_le},
+  {"mean_sinks within what one_sink, multi_sink and max_sinks allow", report_census_sinks_fit}};
+static const report_table report_census_kind = {
+  report_census_header, sizeof(report_census_row), REPORT_CENSUS_MAX_ROWS, report_census_intcols, 9,
+  report_census_checks, 3, report_census_fields, report_census_same};
 
 static int report_census_record(char **f, const size_t *len, int nf, uint64_t line,
                                 void *data) {
   report_census_reader *cr = data;
-  cr->len = len;
-  unsigned long long ln = (unsigned long long)line;
-  if (!cr->header_seen) {
-    int ok = nf == REPORT_CENSUS_NCOLS;
-    for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_census_header[i]) == 0;
-    if (!ok) {
-      snprintf(cr->err, cr->errlen, "%s line %llu: not a census CSV (bad header)", cr->name, ln);
-      return -1;
-    }
-    cr->header_seen = 1;
-    return 0;
-  }
-  if (nf != REPORT_CENSUS_NCOLS) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: expected %d fields, got %d", cr->name, ln,
-             REPORT_CENSUS_NCOLS, nf);
+  if (cr->header_seen) return report_table_record(&cr->tr, f, len, nf, line);
+  int ok = nf == REPORT_CENSUS_NCOLS;
+  for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_census_header[i]) == 0;
+  if (!ok) {
+    snprintf(cr->tr.err, cr->tr.errlen, "%s line %llu: not a census CSV (bad header)",
+             cr->tr.name, (unsigned long long)line);
     return -1;
   }
-  if (cr->n >= REPORT_CENSUS_MAX_ROWS) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: more than %d rules", cr->name, ln,
-             REPORT_CENSUS_MAX_ROWS);
-    return -1;
-  }
-  if (cr->n == cr->cap) {
-    int cap = cr->cap ? 2 * cr->cap : 64;
-    report_census_row *r = realloc(cr->rows, (size_t)cap * sizeof *r);
-    if (r == NULL) {
-      snprintf(cr->err, cr->errlen, "%s: out of memory", cr->name);
-      return -1;
-    }
-    cr->rows = r;
-    cr->cap = cap;
-  }
-  report_census_row *row = &cr->rows[cr->n];
-  memset(row, 0, sizeof *row);
-  if (report_census_fields(cr, row, f, ln) != 0) return -1;
-  if (!report_census_consistent(&row->c)) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: inconsistent counts (tie + no_sink + one_sink "
-             "+ multi_sink must be samples, sink_dt <= one_sink, mean_sinks within what "
-             "one_sink, multi_sink and max_sinks allow)", cr->name, ln);
-    return -1;
-  }
-  if (cr->n > 0 && row->c.samples != cr->rows[0].c.samples) {
-    snprintf(cr->err, cr->errlen, "%s line %llu: samples differ from the first row's",
-             cr->name, ln);
-    return -1;
-  }
-  cr->n++;
+  cr->header_seen = 1;
+  cr->tr.ncols = nf;
   return 0;
 }
 
 int report_census_read(FILE *in, const char *path, report_census_row **rows, int *nrows,
                        char *err, size_t errlen) {
-  report_census_reader cr = {.name = path, .err = err, .errlen = errlen};
+  report_census_reader cr = {.tr = {.t = &report_census_kind, .name = path, .err = err,
+                                    .errlen = errlen}};
   char perr[256] = "";
   err[0] = '\0';
   int rc = report_csv_each(in, report_census_record, &cr, perr, sizeof perr);
   if (rc != 0 && err[0] == '\0') snprintf(err, errlen, "%s: %s", path, perr);
-  if (rc == 0 && cr.n == 0) {
+  if (rc == 0 && cr.tr.n == 0) {
     snprintf(err, errlen, "%s: no rows after the header", path);
     rc = -1;
   }
   if (rc != 0) {
-    free(cr.rows);
+    free(cr.tr.rows);
     return -1;
   }
-  *rows = cr.rows;
-  *nrows = cr.n;
+  *rows = (report_census_row *)(void *)cr.tr.rows;
+  *nrows = cr.tr.n;
   return 0;
 }
 
 int report_census_add(report_census_row *acc, int nacc, const report_census_row *add,
                       int nadd, const char *what, char *err, size_t errlen) {
-  if (nacc != nadd) {
-    snprintf(err, errlen, "%s has %d rules, the first file %d", what, nadd, nacc);
-    return -1;
-  }
-  for (int i = 0; i < nacc; i++)
-    if (strcmp(acc[i].rule, add[i].rule) != 0 || strcmp(acc[i].measure, add[i].measure) != 0 ||
-        strcmp(acc[i].joint, add[i].joint) != 0 || acc[i].sites != add[i].sites ||
-        strcmp(acc[i].sampler, add[i].sampler) != 0) {
-      snprintf(err, errlen, "%s row %d is '%s' (%d sites, %s), the first file has '%s' (%d sites, %s)",
-               what, i + 1, add[i].rule, add[i].sites, add[i].sampler, acc[i].rule,
-               acc[i].sites, acc[i].sampler);
-      return -1;
-    }
-  for (int i = 0; i < nacc; i++) {
-    siteflip_counts *a = &acc[i].c;
-    const siteflip_counts *b = &add[i].c;
-    uint64_t *pa[8] = {&a->samples, &a->tie, &a->no_sink, &a->one_sink, &a->multi_sink,
-                       &a->sink_dt, &a->sinks, &a->gap_units};
-    const uint64_t pb[8] = {b->samples, b->tie, b->no_sink, b->one_sink, b->multi_sink,
-                            b->sink_dt, b->sinks, b->gap_units};
-    for (int k = 0; k < 8; k++)
-      if (*pa[k] > UINT64_MAX - pb[k]) {
-        snprintf(err, errlen, "%s: counts overflow", what);
-        return -1;
-      }
-    for (int k = 0; k < 8; k++) *pa[k] += pb[k];
-    if (b->max_sinks > a->max_sinks) a->max_sinks = b->max_sinks;
-  }
-  return 0;
+  return report_table_add(&report_census_kind, acc, nacc, add, nadd, what, err, errlen);
 }

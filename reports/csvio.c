@@ -11,6 +11,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <csv.h>
@@ -41,6 +42,9 @@ static void report_errf(char *err, size_t errlen, const char *fmt, ...) {
   vsnprintf(err, errlen, fmt, ap);
   va_end(ap);
 }
+
+/* The counts table of table34 CSVs (below, with the reader). */
+static const report_table report_counts_table;
 
 /* ---------------------------------------------------------------- writing */
 
@@ -79,15 +83,12 @@ static void report_shortest(char *buf, size_t len, double x) {
 }
 
 /* The fields of one counts row (what report_csv_header names); their count. */
-static int report_counts_fields(const report_row *row, const report_run *run, int nrows,
+static int report_counts_format(const report_row *row, const report_run *run, int nrows,
                                 char num[REPORT_CSV_NCOLS][32], const char **field) {
-  const flipgraph_counts *c = &row->c;
-  const uint64_t v[7] = {c->samples, c->type[0], c->type[1], c->type[2], c->type[3],
-                         c->type[4], c->dt};
   field[0] = row->measure;
   field[1] = row->joint;
   field[2] = row->rule;
-  for (int k = 0; k < 7; k++) snprintf(num[3 + k], 32, "%llu", (unsigned long long)v[k]);
+  report_table_format(&report_counts_table, row, num, field);
   if (run == NULL) return 10;
   const uint64_t w[6] = {run->seed, 0, run->first, run->end, run->total, (uint64_t)nrows};
   for (int k = 0; k < 6; k++) snprintf(num[10 + k], 32, "%llu", (unsigned long long)w[k]);
@@ -105,7 +106,7 @@ int report_csv_write_run(FILE *f, const report_row *rows, int nrows, const repor
   report_csv_row(f, field, ncols + sampler);
   for (int i = 3; i < REPORT_CSV_NCOLS; i++) field[i] = num[i];
   for (int r = 0; r < nrows; r++) {
-    int n = report_counts_fields(&rows[r], run, nrows, num, field);
+    int n = report_counts_format(&rows[r], run, nrows, num, field);
     if (sampler) field[n++] = run->sampler;
     report_csv_row(f, field, n);
   }
@@ -280,47 +281,42 @@ static void report_prefix_err(char *err, size_t errlen, const char *name, const 
 /* ------------------------------------------------------- counts files */
 
 typedef struct report_countsread {
-  const char *name;
-  report_row *rows;
-  int n, cap;
+  report_tableread tr;
   int header_seen;
-  int ncols;             /* 10 (no run columns) or REPORT_CSV_NCOLS */
   report_run run;
-  const size_t *len;     /* the current record's field lengths */
-  char *err;
-  size_t errlen;
 } report_countsread;
 
 static int report_counts_header(report_countsread *cr, char **f, int nf, uint64_t line) {
+  const char *name = cr->tr.name;
   if (nf == REPORT_CSV_NCOLS + 1 && strcmp(f[nf - 1], "sampler") == 0) {
-    report_errf(cr->err, cr->errlen,
+    report_errf(cr->tr.err, cr->tr.errlen,
                 "%s: made by table34 --sampler other than iteration; merge sums only "
-                "iteration-method runs (docs/merge.md)", cr->name);
+                "iteration-method runs (docs/merge.md)", name);
     return -1;
   }
   int ok = nf == 10 || nf == REPORT_CSV_NCOLS;
   for (int i = 0; ok && i < nf; i++) ok = strcmp(f[i], report_csv_header[i]) == 0;
   if (!ok) {
-    report_errf(cr->err, cr->errlen,
+    report_errf(cr->tr.err, cr->tr.errlen,
                 "%s line %llu: not a table34 CSV (the header must be "
                 "measure,joint,rule,samples,type_I,type_II,type_III,type_IV,type_V,dt"
                 "[,seed,tie_eps,first,end,total,rules])",
-                cr->name, (unsigned long long)line);
+                name, (unsigned long long)line);
     return -1;
   }
   cr->header_seen = 1;
-  cr->ncols = nf;
+  cr->tr.ncols = nf;
   cr->run.known = nf == REPORT_CSV_NCOLS;
   return 0;
 }
 
 /* The row's names: a known joint, rule = MEASURE_JOINT (or a whole-
 ** quadrilateral rule such as DT, measure and joint empty). */
-static int report_counts_names(report_countsread *cr, char **f, report_row *row,
+static int report_counts_names(report_tableread *r, char **f, report_row *row,
                                unsigned long long ln) {
   if (strlen(f[0]) >= sizeof row->measure || strlen(f[1]) >= sizeof row->joint ||
       strlen(f[2]) >= sizeof row->rule || f[2][0] == '\0') {
-    report_errf(cr->err, cr->errlen, "%s line %llu: rule name empty or too long", cr->name, ln);
+    report_errf(r->err, r->errlen, "%s line %llu: rule name empty or too long", r->name, ln);
     return -1;
   }
   strcpy(row->measure, f[0]);
@@ -331,154 +327,145 @@ static int report_counts_names(report_countsread *cr, char **f, report_row *row,
       !rule_name_is(row->rule, row->measure, row->joint)) {
     char joints[64];
     joint_names(joints, sizeof joints);
-    report_errf(cr->err, cr->errlen,
+    report_errf(r->err, r->errlen,
                 "%s line %llu: rule '%.40s' does not match its measure '%.40s' and joint "
                 "'%.16s' (expected MEASURE_JOINT with a joint in {%s} or a real p)",
-                cr->name, ln, row->rule, row->measure, row->joint, joints);
+                r->name, ln, row->rule, row->measure, row->joint, joints);
     return -1;
   }
   return 0;
 }
 
-/* The seven counts: types sum to samples, dt <= type_I. */
-static int report_counts_numbers(report_countsread *cr, char **f, report_row *row,
-                                 unsigned long long ln) {
-  uint64_t *dst[7] = {&row->c.samples, &row->c.type[0], &row->c.type[1], &row->c.type[2],
-                      &row->c.type[3], &row->c.type[4], &row->c.dt};
-  for (int i = 0; i < 7; i++)
-    if (geom_count_parse(f[3 + i], cr->len[3 + i], dst[i]) != 0) {
-      report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count",
-                  cr->name, ln, report_csv_header[3 + i], f[3 + i]);
-      return -1;
-    }
+/* The check rows of a counts row: the five types sum to samples, dt <= type_I. */
+static int report_counts_types_sum(const void *p) {
+  const flipgraph_counts *c = &((const report_row *)p)->c;
   uint64_t sum = 0;
   for (int t = 0; t < FLIPGRAPH_NTYPES; t++) {
-    if (row->c.type[t] > row->c.samples - sum || sum > row->c.samples) {
-      sum = UINT64_MAX;
-      break;
-    }
-    sum += row->c.type[t];
+    if (c->type[t] > c->samples - sum) return 0;
+    sum += c->type[t];
   }
-  if (sum != row->c.samples || row->c.dt > row->c.type[FLIPGRAPH_I]) {
-    report_errf(cr->err, cr->errlen,
-                "%s line %llu: inconsistent counts (types must sum to samples, dt <= type_I)",
-                cr->name, ln);
-    return -1;
-  }
-  return 0;
+  return sum == c->samples;
+}
+
+static int report_counts_dt_le(const void *p) {
+  const flipgraph_counts *c = &((const report_row *)p)->c;
+  return c->dt <= c->type[FLIPGRAPH_I];
 }
 
 /* The run columns: the same on every row, samples = end - first, first <
 ** end <= total; rules is checked against the row count at the end. */
 static int report_counts_run(report_countsread *cr, char **f, const report_row *row,
                              unsigned long long ln) {
+  const report_tableread *tr = &cr->tr;
   report_run r = {.known = 1};
   uint64_t *dst[5] = {&r.seed, &r.first, &r.end, &r.total, &r.rules};
   const int col[5] = {10, 12, 13, 14, 15};
   for (int i = 0; i < 5; i++)
-    if (geom_count_parse(f[col[i]], cr->len[col[i]], dst[i]) != 0) {
-      report_errf(cr->err, cr->errlen, "%s line %llu: %s '%.40s' is not a count", cr->name,
+    if (geom_count_parse(f[col[i]], tr->len[col[i]], dst[i]) != 0) {
+      report_errf(tr->err, tr->errlen, "%s line %llu: %s '%.40s' is not a count", tr->name,
                   ln, report_csv_header[col[i]], f[col[i]]);
       return -1;
     }
-  if (geom_number_parse(f[11], cr->len[11], &r.tie_eps) != GEOM_NUM_OK &&
+  if (geom_number_parse(f[11], tr->len[11], &r.tie_eps) != GEOM_NUM_OK &&
       strcmp(f[11], "0") != 0) {
-    report_errf(cr->err, cr->errlen, "%s line %llu: tie_eps '%.40s' is not a number",
-                cr->name, ln, f[11]);
+    report_errf(tr->err, tr->errlen, "%s line %llu: tie_eps '%.40s' is not a number",
+                tr->name, ln, f[11]);
     return -1;
   }
   if (strcmp(f[11], "0") == 0) r.tie_eps = 0;
   if (!(r.first <= r.end && r.end <= r.total) || row->c.samples != r.end - r.first ||
       r.rules == 0 || r.rules > REPORT_CSV_MAXROWS) {
-    report_errf(cr->err, cr->errlen,
+    report_errf(tr->err, tr->errlen,
                 "%s line %llu: inconsistent run columns (need first <= end <= total, "
-                "samples = end - first, 1 <= rules <= %d)", cr->name, ln, REPORT_CSV_MAXROWS);
+                "samples = end - first, 1 <= rules <= %d)", tr->name, ln, REPORT_CSV_MAXROWS);
     return -1;
   }
-  if (cr->n == 0) {
+  if (tr->n == 0) {
     cr->run = r;
   } else if (memcmp(&r, &cr->run, sizeof r) != 0) {
-    report_errf(cr->err, cr->errlen,
+    report_errf(tr->err, tr->errlen,
                 "%s line %llu: run columns (seed,tie_eps,first,end,total,rules) differ from "
-                "the first row's", cr->name, ln);
+                "the first row's", tr->name, ln);
     return -1;
   }
   return 0;
 }
+
+/* The kind's fields of a counts row (report_table.fields): names, run
+** columns, a rule named once. */
+static int report_counts_fields(report_tableread *r, char **f, void *p, unsigned long long ln) {
+  report_countsread *cr = r->ctx;
+  report_row *row = p;
+  if (report_counts_names(r, f, row, ln) != 0) return -1;
+  if (cr->run.known && report_counts_run(cr, f, row, ln) != 0) return -1;
+  const report_row *rows = (const report_row *)(const void *)r->rows;
+  for (int i = 0; i < r->n; i++)
+    if (strcmp(rows[i].rule, row->rule) == 0) {
+      report_errf(r->err, r->errlen, "%s line %llu: rule '%.40s' appears twice", r->name, ln,
+                  row->rule);
+      return -1;
+    }
+  return 0;
+}
+
+static int report_counts_same(const void *pa, const void *pb, int i, const char *what,
+                              char *err, size_t errlen) {
+  const report_row *a = pa, *b = pb;
+  if (strcmp(a->measure, b->measure) == 0 && strcmp(a->joint, b->joint) == 0 &&
+      strcmp(a->rule, b->rule) == 0)
+    return 0;
+  report_errf(err, errlen, "%s row %d is rule '%s', the first file has '%s' there", what, i + 1,
+              b->rule, a->rule);
+  return -1;
+}
+
+#define REPORT_COUNT(col, field) {col, offsetof(report_row, c.field), REPORT_ADD_SUM}
+static const report_countcol report_counts_cols[7] = {
+  REPORT_COUNT(3, samples), REPORT_COUNT(4, type[0]), REPORT_COUNT(5, type[1]),
+  REPORT_COUNT(6, type[2]), REPORT_COUNT(7, type[3]), REPORT_COUNT(8, type[4]),
+  REPORT_COUNT(9, dt)};
+static const report_countcheck report_counts_checks[2] = {
+  {"types must sum to samples", report_counts_types_sum},
+  {"dt <= type_I", report_counts_dt_le}};
+static const report_table report_counts_table = {
+  report_csv_header, sizeof(report_row), REPORT_CSV_MAXROWS, report_counts_cols, 7,
+  report_counts_checks, 2, report_counts_fields, report_counts_same};
 
 static int report_counts_record(char **f, const size_t *len, int nf, uint64_t line,
                                 void *data) {
   report_countsread *cr = data;
-  cr->len = len;
-  unsigned long long ln = (unsigned long long)line;
   if (!cr->header_seen) return report_counts_header(cr, f, nf, line);
-  if (nf != cr->ncols) {
-    report_errf(cr->err, cr->errlen, "%s line %llu: expected %d fields, got %d",
-                cr->name, ln, cr->ncols, nf);
-    return -1;
-  }
-  if (cr->n == REPORT_CSV_MAXROWS) {
-    report_errf(cr->err, cr->errlen, "%s line %llu: more than %d rules", cr->name, ln,
-                REPORT_CSV_MAXROWS);
-    return -1;
-  }
-  if (cr->n == cr->cap) {
-    int cap = cr->cap ? 2 * cr->cap : 64;
-    report_row *r = realloc(cr->rows, (size_t)cap * sizeof *r);
-    if (r == NULL) {
-      report_errf(cr->err, cr->errlen, "%s line %llu: out of memory", cr->name, ln);
-      return -1;
-    }
-    cr->rows = r;
-    cr->cap = cap;
-  }
-  report_row *row = &cr->rows[cr->n];
-  memset(row, 0, sizeof *row);
-  if (report_counts_names(cr, f, row, ln) != 0 || report_counts_numbers(cr, f, row, ln) != 0)
-    return -1;
-  if (cr->n > 0 && row->c.samples != cr->rows[0].c.samples) {
-    report_errf(cr->err, cr->errlen,
-                "%s line %llu: samples %llu differs from the first row's %llu",
-                cr->name, ln, (unsigned long long)row->c.samples,
-                (unsigned long long)cr->rows[0].c.samples);
-    return -1;
-  }
-  if (cr->run.known && report_counts_run(cr, f, row, ln) != 0) return -1;
-  for (int i = 0; i < cr->n; i++)
-    if (strcmp(cr->rows[i].rule, row->rule) == 0) {
-      report_errf(cr->err, cr->errlen, "%s line %llu: rule '%.40s' appears twice",
-                  cr->name, ln, row->rule);
-      return -1;
-    }
-  cr->n++;
-  return 0;
+  return report_table_record(&cr->tr, f, len, nf, line);
 }
 
 int report_counts_read(FILE *in, const char *name, report_row **rows, int *nrows,
                        report_run *run, char *err, size_t errlen) {
-  report_countsread cr = {.name = name, .err = err, .errlen = errlen};
+  report_countsread cr = {.tr = {.t = &report_counts_table, .name = name, .err = err,
+                                 .errlen = errlen}};
+  cr.tr.ctx = &cr;
   char perr[256] = "";
   err[0] = '\0';
   int rc = report_csv_each(in, report_counts_record, &cr, perr, sizeof perr) != 0 ? -1 : 0;
   report_prefix_err(err, errlen, name, perr);
+  int n = cr.tr.n;
   if (rc == 0 && !cr.header_seen) {
     report_errf(err, errlen, "%s: empty file (no header)", name);
     rc = -1;
-  } else if (rc == 0 && cr.n == 0) {
+  } else if (rc == 0 && n == 0) {
     report_errf(err, errlen, "%s: no rows after the header", name);
     rc = -1;
-  } else if (rc == 0 && cr.run.known && cr.run.rules != (uint64_t)cr.n) {
+  } else if (rc == 0 && cr.run.known && cr.run.rules != (uint64_t)n) {
     /* A file cut at a row boundary parses cleanly: only this count shows it. */
     report_errf(err, errlen, "%s: %d rules, but its rows say %llu: the file is truncated "
-                "or has extra rows", name, cr.n, (unsigned long long)cr.run.rules);
+                "or has extra rows", name, n, (unsigned long long)cr.run.rules);
     rc = -1;
   }
   if (rc != 0) {
-    free(cr.rows);
+    free(cr.tr.rows);
     return -1;
   }
-  *rows = cr.rows;
-  *nrows = cr.n;
+  *rows = (report_row *)(void *)cr.tr.rows;
+  *nrows = n;
   if (run != NULL) *run = cr.run;
   return 0;
 }
@@ -498,31 +485,7 @@ int report_csv_read(const char *path, report_row **rows, int *nrows,
 
 int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
                     const char *what, char *err, size_t errlen) {
-  if (nacc != nadd) {
-    report_errf(err, errlen, "%s has %d rules, the first file %d", what, nadd, nacc);
-    return -1;
-  }
-  for (int i = 0; i < nacc; i++) {
-    if (strcmp(acc[i].measure, add[i].measure) != 0 || strcmp(acc[i].joint, add[i].joint) != 0 ||
-        strcmp(acc[i].rule, add[i].rule) != 0) {
-      report_errf(err, errlen, "%s row %d is rule '%s', the first file has '%s' there",
-                  what, i + 1, add[i].rule, acc[i].rule);
-      return -1;
-    }
-  }
-  for (int i = 0; i < nacc; i++) {
-    uint64_t *a[7] = {&acc[i].c.samples, &acc[i].c.type[0], &acc[i].c.type[1],
-                      &acc[i].c.type[2], &acc[i].c.type[3], &acc[i].c.type[4], &acc[i].c.dt};
-    const uint64_t b[7] = {add[i].c.samples, add[i].c.type[0], add[i].c.type[1],
-                           add[i].c.type[2], add[i].c.type[3], add[i].c.type[4], add[i].c.dt};
-    for (int k = 0; k < 7; k++)
-      if (*a[k] > UINT64_MAX - b[k]) {
-        report_errf(err, errlen, "%s: counts overflow", what);
-        return -1;
-      }
-    for (int k = 0; k < 7; k++) *a[k] += b[k];
-  }
-  return 0;
+  return report_table_add(&report_counts_table, acc, nacc, add, nadd, what, err, errlen);
 }
 
 /* ------------------------------------------------------------- pentagons */

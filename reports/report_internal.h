@@ -31,6 +31,70 @@ FLIPLAB_INTERNAL int report_csv_write_run(FILE *f, const report_row *rows, int n
 #define REPORT_CENSUS_MAX_ROWS (MEASURE_MAX * JOINT_COUNT + RULE_QUAD_MAX)
 FLIPLAB_INTERNAL const char *const report_census_header[REPORT_CENSUS_NCOLS];
 
+/* ---- the counts table of both CSV kinds (reports/counts.c) ---- */
+
+/* An integer column: CSV column col (-1: not a column of its own but a
+** sum the kind reads from a mean), the uint64_t at offset off of a row,
+** and how two shards' values combine. */
+typedef enum report_addop { REPORT_ADD_SUM, REPORT_ADD_MAX } report_addop;
+typedef struct report_countcol {
+  int col;
+  size_t off;
+  report_addop op;
+} report_countcol;
+
+/* A consistency rule of a row, as the error message states it. */
+typedef struct report_countcheck {
+  const char *rule;
+  int (*holds)(const void *row);
+} report_countcheck;
+
+/* A CSV kind: its header, its integer columns (counts[0] is `samples`, the
+** same on every row of a file), its checks, and the kind's own parts: the
+** other fields of a record (names, means, run columns; 0, or -1 with the
+** message in the reader's err) and whether two rows are the same rule
+** (0, or -1 with a message naming `what` and row i + 1). */
+typedef struct report_tableread report_tableread;
+typedef struct report_table {
+  const char *const *header;
+  size_t row_size;
+  int max_rows;
+  const report_countcol *counts;
+  int ncounts;
+  const report_countcheck *checks;
+  int nchecks;
+  int (*fields)(report_tableread *r, char **f, void *row, unsigned long long line);
+  int (*same)(const void *a, const void *b, int i, const char *what, char *err, size_t errlen);
+} report_table;
+
+/* A reader of one file of a kind: the rows so far (malloc'ed), the
+** record's field lengths, and the kind's own state (ctx). */
+struct report_tableread {
+  const report_table *t;
+  const char *name;
+  int ncols;                /* fields per record, from the header */
+  char *rows;
+  int n, cap;
+  const size_t *len;
+  void *ctx;
+  char *err;
+  size_t errlen;
+};
+
+/* One record after the header: field count, row bound, the integer
+** columns, the kind's fields, the checks, the sample count; the row is
+** appended.  0, or -1 with "FILE line N: ..." in r->err. */
+FLIPLAB_INTERNAL int report_table_record(report_tableread *r, char **f, const size_t *len,
+                                         int nf, uint64_t line);
+/* acc[i] += add[i] over the integer columns (sums overflow-checked, maxima
+** kept) after t->same on every row; -1 with a message naming `what`. */
+FLIPLAB_INTERNAL int report_table_add(const report_table *t, void *acc, int nacc,
+                                      const void *add, int nadd, const char *what, char *err,
+                                      size_t errlen);
+/* The integer columns of a row as fields (num[col], field[col] set). */
+FLIPLAB_INTERNAL void report_table_format(const report_table *t, const void *row,
+                                          char num[][32], const char **field);
+
 /* ---- text (reports/svg.c) ---- */
 
 /* Write s as SVG/XML text: & < > " ' escaped (element text or an attribute
