@@ -720,6 +720,57 @@ static void test_tri_canonical_order(void **state) {
   assert_int_equal(bad, 0);
 }
 
+/* The one number parser: a span is a number only if all of its bytes are
+** (a NUL byte inside refuses it), out-of-range values are errors, the scan
+** stops where strtod stops, counts are digits only and do not overflow. */
+static void test_number_parse(void **state) {
+  (void)state;
+  double x = 7;
+  assert_int_equal(geom_number_parse("0.5", 3, &x), GEOM_NUM_OK);
+  assert_true(x == 0.5);
+  assert_int_equal(geom_number_parse("0.5\0garbage", 11, &x), GEOM_NUM_NOT_NUMBER);
+  assert_int_equal(geom_number_parse("0.5\0", 4, &x), GEOM_NUM_NOT_NUMBER);
+  assert_int_equal(geom_number_parse("0.5garbage", 10, &x), GEOM_NUM_NOT_NUMBER);
+  assert_int_equal(geom_number_parse("0.5", 2, &x), GEOM_NUM_OK);   /* the span is "0." */
+  assert_true(x == 0.0);
+  assert_int_equal(geom_number_parse("", 0, &x), GEOM_NUM_NOT_NUMBER);
+  assert_int_equal(geom_number_parse(" 2", 2, &x), GEOM_NUM_OK);
+  assert_int_equal(geom_number_parse("1e400", 5, &x), GEOM_NUM_OUT_OF_RANGE);
+  assert_int_equal(geom_number_parse("1e-400", 6, &x), GEOM_NUM_OUT_OF_RANGE);
+  assert_int_equal(geom_number_parse("1e-310", 6, &x), GEOM_NUM_OUT_OF_RANGE);   /* subnormal */
+  assert_int_equal(geom_number_parse("inf", 3, &x), GEOM_NUM_NOT_FINITE);
+  assert_int_equal(geom_number_parse("nan", 3, &x), GEOM_NUM_NOT_FINITE);
+  assert_int_equal(geom_number_parse("0x1p3", 5, &x), GEOM_NUM_OK);
+  assert_true(x == 8.0);
+  char big[300];   /* longer than the parser's stack copy */
+  memset(big, '0', sizeof big);
+  big[0] = '1';
+  big[1] = '.';
+  assert_int_equal(geom_number_parse(big, sizeof big, &x), GEOM_NUM_OK);
+  assert_true(x == 1.0);
+  size_t used = 0;
+  assert_int_equal(geom_number_scan("2.5e3*a", 7, &x, &used), GEOM_NUM_OK);
+  assert_int_equal(used, 5);
+  assert_true(x == 2500.0);
+  assert_int_equal(geom_number_scan("1e999+b", 7, &x, &used), GEOM_NUM_OUT_OF_RANGE);
+  assert_int_equal(used, 5);
+  assert_true(isinf(x));
+  assert_int_equal(geom_number_scan("a", 1, &x, &used), GEOM_NUM_NOT_NUMBER);
+  assert_int_equal(used, 0);
+  uint64_t c = 3;
+  assert_int_equal(geom_count_parse("18446744073709551615", 20, &c), 0);
+  assert_true(c == UINT64_MAX);
+  assert_int_equal(geom_count_parse("18446744073709551616", 20, &c), -1);
+  assert_int_equal(geom_count_parse("20\0" "7", 4, &c), -1);
+  assert_int_equal(geom_count_parse("20", 2, &c), 0);
+  assert_true(c == 20);
+  assert_int_equal(geom_count_parse("+1", 2, &c), -1);
+  assert_int_equal(geom_count_parse(" 1", 2, &c), -1);
+  assert_int_equal(geom_count_parse("", 0, &c), -1);
+  assert_int_equal(geom_coord_parse_n("1\0" "5", 3, &x), GEOM_COORD_NOT_NUMBER);
+  assert_int_equal(geom_coord_parse_n("1e31", 4, &x), GEOM_COORD_OUT_OF_RANGE);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_tri_equilateral),
@@ -738,6 +789,7 @@ int main(void) {
     cmocka_unit_test(test_twice_area_exact),
     cmocka_unit_test(test_dist_finite),
     cmocka_unit_test(test_polygon_check),
+    cmocka_unit_test(test_number_parse),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
