@@ -45,13 +45,12 @@ int cli_cmd_flip(int argc, char **argv) {
   if (st != 0) return st == 1 ? 0 : st;
   const char *const *pos = o.pos;
   int npos = o.npos;
-  double tie_eps = o.tie_eps;
   if (npos != 9)
     return cli_error("flip", "expected RULE and 8 coordinates (x1 y1 ... x4 y4), got %d argument%s",
                      npos, npos == 1 ? "" : "s");
   rule r;
   if (cli_parse_rule("flip", pos[0], &r) != 0) return 2;
-  rule_set_tie_eps(&r, tie_eps);
+  rule_set_tie_eps(&r, o.tie_eps);
   geom_point q[4];
   static const char *const coord[8] = {"x1", "y1", "x2", "y2", "x3", "y3", "x4", "y4"};
   for (int k = 0; k < 8; k++) {
@@ -79,7 +78,7 @@ int cli_cmd_flip(int argc, char **argv) {
   if (rule_is_triangle(&r)) {
     printf("f(AC)     %.17g\n", ac);
     printf("f(BD)     %.17g\n", bd);
-    printf("tie-eps   %g\n", tie_eps);
+    printf("tie-eps   %g\n", o.tie_eps);
   }
   return 0;
 }

@@ -145,7 +145,7 @@ int cli_options_parse(const cli_spec *s, int argc, char **argv, void *dst, uint6
     if (o->arg != NULL && i + 1 >= argc) return cli_error(s->cmd, "option %s needs a value", a);
     if (o->arg != NULL) v = argv[++i];
     if (cli_setters[o->kind](s->cmd, o, v, base + o->off) != 0) return 2;
-    seen |= (uint64_t)1 << (o - s->opts);   /* tables have fewer than 64 rows */
+    if (o - s->opts < 64) seen |= (uint64_t)1 << (o - s->opts);   /* tables have fewer rows */
   }
   if (given != NULL) *given = seen;
   return 0;
