@@ -174,6 +174,9 @@ struct rule;
 int cli_parse_rule(const char *cmd, const char *name, struct rule *out);
 /* A comma-separated list of rules ("R_1,P_1,DT") appended to out[*n..cap-1]. */
 int cli_parse_rule_list(const char *cmd, const char *list, struct rule *out, int *n, int cap);
+/* The same into a new array (*out, malloc'ed, one slot per comma-separated
+** name): the count, or -1 after the error. */
+int cli_rule_list_new(const char *cmd, const char *list, struct rule **out);
 
 /* Output names: 2 (after the error) when path's extension names another
 ** known format than want ("svg", "csv"): `--plot fig.png` is refused rather

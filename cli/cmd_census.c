@@ -100,15 +100,7 @@ static int cli_census_rules(const cli_census_opts *o, rule **rules) {
     (*rules)[n++] = rule_delaunay();
     return n;
   }
-  int cap = 1;
-  for (const char *c = o->rules; *c; c++) cap += *c == ',';
-  if ((*rules = malloc((size_t)cap * sizeof **rules)) == NULL) return cli_error(CMD, "out of memory"), -1;
-  int n = 0;
-  if (cli_parse_rule_list(CMD, o->rules, *rules, &n, cap) != 0) {
-    free(*rules);
-    return -1;
-  }
-  return n;
+  return cli_rule_list_new(CMD, o->rules, rules);
 }
 
 int cli_cmd_census(int argc, char **argv) {

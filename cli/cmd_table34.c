@@ -23,7 +23,8 @@ typedef struct cli_table34_opts {
   cli_shard shard;
   double tie_eps;
   report_format format;
-  const char *out, *plot, *measures;
+  const char *out, *plot, *measures, *rules;
+  int has_measures;
   int sampler;                   /* index in sampler_pentagons_table */
 } cli_table34_opts;
 
@@ -43,6 +44,8 @@ static const cli_option cli_table34_help[] = {
            "                     sigma and user measures) or a comma list of measure names,\n"
            "                     e.g. R,-alpha,mymeasure",
    .off = CLI_AT(T, measures, const char *)},
+  CLI_OPT_STRING("--rules", "R", "none",
+                 "instead of --measures: a comma list of rules (e.g. R_1,P_3,DT)", T, rules),
   CLI_OPT_TIE_EPS("relative tie tolerance of the rules", 1, T, tie_eps),
   CLI_OPT_FORMAT("--out's extension, else text",
                  "text, md, or csv (one row per rule, DT last; docs/formats.md)", REPORT_TEXT,
@@ -108,15 +111,20 @@ static int cli_table34_parse(int argc, char **argv, cli_table34_opts *o) {
   if (st != 0) return st;
   if (cli_table34_format(o, cli_option_given(&cli_table34_spec, given, "--format")) != 0)
     return 2;
+  o->has_measures = cli_option_given(&cli_table34_spec, given, "--measures");
   if (!cli_option_given(&cli_table34_spec, given, "--columns") && o->format == REPORT_TEXT &&
       (o->out == NULL || strcmp(o->out, "-") == 0))
     o->columns = cli_terminal_columns(20, 8);
   return 0;
 }
 
-/* The rules: every (measure x joint) of the chosen measures, table order,
-** then DT.  *rules is malloc'ed; count or -1. */
-static int cli_table34_rules(const char *measures, rule **rules) {
+/* The rules: --rules as given, else every (measure x joint) of the chosen
+** measures, table order, then DT.  *rules is malloc'ed; count or -1. */
+static int cli_table34_rules(const cli_table34_opts *o, rule **rules) {
+  const char *measures = o->measures;
+  if (o->has_measures && o->rules != NULL)
+    return cli_error(CMD, "--measures and --rules exclude each other"), -1;
+  if (o->rules != NULL) return cli_rule_list_new(CMD, o->rules, rules);
   int ids[MEASURE_MAX];
   int nm = cli_measure_list(CMD, measures, ids);
   if (nm < 0) return -1;
@@ -192,7 +200,7 @@ int cli_cmd_table34(int argc, char **argv) {
   uint64_t first = 0, count = o.samples;
   if (o.shard.n > 0) census_shard_range(o.samples, o.shard.k, o.shard.n, &first, &count);
   rule *rules;
-  int nrules = cli_table34_rules(o.measures, &rules);
+  int nrules = cli_table34_rules(&o, &rules);
   if (nrules < 0) return 2;
   flipgraph_counts *counts = calloc((size_t)nrules, sizeof *counts);
   report_row *rows = calloc((size_t)nrules, sizeof *rows);

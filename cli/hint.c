@@ -168,6 +168,17 @@ int cli_parse_rule_list(const char *cmd, const char *list, rule *out, int *n, in
   }
 }
 
+int cli_rule_list_new(const char *cmd, const char *list, rule **out) {
+  int cap = 1, n = 0;
+  for (const char *c = list; *c; c++) cap += *c == ',';
+  if ((*out = malloc((size_t)cap * sizeof **out)) == NULL) return cli_error(cmd, "out of memory"), -1;
+  if (cli_parse_rule_list(cmd, list, *out, &n, cap) != 0) {
+    free(*out);
+    return -1;
+  }
+  return n;
+}
+
 int cli_unknown_command(const char *name, const char *const *names, size_t n) {
   const char *near = cli_closest(name, names, n);
   if (near != NULL)

@@ -33,6 +33,7 @@ typedef enum joint_id {
 } joint_id;
 
 #define JOINT_CAPACITY 16
+#define JOINT_NAME_MAX 16   /* bytes of a joint name, its NUL included */
 
 /* How keys combine. */
 typedef enum joint_keyop { JOINT_KEY_ADD, JOINT_KEY_MIN, JOINT_KEY_MAX } joint_keyop;

@@ -28,7 +28,7 @@
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
 typedef struct report_row {
   char measure[64];
-  char joint[16];
+  char joint[JOINT_NAME_MAX];
   char rule[96];
   flipgraph_counts c;
 } report_row;
@@ -193,7 +193,7 @@ int report_siteflip_svg(FILE *f, const siteflip_graph *g, const rule_choice *dec
 ** rules (which have no GOT, so no gap). */
 typedef struct report_census_row {
   char measure[64];
-  char joint[16];
+  char joint[JOINT_NAME_MAX];
   char rule[96];
   int sites;
   char sampler[16];

@@ -224,6 +224,33 @@ static void test_measures_option(void **state) {
   assert_non_null(strstr(tt_err, "nosuch"));
 }
 
+/* --rules: the rules as given, counted as in the --measures run; refused
+** beside --measures. */
+static void test_rules_option(void **state) {
+  (void)state;
+  report_row *rows = NULL, *all = NULL;
+  assert_int_equal(TT_RUN("table34 --samples 300 --seed 3 --rules 'R_1, -alpha_inf,DT' "
+                          "--format csv"), 0);
+  assert_int_equal(tt_read_counts(tt_out, &rows), 3);
+  assert_string_equal(rows[0].rule, "R_1");
+  assert_string_equal(rows[1].rule, "-alpha_inf");
+  assert_string_equal(rows[2].rule, "DT");
+  assert_int_equal(TT_RUN("table34 --samples 300 --seed 3 --measures R,-alpha --format csv"), 0);
+  int n = tt_read_counts(tt_out, &all);
+  for (int i = 0; i < 3; i++) {
+    const report_row *w = tt_find(all, n, rows[i].rule);
+    assert_non_null(w);
+    assert_memory_equal(&w->c, &rows[i].c, sizeof w->c);
+  }
+  free(rows);
+  free(all);
+  assert_int_equal(TT_RUN("table34 --samples 10 --rules R_1 --measures R"), 2);
+  tt_one_line();
+  assert_int_equal(TT_RUN("table34 --samples 10 --rules R_1,nosuch_1"), 2);
+  tt_one_line();
+  assert_non_null(strstr(tt_err, "nosuch"));
+}
+
 /* s with the five XML specials escaped, as every SVG of fliplab writes
 ** text (an independent spelling: reports/svg.c is what is tested). */
 static void tt_xml(char *buf, size_t len, const char *s) {
@@ -308,6 +335,7 @@ int main(void) {
     cmocka_unit_test(test_shards_merge),
     cmocka_unit_test(test_text_md),
     cmocka_unit_test(test_measures_option),
+    cmocka_unit_test(test_rules_option),
     cmocka_unit_test(test_plot),
     cmocka_unit_test(test_scientific_sizes),
     cmocka_unit_test(test_usage_errors),
