@@ -1,5 +1,6 @@
 /*
-** joint.c: the six joint functions, their identities and their keys.
+** joint.c: the joint table: the six built-in joints, the power means l_p
+** made on first use, their identities and their keys.
 **
 ** Each finite-p joint is written once, for values >= 0 (the "magnitude"
 ** form g); the sign convention of the spec is then f(x, y) = s g(s x, s y)
@@ -9,7 +10,9 @@
 */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include "geom.h"
 #include "joint.h"
 
 static double joint_min(double x, double y) { return x < y ? x : y; }
@@ -26,13 +29,60 @@ static double joint_product(double x, double y) { return x * y; }
 static double joint_sum(double x, double y) { return x + y; }
 static double joint_rss(double x, double y) { return sqrt(x * x + y * y); }
 
+/* The power mean l_p for a real p other than -inf, -1, 0, 1, 2, inf (the
+** built-in rows), |p| >= 1/512:  g(u, v) = (u^p + v^p)^(1/p) on magnitudes.
+** With big = max(u, v), small = min(u, v) and r = small / big in [0, 1],
+**   p > 0:  u^p + v^p = big^p (1 + r^p),      g = big (1 + r^p)^(1/p);
+**   p < 0:  u^p + v^p = small^p (1 + r^|p|),  g = small (1 + r^|p|)^(1/p);
+** so g = base * c, c = (1 + r^|p|)^(1/p) in [1, 2^(1/p)] or [2^(1/p), 1]:
+** within 2^(+-512), so nothing overflows or underflows before the last
+** product (u^p itself would, for R = 1e30 and p = 11), and the split form
+** (joint_power_split) multiplies c by the mantissa of base instead.  For
+** p > 0, 0 is the identity (r = 0 gives c = 1 exactly) and +inf absorbs;
+** for p < 0, +inf is the identity, returned exactly as the harmonic joint
+** returns it, and 0 absorbs.  NaN gives NaN.  Only max, min and the
+** symmetric r enter, so g is exactly commutative. */
+static int joint_power_special(double p, double u, double v, double *g) {
+  if (isnan(u) || isnan(v)) return *g = NAN, 1;
+  double big = joint_max(u, v), small = joint_min(u, v);
+  if (p > 0 && !(big > 0 && big < INFINITY)) return *g = big > 0 ? INFINITY : 0.0, 1;
+  if (p < 0 && u == INFINITY) return *g = v, 1;
+  if (p < 0 && v == INFINITY) return *g = u, 1;
+  if (p < 0 && !(small > 0)) return *g = 0.0, 1;
+  return 0;
+}
+
+static double joint_power_c(double p, double u, double v, double *base) {
+  double big = joint_max(u, v), small = joint_min(u, v);
+  *base = p > 0 ? big : small;
+  return pow(1 + pow(small / big, fabs(p)), 1 / p);
+}
+
+static double joint_power(double p, double u, double v) {
+  double g, base;
+  if (joint_power_special(p, u, v, &g)) return g;
+  double c = joint_power_c(p, u, v, &base);
+  return base * c;
+}
+
+/* g = m 2^e with m = fm c, base = fm 2^e (frexp, exact): m lies in
+** [2^-513, 2^512], a normal double, and fl(base c) = fl(fm c) 2^e whenever
+** fl(base c) is normal itself: the plain value scaled, as for l_0 and l_2. */
+static double joint_power_split(double p, double u, double v, int *e) {
+  double g, base;
+  *e = 0;
+  if (joint_power_special(p, u, v, &g)) return g;
+  double c = joint_power_c(p, u, v, &base);
+  return frexp(base, e) * c;
+}
+
 /* One row of the table: the public part, the joint on magnitudes, its
 ** identity, and room for the names of a row made at run time. */
 typedef struct joint_impl {
   joint pub;
   double (*g)(double p, double x, double y);   /* on values >= 0 */
   double identity;                  /* of g on values >= 0 */
-  char text[3][48];                 /* name, symbol, description of a made row */
+  char text[4][80];                 /* name, symbol, description, key units of a made row */
 } joint_impl;
 
 static double joint_g_min(double p, double x, double y) { (void)p; return joint_min(x, y); }
@@ -41,9 +91,10 @@ static double joint_g_harmonic(double p, double x, double y) { (void)p; return j
 static double joint_g_product(double p, double x, double y) { (void)p; return joint_product(x, y); }
 static double joint_g_sum(double p, double x, double y) { (void)p; return joint_sum(x, y); }
 static double joint_g_rss(double p, double x, double y) { (void)p; return joint_rss(x, y); }
+static double joint_g_power(double p, double x, double y) { return joint_power(p, x, y); }
 
 /* The table: the six built-in joints at their fixed ids; rows from
-** JOINT_COUNT up are made by joint_parse (joint_power.c). */
+** JOINT_COUNT up are power means, made by joint_parse (joint_power_row). */
 static joint_impl joint_table[JOINT_CAPACITY] = {
   [JOINT_MIN] = {{.name = "-inf", .symbol = "l_-inf", .desc = "min(x, y)", .needs_sign = 0,
                   .keyop = JOINT_KEY_MIN, .word = "min", .colour = "#0072B2", .p = -INFINITY,
@@ -124,9 +175,10 @@ int joint_compare_values(double a, double b, double tie_eps) {
 ** exactly 2^-k, so again the result is the plain one scaled, whenever the
 ** plain one is computed without underflow or overflow.  Otherwise (an
 ** argument inf or NaN, a 0 in a product, both 0): no split (e = 0), the
-** plain arithmetic of joint.c's g. */
+** plain arithmetic of joint.c's g.  The power means: joint_power_split. */
 static double joint_split_mag(joint_id j, double u, double v, int *e) {
   *e = 0;
+  if (joint_table[j].pub.key == JOINT_SHAPE_POWER) return joint_power_split(joint_table[j].pub.p, u, v, e);
   int plain = j == JOINT_PRODUCT ? !(u > 0 && v > 0 && u < INFINITY && v < INFINITY)
                                  : !(u >= 0 && v >= 0 && u < INFINITY && v < INFINITY && u + v > 0);
   if (plain) return j == JOINT_PRODUCT ? joint_product(u, v) : joint_rss(u, v);
@@ -168,7 +220,10 @@ static double joint_apply_plain(joint_id j, int s, double x, double y) {
 /* Both values scaled by 2^-E, E the larger exponent of the finite non-zero
 ** ones (0, inf and NaN are unchanged by scaling and keep their own value):
 ** exact unless the smaller one falls below 2^-1022 of the larger, where it
-** can no longer tie with it (for tie_eps < 1) nor change the order. */
+** can no longer tie with it (for tie_eps < 1) nor change the order.  (A
+** power mean's m lies in [2^-513, 2^512] rather than [1/4, 2): a scaled m
+** that leaves the normal range is then below 2^-509 of the other, the
+** same conclusion.) */
 int joint_compare(joint_id j, int s, double x1, double y1, double x2, double y2,
                   double tie_eps) {
   /* For the joints without a split form e1 = e2 = 0 below and this is the
@@ -281,13 +336,82 @@ double joint_key_identity(joint_id j) {
   }
 }
 
-/* ---- names ---------------------------------------------------------------- */
+/* ---- names and the power-mean rows ----------------------------------------
+**
+** A joint name is a built-in name or a real p in decimal ("3", "-2", "0.5",
+** "1.5e1"; no blanks, no hexadecimal, inf and nan only as the built-in
+** "inf" and "-inf").  A p equal to -1, 0, 1 or 2 is that built-in row, so
+** "1.0" is "1" bit for bit; any other p gets one row, named by the
+** shortest "%.Ng" that reads back as p ("3", "0.5", "1e+20"): rules are
+** named with it, so "P_3.0" and "P_3" are one rule, printed "P_3". */
 
+/* p from a name of decimal characters: GEOM_NUM_OK, or why not. */
+static geom_numerr joint_power_read(const char *name, double *p) {
+  size_t n = strspn(name, "0123456789+-.eE");
+  if (n == 0 || name[n] != '\0' || n > 40 || strpbrk(name, "0123456789") == NULL)
+    return GEOM_NUM_NOT_NUMBER;
+  return geom_number_parse(name, n, p);
+}
+
+/* The shortest "%.Ng" of p that reads back as p. */
+static void joint_power_name(double p, char nm[32]) {
+  int k = 1;
+  do snprintf(nm, 32, "%.*g", k, p);
+  while (k++ < 17 && strtod(nm, NULL) != p);
+}
+
+static void joint_power_row(joint_impl *J, double p) {
+  char nm[32];
+  joint_power_name(p, nm);
+  snprintf(J->text[0], sizeof J->text[0], "%s", nm);
+  snprintf(J->text[1], sizeof J->text[1], "l_%s", nm);
+  snprintf(J->text[2], sizeof J->text[2], "(x^p + y^p)^(1/p), power mean, p = %s", nm);
+  snprintf(J->text[3], sizeof J->text[3], "%ssums of x^%s", p > 0 ? "" : "-", nm);
+  J->pub = (joint){.name = J->text[0], .symbol = J->text[1], .desc = J->text[2],
+                   .needs_sign = 1, .keyop = JOINT_KEY_ADD, .word = "power", .colour = "#999999",
+                   .p = p, .key = JOINT_SHAPE_POWER, .key_units = J->text[3],
+                   .vec = JOINT_VEC_NONE, .split = 1, .bounds = 0};
+  J->g = joint_g_power;
+  J->identity = p > 0 ? 0.0 : INFINITY;
+}
+
+/* Rows are made while commands parse their rules, before any engine
+** runs: the table is never written while it is read. */
 int joint_parse(const char *name, char *err, size_t errlen) {
   for (int j = 0; j < joint_nrows; j++)
     if (strcmp(joint_table[j].pub.name, name) == 0) return j;
   char names[64];
+  double p;
   joint_names(names, sizeof names);
-  snprintf(err, errlen, "unknown joint '%.30s': expected one of {%s}", name, names);
-  return -1;
+  geom_numerr ne = joint_power_read(name, &p);
+  if (ne == GEOM_NUM_NOT_NUMBER) {
+    snprintf(err, errlen, "unknown joint '%.30s': expected one of {%s} or a real p "
+             "(the power mean l_p)", name, names);
+    return -1;
+  }
+  if (ne != GEOM_NUM_OK) {
+    snprintf(err, errlen, "joint '%.30s': p %s", name, geom_numerr_str(ne));
+    return -2;
+  }
+  if (p != 0 && !(fabs(p) >= 1.0 / 512)) {
+    snprintf(err, errlen, "joint '%.30s': the power mean l_p needs |p| >= 1/512 (or p = 0, "
+             "the product)", name);
+    return -2;
+  }
+  for (int j = 0; j < joint_nrows; j++)
+    if (joint_table[j].pub.p == p) return j;
+  char nm[32];
+  joint_power_name(p, nm);
+  if (strlen(nm) >= JOINT_NAME_MAX) {
+    snprintf(err, errlen, "joint '%.30s': p = %s has more digits than a joint name holds "
+             "(%d characters)", name, nm, JOINT_NAME_MAX - 1);
+    return -2;
+  }
+  if (joint_nrows == JOINT_CAPACITY) {
+    snprintf(err, errlen, "joint '%.30s': at most %d power means other than {%s} in one run",
+             name, JOINT_CAPACITY - JOINT_COUNT, names);
+    return -2;
+  }
+  joint_power_row(&joint_table[joint_nrows], p);
+  return joint_nrows++;
 }

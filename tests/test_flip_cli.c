@@ -232,7 +232,7 @@ static void test_flip_errors(void **state) {
   tcli_expect_error("flip P_1 0 0 2 1 4 0 2 3", "convex");     /* a dart */
   tcli_expect_error("flip P_1 0 0 1 1 1 0 0 1", "convex");     /* a bow tie */
   tcli_expect_error("flip foo 0 0 1 0 1 1 0 1", "foo|unknown");
-  tcli_expect_error("flip R_3 0 0 1 0 1 1 0 1", "R_3|unknown");
+  tcli_expect_error("flip R_3x 0 0 1 0 1 1 0 1", "R_3x|unknown");
   tcli_expect_error("flip '' 0 0 1 0 1 1 0 1", "rule|unknown|empty");
   tcli_expect_error("flip P_1 0 0 1 0 1 1 0 1 --tie-eps", "tie-eps");
   tcli_expect_error("flip P_1 0 0 1 0 1 1 0 1 --tie-eps -1", "tie-eps");

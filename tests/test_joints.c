@@ -4,7 +4,10 @@
 ** convention, commutativity (bit-exact), associativity (to rounding),
 ** monotonicity, the identity element, infinite inputs, and the keys
 ** (strictly increasing, invertible, turning f into +, min or max), and
-** verdicts from enclosures (joint_compare_bounds) against joint_compare.
+** verdicts from enclosures (joint_compare_bounds) against joint_compare;
+** and the power means l_p made through the table: names, decisions on
+** random quadrilaterals against sums of p-th powers in long double, the
+** algebra, the split form and the keys.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -12,11 +15,14 @@
 #include <setjmp.h>
 #include <cmocka.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "joint.h"
+#include "measure.h"
+#include "rule.h"
 #include "testutil.h"
 
 #define TJOINT_SAMPLES 200000
@@ -64,10 +70,10 @@ static void test_table(void **state) {
     assert_int_equal(J->keyop, ops[j]);
     assert_true(J->symbol && J->symbol[0] && J->desc && J->desc[0]);
   }
-  assert_int_equal(joint_find("3"), -1);
+  assert_int_equal(joint_find("3x"), -1);
   assert_int_equal(joint_find(""), -1);
   assert_int_equal(joint_find("Inf"), -1);
-  assert_int_equal(joint_find("-2"), -1);
+  assert_int_equal(joint_find("--2"), -1);
 }
 
 /* Formula and sign convention: for s = +1 the l_p formula (to ~4 ulps: an
@@ -433,6 +439,150 @@ static void test_compare_bounds(void **state) {
   assert_true(exact_decided > 0.98 * exact_cases);
 }
 
+/* ---- the power means ------------------------------------------------------ */
+
+static const char *const tjoint_powers[] = {"3", "-2", "0.5", "-0.5", "7"};
+
+/* Names: the built-in p map to the built-in rows, one row per other p,
+** canonical names, and refusals (-1: no joint name; -2: a p refused). */
+static void test_power_names(void **state) {
+  (void)state;
+  char err[256];
+  assert_int_equal(joint_find("1.0"), JOINT_SUM);
+  assert_int_equal(joint_find("+1"), JOINT_SUM);
+  assert_int_equal(joint_find("2.00"), JOINT_RSS);
+  assert_int_equal(joint_find("-1e0"), JOINT_HARMONIC);
+  assert_int_equal(joint_find("0.0"), JOINT_PRODUCT);
+  assert_int_equal(joint_find("-0"), JOINT_PRODUCT);
+  int j3 = joint_find("3");
+  assert_true(j3 >= JOINT_COUNT && j3 < JOINT_CAPACITY && j3 < joint_count());
+  assert_int_equal(joint_find("3.0"), j3);
+  assert_int_equal(joint_find("30e-1"), j3);
+  const joint *J = joint_get((joint_id)j3);
+  assert_string_equal(J->name, "3");
+  assert_string_equal(J->symbol, "l_3");
+  assert_true(J->needs_sign && J->keyop == JOINT_KEY_ADD && J->key == JOINT_SHAPE_POWER);
+  assert_true(J->vec == JOINT_VEC_NONE && J->split && !J->bounds && J->p == 3);
+  assert_string_equal(joint_get((joint_id)joint_find("1e20"))->name, "1e+20");
+  assert_string_equal(joint_get((joint_id)joint_find("0.10000000000000001"))->name, "0.1");
+  assert_string_equal(joint_get((joint_id)joint_find("-.5"))->name, "-0.5");
+  static const char *const bad[] = {"", "x", "nan", "NaN", "Infinity", "0x3", "3 ", " 3", "1e",
+                                    ".", "+", "1..2", "1-2", "3x", "1,2"};
+  for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+    assert_int_equal(joint_parse(bad[k], err, sizeof err), -1);
+    assert_true(strstr(err, "unknown joint") != NULL && strchr(err, '\n') == NULL);
+  }
+  static const char *const refused[] = {"1e400", "1e-400", "0.001", "-0.0019",
+                                        "0.1234567890123456"};
+  for (size_t k = 0; k < sizeof refused / sizeof *refused; k++) {
+    assert_int_equal(joint_parse(refused[k], err, sizeof err), -2);
+    assert_non_null(strstr(err, refused[k]));
+  }
+  /* P_1.0 is P_1, name and all. */
+  rule a, b;
+  assert_int_equal(rule_parse("P_1.0", &a, err, sizeof err), 0);
+  assert_int_equal(rule_parse("P_1", &b, err, sizeof err), 0);
+  assert_int_equal(a.joint, JOINT_SUM);
+  assert_string_equal(a.name, "P_1");
+  assert_int_equal(rule_parse("P_3.000", &a, err, sizeof err), 0);
+  assert_string_equal(a.name, "P_3");
+  assert_int_equal(rule_parse("P_0.0001", &a, err, sizeof err), -1);
+  assert_non_null(strstr(err, "P_0.0001"));
+}
+
+/* (|x|^p + |y|^p)^(1/p) in long double, and the decision as the rule
+** states it (0 when the two values are within 1e-9 of each other). */
+static int tjoint_brute(double p, int s, double x1, double y1, double x2, double y2) {
+  long double pl = p;
+  long double fa = powl(powl(fabsl((long double)x1), pl) + powl(fabsl((long double)y1), pl), 1 / pl);
+  long double fb = powl(powl(fabsl((long double)x2), pl) + powl(fabsl((long double)y2), pl), 1 / pl);
+  if (fabsl(fa - fb) <= 1e-9L * (fa > fb ? fa : fb)) return 0;
+  int lt = fa < fb;                     /* magnitudes; values <= 0 are -f */
+  return (s > 0 ? lt : !lt) ? -1 : 1;
+}
+
+/* Decisions on random convex quadrilaterals, for a measure >= 0 (P, R)
+** and one <= 0 (-alpha), against the brute force away from ties; and the
+** rule_eval path (the rule verbs) gives the same decisions. */
+static void test_power_decisions(void **state) {
+  (void)state;
+  static const int ms[] = {MEASURE_P, MEASURE_R, MEASURE_NEG_ALPHA};
+  testutil_rng g = {20261202};
+  long checked = 0, total = 0;
+  for (size_t k = 0; k < sizeof tjoint_powers / sizeof *tjoint_powers; k++) {
+    joint_id j = (joint_id)joint_find(tjoint_powers[k]);
+    double p = joint_get(j)->p;
+    for (size_t mi = 0; mi < sizeof ms / sizeof *ms; mi++) {
+      const measure *M = measure_get(ms[mi]);
+      rule r;
+      char err[256];
+      assert_int_equal(rule_triangle(ms[mi], j, &r, err, sizeof err), 0);
+      for (int n = 0; n < 4000; n++) {
+        geom_point q[4];
+        geom_tri t[4];
+        testutil_convex_quad(&g, q);
+        testutil_quad_tris(q, t);
+        double v[4];
+        for (int i = 0; i < 4; i++) v[i] = measure_eval(ms[mi], &t[i]);
+        int want = tjoint_brute(p, M->sign, v[0], v[1], v[2], v[3]);
+        int got = joint_compare(j, M->sign, v[0], v[1], v[2], v[3], 1e-12);
+        rule_choice d = rule_eval_tris(&r, &t[0], &t[1], &t[2], &t[3], NULL, NULL);
+        assert_int_equal(d, got < 0 ? RULE_AC : got > 0 ? RULE_BD : RULE_EITHER);
+        total++;
+        if (want == 0) continue;
+        checked++;
+        if (got != want)
+          fail_msg("p = %g, measure %s: %.17g %.17g | %.17g %.17g: got %d want %d", p, M->name,
+                   v[0], v[1], v[2], v[3], got, want);
+      }
+    }
+  }
+  print_message("power means: %ld of %ld decisions checked against long double\n", checked,
+                total);
+  assert_true(checked > 0.99 * total);
+}
+
+/* The algebra: exact commutativity, the identity, monotonicity, the
+** formula to a few ulps, values where x^p itself overflows, the split
+** form equal to the plain value scaled, and the keys. */
+static void test_power_algebra(void **state) {
+  (void)state;
+  testutil_rng g = {77};
+  for (size_t k = 0; k < sizeof tjoint_powers / sizeof *tjoint_powers; k++) {
+    joint_id j = (joint_id)joint_find(tjoint_powers[k]);
+    double p = joint_get(j)->p;
+    for (int n = 0; n < 20000; n++) {
+      int s = n & 1 ? 1 : -1;
+      double x = tjoint_value(&g, s), y = tjoint_value(&g, s), z = tjoint_value(&g, s);
+      double f = joint_apply(j, s, x, y);
+      assert_true(f == joint_apply(j, s, y, x) || (isnan(f) && isnan(joint_apply(j, s, y, x))));
+      assert_true(joint_apply(j, s, joint_identity(j, s), x) == x);
+      if (s * x >= s * z) assert_true(s * joint_apply(j, s, x, y) >= s * joint_apply(j, s, z, y));
+      if (x != 0 && y != 0) {
+        double want = s * pow(pow(fabs(x), p) + pow(fabs(y), p), 1 / p);
+        TESTUTIL_NEAR(f, want, 1e-13, 0);
+        int e;
+        double m = joint_apply_split(j, s, x, y, &e);
+        assert_true(ldexp(m, e) == f);
+        double kk = joint_key(j, s, x) + joint_key(j, s, y);
+        TESTUTIL_NEAR(joint_key(j, s, f), kk, 1e-12, 0);
+        TESTUTIL_NEAR(joint_unkey(j, s, joint_key(j, s, x)), x, 1e-14, 0);
+        assert_true(joint_key(j, s, x) < joint_key(j, s, x * (s > 0 ? 1.5 : 0.5)) ||
+                    (s < 0 && x == 0));
+      }
+    }
+    /* 1e300^7 overflows, the mean does not: 1e300 * 2^(1/p) (p > 0). */
+    double big = joint_apply(j, 1, 1e300, 1e300);
+    assert_true(isfinite(big));
+    TESTUTIL_NEAR(big, 1e300 * pow(2, 1 / p), 1e-14, 0);
+    int e;
+    double m = joint_apply_split(j, 1, 1e300, 1e-300, &e);
+    assert_true(isfinite(m) && m > 0);
+    /* ... and a comparison beyond the doubles still decides, in split form. */
+    if (p > 0) assert_int_equal(joint_compare(j, 1, DBL_MAX, DBL_MAX, DBL_MAX, DBL_MAX / 2, 1e-12), 1);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_table),
@@ -445,6 +595,9 @@ int main(void) {
     cmocka_unit_test(test_keys),
     cmocka_unit_test(test_compare_plain),
     cmocka_unit_test(test_compare_bounds),
+    cmocka_unit_test(test_power_names),
+    cmocka_unit_test(test_power_decisions),
+    cmocka_unit_test(test_power_algebra),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -141,8 +141,8 @@ static void trule_check_bad(const char *name) {
 
 static void test_parse_bad(void **state) {
   (void)state;
-  static const char *const bad[] = {"foo", "R_3", "R", "_1", "", "R_", "P_inf_", "r_1",
-                                    "R_inf ", " R_inf", "R__inf", "-alpha_-2", "R_1_1", "-alpha_", "_"};
+  static const char *const bad[] = {"foo", "R_3x", "R", "_1", "", "R_", "P_inf_", "r_1",
+                                    "R_inf ", " R_inf", "R__inf", "-alpha_-2x", "R_1_1", "-alpha_", "_"};
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) trule_check_bad(bad[i]);
   char long_name[500];
   memset(long_name, 'R', sizeof long_name - 1);
