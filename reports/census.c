@@ -298,9 +298,11 @@ static const report_countcheck report_census_checks[3] = {
   {"tie + no_sink + one_sink + multi_sink must be samples", report_census_parts_sum},
   {"sink_dt <= one_sink", report_census_dt_le},
   {"mean_sinks within what one_sink, multi_sink and max_sinks allow", report_census_sinks_fit}};
+static const int report_census_names_cols[4] = {0, 1, 2, 4};
 static const report_table report_census_kind = {
   report_census_header, sizeof(report_census_row), REPORT_CENSUS_MAX_ROWS, report_census_intcols, 9,
-  report_census_checks, 3, report_census_fields, report_census_same};
+  report_census_checks, 3, report_census_names_cols, 4, report_census_fields,
+  report_census_same};
 
 static int report_census_record(char **f, const size_t *len, int nf, uint64_t line,
                                 void *data) {

@@ -83,6 +83,12 @@ int report_table_record(report_tableread *r, char **f, const size_t *len, int nf
              r->ncols, nf);
     return -1;
   }
+  for (int k = 0; k < t->nnames; k++)
+    if (memchr(f[t->names[k]], '\0', len[t->names[k]]) != NULL) {
+      snprintf(r->err, r->errlen, "%s line %llu: %s '%.40s' has a NUL byte inside", r->name, ln,
+               t->header[t->names[k]], f[t->names[k]]);
+      return -1;
+    }
   char *row = report_table_grow(r, ln);
   if (row == NULL || report_table_counts(r, f, row, ln) != 0 ||
       t->fields(r, f, row, ln) != 0 || report_table_checks(r, row, ln) != 0)

@@ -427,9 +427,11 @@ static const report_countcol report_counts_cols[7] = {
 static const report_countcheck report_counts_checks[2] = {
   {"types must sum to samples", report_counts_types_sum},
   {"dt <= type_I", report_counts_dt_le}};
+static const int report_counts_names_cols[3] = {0, 1, 2};
 static const report_table report_counts_table = {
   report_csv_header, sizeof(report_row), REPORT_CSV_MAXROWS, report_counts_cols, 7,
-  report_counts_checks, 2, report_counts_fields, report_counts_same};
+  report_counts_checks, 2, report_counts_names_cols, 3, report_counts_fields,
+  report_counts_same};
 
 static int report_counts_record(char **f, const size_t *len, int nf, uint64_t line,
                                 void *data) {

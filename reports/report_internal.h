@@ -63,6 +63,8 @@ typedef struct report_table {
   int ncounts;
   const report_countcheck *checks;
   int nchecks;
+  const int *names;            /* the text columns (rule, measure, ...), NUL-free */
+  int nnames;
   int (*fields)(report_tableread *r, char **f, void *row, unsigned long long line);
   int (*same)(const void *a, const void *b, int i, const char *what, char *err, size_t errlen);
 } report_table;
@@ -81,7 +83,8 @@ struct report_tableread {
   size_t errlen;
 };
 
-/* One record after the header: field count, row bound, the integer
+/* One record after the header: field count, row bound, no NUL byte in a
+** text column (a C string would cut the name short), the integer
 ** columns, the kind's fields, the checks, the sample count; the row is
 ** appended.  0, or -1 with "FILE line N: ..." in r->err. */
 FLIPLAB_INTERNAL int report_table_record(report_tableread *r, char **f, const size_t *len,

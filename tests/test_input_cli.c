@@ -160,6 +160,9 @@ static void test_nul_in_field(void **state) {
   char *csv = testutil_read_file(q);
   ti_nul_after(p, sizeof p, "nul.csv", csv, (size_t)(strchr(csv, '\n') - csv), ",20");
   ti_refused(TI_RUN("merge %s", p), 2, "samples '20' is not a count", 300);
+  /* A name: "DT" then a NUL and junk would read as DT. */
+  ti_nul_after(p, sizeof p, "nul.csv", csv, (size_t)(strchr(csv, '\n') - csv), ",,DT");
+  ti_refused(TI_RUN("merge %s", p), 2, "rule 'DT' has a NUL byte inside", 300);
   free(csv);
   assert_int_equal(TI_RUN("census --sites 5 --samples 20 --format csv --out %s", q), 0);
   csv = testutil_read_file(q);
