@@ -1,0 +1,69 @@
+/*
+** shape.h: convex shapes (balls of convex distance functions) and the exact
+** empty-shape decision of a convex quadrilateral.
+**
+** A shape K is a strictly convex polygon (its vertices, anticlockwise, as
+** doubles: the shape IS those doubles) or an ellipse (a quadratic form
+** rounded to doubles once: the shape IS that rounded form).  Its homothets
+** t + sK (s > 0) play the part circles play for the Delaunay rule; a
+** polygon's corners add their rounding shapes (hyperbolic regions) so that
+** every triangle has exactly one circumscribing shape.  docs/emptyshape.md
+** has the definitions, the special-position rule and the exactness argument.
+*/
+#ifndef FLIPLAB_SHAPE_H
+#define FLIPLAB_SHAPE_H
+
+#include <stddef.h>
+#include "predicates.h"   /* geom_point */
+
+typedef enum shape_kind { SHAPE_POLYGON, SHAPE_ELLIPSE } shape_kind;
+
+/* The answers of shape_decide, numbered as fliprules/' rule_choice. */
+typedef enum shape_choice { SHAPE_AC = 0, SHAPE_BD = 1, SHAPE_EITHER = 2 } shape_choice;
+
+#define SHAPE_MAX_VERTICES 1024
+#define SHAPE_NGON_MAX 1024
+
+typedef struct shape {
+  shape_kind kind;
+  int n;                  /* polygon: vertex count (>= 3) */
+  geom_point *v;          /* polygon: the vertices, anticlockwise (owned) */
+  unsigned char *half;    /* polygon, internal: 1 for the edges turned by [pi, 2 pi) from edge 0 */
+  double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
+} shape;
+
+/* Parse a shape spec (docs/emptyshape.md has the grammar): "square",
+** "diamond", "triangle", "hexagon", "octagon", "ngon:K",
+** "poly:X Y;X Y;..." (a vertex's two numbers separated by ',' or blanks),
+** "ellipse:A B[ THETA]" (',' or blanks).  0 and *out (free it with
+** shape_free), or -1 and a one-line reason in err. */
+int shape_parse(const char *spec, shape **out, char *err, size_t errlen);
+void shape_free(shape *k);
+
+/* How a decision was reached (diagnostics and tests). */
+typedef struct shape_trace {
+  int rounding;       /* 1: the circumscribing shape was a corner's rounding shape */
+  int corner;         /* its corner (vertex index), else -1 */
+  int contact[3];     /* polygon homothet: the contact edges of A, B, C */
+  int level;          /* 0: decided by the value, 1: by the perturbation, 2: neither (either) */
+  int failed;         /* 1: no contact triple found (answered either; never expected) */
+} shape_trace;
+
+/* The empty-shape rule of K on the strictly convex anticlockwise
+** quadrilateral ABCD: SHAPE_BD when D is inside the circumscribing shape of
+** ABC, SHAPE_AC when outside, SHAPE_EITHER when on it after the tie-break
+** (docs/emptyshape.md).  Exact for finite double inputs; the same answer
+** for ABCD, BCDA, CDAB and DABC (with AC and BD swapped for the odd ones).
+** tr may be NULL. */
+shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point c, geom_point d,
+                          shape_trace *tr);
+
+/* The vertex of polygon K extremal in the right-hand normal direction of
+** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:
+** the start vertex of an edge of the same direction as PQ. */
+int shape_support(const shape *k, geom_point p, geom_point q);
+
+/* Calls that needed the exact (GMP) fallback, over the process (diagnostics). */
+unsigned long shape_exact_calls(void);
+
+#endif
