@@ -49,7 +49,8 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "lot_internal.h"
+#include "mesh.h"
+#include "order.h"
 #include "measure.h"
 #include "splitmix.h"
 
@@ -270,7 +271,7 @@ static joint_verdict lot_verdict(const lot_run *R, lot_enc n1, lot_enc n2, lot_e
   return rule_decide_bounds(R->r, lo, hi);
 }
 
-/* The same decision with an enclosed cache (lot_internal.h), exact values
+/* The same decision with an enclosed cache (mesh.h), exact values
 ** made lazily.  The rule flips when joint_compare(J, s, x1, x2, y1, y2,
 ** eps) < 0, x1, x2 the new triangles' exact values (lot_mesh_badness), y1,
 ** y2 the current ones'.  Each of them lies in its enclosure: measure_bounds

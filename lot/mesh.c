@@ -1,5 +1,5 @@
 /*
-** mesh.c: the triangle-neighbour structure of lot_internal.h: the first
+** mesh.c: the triangle-neighbour structure of mesh.h: the first
 ** triangle, point location by a walk, insertion (inside a triangle, on an
 ** edge, outside the hull), the flip, and the per-triangle badness cache
 ** (exact values, or enclosures made exact on demand).
@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "lot_internal.h"
+#include "mesh.h"
 #include "measure.h"
 #include "splitmix.h"
 

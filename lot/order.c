@@ -16,7 +16,7 @@
 */
 #include <stdlib.h>
 #include <string.h>
-#include "lot_internal.h"
+#include "order.h"
 #include "sampler.h"
 
 #define LOT_HILBERT_BITS 16

@@ -24,11 +24,12 @@ export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 export PATH="$prefix/bin:$PATH"
 fail() { echo "install_check: $*" >&2; exit 1; }
 
-# Headers: no internal ones, nothing but headers, each compiles alone.
+# Headers: no private ones (CMakeLists.txt: *_internal.h and fliplab_private_headers),
+# nothing but headers, each compiles alone.
 for f in "$prefix"/include/fliplab/*; do
   h=$(basename "$f")
   case $h in
-    *_internal.h|plugin_loader.h) fail "internal header installed: $h" ;;
+    *_internal.h|plugin_loader.h|mesh.h|order.h) fail "private header installed: $h" ;;
     *.h) ;;
     *) fail "not a header in include/fliplab: $h" ;;
   esac

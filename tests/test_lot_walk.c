@@ -1,6 +1,6 @@
 /*
 ** test_lot_walk.c: point location in the triangle-neighbour structure of
-** lot/ (lot_mesh_locate, lot_internal.h) on meshes full of needles.
+** lot/ (lot_mesh_locate, lot/mesh.h) on meshes full of needles.
 **
 ** The meshes are made by inserting points without Delaunay flips and then
 ** flipping random strictly convex quadrilaterals, so they are far from
@@ -22,7 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lot_internal.h"
+#include "mesh.h"
 #include "testutil.h"
 
 /* The oracle: where q is, by looking at every triangle. */

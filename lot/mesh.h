@@ -1,5 +1,6 @@
 /*
-** lot_internal.h: the triangulation structure behind lot.h.
+** mesh.h: the triangulation structure behind lot.h (private to lot/, not
+** installed; lot/mesh.c).
 **
 ** Triangle-neighbour arrays.  Triangle t has vertices tv[4t..4t+2],
 ** anticlockwise; corner c = 4t + i (i < 3) names vertex tv[c] and the edge
@@ -27,8 +28,8 @@
 ** Vertices are numbered in insertion order (p[] is the input permuted),
 ** which keeps neighbouring triangles' points close in memory.
 */
-#ifndef FLIPLAB_LOT_INTERNAL_H
-#define FLIPLAB_LOT_INTERNAL_H
+#ifndef FLIPLAB_LOT_MESH_H
+#define FLIPLAB_LOT_MESH_H
 
 #include <stdint.h>
 #include "lot.h"
@@ -109,11 +110,5 @@ FLIPLAB_INTERNAL double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t
 FLIPLAB_INTERNAL lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* Triangle t's enclosure made exact (computed once, then cached). */
 FLIPLAB_INTERNAL void lot_mesh_exact(lot_mesh *m, uint32_t t);
-
-/* Insertion orders (lot/order.c): ord[0..n-1] = input indices. */
-FLIPLAB_INTERNAL
-int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *ord);
-FLIPLAB_INTERNAL void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord);
-FLIPLAB_INTERNAL int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord);
 
 #endif
