@@ -36,6 +36,7 @@
 #include <stdint.h>
 #include "geom.h"
 #include "rule.h"
+#include "shape.h"
 
 typedef enum lot_algorithm { LOT_INCREMENTAL, LOT_FLIP } lot_algorithm;
 typedef enum lot_order { LOT_ORDER_SPATIAL, LOT_ORDER_INPUT, LOT_ORDER_RANDOM } lot_order;
@@ -146,5 +147,35 @@ typedef struct lot_diff {
   size_t triangles_a, triangles_b, triangles_common;
 } lot_diff;
 int lot_compare(const uint32_t *a, size_t na, const uint32_t *b, size_t nb, lot_diff *out);
+
+/* ---- the convex-distance Delaunay graph (lot/cdf.c) ----
+** Read off an empty-shape triangulation of the shape K (thesis 4.1.2,
+** docs/emptyshape.md): a triangle is kept when its circumscribing shape is a
+** homothet of K (its three support points differ); a dropped triangle's
+** circumscribing shape is a corner's rounding shape, and of its edges exactly
+** one is not CDF-Delaunay (lot_cdf_nonedge).  An edge is CDF-Delaunay iff it
+** is no adjacent triangle's non-edge; the extra edges are those in no kept
+** triangle.  For an ellipse every triangle is kept. */
+typedef struct lot_cdf {
+  size_t triangles;     /* kept triangles */
+  uint32_t *tri;        /* 3 indices each, as in the input list */
+  size_t edges;         /* CDF-Delaunay edges in no kept triangle */
+  uint32_t *edge;       /* 2 indices each, smaller first, sorted */
+  size_t rounded;       /* dropped triangles */
+  size_t conflicts;     /* edges of a kept triangle that are a neighbour's non-edge:
+                           0 on an empty-shape triangulation */
+} lot_cdf;
+
+/* The non-edge of the anticlockwise triangle ABC for K: -1 when ABC has a
+** circumscribing homothet of K (and always for an ellipse), else 0 for AB,
+** 1 for BC, 2 for CA: the edge whose support point differs from the other
+** two (shape_support, with its tie-break). */
+int lot_cdf_nonedge(const shape *k, geom_point a, geom_point b, geom_point c);
+
+/* The CDF graph of the triangulation tri (anticlockwise triangles, indices
+** into p) for K.  0, or -1 when out of memory; free with lot_cdf_free. */
+int lot_cdf_extract(const geom_point *p, const uint32_t *tri, size_t ntri, const shape *k,
+                    lot_cdf *out);
+void lot_cdf_free(lot_cdf *c);
 
 #endif
