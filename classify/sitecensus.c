@@ -155,9 +155,9 @@ static int siteflip_cplan_make(siteflip_cplan *pl, const rule *rules, int nrules
     if (c->quad) continue;
     c->slot = it->slot;
     c->joint = it->joint;
-    c->msign = measure_get(r->measure)->sign;
-    c->keyop = joint_get(r->joint)->keyop;
-    c->key0 = joint_key_identity(r->joint);
+    c->msign = rule_sign(r);
+    c->keyop = joint_get(rule_joint(r))->keyop;
+    c->key0 = rule_key_identity(r);
   }
   siteflip_cplan_runs(pl);
   pl->nv = QUADVEC_PAD(pl->cp.nslots);

@@ -120,7 +120,7 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
     int rev = 0;
     if (report_got_read_polygon(a->polygon, p, n, &rev, err, sizeof err) != 0)
       return cli_error(CMD, "%s", err);
-    if (got_check_memory(*n, r->measure, err, sizeof err) != 0)
+    if (got_check_memory(*n, rule_measure(r), err, sizeof err) != 0)
       return cli_error(CMD, "%s", err);
     *map = malloc(*n * sizeof **map);
     if (*map == NULL) return cli_error(CMD, "out of memory");
@@ -129,7 +129,7 @@ static int cli_got_polygon(const cli_got_args *a, const rule *r, geom_point **p,
     return 0;
   }
   *n = (size_t)a->random;
-  if (got_check_memory(*n, r->measure, err, sizeof err) != 0)
+  if (got_check_memory(*n, rule_measure(r), err, sizeof err) != 0)
     return cli_error(CMD, "%s", err);
   *p = malloc(*n * sizeof **p);
   if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
@@ -225,19 +225,18 @@ static int cli_got_setup(int argc, char **argv, cli_got_args *a, rule *r) {
   int rc = cli_got_parse(argc, argv, a);
   if (rc != 0) return rc == 1 ? -1 : rc;
   if (cli_parse_rule(CMD, a->rule, r) != 0) return 2;
-  if (r->kind != RULE_TRIANGLE)
+  if (!rule_is_triangle(r))
     return cli_error(CMD, "rule %s is not triangle-based: GOT needs a measure and a joint "
-                     "(MEASURE_JOINT, e.g. R_inf or P_1)", r->name);
+                     "(MEASURE_JOINT, e.g. R_inf or P_1)", rule_name(r));
   return 0;
 }
 
 /* The header, total, runner-up and time lines. */
 static void cli_got_summary(const cli_got_args *a, const rule *r, const got_result *res,
                             const char *desc, const char *tot) {
-  const measure *m = measure_get(r->measure);
-  const joint *jt = joint_get(r->joint);
-  printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", r->name,
-         m->name, jt->symbol, res->n, desc, a->tie_eps);
+  const joint *jt = joint_get(rule_joint(r));
+  printf("# fliplab got: rule %s (measure %s, joint %s), n = %zu, %s, tie-eps %.3g\n", rule_name(r),
+         rule_measure_name(r), jt->symbol, res->n, desc, a->tie_eps);
   if (jt->key == JOINT_SHAPE_LOG)
     printf("total badness: %s (key %s = %.17g)\n", tot,
            res->sign >= 0 ? "ln B" : "-ln|B|", res->key);

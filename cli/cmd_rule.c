@@ -184,15 +184,15 @@ static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadc
 /* ---- printing --------------------------------------------------------------- */
 
 static void cli_rule_describe(const rule *r) {
-  if (r->kind == RULE_QUAD) {
-    printf("rule %s: quadrilateral rule: %s\n", r->name, rule_quad_get(r->quad)->desc);
+  if (!rule_is_triangle(r)) {
+    printf("rule %s: quadrilateral rule: %s\n", rule_name(r), rule_quad_of(r)->desc);
     return;
   }
-  const measure *m = measure_get(r->measure);
-  const char *expr = formula_expr(r->measure);
-  printf("rule %s: measure %s (%s%s), joint %s (%s)\n", r->name, m->name,
-         expr ? "formula " : "", expr ? expr : m->desc, joint_get(r->joint)->name,
-         joint_get(r->joint)->symbol);
+  const measure *m = measure_get(rule_measure(r));
+  const char *expr = formula_expr(rule_measure(r));
+  printf("rule %s: measure %s (%s%s), joint %s (%s)\n", rule_name(r), m->name,
+         expr ? "formula " : "", expr ? expr : m->desc, rule_joint_name(r),
+         joint_get(rule_joint(r))->symbol);
 }
 
 /* A type-V pentagon says nothing about systematicity or locality, so the
@@ -215,7 +215,7 @@ static void cli_rule_verdicts(const rule *r, const flipgraph_counts *c) {
   if (t2) printf("  verdict: not local: %llu counterexample%s (type II)\n", t2, cli_rule_s(t2));
   else printf("  verdict: no counterexample to locality in %llu pentagons%s (no type II)\n",
               decided, of);
-  if (t4 && r->kind == RULE_TRIANGLE)
+  if (t4 && rule_is_triangle(r))
     printf("  verdict: BUG: %llu pentagons without a sink (type IV), impossible for a "
            "triangle-based rule (thesis theorem 1)\n", t4);
   else if (t4)

@@ -214,6 +214,14 @@ const rule_quad *rule_quad_of(const rule *r) {
   return r->kind == RULE_QUAD ? rule_quad_get(r->quad) : NULL;
 }
 
+const char *rule_measure_name(const rule *r) {
+  return r->kind == RULE_TRIANGLE ? measure_get(r->measure)->name : "";
+}
+
+const char *rule_joint_name(const rule *r) {
+  return r->kind == RULE_TRIANGLE ? joint_get(r->joint)->name : "";
+}
+
 /* ---- totals and gaps --------------------------------------------------- */
 
 double rule_key_identity(const rule *r) {

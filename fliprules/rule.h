@@ -119,6 +119,10 @@ static inline joint_id rule_joint(const rule *r) { return r->joint; }
 /* The quadrilateral rule (NULL for a triangle-based rule). */
 const rule_quad *rule_quad_of(const rule *r);
 static inline const char *rule_name(const rule *r) { return r->name; }
+/* The two parts of a triangle-based rule's name ("" for a quadrilateral
+** rule), as report rows and CSV columns give them. */
+const char *rule_measure_name(const rule *r);
+const char *rule_joint_name(const rule *r);
 static inline double rule_tie_eps(const rule *r) { return r->tie_eps; }
 static inline void rule_set_tie_eps(rule *r, double tie_eps) { r->tie_eps = tie_eps; }
 

@@ -28,11 +28,9 @@ const char *const report_census_header[REPORT_CENSUS_NCOLS] = {
 void report_census_row_from_rule(report_census_row *row, const rule *r, int sites,
                                  const char *sampler, const siteflip_counts *c) {
   memset(row, 0, sizeof *row);
-  if (r->kind == RULE_TRIANGLE) {
-    snprintf(row->measure, sizeof row->measure, "%s", measure_get(r->measure)->name);
-    snprintf(row->joint, sizeof row->joint, "%s", joint_get(r->joint)->name);
-  }
-  snprintf(row->rule, sizeof row->rule, "%s", r->name);
+  snprintf(row->measure, sizeof row->measure, "%s", rule_measure_name(r));
+  snprintf(row->joint, sizeof row->joint, "%s", rule_joint_name(r));
+  snprintf(row->rule, sizeof row->rule, "%s", rule_name(r));
   snprintf(row->sampler, sizeof row->sampler, "%s", sampler);
   row->sites = sites;
   if (c != NULL) row->c = *c;

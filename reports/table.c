@@ -35,11 +35,9 @@ int report_format_parse(const char *s, report_format *out) {
 
 void report_row_from_rule(report_row *row, const rule *r, const flipgraph_counts *c) {
   memset(row, 0, sizeof *row);
-  if (r->kind == RULE_TRIANGLE) {
-    snprintf(row->measure, sizeof row->measure, "%s", measure_get(r->measure)->name);
-    snprintf(row->joint, sizeof row->joint, "%s", joint_get(r->joint)->name);
-  }
-  snprintf(row->rule, sizeof row->rule, "%s", r->name);
+  snprintf(row->measure, sizeof row->measure, "%s", rule_measure_name(r));
+  snprintf(row->joint, sizeof row->joint, "%s", rule_joint_name(r));
+  snprintf(row->rule, sizeof row->rule, "%s", rule_name(r));
   if (c != NULL) row->c = *c;
 }
 

@@ -530,6 +530,10 @@ static void test_verbs(void **state) {
   assert_int_equal(rule_joint(&p1), JOINT_SUM);
   assert_int_equal(rule_sign(&a0), -1);
   assert_string_equal(rule_name(&a0), "-alpha_inf");
+  assert_string_equal(rule_measure_name(&a0), "-alpha");
+  assert_string_equal(rule_joint_name(&a0), "inf");
+  assert_string_equal(rule_measure_name(&dt), "");
+  assert_string_equal(rule_joint_name(&dt), "");
   assert_null(rule_quad_of(&p1));
   assert_string_equal(rule_quad_of(&dt)->name, "DT");
   assert_true(rule_tie_eps(&p1) == RULE_DEFAULT_TIE_EPS);
