@@ -242,6 +242,28 @@ static int cli_outs_grow(const char *cmd) {
   return 0;
 }
 
+/* Open o's file (in place, or a temporary beside it) and publish o in the
+** table the signal handler reads.  From mkstemp until the entry is
+** published the temporary file exists but the handler cannot know it:
+** signals are held for that window, so one arriving in it still removes
+** the file (a run killed then left it behind). */
+static void cli_out_open_published(const char *cmd, cli_out *o, const struct stat *st) {
+  sigset_t all, was;
+  sigfillset(&all);
+  sigprocmask(SIG_BLOCK, &all, &was);
+  if (cli_out_direct(o->final, st, o->exists)) {
+    o->f = fopen(o->final, "w");
+    if (o->f == NULL) cli_error(cmd, "cannot write '%.200s': %s", o->path, strerror(errno));
+  } else {
+    o->f = cli_out_mktemp(cmd, o->path, o->final, st, o->exists, &o->tmp);
+  }
+  if (o->f != NULL) {
+    cli_outs[cli_nouts] = *o;
+    cli_nouts = cli_nouts + 1;
+  }
+  sigprocmask(SIG_SETMASK, &was, NULL);
+}
+
 FILE *cli_open_out(const char *cmd, const char *path) {
   if (path == NULL || strcmp(path, "-") == 0) {
     if (cli_stdout_used) {
@@ -281,21 +303,13 @@ FILE *cli_open_out(const char *cmd, const char *path) {
     o.ino = st.st_ino;
   }
   o.path = cli_strdup(path);
-  if (o.path == NULL) {
-    cli_error(cmd, "out of memory");
-  } else if (cli_out_direct(final, &st, exists)) {
-    o.f = fopen(final, "w");
-    if (o.f == NULL) cli_error(cmd, "cannot write '%.200s': %s", path, strerror(errno));
-  } else {
-    o.f = cli_out_mktemp(cmd, path, final, &st, exists, &o.tmp);
-  }
+  if (o.path == NULL) cli_error(cmd, "out of memory");
+  else cli_out_open_published(cmd, &o, &st);
   if (o.f == NULL) {
     free(o.path);
     free(final);
     return NULL;
   }
-  cli_outs[cli_nouts] = o;
-  cli_nouts = cli_nouts + 1;
   return o.f;
 }
 
