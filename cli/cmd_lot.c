@@ -15,12 +15,13 @@
 #include "measure.h"
 #include "report.h"
 #include "sampler.h"
+#include "shape.h"
 
 #define CMD "lot"
 #define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
 
 typedef struct cli_lot_args {
-  const char *rule, *points, *out, *svg;
+  const char *rule, *points, *out, *svg, *cdf;
   int sampler, algorithm, order, compare;   /* compare: 0 DT, 1 GOT, -1 none */
   uint64_t random, seed, max_flips, threads;
   double tie_eps;
@@ -81,8 +82,12 @@ static const cli_option cli_lot_opts[] = {
   CLI_OPT_OUT("FILE.csv", "none", "csv",
               "write the triangles: i,j,k,badness (anticlockwise;\n"
               "                     badness empty for DT and quadrilateral rules)", T, out),
+  CLI_OPT_FILE("--cdf", "FILE.csv", "none", "csv",
+               "with --rule ES:SHAPE: write the convex-distance Delaunay\n"
+               "                     graph: kept triangles i,j,k, then extra edges i,j,", T, cdf),
   CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
-               "draw the LOT (next to the DT with --compare DT)", T, svg),
+               "draw the LOT (next to the DT with --compare DT; with\n"
+               "                     --cdf, the CDF graph over it in bold)", T, svg),
   CLI_OPT_FLAG("--shade", "with --svg: fill the triangles by badness (light = good)", T, shade),
   CLI_OPT_TIE_EPS("relative tolerance under which a triangle rule ties", 1, T, tie_eps),
   CLI_OPT_THREADS("OpenMP threads for --compare GOT; the LOT itself is\n"
@@ -115,6 +120,8 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o)
       return cli_error(CMD, "--order applies to --algorithm incremental only");
   }
   if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
+  if (a->cdf && strncmp(a->rule, "ES:", 3) != 0)
+    return cli_error(CMD, "--cdf needs an empty-shape rule (--rule ES:SHAPE), not '%s'", a->rule);
   return 0;
 }
 
@@ -270,27 +277,58 @@ done:
   return rc;
 }
 
+/* --cdf: the convex-distance Delaunay graph of the shape of --rule ES:SHAPE,
+** its count line and its CSV. */
+static int cli_lot_cdf(const cli_lot_args *a, const geom_point *p, const uint32_t *tri,
+                       size_t ntri, lot_cdf *g) {
+  shape *k = NULL;
+  char err[512];
+  if (shape_parse(a->rule + 3, &k, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  int rc = lot_cdf_extract(p, tri, ntri, k, g);
+  shape_free(k);
+  if (rc != 0) return cli_error(CMD, "out of memory");
+  FILE *f = cli_open_out(CMD, a->cdf);
+  if (f == NULL) return 2;
+  printf("cdf: %zu triangles, %zu extra edges (%zu triangles dropped)\n", g->triangles,
+         g->edges, g->rounded);
+  report_lot_cdf_csv(f, g);
+  return cli_close_out(f) != 0;   /* it said why */
+}
+
+static int cli_lot_svg(const cli_lot_args *a, const geom_point *p, size_t n,
+                       const uint32_t *tri, size_t ntri, const double *bad, const uint32_t *dt,
+                       size_t ndt, const rule *r, const lot_cdf *g) {
+  FILE *f = cli_open_out(CMD, a->svg);
+  if (f == NULL) return 2;
+  char cap[2][160], title[200];
+  int len = snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, ntri);
+  if (g && len > 0 && (size_t)len < sizeof cap[0])
+    snprintf(cap[0] + len, sizeof cap[0] - (size_t)len, "; CDF graph (bold): %zu triangles, "
+             "%zu extra edges", g->triangles, g->edges);
+  snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
+  snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
+  report_lot_panel pn[2] = {{tri, ntri, bad, cap[0], g}, {dt, ndt, NULL, cap[1], NULL}};
+  report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title);
+  return cli_close_out(f) != 0;
+}
+
 static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
                          const uint32_t *tri, size_t ntri, const double *bad,
                          const uint32_t *dt, size_t ndt, const rule *r) {
-  if (a->out) {
+  lot_cdf g;
+  memset(&g, 0, sizeof g);
+  int rc = a->cdf ? cli_lot_cdf(a, p, tri, ntri, &g) : 0;
+  if (rc == 0 && a->out) {
     FILE *f = cli_open_out(CMD, a->out);
-    if (f == NULL) return 2;
-    report_lot_csv(f, tri, ntri, bad);
-    if (cli_close_out(f) != 0) return 1;   /* it said why */
+    if (f == NULL) rc = 2;
+    else {
+      report_lot_csv(f, tri, ntri, bad);
+      rc = cli_close_out(f) != 0;   /* it said why */
+    }
   }
-  if (a->svg) {
-    FILE *f = cli_open_out(CMD, a->svg);
-    if (f == NULL) return 2;
-    char cap[2][160], title[200];
-    snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, ntri);
-    snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
-    snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
-    report_lot_panel pn[2] = {{tri, ntri, bad, cap[0]}, {dt, ndt, NULL, cap[1]}};
-    report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title);
-    if (cli_close_out(f) != 0) return 1;
-  }
-  return 0;
+  if (rc == 0 && a->svg) rc = cli_lot_svg(a, p, n, tri, ntri, bad, dt, ndt, r, a->cdf ? &g : NULL);
+  lot_cdf_free(&g);
+  return rc;
 }
 
 /* The header, counts, status and time lines. */

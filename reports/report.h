@@ -22,6 +22,7 @@
 #include "flipgraph.h"
 #include "geom.h"
 #include "got.h"
+#include "lot.h"
 #include "siteflip.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
@@ -282,13 +283,20 @@ int report_got_svg(FILE *f, const geom_point *p, size_t n, const got_triangle *t
 ** when NaN (DT and quadrilateral rules). */
 int report_lot_csv(FILE *f, const uint32_t *tri, size_t ntri, const double *badness);
 
+/* The convex-distance Delaunay graph as CSV (`lot --cdf`): header "i,j,k",
+** a row per kept triangle (as given), then a row per extra edge with k
+** empty (docs/formats.md). */
+int report_lot_cdf_csv(FILE *f, const lot_cdf *g);
+
 /* One triangulation to draw: triangles (indices into the points), their
-** badness for shading (may be NULL) and a caption. */
+** badness for shading (may be NULL), a caption, and (may be NULL) a
+** convex-distance Delaunay graph drawn over it in bold. */
 typedef struct report_lot_panel {
   const uint32_t *tri;
   size_t ntri;
   const double *badness;
   const char *caption;
+  const lot_cdf *cdf;
 } report_lot_panel;
 
 /* The panels side by side (e.g. a LOT and the Delaunay triangulation of

@@ -3,7 +3,9 @@
 ** side (`fliplab lot --svg`, with --compare DT the LOT next to the
 ** Delaunay triangulation).  Edges are hairlines in one <path> per panel
 ** (each interior edge drawn twice, which an SVG viewer does not show);
-** shading fills triangles by badness on one scale for all panels.
+** shading fills triangles by badness on one scale for all panels; a
+** convex-distance Delaunay graph (`lot --cdf`) is drawn in bold red over its
+** panel's triangulation.
 */
 #include <math.h>
 #include <stdio.h>
@@ -36,6 +38,24 @@ static void report_lot_range(const report_lot_panel *panels, int np, double *lo,
     }
 }
 
+/* The moves of one closed triangle or one open edge (k = 2) of a path. */
+static void report_lot_moves(FILE *f, const geom_point *p, const uint32_t *w, int k,
+                             const report_lot_view *v) {
+  for (int a = 0; a < k; a++)
+    fprintf(f, "%c%.2f %.2f", a ? 'L' : 'M', report_lot_px(v, p[w[a]].x),
+            report_lot_py(v, p[w[a]].y));
+  if (k == 3) fputc('Z', f);
+}
+
+static void report_lot_cdf_draw(FILE *f, const geom_point *p, const lot_cdf *g,
+                                const report_lot_view *v, double width) {
+  fprintf(f, "<path fill=\"none\" stroke=\"#c0392b\" stroke-width=\"%.2f\" "
+             "stroke-linejoin=\"round\" d=\"", width);
+  for (size_t t = 0; t < g->triangles; t++) report_lot_moves(f, p, g->tri + 3 * t, 3, v);
+  for (size_t e = 0; e < g->edges; e++) report_lot_moves(f, p, g->edge + 2 * e, 2, v);
+  fprintf(f, "\"/>\n");
+}
+
 static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
                                   const report_lot_panel *pn, const report_lot_view *v,
                                   int shade, double lo, double hi) {
@@ -53,14 +73,10 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
             report_lot_px(v, p[w[2]].x), report_lot_py(v, p[w[2]].y));
   }
   fprintf(f, "<path fill=\"none\" stroke=\"#1f4e79\" stroke-width=\"%.2f\" d=\"", hair);
-  for (size_t t = 0; t < pn->ntri; t++) {
-    const uint32_t *w = pn->tri + 3 * t;
-    fprintf(f, "M%.2f %.2fL%.2f %.2fL%.2f %.2fZ", report_lot_px(v, p[w[0]].x),
-            report_lot_py(v, p[w[0]].y), report_lot_px(v, p[w[1]].x),
-            report_lot_py(v, p[w[1]].y), report_lot_px(v, p[w[2]].x),
-            report_lot_py(v, p[w[2]].y));
-  }
-  fprintf(f, "\"/>\n<g fill=\"black\">\n");
+  for (size_t t = 0; t < pn->ntri; t++) report_lot_moves(f, p, pn->tri + 3 * t, 3, v);
+  fprintf(f, "\"/>\n");
+  if (pn->cdf) report_lot_cdf_draw(f, p, pn->cdf, v, 3 * hair);
+  fprintf(f, "<g fill=\"black\">\n");
   for (size_t q = 0; q < n; q++)
     fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.1f\"/>\n", report_lot_px(v, p[q].x),
             report_lot_py(v, p[q].y), dot);
