@@ -1,7 +1,7 @@
 /*
 ** cmd_lot.c: `fliplab lot`: a locally optimal triangulation of a point set
 ** for any rule (built-in, formula or plugin) by the incremental or the
-** flip algorithm; prints the counts, the status (converged, cycle, budget
+** flip algorithm (DT also by the sweepline algorithm); prints the counts, the status (converged, cycle, budget
 ** exhausted) and the time; optionally re-checks local optimality from
 ** scratch, compares with the Delaunay triangulation or (convex position)
 ** the GOT, and writes the triangles as CSV and an SVG.
@@ -29,7 +29,7 @@ typedef struct cli_lot_args {
 } cli_lot_args;
 
 /* Indexed by lot_algorithm and lot_order. */
-static const char *const cli_lot_algorithms[] = {"incremental", "flip", NULL};
+static const char *const cli_lot_algorithms[] = {"incremental", "flip", "sweep", NULL};
 static const char *const cli_lot_order_name[] = {"spatial", "input", "random", NULL};
 static const char *const cli_lot_compares[] = {"DT", "GOT", NULL};
 
@@ -60,9 +60,10 @@ static const cli_option cli_lot_opts[] = {
   CLI_OPT_SEED("the sampler's and the random order's seed", T, seed),
   {.name = "--algorithm", .arg = "A",
    .help = "incremental: insert, then flip back to a LOT; flip: a\n"
-           "                     sweep triangulation, then Lawson's flip algorithm",
+           "                     sweep triangulation, then Lawson's flip algorithm;\n"
+           "                     sweep (rule DT): the sweepline Delaunay algorithm",
    .kind = CLI_CHOICE, .off = CLI_AT(T, algorithm, int), .names = cli_lot_algorithms,
-   .idef = LOT_INCREMENTAL, .bad = "unknown algorithm '%s' (valid: incremental, flip)"},
+   .idef = LOT_INCREMENTAL, .bad = "unknown algorithm '%s' (valid: incremental, flip, sweep)"},
   {.name = "--order", .arg = "O",
    .help = "insertion order: spatial (BRIO rounds along a Hilbert\n"
            "                     curve), random, input",
@@ -116,7 +117,7 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o)
   if (cli_option_given(&cli_lot_spec, given, "--algorithm")) o->algorithm = a->algorithm;
   if (cli_option_given(&cli_lot_spec, given, "--order")) {
     o->order = a->order;
-    if (o->algorithm == LOT_FLIP)
+    if (o->algorithm != LOT_INCREMENTAL)
       return cli_error(CMD, "--order applies to --algorithm incremental only");
   }
   if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
@@ -334,16 +335,17 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
 /* The header, counts, status and time lines. */
 static void cli_lot_summary(const rule *r, const char *desc, const lot_options *o,
                             const lot_stats *st, double tie_eps) {
-  int flip = o->algorithm == LOT_FLIP;
+  int flip = o->algorithm == LOT_FLIP, inc = o->algorithm == LOT_INCREMENTAL;
   printf("# fliplab lot: rule %s, %s, %s algorithm%s%s, tie-eps %.3g\n", r->name, desc,
-         flip ? "flip" : "incremental", flip ? "" : ", order ",
-         flip ? "" : cli_lot_order_name[o->order], tie_eps);
+         cli_lot_algorithms[o->algorithm], inc ? ", order " : "",
+         inc ? cli_lot_order_name[o->order] : "", tie_eps);
   printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
   cli_lot_status(st);
   printf(flip ? "time: %.4f s (initial triangulation %.4f s, flips %.4f s)\n"
-              : "time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n",
+         : inc ? "time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n"
+               : "time: %.4f s (ordering %.4f s, sweep %.4f s)\n",
          st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
 }
 

@@ -73,7 +73,10 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **                           a user formula's sign is inferred from
 **                           (badness/formula.c): the same triangles every run.
 **   GEOM_STATE_LOT_WALK     the xorshift64 state of the mesh's point-location
-**                           walk (lot/mesh.c), reset with every mesh. */
+**                           walk (lot/mesh.c), reset with every mesh.
+**   GEOM_STATE_LOT_SWEEP    the splitmix64 counter of the tower heights of
+**                           the sweepline's skip list (lot/sweep.c): the
+**                           same structure, and so the same run, every time. */
 #define GEOM_STREAM_SAMPLE(i) ((uint64_t)(i))
 #define GEOM_SALT_QUAD 0x51A7C0DE5EEDF00Dull
 #define GEOM_STREAM_GOT_POLYGON 0ull
@@ -82,5 +85,6 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 #define GEOM_STREAM_RANDOM_ORDER 0x72616e64ull        /* "rand" */
 #define GEOM_STATE_FORMULA_SIGNS 0x5EED5167ull
 #define GEOM_STATE_LOT_WALK 0x9e3779b97f4a7c15ull
+#define GEOM_STATE_LOT_SWEEP 0x5357454550ull                /* "SWEEP" */
 
 #endif

@@ -51,6 +51,7 @@
 #include <unistd.h>
 #include "mesh.h"
 #include "order.h"
+#include "sweep_internal.h"
 #include "measure.h"
 #include "splitmix.h"
 
@@ -429,7 +430,13 @@ static void lot_run_free(lot_run *R) {
 
 /* ---- building ---------------------------------------------------------- */
 
-static int lot_validate(const geom_point *p, size_t n, char *err, size_t errlen) {
+static int lot_validate(const geom_point *p, size_t n, const lot_options *o, char *err,
+                        size_t errlen) {
+  if (o->algorithm == LOT_SWEEP && (!rule_is_delaunay(&o->r) || o->decide)) {
+    snprintf(err, errlen, "the sweep algorithm makes the Delaunay triangulation: it needs "
+             "rule DT (got %s)", o->decide ? "a decision hook" : rule_name(&o->r));
+    return -1;
+  }
   if (n > LOT_MAX_POINTS) {
     snprintf(err, errlen, "%zu points: at most %u are supported", n, (unsigned)LOT_MAX_POINTS);
     return -1;
@@ -448,11 +455,17 @@ static int lot_validate(const geom_point *p, size_t n, char *err, size_t errlen)
 
 /* The insertion order: ord[k] = input index of the k-th point. */
 static int lot_make_order(const geom_point *p, uint32_t n, const lot_options *o, uint32_t *ord) {
-  if (o->algorithm == LOT_FLIP) return lot_order_lexicographic(p, n, ord);
+  if (o->algorithm != LOT_INCREMENTAL) return lot_order_lexicographic(p, n, ord);
   if (o->order == LOT_ORDER_SPATIAL) return lot_order_spatial(p, n, o->seed, ord);
   if (o->order == LOT_ORDER_RANDOM) lot_order_random(n, o->seed, ord);
   else for (uint32_t i = 0; i < n; i++) ord[i] = i;
   return 0;
+}
+
+/* The message for n points with no triangle: all equal, or all collinear. */
+static void lot_degenerate(uint32_t n, int equal, char *err, size_t errlen) {
+  snprintf(err, errlen, "all %u points are %s: a triangulation needs three non-collinear "
+           "points", n, equal ? "equal" : "collinear");
 }
 
 /* The first triangle: vertex 0, the first point different from it, the
@@ -463,10 +476,7 @@ static int lot_first(lot_mesh *m, uint32_t *kb, uint32_t *kc, char *err, size_t 
   for (c = b + 1; c < n && b < n; c++)
     if (geom_orient_valid(m->p[0], m->p[b], m->p[c]) != 0) break;
   if (b >= n || c >= n) {
-    if (b >= n) snprintf(err, errlen, "all %u points are equal: a triangulation needs three "
-                         "non-collinear points", n);
-    else snprintf(err, errlen, "all %u points are collinear: a triangulation needs three "
-                  "non-collinear points", n);
+    lot_degenerate(n, b >= n, err, errlen);
     return -1;
   }
   if (geom_orient_valid(m->p[0], m->p[b], m->p[c]) > 0) lot_mesh_first(m, 0, b, c);
@@ -531,6 +541,20 @@ static void lot_use_rule(lot *L) {
   L->m.pts = tri ? measure_points(mi) : NULL;
 }
 
+/* The triangulation of L's points in their order: the sweep, or the first
+** triangle and every insertion (flipping after each, incremental).  0; -1
+** out of memory; -2 with the message in err (no triangle). */
+static int lot_triangulate(lot *L, lot_run *R, const lot_options *o, char *err, size_t errlen) {
+  if (o->algorithm == LOT_SWEEP) {
+    int rc = lot_sweep_run(&L->m, &lot_sweep_circle, &L->st.duplicates);
+    if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);
+    return rc;
+  }
+  uint32_t kb, kc;
+  if (lot_first(&L->m, &kb, &kc, err, errlen) != 0) return -2;
+  return lot_insert_all(L, R, kb, kc, o->algorithm == LOT_INCREMENTAL);
+}
+
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
               size_t errlen) {
   *out = NULL;
@@ -539,7 +563,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
              "points", n, n == 1 ? "" : "s");
     return -1;
   }
-  if (lot_validate(p, n, err, errlen) != 0) return -1;
+  if (lot_validate(p, n, o, err, errlen) != 0) return -1;
   lot *L = calloc(1, sizeof *L);
   uint32_t *ord = malloc(n * sizeof *ord);
   lot_run R;
@@ -559,13 +583,13 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   }
   free(ord);
   ord = NULL;
-  uint32_t kb, kc;
-  if (lot_first(&L->m, &kb, &kc, err, errlen) != 0) {
+  int rc = lot_triangulate(L, &R, o, err, errlen);
+  if (rc == -2) {
     lot_run_free(&R);
     lot_free(L);
     return -1;
   }
-  if (lot_insert_all(L, &R, kb, kc, o->algorithm == LOT_INCREMENTAL) != 0) goto oom_run;
+  if (rc != 0) goto oom_run;
   double t1 = lot_now();
   if (o->algorithm == LOT_FLIP) {
     L->st.seconds_init = t1 - t0;

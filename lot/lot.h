@@ -13,7 +13,14 @@
 **                order), located by a walk, connected to the triangle that
 **                holds them or to every hull vertex they see, and the
 **                triangulation flipped back to a LOT after each insertion
-**                (theorem 5).
+**                (theorem 5);
+**   sweep        the thesis's sweepline algorithm (sections 2.5.1, 4.1.1):
+**                a vertical line sweeps the points from left to right,
+**                keeping the boundary of the part of the triangulation
+**                that is certain; site events and circumcircle events
+**                (keyed by the circle's rightmost point, compared exactly)
+**                make the Delaunay triangulation directly, no flips (rule
+**                DT only, for now).
 **
 ** Every geometric decision is exact (geom_orient, geom_incircle).  Rules are
 ** decided through the rule API (rule.h): DT exactly, triangle-based b_f with
@@ -38,7 +45,7 @@
 #include "rule.h"
 #include "shape.h"
 
-typedef enum lot_algorithm { LOT_INCREMENTAL, LOT_FLIP } lot_algorithm;
+typedef enum lot_algorithm { LOT_INCREMENTAL, LOT_FLIP, LOT_SWEEP } lot_algorithm;
 typedef enum lot_order { LOT_ORDER_SPATIAL, LOT_ORDER_INPUT, LOT_ORDER_RANDOM } lot_order;
 typedef enum lot_status { LOT_CONVERGED, LOT_CYCLE, LOT_BUDGET } lot_status;
 
@@ -81,8 +88,9 @@ typedef struct lot_stats {
   size_t cycle_quads;                 /* how many quads below (<= LOT_CYCLE_QUADS) */
   uint32_t cycle_quad[LOT_CYCLE_QUADS][4];   /* input indices, anticlockwise */
   uint64_t max_flips;
-  double seconds_init;  /* flip: the sweep triangulation; incremental: ordering the points */
-  double seconds_flip;  /* flip: the flips; incremental: insertion and flips (interleaved) */
+  double seconds_init;  /* flip: the sweep triangulation; incremental, sweep: ordering the points */
+  double seconds_flip;  /* flip: the flips; incremental: insertion and flips (interleaved);
+                           sweep: the sweep */
 } lot_stats;
 
 typedef struct lot lot;
@@ -90,7 +98,8 @@ typedef struct lot lot;
 /* Triangulate p[0 .. n-1] and flip to a LOT of o->r.  0 on success, or -1
 ** with a one-line message in err: fewer than three distinct points, all
 ** collinear, a coordinate outside the contract of geom.h (geom_coord_check,
-** naming the point), too many points, out of memory. */
+** naming the point), too many points, out of memory, LOT_SWEEP with a rule
+** other than DT or a decision hook. */
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
               char *err, size_t errlen);
 

@@ -1,0 +1,471 @@
+/*
+** sweep.c: the sweepline algorithm (thesis sections 2.5.1 and 4.1.1) for
+** lot --algorithm sweep, written against the primitives of a shape
+** (sweep_internal.h; the circle's give the Delaunay triangulation).
+**
+** A vertical line sweeps the sites from left to right.  Its status is the
+** boundary of the part of the triangulation that is certain whatever lies
+** to the right: the sites whose arcs meet the sweepline, from bottom to
+** top, a site possibly several times.  Two consecutive sites A, B form a
+** boundary edge; its breakpoint is the contact point of the shape through
+** A and B tangent to the sweepline, and breakpoints increase along the
+** boundary.  Events, in the order of their keys:
+**   site X (key X.x): find the arc B the sweepline meets at X.y (the last
+**     boundary site whose breakpoint with its predecessor lies below X, by
+**     the shape's "above" test), and replace B by B X B: the edge BX now
+**     lies on the boundary twice, once per side;
+**   circumshape A, B, C (consecutive, closing: C right of AB; key the
+**     rightmost point of the shape through them, for a circle cx + R):
+**     triangle A C B is certain; B leaves the boundary, A C becomes a
+**     boundary edge.
+** Every change of the boundary reschedules the triples around it.  The
+** boundary is a skip list (expected O(log n) search, insertion and
+** deletion by handle; tower heights from a fixed generator, so runs are
+** reproducible); circumshape events sit in a binary heap, and one made
+** stale by a change of its triple is skipped when it comes up (a
+** generation count per boundary node); site events come in the sorted
+** order of the input (x, then y, then index) and are merged with the heap.
+**
+** Exactness.  The heap is ordered by exact keys: each event carries
+** certified bounds lo <= key <= hi (the shape's key_bounds), disjoint
+** bounds decide, and overlapping ones go to the shape's exact comparison.
+** A circumshape event comes before a site event of the same key, equal
+** circumshape keys in the order the events were made; every order of
+** equal keys is a valid sweep (at that key each of the configurations is
+** a true status), and this one is fixed, so cocircular sites give one
+** reproducible valid triangulation.  The "above" test and the closing test
+** are exact (sweep_circle.c), so every decision is the exact one.
+**
+** Adjacency: every edge made (by a site event, or as the new edge AC of a
+** circumshape event) has a record with two slots, one per side; a boundary
+** node points at the record and side of the edge to its successor.  A
+** triangle fills the slots of its three edges; when both slots of a record
+** are filled the two corners are linked.  At the end, the records with one
+** slot filled are the hull edges: each gets its ghost triangle, and the
+** ghosts are linked around the hull (mesh.h's convention).
+*/
+#include <stdlib.h>
+#include <string.h>
+#include "splitmix.h"
+#include "sweep_internal.h"
+
+#define SW_LEVELS 12        /* towers of at most 12 levels, p = 1/4: 4^12 = 1.7e7 */
+#define SW_NONE UINT32_MAX
+#define SW_HEAD 0u          /* the skip list's head node (no site) */
+
+typedef struct sw_node {
+  geom_point pt;            /* its point (a copy: the search reads it without m->p) */
+  uint32_t site;            /* the mesh vertex */
+  uint32_t edge;            /* the record of the edge to the successor (SW_NONE: last) */
+  uint32_t gen;             /* changed whenever the node's triple or life changes */
+  uint32_t life;            /* counts the node's lives (a hint names one) */
+  uint8_t side, h;          /* edge's slot on this side; tower height */
+  uint32_t nx[SW_LEVELS], pv[SW_LEVELS];
+} sw_node;
+
+typedef struct sw_event {
+  double lo, hi;            /* lo <= key <= hi */
+  uint32_t node, gen, seq;  /* the middle node and its generation; creation order */
+  uint32_t v[3];            /* the triple's vertices, for the exact comparison */
+} sw_event;
+
+typedef struct sw_hint {
+  uint32_t node, life;      /* valid while the node lives that life */
+} sw_hint;
+
+typedef struct lot_sweep {
+  lot_mesh *m;
+  const lot_sweep_shape *s;
+  sw_node *nd;
+  uint32_t nnd, ndcap, freed;
+  uint32_t *ec;             /* two corners per edge record (SW_NONE: empty) */
+  size_t ne, ecap;
+  sw_event *hp;
+  size_t nh, hcap;
+  uint32_t seq;
+  uint64_t rng;
+  sw_hint *hint;            /* per band of y: a node lately seen there */
+  uint32_t nhint;
+  double y0, yscale;        /* band of y: (y - y0) * yscale */
+} lot_sweep;
+
+/* ---- growth ------------------------------------------------------------ */
+
+static int sw_grow(void **a, size_t *cap, size_t need, size_t size) {
+  if (need <= *cap) return 0;
+  size_t c = *cap ? *cap : 256;
+  while (c < need) c *= 2;
+  void *q = realloc(*a, c * size);
+  if (q == NULL) return -1;
+  *a = q;
+  *cap = c;
+  return 0;
+}
+
+/* A new node for site v (SW_NONE when out of memory). */
+static uint32_t sw_node_new(lot_sweep *S, uint32_t v) {
+  uint32_t x = S->freed;
+  if (x != SW_NONE) {
+    S->freed = S->nd[x].nx[0];
+  } else {
+    size_t cap = S->ndcap;
+    if (sw_grow((void **)&S->nd, &cap, (size_t)S->nnd + 1, sizeof *S->nd) != 0) return SW_NONE;
+    S->ndcap = (uint32_t)cap;
+    x = S->nnd++;
+    S->nd[x].gen = 0;
+    S->nd[x].life = 0;
+  }
+  uint64_t r = geom_splitmix64(&S->rng);
+  uint8_t h = 1;
+  while (h < SW_LEVELS && (r & 3) == 0) {
+    h++;
+    r >>= 2;
+  }
+  sw_node *n = &S->nd[x];
+  n->pt = v != SW_NONE ? S->m->p[v] : (geom_point){0, 0};
+  n->site = v;
+  n->edge = SW_NONE;
+  n->side = 0;
+  n->h = h;
+  n->gen++;
+  n->life++;
+  return x;
+}
+
+/* A new edge record, both slots empty (SW_NONE when out of memory). */
+static uint32_t sw_edge_new(lot_sweep *S) {
+  if (sw_grow((void **)&S->ec, &S->ecap, 2 * (S->ne + 1), sizeof *S->ec) != 0) return SW_NONE;
+  S->ec[2 * S->ne] = S->ec[2 * S->ne + 1] = SW_NONE;
+  return (uint32_t)S->ne++;
+}
+
+/* ---- the skip list ----------------------------------------------------- */
+
+/* Link x after b: at level l the predecessor is the nearest node at or
+** before b whose tower reaches l, found walking back along level l - 1. */
+static void sw_link_after(lot_sweep *S, uint32_t b, uint32_t x) {
+  sw_node *nd = S->nd;
+  uint32_t p = b;
+  for (uint32_t l = 0; l < nd[x].h; l++) {
+    while (nd[p].h <= l) p = nd[p].pv[l - 1];
+    uint32_t q = nd[p].nx[l];
+    nd[x].pv[l] = p;
+    nd[x].nx[l] = q;
+    nd[p].nx[l] = x;
+    if (q != SW_NONE) nd[q].pv[l] = x;
+  }
+}
+
+static void sw_unlink(lot_sweep *S, uint32_t x) {
+  sw_node *nd = S->nd;
+  for (uint32_t l = 0; l < nd[x].h; l++) {
+    uint32_t p = nd[x].pv[l], q = nd[x].nx[l];
+    nd[p].nx[l] = q;
+    if (q != SW_NONE) nd[q].pv[l] = p;
+  }
+  nd[x].gen++;
+  nd[x].life++;   /* hints to it die with it */
+  nd[x].nx[0] = S->freed;
+  S->freed = x;
+}
+
+/* The node whose arc the sweepline meets at X: the last one whose
+** breakpoint with its predecessor lies below X (the first node has none). */
+static uint32_t sw_locate(const lot_sweep *S, geom_point X) {
+  const sw_node *nd = S->nd;
+  uint32_t cur = SW_HEAD;
+  for (int l = SW_LEVELS - 1; l >= 0; l--)
+    for (;;) {
+      uint32_t q = nd[cur].nx[l];
+      if (q == SW_NONE) break;
+      uint32_t a = nd[q].pv[0];
+      if (a != SW_HEAD && !S->s->above(nd[a].pt, nd[q].pt, X)) break;
+      cur = q;
+    }
+  return cur;
+}
+
+/* From node h, walk along the boundary to X's node (sw_locate's answer:
+** every breakpoint is monotone along the boundary, so the steps down and
+** up never alternate); SW_NONE after SW_WALK steps. */
+#define SW_WALK 8
+static uint32_t sw_walk(const lot_sweep *S, uint32_t h, geom_point X) {
+  const sw_node *nd = S->nd;
+  for (int k = 0; k < SW_WALK; k++) {
+    uint32_t a = nd[h].pv[0], c = nd[h].nx[0];
+    if (a != SW_HEAD && !S->s->above(nd[a].pt, nd[h].pt, X)) {
+      h = a;
+    } else if (c != SW_NONE && S->s->above(nd[h].pt, nd[c].pt, X)) {
+      h = c;
+    } else {
+      return h;
+    }
+  }
+  return SW_NONE;
+}
+
+/* The band of height y. */
+static uint32_t sw_band(const lot_sweep *S, double y) {
+  double f = (y - S->y0) * S->yscale;
+  return f > 0 ? (f < S->nhint - 1 ? (uint32_t)f : S->nhint - 1) : 0;
+}
+
+/* X's node: a short walk from the node last seen in X's band of y (hints
+** are a speed-up only: the walk's answer is exact), else the skip list's
+** search, O(log n) expected. */
+static uint32_t sw_find(const lot_sweep *S, geom_point X) {
+  sw_hint h = S->hint[sw_band(S, X.y)];
+  uint32_t b = SW_NONE;
+  if (h.node != SW_NONE && S->nd[h.node].life == h.life) b = sw_walk(S, h.node, X);
+  return b != SW_NONE ? b : sw_locate(S, X);
+}
+
+static void sw_hint_set(lot_sweep *S, double y, uint32_t x) {
+  S->hint[sw_band(S, y)] = (sw_hint){x, S->nd[x].life};
+}
+
+/* ---- the event heap ---------------------------------------------------- */
+
+static void sw_points(const lot_sweep *S, const sw_event *e, geom_point t[3]) {
+  for (int i = 0; i < 3; i++) t[i] = S->m->p[e->v[i]];
+}
+
+/* Does event a come before b?  Exact keys, then creation order. */
+static int sw_before(const lot_sweep *S, const sw_event *a, const sw_event *b) {
+  if (a->hi < b->lo) return 1;
+  if (b->hi < a->lo) return 0;
+  geom_point ta[3], tb[3];
+  sw_points(S, a, ta);
+  sw_points(S, b, tb);
+  int c = S->s->key_cmp(ta, 0, tb, 0);
+  return c != 0 ? c < 0 : a->seq < b->seq;
+}
+
+/* Does event e come before the site event of x?  Ties: the circumshape. */
+static int sw_before_site(const lot_sweep *S, const sw_event *e, double x) {
+  if (e->hi < x) return 1;
+  if (e->lo > x) return 0;
+  geom_point t[3];
+  sw_points(S, e, t);
+  return S->s->key_cmp(t, 0, NULL, x) <= 0;
+}
+
+static int sw_push(lot_sweep *S, const sw_event *e) {
+  if (sw_grow((void **)&S->hp, &S->hcap, S->nh + 1, sizeof *S->hp) != 0) return -1;
+  size_t i = S->nh++;
+  while (i > 0 && sw_before(S, e, &S->hp[(i - 1) / 2])) {
+    S->hp[i] = S->hp[(i - 1) / 2];
+    i = (i - 1) / 2;
+  }
+  S->hp[i] = *e;
+  return 0;
+}
+
+static void sw_pop(lot_sweep *S) {
+  sw_event last = S->hp[--S->nh];
+  size_t i = 0, n = S->nh;
+  for (;;) {
+    size_t c = 2 * i + 1;
+    if (c >= n) break;
+    if (c + 1 < n && sw_before(S, &S->hp[c + 1], &S->hp[c])) c++;
+    if (!sw_before(S, &S->hp[c], &last)) break;
+    S->hp[i] = S->hp[c];
+    i = c;
+  }
+  if (n > 0) S->hp[i] = last;
+}
+
+/* Drop stale events from the top: their middle node changed since. */
+static void sw_drop_stale(lot_sweep *S) {
+  while (S->nh > 0 && S->nd[S->hp[0].node].gen != S->hp[0].gen) sw_pop(S);
+}
+
+/* Node b's triple changed: forget its event and schedule the new one if
+** its predecessor, b and its successor close one. */
+static int sw_schedule(lot_sweep *S, uint32_t b) {
+  sw_node *nd = S->nd;
+  nd[b].gen++;
+  uint32_t a = nd[b].pv[0], c = nd[b].nx[0];
+  if (a == SW_HEAD || c == SW_NONE) return 0;
+  sw_event e = {0, 0, b, nd[b].gen, S->seq++, {nd[a].site, nd[b].site, nd[c].site}};
+  const geom_point t[3] = {nd[a].pt, nd[b].pt, nd[c].pt};
+  if (!S->s->closes(t[0], t[1], t[2])) return 0;
+  S->s->key_bounds(t, &e.lo, &e.hi);
+  return sw_push(S, &e);
+}
+
+/* ---- events ------------------------------------------------------------ */
+
+/* Corner c of a new triangle takes the slot (edge, side); linked to the
+** corner on the other side once both are there. */
+static void sw_fill(lot_sweep *S, uint32_t edge, uint8_t side, uint32_t c) {
+  S->ec[2 * (size_t)edge + side] = c;
+  uint32_t o = S->ec[2 * (size_t)edge + (1 - side)];
+  if (o != SW_NONE) {
+    S->m->tn[c] = o;
+    S->m->tn[o] = c;
+  }
+}
+
+/* The site event of vertex k: 0, or -1 when out of memory. */
+static int sw_site(lot_sweep *S, uint32_t k) {
+  geom_point X = S->m->p[k];
+  uint32_t b = sw_find(S, X), x = sw_node_new(S, k);
+  if (x == SW_NONE) return -1;
+  sw_hint_set(S, X.y, x);
+  if (b == SW_HEAD) {   /* the first site */
+    sw_link_after(S, SW_HEAD, x);
+    return 0;
+  }
+  uint32_t e = sw_edge_new(S);
+  if (e == SW_NONE) return -1;
+  if (S->nd[b].pt.x == X.x) {
+    /* b lies on the sweepline too: it is the top of the first column of
+    ** sites (every breakpoint of a site on the sweepline is at its height),
+    ** and X goes above it, once. */
+    S->nd[b].edge = e;
+    S->nd[b].side = 0;
+    sw_link_after(S, b, x);
+    return sw_schedule(S, b);
+  }
+  uint32_t b2 = sw_node_new(S, S->nd[b].site);
+  if (b2 == SW_NONE) return -1;
+  sw_node *nd = S->nd;
+  nd[b2].edge = nd[b].edge;
+  nd[b2].side = nd[b].side;
+  nd[b].edge = e;
+  nd[b].side = 0;
+  nd[x].edge = e;
+  nd[x].side = 1;
+  sw_link_after(S, b, x);
+  sw_link_after(S, x, b2);
+  if (sw_schedule(S, b) != 0) return -1;   /* in this order: events are numbered */
+  return sw_schedule(S, b2);
+}
+
+/* Roughly the height where b's arc vanishes, the circumcentre's (a hint:
+** any value will do). */
+static double sw_centre_y(geom_point a, geom_point b, geom_point c) {
+  double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  double d = 2 * (bx * cy - by * cx);
+  return a.y + ((cx * cx + cy * cy) * bx - (bx * bx + by * by) * cx) / d;
+}
+
+/* The circumshape event of node b (a, b, c consecutive): triangle a c b,
+** anticlockwise (a, b, c turn clockwise); 0, or -1 when out of memory. */
+static int sw_circle(lot_sweep *S, uint32_t b) {
+  lot_mesh *m = S->m;
+  uint32_t e = sw_edge_new(S);
+  if (e == SW_NONE) return -1;
+  sw_node *nd = S->nd;
+  uint32_t a = nd[b].pv[0], c = nd[b].nx[0], t = m->nt++;
+  uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+  v[0] = nd[a].site;
+  v[1] = nd[c].site;
+  v[2] = nd[b].site;
+  sw_fill(S, nd[a].edge, nd[a].side, LOT_CORNER(t, 1));   /* edge b-a, opposite c */
+  sw_fill(S, nd[b].edge, nd[b].side, LOT_CORNER(t, 0));   /* edge c-b, opposite a */
+  sw_fill(S, e, 1, LOT_CORNER(t, 2));                     /* edge a-c, opposite b */
+  nd[a].edge = e;
+  nd[a].side = 0;
+  sw_hint_set(S, sw_centre_y(nd[a].pt, nd[b].pt, nd[c].pt), a);
+  sw_unlink(S, b);
+  if (sw_schedule(S, a) != 0) return -1;
+  return sw_schedule(S, c);
+}
+
+/* ---- the run ----------------------------------------------------------- */
+
+/* A ghost for every hull edge (a record with one slot filled), linked to
+** its triangle and to the ghosts of the hull edges around it. */
+static int sw_ghosts(lot_sweep *S) {
+  lot_mesh *m = S->m;
+  uint32_t *first = malloc((size_t)m->np * sizeof *first), g0 = m->nt;
+  if (first == NULL) return -1;
+  for (size_t e = 0; e < S->ne; e++) {
+    uint32_t c0 = S->ec[2 * e], c1 = S->ec[2 * e + 1];
+    if ((c0 == SW_NONE) == (c1 == SW_NONE)) continue;
+    uint32_t c = c0 != SW_NONE ? c0 : c1, g = m->nt++;
+    uint32_t u = m->tv[lot_next3(c)], w = m->tv[lot_prev3(c)];
+    uint32_t *v = m->tv + LOT_CORNER((size_t)g, 0);
+    v[0] = w;   /* the ghost (w, u, G): the outside left of w -> u */
+    v[1] = u;
+    v[2] = LOT_GHOST;
+    m->tn[c] = LOT_CORNER(g, 2);
+    m->tn[LOT_CORNER(g, 2)] = c;
+    first[w] = g;
+  }
+  for (uint32_t g = g0; g < m->nt; g++) {   /* (w, u, G) meets (u, ., G) across u-G */
+    uint32_t h = first[m->tv[LOT_CORNER(g, 1)]];
+    m->tn[LOT_CORNER(g, 0)] = LOT_CORNER(h, 1);
+    m->tn[LOT_CORNER(h, 1)] = LOT_CORNER(g, 0);
+  }
+  free(first);
+  return 0;
+}
+
+/* Every event in order: 0, or -1 when out of memory. */
+static int sw_events(lot_sweep *S, size_t *duplicates) {
+  const geom_point *p = S->m->p;
+  uint32_t np = S->m->np, k = 0;
+  for (;;) {
+    sw_drop_stale(S);
+    if (k == np && S->nh == 0) return 0;
+    if (S->nh > 0 && (k == np || sw_before_site(S, &S->hp[0], p[k].x))) {
+      uint32_t b = S->hp[0].node;
+      sw_pop(S);
+      if (sw_circle(S, b) != 0) return -1;
+    } else if (k > 0 && p[k].x == p[k - 1].x && p[k].y == p[k - 1].y) {
+      ++*duplicates;   /* sorted: the first of equal points has the smallest index */
+      k++;
+    } else if (sw_site(S, k++) != 0) {
+      return -1;
+    }
+  }
+}
+
+/* Bands of y for the hints: about 2 sqrt(n) over the points' range, as
+** many as the boundary has nodes for uniform points. */
+static int sw_hints_init(lot_sweep *S) {
+  const lot_mesh *m = S->m;
+  double lo = m->p[0].y, hi = lo;
+  for (uint32_t k = 1; k < m->np; k++) {
+    lo = m->p[k].y < lo ? m->p[k].y : lo;
+    hi = m->p[k].y > hi ? m->p[k].y : hi;
+  }
+  uint32_t b = 16;
+  while ((double)b * b < 4.0 * m->np && b < (1u << 24)) b *= 2;
+  S->hint = malloc((size_t)b * sizeof *S->hint);
+  if (S->hint == NULL) return -1;
+  for (uint32_t i = 0; i < b; i++) S->hint[i] = (sw_hint){SW_NONE, 0};
+  S->nhint = b;
+  S->y0 = lo;
+  S->yscale = hi > lo ? b / (hi - lo) : 0;
+  return 0;
+}
+
+int lot_sweep_run(lot_mesh *m, const lot_sweep_shape *s, size_t *duplicates) {
+  lot_sweep S;
+  memset(&S, 0, sizeof S);
+  S.m = m;
+  S.s = s;
+  S.freed = SW_NONE;
+  S.rng = GEOM_STATE_LOT_SWEEP;
+  *duplicates = 0;
+  m->nt = 0;
+  int rc = -1;
+  if (sw_hints_init(&S) != 0 || sw_node_new(&S, SW_NONE) != SW_HEAD) goto done;
+  S.nd[SW_HEAD].h = SW_LEVELS;
+  for (int l = 0; l < SW_LEVELS; l++) S.nd[SW_HEAD].nx[l] = SW_NONE;
+  if (sw_events(&S, duplicates) != 0) goto done;
+  rc = -2;
+  if (m->nt == 0) goto done;
+  rc = sw_ghosts(&S);
+  m->last = 0;
+done:
+  free(S.nd);
+  free(S.ec);
+  free(S.hp);
+  free(S.hint);
+  return rc;
+}

@@ -1,0 +1,83 @@
+/*
+** test_lot_sweep_cli.c: `fliplab lot --algorithm sweep` from the command
+** line: the header and time lines, --check and --compare DT on every
+** sampler, the same --out file as the incremental algorithm where the
+** Delaunay triangulation is unique, and the refusals (a rule other than
+** DT, --order, an unknown algorithm naming sweep among the valid ones).
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testutil.h"
+
+static char tsc_out[1 << 16], tsc_err[4096];
+
+static int tsc_run(const char *fmt, const char *a, const char *b) {
+  return testutil_runf(tsc_out, sizeof tsc_out, tsc_err, sizeof tsc_err, fmt, a, b);
+}
+
+static void test_samplers(void **state) {
+  (void)state;
+  const char *samplers[] = {"uniform", "normal", "disc", "grid", "parabola", "circle"};
+  for (int i = 0; i < 6; i++) {
+    assert_int_equal(tsc_run("lot --rule DT --random 3000 --sampler %s --algorithm sweep "
+                             "--check --compare DT%s", samplers[i], ""), 0);
+    assert_non_null(strstr(tsc_out, "sweep algorithm, tie-eps"));
+    assert_non_null(strstr(tsc_out, "(ordering "));
+    assert_non_null(strstr(tsc_out, " s, sweep "));
+    assert_non_null(strstr(tsc_out, "flips: 0\n"));
+    assert_non_null(strstr(tsc_out, "check: ok"));
+    if (strcmp(samplers[i], "grid") != 0) assert_non_null(strstr(tsc_out, "(100.00% of triangles)"));
+  }
+}
+
+/* Byte for byte the incremental algorithm's triangles (unique DT). */
+static void test_same_out(void **state) {
+  (void)state;
+  const char *dir = FLIPLAB_BUILD_DIR "/tests";
+  char a[512], b[512];
+  snprintf(a, sizeof a, "%s/sweep_cli_a.csv", dir);
+  snprintf(b, sizeof b, "%s/sweep_cli_b.csv", dir);
+  assert_int_equal(tsc_run("lot --rule DT --random 5000 --sampler normal --seed 4 "
+                           "--algorithm sweep --out %s%s", a, ""), 0);
+  assert_int_equal(tsc_run("lot --rule DT --random 5000 --sampler normal --seed 4 "
+                           "--out %s%s", b, ""), 0);
+  char *x = testutil_read_file(a), *y = testutil_read_file(b);
+  assert_non_null(x);
+  assert_non_null(y);
+  assert_true(strlen(x) > 1000);
+  assert_string_equal(x, y);
+  free(x);
+  free(y);
+  remove(a);
+  remove(b);
+}
+
+static void test_refusals(void **state) {
+  (void)state;
+  assert_int_equal(tsc_run("lot --rule P_1 --random 20 --algorithm sweep%s%s", "", ""), 2);
+  assert_non_null(strstr(tsc_err, "needs rule DT (got P_1)"));
+  assert_int_equal(tsc_run("lot --rule DT --random 20 --algorithm sweep --order input%s%s",
+                           "", ""), 2);
+  assert_non_null(strstr(tsc_err, "--order applies to --algorithm incremental only"));
+  assert_int_equal(tsc_run("lot --rule DT --random 20 --algorithm sweeps%s%s", "", ""), 2);
+  assert_non_null(strstr(tsc_err, "(valid: incremental, flip, sweep)"));
+  assert_int_equal(tsc_run("lot --help%s%s", "", ""), 0);
+  assert_non_null(strstr(tsc_out, "sweep (rule DT): the sweepline Delaunay algorithm"));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_samplers),
+    cmocka_unit_test(test_same_out),
+    cmocka_unit_test(test_refusals),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
