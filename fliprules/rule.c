@@ -115,6 +115,7 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen) {
       snprintf(out->name, sizeof out->name, "%s", rule_quads[i].name);
       return 0;
     }
+  if (strncmp(name, "ES:", 3) == 0) return rule_shape_make(name, out, err, errlen);
   char mname[64];
   const char *jname = strlen(name) < sizeof mname ? rule_name_split(name, mname, sizeof mname) : NULL;
   if (jname == NULL) {

@@ -55,6 +55,10 @@ typedef struct rule {
 ** name, or MEASURE_JOINT ("R_inf", "-c_-inf", "-r2/A_0").  On failure it
 ** returns -1 and writes a one-line message (naming the valid choices) to err. */
 int rule_parse(const char *name, rule *out, char *err, size_t errlen);
+/* An empty-shape rule "ES:SPEC" (SPEC a shape spec of geom/shape.h,
+** docs/emptyshape.md), registered as a quadrilateral rule on first use;
+** rule_parse calls it for every name starting "ES:" not yet registered. */
+int rule_shape_make(const char *name, rule *out, char *err, size_t errlen);
 
 /* The one grammar of rule names: a triangle-based rule is MEASURE_JOINT,
 ** split at the last '_' (measure names may contain '-', '/' and '\'', a
