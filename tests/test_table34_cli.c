@@ -278,7 +278,7 @@ static void test_plot(void **state) {
   assert_non_null(strstr(s, "<svg"));
   assert_non_null(strstr(s, "</svg>"));
   for (int i = 0; i < n; i++) {
-    char a[256], b[256], name[256];
+    char a[300], b[300], name[256];   /* room for the name and its suffix */
     tt_xml(name, sizeof name, rows[i].rule);   /* the name as the SVG spells it */
     snprintf(a, sizeof a, ">%s: type I", name);
     snprintf(b, sizeof b, "\n%s: type I", name);
