@@ -14,7 +14,7 @@
 # A change that means to alter an output records the new sums in the same
 # commit and says why.
 set -u
-build=$1
+build=$(cd "$1" && pwd) || exit 2   # absolute: the commands run in a work folder
 mode=$2
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$build/fliplab
