@@ -25,7 +25,7 @@ static bench_time bench_run(const rule *rules, int nrules, int sampler, int n, u
   char err[256];
   if (c == NULL) exit(1);
   double t0 = bench_wall(), c0 = bench_cpu();
-  if (siteflip_census(rules, nrules, sampler, n, 1, 0, count, 1e-12, 0, c, NULL, NULL, err,
+  if (siteflip_census(rules, nrules, sampler, n, 1, 0, count, 1e-12, 0, 0, c, NULL, NULL, NULL, err,
                       sizeof err) != 0 || c[0].samples != count) {
     fprintf(stderr, "bench_census: %s\n", err);
     exit(1);

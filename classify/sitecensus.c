@@ -52,6 +52,7 @@
 #include "sampler.h"
 
 #define SITEFLIP_CHUNK 256
+_Static_assert(SITEFLIP_MAX_SITES < SAMPLER_HULL_MAX, "the samplers draw every site count");
 #define SITEFLIP_SLOTS CENSUS_SLOTS
 
 typedef struct siteflip_crule {
@@ -78,6 +79,7 @@ typedef struct siteflip_cplan {
   int nentries;                       /* joint_count() * nv */
   int entry_rule[JOINT_CAPACITY * SITEFLIP_SLOTS];   /* first rule of each entry, -1 */
   int first_quad;                     /* first quadrilateral rule, -1 */
+  size_t memory;                      /* each set's flip graph budget (siteflip_limits) */
 } siteflip_cplan;
 
 typedef struct siteflip_cwork {
@@ -106,6 +108,10 @@ typedef struct siteflip_cwork {
   double *key;
   int *sinks;
   size_t nodecap;
+  /* The first set this thread could not enumerate, -1; why; over budget? */
+  int64_t fail_at;
+  int fail_over;
+  char fail_err[256];
 } siteflip_cwork;
 
 /* Runs of consecutive measures among the slots, which siteflip_values
@@ -638,15 +644,18 @@ static void siteflip_dt_node(siteflip_cwork *w, siteflip_graph *g) {
 static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork *w, int sampler,
                                        int n, uint64_t seed, uint64_t i, int *owned) {
   geom_point p[SITEFLIP_MAX_SITES];
-  char err[256];
+  const siteflip_limits lim = {pl->memory, NULL, NULL};
   siteflip_graph *g;
   sampler_sites(sampler, seed, i, n, p);
   *owned = sampler != SAMPLER_SITES_CONVEX;
+  w->fail_at = (int64_t)i;   /* until the graph is ready */
   if (*owned) {
-    g = siteflip_build(p, n, err, sizeof err);
+    g = siteflip_build_within(p, n, &lim, &w->fail_over, w->fail_err, sizeof w->fail_err);
   } else {
     int fresh = w->shape == NULL;
-    if (fresh && (w->shape = siteflip_build(p, n, err, sizeof err)) == NULL) return NULL;
+    if (fresh && (w->shape = siteflip_build_within(p, n, &lim, &w->fail_over, w->fail_err,
+                                                   sizeof w->fail_err)) == NULL)
+      return NULL;
     g = w->shape;
     if (fresh && siteflip_cwork_fit(w, g, pl) == 0) {
       siteflip_cwork_masks(w, g, pl->nv);
@@ -654,9 +663,11 @@ static siteflip_graph *siteflip_sample(const siteflip_cplan *pl, siteflip_cwork 
     }
   }
   if (g == NULL || siteflip_cwork_fit(w, g, pl) != 0) {
+    if (g != NULL) snprintf(w->fail_err, sizeof w->fail_err, "out of memory");
     if (*owned) siteflip_free(g);
     return NULL;
   }
+  w->fail_at = -1;
   if (*owned) {
     siteflip_cwork_masks(w, g, pl->nv);
     if (pl->cp.ndt > 0) siteflip_dt_decisions(g, w->dtdec);
@@ -740,10 +751,26 @@ static void siteflip_census_sum(const siteflip_censusctx *c, int threads, uint64
   }
 }
 
+/* Why the census stopped: the earliest set a thread could not enumerate
+** (with several threads, the first one some thread reached). */
+static void siteflip_census_fail(const siteflip_censusctx *c, int threads, int *over, char *err,
+                                 size_t errlen) {
+  const siteflip_cwork *f = NULL;
+  for (int t = 0; c->work != NULL && t < threads; t++)
+    if (c->work[t].fail_at >= 0 && (f == NULL || c->work[t].fail_at < f->fail_at)) f = &c->work[t];
+  if (f == NULL) {
+    snprintf(err, errlen, "out of memory");
+    return;
+  }
+  snprintf(err, errlen, "set #%lld: %s", (long long)f->fail_at, f->fail_err);
+  if (over != NULL) *over = f->fail_over;
+}
+
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
                     uint64_t first, uint64_t count, double tie_eps, int threads,
-                    siteflip_counts *out, census_progress_fn progress, void *ctx,
-                    char *err, size_t errlen) {
+                    size_t memory, siteflip_counts *out, census_progress_fn progress,
+                    void *ctx, int *over, char *err, size_t errlen) {
+  if (over != NULL) *over = 0;
   if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0) return -1;
   siteflip_cplan pl;
   int rc = siteflip_cplan_make(&pl, rules, nrules, tie_eps);
@@ -752,6 +779,7 @@ int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t 
     snprintf(err, errlen, "%s", rc == -2 ? "out of memory" : "invalid rule list");
     return -1;
   }
+  pl.memory = memory;
   threads = census_threads(threads, count, SITEFLIP_CHUNK);
   size_t nr = nrules > 0 ? (size_t)nrules : 1;
   siteflip_censusctx c = {&pl, sampler, n, seed, nr, calloc((size_t)threads, sizeof *c.work),
@@ -759,14 +787,15 @@ int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t 
   census_loop loop = {first, count, SITEFLIP_CHUNK, threads, siteflip_census_range, &c,
                       progress, ctx};
   rc = c.work != NULL && c.all != NULL ? 0 : -2;
+  for (int t = 0; rc == 0 && t < threads; t++) c.work[t].fail_at = -1;
   if (rc == 0 && census_loop_run(&loop) != 0) rc = -1;
   if (rc == 0) siteflip_census_sum(&c, threads, count, out);
+  if (rc == -1) siteflip_census_fail(&c, threads, over, err, errlen);
+  if (rc == -2) snprintf(err, errlen, "out of memory");
   for (int t = 0; c.work != NULL && t < threads; t++) siteflip_cwork_free(&c.work[t]);
   free(c.work);
   free(c.all);
   siteflip_cplan_free(&pl);
-  if (rc != 0)
-    snprintf(err, errlen, "%s", rc == -2 ? "out of memory" : "out of memory enumerating triangulations");
   return rc != 0 ? -1 : 0;
 }
 

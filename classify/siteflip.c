@@ -21,7 +21,16 @@
 ** breadth-first search from the first triangulation, with the edge mask as
 ** the canonical key, finds all of them.  Each flip is recorded once, from
 ** the triangulation that holds the quadrilateral's diagonal AC.
+**
+** Memory.  Every array the build grows is counted (its capacity in bytes)
+** with what the finished graph will still need per triangulation and per
+** flip (SITEFLIP_NODE_RESERVE, SITEFLIP_EDGE_RESERVE); a growth that would
+** pass the budget is cut to what is left, and when nothing is left the
+** build stops (siteflip_build_within).  The capacities do not change the
+** result: node numbers, edges and quadrilaterals come out in the same
+** order whatever the budget.
 */
+#include <limits.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -78,8 +87,7 @@ int siteflip_check(const geom_point *p, int n, char *err, size_t errlen) {
   }
   if (n > SITEFLIP_MAX_SITES) {
     snprintf(err, errlen,
-             "%d sites: enumeration is limited to %d sites (the number of triangulations "
-             "grows exponentially: a convex 12-gon already has 16796)",
+             "%d sites: enumeration takes at most %d sites (the edge masks hold 120 segments)",
              n, SITEFLIP_MAX_SITES);
     return -1;
   }
@@ -115,11 +123,44 @@ typedef struct siteflip_ctx {
   unsigned char tri_v[SITEFLIP_NTRIPLE][3];
   siteflip_mask tri_mask[SITEFLIP_NTRIPLE];
   short tri_id[SITEFLIP_MAX_SITES][SITEFLIP_MAX_SITES][SITEFLIP_MAX_SITES];
-  int qmap[1 << SITEFLIP_MAX_SITES];     /* site set -> quadrilateral, -1 */
+  int *qmap;                             /* [1 << n]: site set -> quadrilateral, -1 */
   int *table;                            /* hash: node index + 1, 0 empty */
   size_t tcap;
-  int ncap, ecap, qcap;
+  size_t ncap, ecap, qcap, tricap;       /* capacities of node, edge, quad, node_tri rows */
+  size_t budget, used;                   /* bytes: the budget, what is counted against it */
+  int over;                              /* the budget ran out */
+  census_progress_fn progress;
+  void *pctx;
 } siteflip_ctx;
+
+/* Counts `bytes` more against the budget: 0, or -1 (and over) past it. */
+static int siteflip_spend(siteflip_ctx *c, size_t bytes) {
+  if (bytes > c->budget - c->used) {
+    c->over = 1;
+    return -1;
+  }
+  c->used += bytes;
+  return 0;
+}
+
+/* Room for `need` elements of `size` bytes in *p (capacity *cap): doubled,
+** but never past the budget.  0, or -1 (over set when the budget ran out). */
+static int siteflip_grow(siteflip_ctx *c, void **p, size_t *cap, size_t need, size_t size) {
+  if (need <= *cap) return 0;
+  size_t left = (c->budget - c->used) / size, want = *cap ? *cap * 2 : 64;
+  if (want < need) want = need;
+  if (want - *cap > left) want = *cap + left;
+  if (want < need) {
+    c->over = 1;
+    return -1;
+  }
+  void *q = realloc(*p, want * size);
+  if (q == NULL) return -1;
+  c->used += (want - *cap) * size;
+  *p = q;
+  *cap = want;
+  return 0;
+}
 
 /* Is site k in the relative interior of segment i-j? (exact) */
 static int siteflip_between(const geom_point *p, int i, int j, int k) {
@@ -196,15 +237,24 @@ static int siteflip_tri_of(const siteflip_ctx *c, int a, int b, int d) {
   return c->tri_id[v[0]][v[1]][v[2]];
 }
 
+/* Every bit of the mask reaches the low bits the table uses (a product
+** alone carries low bits only upwards; neighbouring triangulations differ
+** in two bits).  The hash orders nothing the graph keeps: nodes are
+** numbered in discovery order. */
 static uint64_t siteflip_hash(siteflip_mask m) {
-  uint64_t h = m.lo * 0x9E3779B97F4A7C15ull ^ (m.hi + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-  return h ^ (h >> 29);
+  uint64_t h = m.lo * 0x9E3779B97F4A7C15ull;
+  h ^= h >> 32;
+  h += m.hi * 0xC2B2AE3D27D4EB4Full;
+  h ^= h >> 29;
+  h *= 0xBF58476D1CE4E5B9ull;
+  return h ^ (h >> 32);
 }
 
 /* Node index of mask m, adding it when new (-1 when out of memory). */
 static int siteflip_node_of(siteflip_ctx *c, siteflip_graph *g, siteflip_mask m) {
   if ((size_t)g->nnodes * 2 >= c->tcap) {
     size_t cap = c->tcap ? c->tcap * 2 : 1024;
+    if (siteflip_spend(c, (cap - c->tcap) * sizeof *c->table) != 0) return -1;
     int *t = calloc(cap, sizeof *t);
     if (t == NULL) return -1;
     for (int u = 0; u < g->nnodes; u++) {
@@ -221,13 +271,9 @@ static int siteflip_node_of(siteflip_ctx *c, siteflip_graph *g, siteflip_mask m)
     siteflip_mask o = g->node[c->table[h] - 1];
     if (o.lo == m.lo && o.hi == m.hi) return c->table[h] - 1;
   }
-  if (g->nnodes == c->ncap) {
-    int cap = c->ncap ? c->ncap * 2 : 64;
-    siteflip_mask *nm = realloc(g->node, (size_t)cap * sizeof *nm);
-    if (nm == NULL) return -1;
-    g->node = nm;
-    c->ncap = cap;
-  }
+  if (g->nnodes == INT_MAX - 1 || siteflip_spend(c, SITEFLIP_NODE_RESERVE) != 0 ||
+      siteflip_grow(c, (void **)&g->node, &c->ncap, (size_t)g->nnodes + 1, sizeof *g->node) != 0)
+    return -1;
   g->node[g->nnodes] = m;
   c->table[h] = g->nnodes + 1;
   return g->nnodes++;
@@ -251,13 +297,8 @@ static int siteflip_quad_of(siteflip_ctx *c, siteflip_graph *g, int i, int j, in
   *is_ac = (v[0] == i && v[2] == j) || (v[0] == j && v[2] == i);
   int key = (1 << i) | (1 << j) | (1 << k) | (1 << l);
   if (c->qmap[key] >= 0) return c->qmap[key];
-  if (g->nquads == c->qcap) {
-    int cap = c->qcap ? c->qcap * 2 : 64;
-    siteflip_quad *nq = realloc(g->quad, (size_t)cap * sizeof *nq);
-    if (nq == NULL) return -1;
-    g->quad = nq;
-    c->qcap = cap;
-  }
+  if (siteflip_grow(c, (void **)&g->quad, &c->qcap, (size_t)g->nquads + 1, sizeof *g->quad) != 0)
+    return -1;
   siteflip_quad *q = &g->quad[g->nquads];
   memcpy(q->v, v, 4);
   q->tri[0] = siteflip_tri_of(c, v[0], v[1], v[2]);
@@ -268,13 +309,10 @@ static int siteflip_quad_of(siteflip_ctx *c, siteflip_graph *g, int i, int j, in
 }
 
 static int siteflip_add_edge(siteflip_ctx *c, siteflip_graph *g, int ac, int bd, int q) {
-  if (g->nedges == c->ecap) {
-    int cap = c->ecap ? c->ecap * 2 : 64;
-    siteflip_edge *ne = realloc(g->edge, (size_t)cap * sizeof *ne);
-    if (ne == NULL) return -1;
-    g->edge = ne;
-    c->ecap = cap;
-  }
+  /* 2 nedges + 1 adjacency entries must stay an int count */
+  if (g->nedges >= INT_MAX / 2 - 1 || siteflip_spend(c, SITEFLIP_EDGE_RESERVE) != 0 ||
+      siteflip_grow(c, (void **)&g->edge, &c->ecap, (size_t)g->nedges + 1, sizeof *g->edge) != 0)
+    return -1;
   g->edge[g->nedges++] = (siteflip_edge){ac, bd, q};
   return 0;
 }
@@ -387,50 +425,103 @@ static int siteflip_first(siteflip_ctx *c, siteflip_graph *g) {
   return siteflip_node_of(c, g, T);
 }
 
+/* Breadth-first: node u's faces into its row of node_tri, its flips; the
+** progress every 4096 nodes (expanded out of found). */
 static int siteflip_enumerate(siteflip_ctx *c, siteflip_graph *g) {
   if (siteflip_first(c, g) != 0) return -1;
-  int cap = 0;
+  size_t row = (size_t)g->per * sizeof *g->node_tri;
   for (int u = 0; u < g->nnodes; u++) {
-    if (u == cap) {
-      cap = cap ? cap * 2 : 64;
-      int *nt = realloc(g->node_tri, (size_t)cap * (size_t)g->per * sizeof *nt);
-      if (nt == NULL) return -1;
-      g->node_tri = nt;
-    }
+    if (siteflip_grow(c, (void **)&g->node_tri, &c->tricap, (size_t)u + 1, row) != 0) return -1;
     if (siteflip_expand(c, g, u, g->node_tri + (size_t)u * (size_t)g->per) != 0) return -1;
+    if (c->progress != NULL && (u & 4095) == 4095)
+      c->progress((uint64_t)u + 1, (uint64_t)g->nnodes, c->pctx);
   }
+  if (c->progress != NULL) c->progress((uint64_t)g->nnodes, (uint64_t)g->nnodes, c->pctx);
   return 0;
 }
 
-siteflip_graph *siteflip_build(const geom_point *p, int n, char *err, size_t errlen) {
+/* "1 GiB", "512 MiB", "1000 bytes": the largest unit that divides. */
+static void siteflip_bytes_str(char *buf, size_t len, size_t bytes) {
+  static const char *const unit[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+  int k = 0;
+  while (k < 4 && bytes >= 1024 && bytes % 1024 == 0) {
+    bytes /= 1024;
+    k++;
+  }
+  snprintf(buf, len, "%zu %s", bytes, unit[k]);
+}
+
+/* A fresh context for n sites within lim, its own bytes counted; NULL
+** when out of memory. */
+static siteflip_ctx *siteflip_ctx_new(int n, const siteflip_limits *lim) {
+  siteflip_ctx *c = malloc(sizeof *c);
+  if (c == NULL) return NULL;
+  memset(c, 0, sizeof *c);
+  size_t nq = (size_t)1 << n;
+  if ((c->qmap = malloc(nq * sizeof *c->qmap)) == NULL) {
+    free(c);
+    return NULL;
+  }
+  memset(c->qmap, 0xff, nq * sizeof *c->qmap);
+  c->n = n;
+  c->budget = lim->memory ? lim->memory : SITEFLIP_MEMORY_DEFAULT;
+  c->progress = lim->progress;
+  c->pctx = lim->ctx;
+  siteflip_spend(c, sizeof *c + nq * sizeof *c->qmap);
+  return c;
+}
+
+static void siteflip_ctx_free(siteflip_ctx *c) {
+  if (c == NULL) return;
+  free(c->table);
+  free(c->qmap);
+  free(c);
+}
+
+/* The enumeration and the arrays made from it: 0, or -1. */
+static int siteflip_fill(siteflip_ctx *c, siteflip_graph *g) {
+  if (c->over || siteflip_enumerate(c, g) != 0) return -1;
+  g->ntris = c->ntri;
+  g->tri_v = malloc((size_t)c->ntri * sizeof *g->tri_v + 1);
+  g->tri = malloc((size_t)c->ntri * sizeof *g->tri + 1);
+  if (g->tri_v == NULL || g->tri == NULL || siteflip_adjacency(g) != 0) return -1;
+  memcpy(g->tri_v, c->tri_v, (size_t)c->ntri * sizeof *g->tri_v);
+  return 0;
+}
+
+siteflip_graph *siteflip_build_within(const geom_point *p, int n, const siteflip_limits *lim,
+                                      int *over, char *err, size_t errlen) {
+  if (over != NULL) *over = 0;
   if (siteflip_check(p, n, err, errlen) != 0) return NULL;
   siteflip_graph *g = calloc(1, sizeof *g);
-  siteflip_ctx *c = malloc(sizeof *c);
-  if (g == NULL || c == NULL) goto oom;
-  memset(c, 0, offsetof(siteflip_ctx, qmap));
-  memset(c->qmap, 0xff, sizeof c->qmap);
-  c->table = NULL;
-  c->tcap = 0;
-  c->ncap = c->ecap = c->qcap = 0;
-  c->n = g->n = n;
-  memcpy(g->p, p, (size_t)n * sizeof *p);
-  siteflip_segments(c, p);
-  if (siteflip_enumerate(c, g) != 0) goto oom;
-  g->ntris = c->ntri;
-  g->tri_v = malloc((size_t)c->ntri * sizeof *g->tri_v);
-  g->tri = malloc((size_t)c->ntri * sizeof *g->tri);
-  if (g->tri_v == NULL || g->tri == NULL || siteflip_adjacency(g) != 0) goto oom;
-  memcpy(g->tri_v, c->tri_v, (size_t)c->ntri * sizeof *g->tri_v);
-  free(c->table);
-  free(c);
-  siteflip_move(g, p);
-  return g;
-oom:
-  if (c != NULL) free(c->table);
-  free(c);
+  siteflip_ctx *c = siteflip_ctx_new(n, lim);
+  if (g != NULL && c != NULL) {
+    g->n = n;
+    memcpy(g->p, p, (size_t)n * sizeof *p);
+    siteflip_segments(c, p);
+    if (siteflip_fill(c, g) == 0) {
+      siteflip_ctx_free(c);
+      siteflip_move(g, p);
+      return g;
+    }
+  }
+  if (c != NULL && c->over) {
+    char b[32];
+    siteflip_bytes_str(b, sizeof b, c->budget);
+    snprintf(err, errlen, "the flip graph of %d sites outgrows the memory budget of %s: "
+             "%d triangulations found before it ran out", n, b, g != NULL ? g->nnodes : 0);
+    if (over != NULL) *over = 1;
+  } else {
+    snprintf(err, errlen, "out of memory enumerating the triangulations of %d sites", n);
+  }
+  siteflip_ctx_free(c);
   siteflip_free(g);
-  snprintf(err, errlen, "out of memory enumerating the triangulations of %d sites", n);
   return NULL;
+}
+
+siteflip_graph *siteflip_build(const geom_point *p, int n, char *err, size_t errlen) {
+  const siteflip_limits lim = {SITEFLIP_MEMORY_DEFAULT, NULL, NULL};
+  return siteflip_build_within(p, n, &lim, NULL, err, errlen);
 }
 
 void siteflip_free(siteflip_graph *g) {

@@ -21,10 +21,22 @@
 #include "geom.h"
 #include "rule.h"
 
-/* 12 sites: 66 segments fit a 128-bit edge mask, and the largest flip
-** graphs (tens of thousands of triangulations) still build in well under a
-** second; the number of triangulations grows exponentially beyond. */
-#define SITEFLIP_MAX_SITES 12
+/* 16 sites: 120 segments still fit the 128-bit edge mask.  What bounds an
+** enumeration is memory, not the site count (the number of triangulations
+** grows exponentially: a convex 12-gon has 16 796, a convex 16-gon
+** 2 674 440): every build counts its bytes against a budget. */
+#define SITEFLIP_MAX_SITES 16
+
+/* The default memory budget of one flip graph: 1 GiB. */
+#define SITEFLIP_MEMORY_DEFAULT ((size_t)1 << 30)
+
+/* Bytes the budget sets aside per triangulation and per flip beyond the
+** enumeration's own arrays: the adjacency (offsets, its fill pointers and
+** two entries per flip) and what directing the graph by a rule takes
+** (siteflip_direct's degrees and queue, a sink list; the census's masks,
+** keys and flags), so that a graph within the budget can be used. */
+#define SITEFLIP_NODE_RESERVE 32
+#define SITEFLIP_EDGE_RESERVE 8
 
 /* A set of segments i-j (i < j), bit siteflip_seg(n, i, j) of lo:hi. */
 typedef struct siteflip_mask { uint64_t lo, hi; } siteflip_mask;
@@ -62,9 +74,25 @@ typedef struct siteflip_graph {
 ** or -1 with a one-line reason naming the sites (1-based) in err. */
 int siteflip_check(const geom_point *p, int n, char *err, size_t errlen);
 
-/* Enumerate every triangulation and flip of p[0..n-1] (checked first).
-** NULL with a one-line reason in err. */
+/* Enumerate every triangulation and flip of p[0..n-1] (checked first)
+** within SITEFLIP_MEMORY_DEFAULT.  NULL with a one-line reason in err. */
 siteflip_graph *siteflip_build(const geom_point *p, int n, char *err, size_t errlen);
+
+/* What bounds and reports a build: the memory budget in bytes (0: the
+** default), and a progress callback (may be NULL) called now and then with
+** the triangulations expanded out of those found so far. */
+typedef struct siteflip_limits {
+  size_t memory;
+  census_progress_fn progress;
+  void *ctx;
+} siteflip_limits;
+
+/* siteflip_build within lim.  When the graph would outgrow the budget the
+** build stops, frees everything and returns NULL with *over = 1 (over may
+** be NULL) and a one-line reason saying how many triangulations it had
+** found; out of memory, *over = 0. */
+siteflip_graph *siteflip_build_within(const geom_point *p, int n, const siteflip_limits *lim,
+                                      int *over, char *err, size_t errlen);
 void siteflip_free(siteflip_graph *g);
 
 /* Move g to new sites with the same order type (e.g. another convex n-gon
@@ -121,11 +149,14 @@ typedef struct siteflip_counts {
 
 /* Census of samples first .. first+count-1 of sampler `sampler` (a
 ** sampler_sites_kind) with n sites, seed `seed`, under every rule, added to
-** out[0..nrules-1].  threads <= 0: all cores.  0, or -1 with err. */
+** out[0..nrules-1].  threads <= 0: all cores.  memory: the budget of each
+** set's flip graph (0: SITEFLIP_MEMORY_DEFAULT; each thread holds one).
+** 0, or -1 with err (a set over the budget: its index, and *over = 1 when
+** over is not NULL). */
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,
                     uint64_t first, uint64_t count, double tie_eps, int threads,
-                    siteflip_counts *out, census_progress_fn progress, void *ctx,
-                    char *err, size_t errlen);
+                    size_t memory, siteflip_counts *out, census_progress_fn progress,
+                    void *ctx, int *over, char *err, size_t errlen);
 
 /* The first sample in [first, first+count) where rule r has two or more
 ** sinks (witness of non-systematicity); its sites into p.  Index or -1. */

@@ -120,6 +120,14 @@ typedef struct cli_shard { uint64_t k, n; } cli_shard;
   {.name = "--shard", .arg = "K/N", .dflt = "none", .help = H, .kind = CLI_CALL, \
    .off = CLI_AT(T, F, cli_shard), .call = cli_option_shard}
 int cli_option_shard(const char *cmd, const cli_option *o, const char *v, void *dst);
+/* --memory SIZE into a uint64_t of bytes: an integer with an optional
+** binary unit K, M, G or T (KiB ...; "1G" = 2^30), at least 1 and at most
+** CLI_MEMORY_MAX; the default is DEF bytes, shown as DFLT. */
+#define CLI_MEMORY_MAX ((uint64_t)1 << 40)
+#define CLI_OPT_MEMORY(DFLT, DEF, H, T, F) \
+  {.name = "--memory", .arg = "SIZE", .dflt = DFLT, .help = H, .kind = CLI_CALL, \
+   .off = CLI_AT(T, F, uint64_t), .def = DEF, .call = cli_option_memory}
+int cli_option_memory(const char *cmd, const cli_option *o, const char *v, void *dst);
 /* --format into a report_format (default DEF), BAD the error for an unknown one. */
 #define CLI_OPT_FORMAT(D, H, DEF, BAD, T, F) \
   {.name = "--format", .arg = "F", .dflt = D, .help = H, .kind = CLI_CALL, \
@@ -207,6 +215,7 @@ typedef struct cli_progress {
   double t0;            /* start, seconds */
   double last;          /* last redraw, seconds */
   const char *label;
+  int open;             /* the total grows as the run goes (set after start): no ETA */
 } cli_progress;
 
 void cli_progress_start(cli_progress *p, const char *label);

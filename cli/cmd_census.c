@@ -21,7 +21,7 @@
 #define CLI_CENSUS_MAX_SAMPLES 1000000000000ull   /* 1e12 */
 
 typedef struct cli_census_opts {
-  uint64_t sites, samples, seed, threads;
+  uint64_t sites, samples, seed, threads, memory;
   cli_shard shard;
   int sampler;
   double tie_eps;
@@ -33,7 +33,7 @@ typedef struct cli_census_opts {
 #define CLI_CENSUS_STR2(x) #x
 #define T cli_census_opts
 static const cli_option cli_census_help[] = {
-  {.name = "--sites", .arg = "N", .help = "sites per set, 3 to 12", .kind = CLI_U64,
+  {.name = "--sites", .arg = "N", .help = "sites per set, 3 to 16", .kind = CLI_U64,
    .off = CLI_AT(T, sites, uint64_t), .lo = 3, .hi = SITEFLIP_MAX_SITES, .def = 6,
    .bad = "--sites %s: the census enumerates every triangulation, so it takes 3 to "
           CLI_CENSUS_STR(SITEFLIP_MAX_SITES) " sites"},
@@ -53,6 +53,9 @@ static const cli_option cli_census_help[] = {
   CLI_OPT_STRING("--rules", "R", "none",
                  "instead of --measures: a comma list of rules (e.g. R_1,DT)", T, rules),
   CLI_OPT_THREADS("threads; the table does not depend on T", T, threads),
+  CLI_OPT_MEMORY("1G", SITEFLIP_MEMORY_DEFAULT,
+                 "memory budget of each set's flip graph (K, M, G: KiB, MiB,\n"
+                 "                     GiB; each thread holds one graph)", T, memory),
   CLI_OPT_SHARD("only samples [floor((K-1)S/N), floor(KS/N)); fliplab merge\n"
                 "                     sums the shards' CSVs into the unsharded CSV, byte for byte",
                 T, shard),
@@ -68,7 +71,8 @@ static const cli_spec cli_census_spec = {
   "Table 3.4 for any small site set: enumerate every triangulation of random sets\n"
   "of N sites, direct their flip graphs by each rule and count one sink, sink = DT,\n"
   "two or more sinks, no sink, tie; the mean and largest number of sinks; the mean\n"
-  "gap of the worst sink to the GOT (triangle-based rules; docs/sitesets.md).\n",
+  "gap of the worst sink to the GOT (triangle-based rules; docs/sitesets.md).\n"
+  "A set whose flip graph outgrows --memory stops the run (exit 2).\n",
   cli_census_help, CLI_NOPTS(cli_census_help), NULL};
 
 /* 0, 1 after --help, 2 after an error.  --measures table34 unless given. */
@@ -125,11 +129,12 @@ int cli_cmd_census(int argc, char **argv) {
   if (count > 0) {
     cli_progress prog;
     cli_progress_start(&prog, CMD);
+    int over;
     int t = siteflip_census(rules, nrules, o.sampler, (int)o.sites, o.seed, first, count,
-                            o.tie_eps, (int)o.threads, counts, cli_progress_update, &prog,
-                            err, sizeof err);
+                            o.tie_eps, (int)o.threads, (size_t)o.memory, counts,
+                            cli_progress_update, &prog, &over, err, sizeof err);
     cli_progress_finish(&prog);
-    rc = 1;
+    rc = t != 0 && over ? 2 : 1;
     if (t != 0) {
       cli_error(CMD, "%s", err);
       goto done;

@@ -4,6 +4,7 @@
 ** that graph says: sinks (the LOTs), sources, ties, cycles, whether the
 ** sink is the Delaunay triangulation, the GOT by brute force.
 */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
@@ -16,6 +17,7 @@
 typedef struct cli_flipgraph_opts {
   const char *rule, *points, *svg, *out;
   double tie_eps;
+  uint64_t memory;
 } cli_flipgraph_opts;
 
 #define T cli_flipgraph_opts
@@ -27,17 +29,20 @@ static const cli_option cli_flipgraph_help[] = {
   CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
                "draw the directed flip graph (at most 64 triangulations)", T, svg),
   CLI_OPT_TIE_EPS("relative tie tolerance of the rule", 1, T, tie_eps),
+  CLI_OPT_MEMORY("1G", SITEFLIP_MEMORY_DEFAULT,
+                 "memory budget of the flip graph (K, M, G: KiB, MiB, GiB;\n"
+                 "                     about 200 bytes per triangulation)", T, memory),
   CLI_OPT_OUT("FILE", "stdout", NULL, "write the report to FILE", T, out),
 };
 #undef T
 
 static const cli_spec cli_flipgraph_spec = {
   CMD, "usage: fliplab flipgraph --rule RULE --points FILE.csv [options]",
-  "Enumerate every triangulation of a set of 3 to 12 sites (any position, convex\n"
-  "or not), direct the flip graph by RULE and report: triangulations, flip edges,\n"
-  "sinks (the LOTs; triangles as 1-based site numbers), sources, ties, cycle,\n"
-  "sink is DT, GOT (triangle-based rules, by brute force) and the worst sink's\n"
-  "relative gap to it (docs/sitesets.md).\n",
+  "Enumerate every triangulation of a set of 3 to 16 sites (any position, convex\n"
+  "or not) whose flip graph fits --memory, direct the graph by RULE and report:\n"
+  "triangulations, flip edges, sinks (the LOTs; triangles as 1-based site\n"
+  "numbers), sources, ties, cycle, sink is DT, GOT (triangle-based rules, by\n"
+  "brute force) and the worst sink's relative gap to it (docs/sitesets.md).\n",
   cli_flipgraph_help, CLI_NOPTS(cli_flipgraph_help), NULL};
 
 /* 0, 1 after --help, 2 after an error. */
@@ -109,8 +114,14 @@ int cli_cmd_flipgraph(int argc, char **argv) {
   geom_point *p;
   size_t n;
   if (report_points_read(o.points, &p, NULL, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
-  /* siteflip_check refuses more than 12 sites before reading any. */
-  siteflip_graph *g = siteflip_build(p, n > 1000000 ? 1000000 : (int)n, err, sizeof err);
+  /* siteflip_check refuses more than 16 sites before reading any. */
+  cli_progress prog;
+  cli_progress_start(&prog, CMD " enumerating");
+  prog.open = 1;
+  siteflip_limits lim = {(size_t)o.memory, cli_progress_update, &prog};
+  siteflip_graph *g = siteflip_build_within(p, n > 1000000 ? 1000000 : (int)n, &lim, NULL, err,
+                                            sizeof err);
+  cli_progress_finish(&prog);
   free(p);
   if (g == NULL) return cli_error(CMD, "%s: %s", o.points, err);
   rule_choice *dec = malloc(((size_t)g->nquads + 1) * sizeof *dec);

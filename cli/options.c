@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "geom.h"
 #include "report.h"
 #include "rule.h"
 
@@ -88,6 +89,30 @@ int cli_option_shard(const char *cmd, const cli_option *o, const char *v, void *
     return 0;
   }
   return cli_parse_shard(cmd, v, &s->k, &s->n) != 0 ? 2 : 0;
+}
+
+/* "512M" -> 512 * 2^20: the digits (cli_parse_u64's), then one unit. */
+int cli_option_memory(const char *cmd, const cli_option *o, const char *v, void *dst) {
+  static const char units[] = "KMGT";
+  if (v == NULL) {
+    *(uint64_t *)dst = o->def;
+    return 0;
+  }
+  char num[32];
+  size_t len = strlen(v);
+  const char *u = len > 0 ? strchr(units, v[len - 1]) : NULL;
+  int shift = u != NULL && *u != '\0' ? 10 * (int)(u - units + 1) : 0;
+  if (shift > 0) len--;
+  uint64_t n, max = CLI_MEMORY_MAX >> shift;
+  if (len == 0 || len >= sizeof num || strspn(v, "0123456789") != len)
+    return cli_error(cmd, "--memory expects a size such as 1G, 512M or 65536 (bytes), got '%s'",
+                     v);
+  memcpy(num, v, len);
+  num[len] = '\0';
+  if (geom_count_parse(num, len, &n) != 0 || n < 1 || n > max)
+    return cli_error(cmd, "--memory %s is out of range [1, 1T]", v);
+  *(uint64_t *)dst = n << shift;
+  return 0;
 }
 
 int cli_option_format(const char *cmd, const cli_option *o, const char *v, void *dst) {

@@ -22,6 +22,7 @@ void cli_progress_start(cli_progress *p, const char *label) {
   p->shown = 0;
   p->t0 = p->last = cli_progress_now();
   p->label = label;
+  p->open = 0;
 }
 
 void cli_progress_update(uint64_t done, uint64_t total, void *ctx) {
@@ -37,8 +38,12 @@ void cli_progress_update(uint64_t done, uint64_t total, void *ctx) {
   for (int i = 0; i < CLI_PROGRESS_WIDTH; i++) bar[i] = i < fill ? '#' : '.';
   bar[CLI_PROGRESS_WIDTH] = '\0';
   double eta = frac > 0 ? el * (1 - frac) / frac : 0;
-  fprintf(stderr, "\r%s [%s] %5.1f%%  %llu/%llu  %.0fs left ", p->label, bar, 100 * frac,
-          (unsigned long long)done, (unsigned long long)total, eta);
+  if (p->open)
+    fprintf(stderr, "\r%s [%s] %llu/%llu  %.0fs ", p->label, bar, (unsigned long long)done,
+            (unsigned long long)total, el);
+  else
+    fprintf(stderr, "\r%s [%s] %5.1f%%  %llu/%llu  %.0fs left ", p->label, bar, 100 * frac,
+            (unsigned long long)done, (unsigned long long)total, eta);
   fflush(stderr);
 }
 

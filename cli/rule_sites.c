@@ -63,9 +63,13 @@ int cli_rule_sites_check(const char *spec) {
 static void cli_sites_words(char *buf, size_t len, const cli_site_spec *s) {
   static const char *const gon[] = {"", "", "", "triangles", "quadrilaterals", "pentagons",
                                     "hexagons", "heptagons", "octagons", "nonagons",
-                                    "decagons", "11-gons", "12-gons"};
+                                    "decagons", "11-gons", "12-gons", "13-gons", "14-gons",
+                                    "15-gons", "16-gons"};
   static const char *const num[] = {"", "", "", "three", "four", "five", "six", "seven",
-                                    "eight", "nine", "ten", "eleven", "twelve"};
+                                    "eight", "nine", "ten", "eleven", "twelve", "thirteen",
+                                    "fourteen", "fifteen", "sixteen"};
+  _Static_assert(sizeof gon / sizeof *gon == SITEFLIP_MAX_SITES + 1, "a name per site count");
+  _Static_assert(sizeof num / sizeof *num == SITEFLIP_MAX_SITES + 1, "a name per site count");
   if (s->sampler == SAMPLER_SITES_CONVEX) snprintf(buf, len, "convex %s", gon[s->n]);
   else snprintf(buf, len, "%s-site %s sets", num[s->n], sampler_sites_name(s->sampler));
 }
@@ -118,8 +122,8 @@ static int cli_sites_one(const rule *r, const cli_site_spec *s, uint64_t samples
                          double tie_eps, int threads, const char *svg_dir) {
   siteflip_counts c = {0};
   char err[256], what[64];
-  if (siteflip_census(r, 1, s->sampler, s->n, seed, 0, samples, tie_eps, threads, &c, NULL,
-                      NULL, err, sizeof err) != 0)
+  if (siteflip_census(r, 1, s->sampler, s->n, seed, 0, samples, tie_eps, threads, 0, &c,
+                      NULL, NULL, NULL, err, sizeof err) != 0)
     return cli_error("rule", "%s", err), 1;
   cli_sites_words(what, sizeof what, s);
   unsigned long long m = c.samples, decided = c.samples - c.tie;

@@ -62,7 +62,7 @@ void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 /* The iteration method for convex n-gons, 3 <= n < SAMPLER_HULL_MAX:
 ** sample `index` of stream `seed`, anticlockwise from the lexicographically
 ** smallest vertex.  For n = 5 it is sampler_pentagon, draw for draw. */
-#define SAMPLER_HULL_MAX 16
+#define SAMPLER_HULL_MAX 17   /* the census's 16 sites (SITEFLIP_MAX_SITES) */
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v);
 
 /* Site sets for the census (pentagon/sites.c).  SAMPLER_SITES_CONVEX is

@@ -52,7 +52,7 @@ static void tc_census_eps(const rule *rules, int nr, int kind, int n, uint64_t f
                           uint64_t count, int threads, double eps, siteflip_counts *c) {
   char err[256];
   memset(c, 0, (size_t)nr * sizeof *c);
-  if (siteflip_census(rules, nr, kind, n, 3, first, count, eps, threads, c, NULL, NULL, err,
+  if (siteflip_census(rules, nr, kind, n, 3, first, count, eps, threads, 0, c, NULL, NULL, NULL, err,
                       sizeof err) != 0)
     fail_msg("siteflip_census: %s", err);
 }
@@ -255,7 +255,7 @@ static void test_census_rule_order(void **state) {
     /* Adding 400 more samples to a's counts gives the census of 800. */
     char err[256];
     assert_int_equal(siteflip_census(rules, nr, kind, 6, 3, 400, 400, RULE_DEFAULT_TIE_EPS, 1,
-                                     a, NULL, NULL, err, sizeof err), 0);
+                                     0, a, NULL, NULL, NULL, err, sizeof err), 0);
     tc_census(rules, nr, kind, 6, 0, 800, 2, b);
     for (int r = 0; r < nr; r++) {
       assert_int_equal(a[r].samples, 800);
@@ -269,15 +269,51 @@ static void test_census_rule_order(void **state) {
   free(rules);
 }
 
+/* Sets of 13 and 14 sites (random 16-site sets often have millions of
+** triangulations): the same counts for one thread and two, each
+** set within the budget; a budget too small for them stops the census with
+** the set named and *over. */
+static void test_census_large_sets(void **state) {
+  (void)state;
+  rule rs[3];
+  char err[4096];
+  rs[0] = rule_delaunay();
+  assert_int_equal(rule_parse("R_1", &rs[1], err, sizeof err), 0);
+  assert_int_equal(rule_parse("P_inf", &rs[2], err, sizeof err), 0);
+  for (int n = 13; n <= 14; n++) {
+    siteflip_counts a[3], b[3];
+    uint64_t count = 3;
+    memset(a, 0, sizeof a);
+    memset(b, 0, sizeof b);
+    int over = -1;
+    if (siteflip_census(rs, 3, SAMPLER_SITES_DISC, n, 5, 0, count, 1e-12, 1, 0, a, NULL, NULL,
+                        &over, err, sizeof err) != 0)
+      fail_msg("%d sites: %s", n, err);
+    assert_int_equal(over, 0);
+    assert_int_equal(siteflip_census(rs, 3, SAMPLER_SITES_DISC, n, 5, 0, count, 1e-12, 2, 0, b,
+                                     NULL, NULL, NULL, err, sizeof err), 0);
+    assert_memory_equal(a, b, sizeof a);
+    assert_int_equal(a[0].samples, count);
+    assert_int_equal(a[0].one_sink + a[0].tie, count);   /* DT: one sink */
+  }
+  siteflip_counts c[3] = {{0}};
+  int over = 0;
+  assert_int_not_equal(siteflip_census(rs, 3, SAMPLER_SITES_DISC, 14, 5, 0, 8, 1e-12, 2, 65536,
+                                       c, NULL, NULL, &over, err, sizeof err), 0);
+  assert_int_equal(over, 1);
+  assert_non_null(strstr(err, "set #"));
+  assert_non_null(strstr(err, "memory budget of 64 KiB"));
+}
+
 static void test_census_bad_args(void **state) {
   (void)state;
   rule r = rule_delaunay();
   siteflip_counts c = {0};
   char err[256];
-  assert_int_not_equal(siteflip_census(&r, 1, 17, 6, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
+  assert_int_not_equal(siteflip_census(&r, 1, 17, 6, 1, 0, 10, 1e-12, 1, 0, &c, NULL, NULL, NULL, err, sizeof err), 0);
   assert_non_null(strstr(err, "unknown sampler"));
-  assert_int_not_equal(siteflip_census(&r, 1, SAMPLER_SITES_DISC, 13, 1, 0, 10, 1e-12, 1, &c, NULL, NULL, err, sizeof err), 0);
-  assert_non_null(strstr(err, "3 to 12"));
+  assert_int_not_equal(siteflip_census(&r, 1, SAMPLER_SITES_DISC, 17, 1, 0, 10, 1e-12, 1, 0, &c, NULL, NULL, NULL, err, sizeof err), 0);
+  assert_non_null(strstr(err, "3 to 16"));
   assert_int_equal(c.samples, 0);
 }
 
@@ -331,6 +367,7 @@ int main(void) {
     cmocka_unit_test(test_census_pentagons_are_table34),
     cmocka_unit_test(test_census_threads),
     cmocka_unit_test(test_census_rule_order),
+    cmocka_unit_test(test_census_large_sets),
     cmocka_unit_test(test_census_bad_args),
     cmocka_unit_test(test_census_shard_range),
   };

@@ -179,24 +179,51 @@ static void test_bad_input_cli(void **state) {
   testutil_write_file(dup, "x,y\n0,0\n1,0\n0,1\n1,0\n");
   testutil_write_file(col, "0,0\n1,1\n2,2\n3,3\n");
   char text[1024] = "x,y\n";
-  for (int i = 0; i < 13; i++) snprintf(text + strlen(text), 40, "%d,%d\n", i, i * i);
+  for (int i = 0; i < 17; i++) snprintf(text + strlen(text), 40, "%d,%d\n", i, i * i);
   testutil_write_file(many, text);
   snprintf(args, sizeof args, "flipgraph --rule R_1 --points %s", dup);
   tcc_refused(args, "sites 2 and 4 are equal");
   snprintf(args, sizeof args, "flipgraph --rule R_1 --points %s", col);
   tcc_refused(args, "collinear");
   snprintf(args, sizeof args, "flipgraph --rule R_1 --points %s", many);
-  tcc_refused(args, "limited to 12");
+  tcc_refused(args, "at most 16 sites");
   snprintf(args, sizeof args, "flipgraph --rule Q_1 --points %s", dup);
   tcc_refused(args, "unknown measure 'Q'");
   tcc_refused("flipgraph --rule R_1", "--points");
   tcc_refused("census --sampler hexagonal", "unknown sampler 'hexagonal'");
-  tcc_refused("census --sites 13", "3 to 12 sites");
-  tcc_refused("census --sites 2", "3 to 12 sites");
+  tcc_refused("census --sites 17", "3 to 16 sites");
+  tcc_refused("census --sites 2", "3 to 16 sites");
   tcc_refused("census --sites x", "--sites expects a non-negative integer");   /* once */
   tcc_refused("census --samples 0", "--samples 0 is out of range");
   tcc_refused("census --rules R_1,nope_1", "unknown measure 'nope'");
   tcc_refused("census --shard 4/3", "--shard");
+}
+
+/* The 4 x 4 grid (16 sites, 46 456 triangulations) within the default
+** budget; a tiny --memory stops with one line and exit 2, as does a census
+** whose sets outgrow it; bad sizes are refused. */
+static void test_memory_cli(void **state) {
+  (void)state;
+  char grid[512], args[1200];
+  testutil_tmppath(grid, sizeof grid, "tcc_grid4.csv");
+  char text[512] = "x,y\n";
+  for (int i = 0; i < 16; i++) snprintf(text + strlen(text), 40, "%d,%d\n", i % 4, i / 4);
+  testutil_write_file(grid, text);
+  assert_int_equal(testutil_runf(tcc_out, TCC_BUF, tcc_err, TCC_BUF,
+                                 "flipgraph --rule DT --points %s", grid), 0);
+  assert_non_null(strstr(tcc_out, "sites: 16\n"));
+  assert_non_null(strstr(tcc_out, "triangulations: 46456\n"));
+  snprintf(args, sizeof args, "flipgraph --rule DT --points %s --memory 1M", grid);
+  tcc_refused(args, "outgrows the memory budget of 1 MiB");
+  assert_non_null(strstr(tcc_err, "triangulations found before it ran out"));
+  tcc_refused("census --sites 14 --sampler disc --samples 4 --memory 64K",
+              "set #0: the flip graph of 14 sites outgrows the memory budget of 64 KiB");
+  tcc_refused("census --sites 6 --memory 0", "--memory 0 is out of range");
+  tcc_refused("census --sites 6 --memory 2T", "--memory 2T is out of range");
+  tcc_refused("census --sites 6 --memory 1.5G", "--memory expects a size");
+  tcc_refused("census --sites 6 --memory G", "--memory expects a size");
+  assert_int_equal(testutil_run("census --sites 5 --samples 10 --memory 64M", tcc_out, TCC_BUF,
+                                tcc_err, TCC_BUF), 0);
 }
 
 /* fliplab rule catches -R_1 on five-site sets with a figure-3.8 witness
@@ -252,7 +279,7 @@ static void test_rule_catches_neg_R(void **state) {
                                 tcc_out, TCC_BUF, tcc_err, TCC_BUF), 0);
   assert_non_null(strstr(tcc_out, "no counterexample to systematicity in 1000 five-site disc sets"));
   assert_non_null(strstr(tcc_out, "no counterexample to systematicity in 1000 convex hexagons"));
-  tcc_refused("rule R_1 --sites disc:13", "--sites N");
+  tcc_refused("rule R_1 --sites disc:17", "--sites N");
   tcc_refused("rule R_1 --sites blob:5", "unknown sampler 'blob'");
 }
 
@@ -302,6 +329,7 @@ int main(void) {
     cmocka_unit_test(test_census_pentagons_cli),
     cmocka_unit_test(test_census_bytes),
     cmocka_unit_test(test_bad_input_cli),
+    cmocka_unit_test(test_memory_cli),
     cmocka_unit_test(test_rule_catches_neg_R),
     cmocka_unit_test(test_merge_census_sinks),
   };

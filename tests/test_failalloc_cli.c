@@ -42,6 +42,7 @@ static const char *const tf_cmds[] = {
   "classify --input %1$s/pent.csv --rule R_inf --rule DT --out %1$s/out.csv",
   "got --rule P_1 --random 7 --csv %1$s/out.csv --svg %1$s/plot.svg --compare DT",
   "got --rule R_inf --polygon %1$s/poly.csv",
+  "flipgraph --rule R_1 --points %1$s/poly.csv --memory 64K",
   "got --rule P_1 --random 6 --sampler star",
   "rule R_inf --samples 40 --quads 40",
   "--define 'q = a*b' table34 --measures q --samples 5 --format csv",

@@ -44,8 +44,8 @@ static rule tsf_rule(const char *name) {
 static void test_catalan(void **state) {
   (void)state;
   long cat[13] = {1, 1, 2, 5, 14, 42, 132, 429, 1430, 4862, 16796, 58786, 208012};
-  for (int n = 3; n <= 12; n++) {
-    geom_point p[12];
+  for (int n = 3; n <= 14; n++) {
+    geom_point p[14];
     sampler_convex(7, (uint64_t)n, n, p);
     siteflip_graph *g = tsf_build(p, n);
     assert_int_equal(g->nnodes, cat[n - 2]);
@@ -178,6 +178,253 @@ static void test_brute_force(void **state) {
   }
   print_message("300 integer site sets, %d with collinear triples\n", collinear_sets);
   assert_true(collinear_sets > 50);
+}
+
+
+/* ---- beyond 12 sites --------------------------------------------------- */
+
+/* A second independent count, by triangles instead of segments and flips
+** (an advancing front): the open directed edge of least index (the region
+** to its left not yet covered) gets its one triangle, any empty triangle
+** to its left whose directed sides are unused and whose new sides cross no
+** placed edge.  Hull edges start open; the outside of a hull edge never
+** opens.  Every triangulation is reached once, by the triangles it has on
+** the edges chosen.  Integer sites, exact orientation. */
+#define TSF_FR_MAX 16
+typedef struct tsf_front {
+  int n;
+  long long x[TSF_FR_MAX], y[TSF_FR_MAX];
+  unsigned char used[TSF_FR_MAX][TSF_FR_MAX];    /* a triangle lies left of i->j */
+  unsigned char hull[TSF_FR_MAX][TSF_FR_MAX];    /* i->j is a hull edge (interior left) */
+  unsigned char empty[TSF_FR_MAX][TSF_FR_MAX][TSF_FR_MAX];   /* ijk anticlockwise, empty */
+  long count;
+} tsf_front;
+
+static int tsf_fr_orient(const tsf_front *f, int i, int j, int k) {
+  long long d = (f->x[j] - f->x[i]) * (f->y[k] - f->y[i]) - (f->y[j] - f->y[i]) * (f->x[k] - f->x[i]);
+  return (d > 0) - (d < 0);
+}
+
+/* k on the closed segment ij (collinear and inside its box) */
+static int tsf_fr_on(const tsf_front *f, int i, int j, int k) {
+  if (tsf_fr_orient(f, i, j, k) != 0) return 0;
+  return (f->x[k] - f->x[i]) * (f->x[k] - f->x[j]) <= 0 && (f->y[k] - f->y[i]) * (f->y[k] - f->y[j]) <= 0;
+}
+
+static int tsf_fr_cross(const tsf_front *f, int a, int b, int c, int d) {
+  if (a == c || a == d || b == c || b == d) return 0;
+  return tsf_fr_orient(f, a, b, c) * tsf_fr_orient(f, a, b, d) < 0 &&
+         tsf_fr_orient(f, c, d, a) * tsf_fr_orient(f, c, d, b) < 0;
+}
+
+static int tsf_fr_blocked(const tsf_front *f, int p, int q) {
+  for (int x = 0; x < f->n; x++)
+    for (int y = x + 1; y < f->n; y++)
+      if ((f->used[x][y] || f->used[y][x]) && tsf_fr_cross(f, p, q, x, y)) return 1;
+  return 0;
+}
+
+static void tsf_fr_walk(tsf_front *f) {
+  int a = -1, b = -1;
+  for (int i = 0; i < f->n && a < 0; i++)
+    for (int j = 0; j < f->n && a < 0; j++)
+      if (!f->used[i][j] && (f->hull[i][j] || (f->used[j][i] && !f->hull[j][i]))) {
+        a = i;
+        b = j;
+      }
+  if (a < 0) {
+    f->count++;
+    return;
+  }
+  for (int c = 0; c < f->n; c++) {
+    if (c == a || c == b || !f->empty[a][b][c] || f->used[b][c] || f->used[c][a]) continue;
+    if (tsf_fr_blocked(f, b, c) || tsf_fr_blocked(f, c, a)) continue;
+    f->used[a][b] = f->used[b][c] = f->used[c][a] = 1;
+    tsf_fr_walk(f);
+    f->used[a][b] = f->used[b][c] = f->used[c][a] = 0;
+  }
+}
+
+static long tsf_front_count(const geom_point *p, int n) {
+  tsf_front *f = calloc(1, sizeof *f);
+  f->n = n;
+  for (int i = 0; i < n; i++) {
+    f->x[i] = (long long)p[i].x;
+    f->y[i] = (long long)p[i].y;
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) {
+      int hull = i != j;
+      for (int k = 0; k < n && hull; k++)
+        if (k != i && k != j) hull = tsf_fr_orient(f, i, j, k) > 0 || (tsf_fr_orient(f, i, j, k) == 0 && !tsf_fr_on(f, i, j, k));
+      f->hull[i][j] = (unsigned char)hull;
+      for (int k = 0; k < n; k++) {
+        int e = i != j && k != i && k != j && tsf_fr_orient(f, i, j, k) > 0;
+        for (int m = 0; m < n && e; m++)
+          if (m != i && m != j && m != k)
+            e = !(tsf_fr_orient(f, i, j, m) >= 0 && tsf_fr_orient(f, j, k, m) >= 0 && tsf_fr_orient(f, k, i, m) >= 0);
+        f->empty[i][j][k] = (unsigned char)e;
+      }
+    }
+  tsf_fr_walk(f);
+  long c = f->count;
+  free(f);
+  return c;
+}
+
+static void tsf_grid(geom_point *p, int w, int h) {
+  for (int j = 0; j < h; j++)
+    for (int i = 0; i < w; i++) p[j * w + i] = (geom_point){i, j};
+}
+
+/* Two chains of m sites each, bent towards each other, anticlockwise:
+** the lower one left to right, the upper one right to left. */
+static void tsf_double_chain(geom_point *p, int m) {
+  for (int i = 0; i < m; i++) {
+    p[i] = (geom_point){10 * i, i * (m - 1 - i)};
+    p[2 * m - 1 - i] = (geom_point){10 * i, 100 - i * (m - 1 - i)};
+  }
+}
+
+static void test_grids_front(void **state) {
+  (void)state;
+  /* the k x k grids: 1, 2, 64, 46 456 triangulations (and 3 x 4) */
+  long want[5] = {0, 1, 2, 64, 46456};
+  for (int k = 2; k <= 4; k++) {
+    geom_point p[16];
+    tsf_grid(p, k, k);
+    siteflip_graph *g = tsf_build(p, k * k);
+    assert_int_equal(g->nnodes, want[k]);
+    assert_int_equal(tsf_front_count(p, k * k), want[k]);
+    siteflip_free(g);
+  }
+  geom_point p[16];
+  tsf_grid(p, 3, 4);
+  siteflip_graph *g = tsf_build(p, 12);
+  assert_int_equal(g->nnodes, tsf_front_count(p, 12));
+  print_message("3 x 4 grid: %d triangulations\n", g->nnodes);
+  siteflip_free(g);
+  /* the 12-site double chain, and random integer sets of 10 to 13 sites */
+  tsf_double_chain(p, 6);
+  g = tsf_build(p, 12);
+  assert_int_equal(g->nnodes, tsf_front_count(p, 12));
+  siteflip_free(g);
+  testutil_rng r = {77};
+  for (int s = 0; s < 12; s++) {
+    int n = 10 + s % 4;
+    char err[256];
+    do
+      for (int i = 0; i < n; i++)
+        p[i] = (geom_point){(double)(testutil_next(&r) % 9), (double)(testutil_next(&r) % 9)};
+    while (siteflip_check(p, n, err, sizeof err) != 0);
+    g = tsf_build(p, n);
+    assert_int_equal(g->nnodes, tsf_front_count(p, n));
+    siteflip_free(g);
+  }
+}
+
+static int tsf_or(geom_point a, geom_point b, geom_point c) {
+  long long d = ((long long)b.x - (long long)a.x) * ((long long)c.y - (long long)a.y) -
+                ((long long)b.y - (long long)a.y) * ((long long)c.x - (long long)a.x);
+  return (d > 0) - (d < 0);
+}
+
+/* Is i-k a side or a diagonal inside the simple polygon q[0..m-1]
+** (integer, no three vertices collinear): no proper crossing with a side,
+** and its midpoint inside (crossing number, exact). */
+static int tsf_poly_diag(const geom_point *q, int m, int i, int k) {
+  if (k == i + 1 || (i == 0 && k == m - 1)) return 1;
+  geom_point mid2 = {q[i].x + q[k].x, q[i].y + q[k].y};
+  int inside = 0;
+  for (int e = 0; e < m; e++) {
+    int f = (e + 1) % m;
+    if (e != i && e != k && f != i && f != k && tsf_or(q[e], q[f], q[i]) * tsf_or(q[e], q[f], q[k]) < 0 &&
+        tsf_or(q[i], q[k], q[e]) * tsf_or(q[i], q[k], q[f]) < 0)
+      return 0;
+    geom_point a = {2 * q[e].x, 2 * q[e].y}, b = {2 * q[f].x, 2 * q[f].y};
+    if ((a.y > mid2.y) != (b.y > mid2.y)) inside ^= b.y > a.y ? tsf_or(a, b, mid2) > 0 : tsf_or(a, b, mid2) < 0;
+  }
+  return inside;
+}
+
+/* The interval recursion: T(i, j) = sum over k of T(i, k) T(k, j). */
+static long long tsf_poly_count(const geom_point *q, int m) {
+  static long long T[TSF_FR_MAX][TSF_FR_MAX];
+  for (int len = 1; len < m; len++)
+    for (int i = 0; i + len < m; i++) {
+      int j = i + len;
+      T[i][j] = len == 1;
+      for (int k = i + 1; k < j; k++)
+        if (tsf_poly_diag(q, m, i, k) && tsf_poly_diag(q, m, k, j)) T[i][j] += T[i][k] * T[k][j];
+    }
+  return T[0][m - 1];
+}
+
+/* Every chain edge is in every triangulation of a double chain (a segment
+** crossing one would join the pocket between a chain and its hull edge to
+** the polygon between the chains, and no site lies outside both), so the
+** count is Catalan(m-2)^2 (the two convex pockets) times the triangulations
+** of the polygon the chains bound. */
+static void test_double_chain(void **state) {
+  (void)state;
+  const long long cat[6] = {1, 1, 2, 5, 14, 42};
+  for (int m = 6; m <= 7; m++) {
+    geom_point p[14];
+    tsf_double_chain(p, m);
+    long long want = cat[m - 2] * cat[m - 2] * tsf_poly_count(p, 2 * m);
+    siteflip_graph *g = tsf_build(p, 2 * m);
+    assert_int_equal(g->nnodes, want);
+    print_message("double chain of %d sites: %d triangulations\n", 2 * m, g->nnodes);
+    siteflip_free(g);
+  }
+}
+
+typedef struct tsf_prog { uint64_t calls, last_done, last_total; int backwards; } tsf_prog;
+
+static void tsf_progress(uint64_t done, uint64_t total, void *ctx) {
+  tsf_prog *pr = ctx;
+  pr->backwards |= done < pr->last_done || done > total;
+  pr->calls++;
+  pr->last_done = done;
+  pr->last_total = total;
+}
+
+/* The budget: a graph within it is the same graph whatever the budget
+** (progress reported up to done == total == nodes); past it, NULL with
+** the count found and *over; below the context's own bytes, 0 found. */
+static void test_memory_budget(void **state) {
+  (void)state;
+  geom_point p[16];
+  tsf_grid(p, 4, 4);
+  char err[256];
+  int over = -1;
+  tsf_prog pr = {0};
+  siteflip_limits big = {SITEFLIP_MEMORY_DEFAULT, tsf_progress, &pr}, snug = {64u << 20, NULL, NULL};
+  siteflip_graph *a = siteflip_build_within(p, 16, &big, &over, err, sizeof err);
+  siteflip_graph *b = siteflip_build_within(p, 16, &snug, &over, err, sizeof err);
+  assert_non_null(a);
+  assert_non_null(b);
+  assert_int_equal(over, 0);
+  assert_int_equal(a->nnodes, 46456);
+  assert_int_equal(b->nnodes, a->nnodes);
+  assert_int_equal(b->nedges, a->nedges);
+  assert_memory_equal(a->node, b->node, (size_t)a->nnodes * sizeof *a->node);
+  assert_memory_equal(a->edge, b->edge, (size_t)a->nedges * sizeof *a->edge);
+  assert_true(pr.calls >= 2 && !pr.backwards);
+  assert_true(pr.last_done == 46456 && pr.last_total == 46456);
+  siteflip_free(a);
+  siteflip_free(b);
+  siteflip_limits tight = {1u << 20, NULL, NULL}, tiny = {4096, NULL, NULL};
+  assert_null(siteflip_build_within(p, 16, &tight, &over, err, sizeof err));
+  assert_int_equal(over, 1);
+  assert_non_null(strstr(err, "outgrows the memory budget of 1 MiB"));
+  const char *k = strstr(err, "MiB: ");
+  assert_non_null(k);
+  long found = strtol(k + 5, NULL, 10);
+  assert_true(found > 100 && found < 46456);
+  assert_null(siteflip_build_within(p, 16, &tiny, &over, err, sizeof err));
+  assert_int_equal(over, 1);
+  assert_non_null(strstr(err, "budget of 4 KiB: 0 triangulations found"));
 }
 
 /* ---- directed graphs ------------------------------------------------------ */
@@ -318,10 +565,10 @@ static void test_bad_input(void **state) {
   geom_point line[4] = {{0, 0}, {1, 1}, {2, 2}, {5, 5}};
   assert_int_not_equal(siteflip_check(line, 4, err, sizeof err), 0);
   assert_non_null(strstr(err, "collinear"));
-  geom_point many[13];
-  for (int i = 0; i < 13; i++) many[i] = (geom_point){cos(i), sin(i)};
-  assert_null(siteflip_build(many, 13, err, sizeof err));
-  assert_non_null(strstr(err, "limited to 12"));
+  geom_point many[17];
+  for (int i = 0; i < 17; i++) many[i] = (geom_point){cos(i), sin(i)};
+  assert_null(siteflip_build(many, 17, err, sizeof err));
+  assert_non_null(strstr(err, "at most 16 sites"));
   geom_point nan_[3] = {{0, 0}, {NAN, 0}, {0, 1}};
   assert_int_not_equal(siteflip_check(nan_, 3, err, sizeof err), 0);
   assert_non_null(strstr(err, "site 2"));
@@ -333,6 +580,9 @@ int main(void) {
     cmocka_unit_test(test_catalan),
     cmocka_unit_test(test_quad_with_interior_site),
     cmocka_unit_test(test_brute_force),
+    cmocka_unit_test(test_grids_front),
+    cmocka_unit_test(test_double_chain),
+    cmocka_unit_test(test_memory_budget),
     cmocka_unit_test(test_figure_3_8),
     cmocka_unit_test(test_dt_equivalent),
     cmocka_unit_test(test_triangle_rules),
