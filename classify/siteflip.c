@@ -405,14 +405,15 @@ void siteflip_move_tris(siteflip_graph *g, const geom_point *p) {
     geom_tri_make(&g->tri[t], p[g->tri_v[t][0]], p[g->tri_v[t][1]], p[g->tri_v[t][2]]);
 }
 
-void siteflip_move(siteflip_graph *g, const geom_point *p) {
+int siteflip_move(siteflip_graph *g, const geom_point *p) {
   siteflip_move_tris(g, p);
   rule_choice *d = malloc(((size_t)g->nquads + 1) * sizeof *d);
-  g->delaunay = -1;   /* out of memory: as if not unique */
-  if (d == NULL) return;
+  g->delaunay = -1;
+  if (d == NULL) return -1;   /* never "as if DT were not unique": that is another answer */
   siteflip_dt_decisions(g, d);
   g->delaunay = siteflip_delaunay_of(g, d);
   free(d);
+  return 0;
 }
 
 static int siteflip_first(siteflip_ctx *c, siteflip_graph *g) {
@@ -499,9 +500,8 @@ siteflip_graph *siteflip_build_within(const geom_point *p, int n, const siteflip
     g->n = n;
     memcpy(g->p, p, (size_t)n * sizeof *p);
     siteflip_segments(c, p);
-    if (siteflip_fill(c, g) == 0) {
+    if (siteflip_fill(c, g) == 0 && siteflip_move(g, p) == 0) {
       siteflip_ctx_free(c);
-      siteflip_move(g, p);
       return g;
     }
   }

@@ -97,8 +97,9 @@ void siteflip_free(siteflip_graph *g);
 
 /* Move g to new sites with the same order type (e.g. another convex n-gon
 ** labelled anticlockwise): the triangles and the Delaunay node are redone,
-** the shape is kept.  The caller guarantees the order type. */
-void siteflip_move(siteflip_graph *g, const geom_point *p);
+** the shape is kept.  The caller guarantees the order type.  0, or -1
+** when memory runs out (g is then not to be used). */
+int siteflip_move(siteflip_graph *g, const geom_point *p);
 
 /* Index of segment i-j (i != j) among the n(n-1)/2 segments; whether
 ** triangulation u has the edge i-j. */
