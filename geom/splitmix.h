@@ -34,7 +34,8 @@ static inline double geom_unit53(uint64_t bits) {
 ** either way.  Acceptance probability pi/4. */
 static inline int geom_disc_accept(double u, double v, geom_point *p) {
   double x = 2 * u - 1, y = 2 * v - 1;
-  *p = (geom_point){x, y};
+  p->x = x;   /* no compound literal: C++ (bench_lot_cgal.cpp) includes this header */
+  p->y = y;
   return x * x + y * y < 1;
 }
 
