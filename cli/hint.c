@@ -194,6 +194,7 @@ int cli_unknown_command(const char *name, const char *const *names, size_t n) {
 /* Extensions of formats a user might expect; fliplab writes only some. */
 static const char *const cli_known_ext[] = {
   "csv", "svg", "md", "txt", "png", "jpg", "jpeg", "pdf", "eps", "ps", "html", "json", "tsv",
+  "poly", "node", "ele",
 };
 
 static const char *cli_ext(const char *path) {

@@ -424,3 +424,10 @@ geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, siz
   }
   return GEOM_OK;
 }
+
+void geom_pslg_free(geom_pslg *g) {
+  free(g->pts);
+  free(g->seg);
+  free(g->hole);
+  *g = (geom_pslg){0};
+}

@@ -217,4 +217,20 @@ geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, siz
 int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d);
 const char *geom_polyerr_str(geom_polyerr e);
 
+/* A planar straight-line graph: points, segments between them (pairs of
+** 0-based point indices) and hole points, the input of a constrained
+** triangulation.  Made by the samplers (pentagon/), read and written as
+** Triangle's .poly files (reports/poly.c); every array malloc'ed. */
+typedef struct geom_pslg {
+  geom_point *pts;
+  size_t npts;
+  uint32_t *seg;          /* 2 per segment */
+  size_t nseg;
+  geom_point *hole;
+  size_t nholes;
+} geom_pslg;
+
+/* Free the arrays and zero the counts. */
+void geom_pslg_free(geom_pslg *g);
+
 #endif

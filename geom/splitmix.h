@@ -64,10 +64,18 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **                           sets of `lot --random`.
 **   GEOM_STREAM_BRIO        "brio": lot's biased randomised insertion order.
 **   GEOM_STREAM_RANDOM_ORDER "rand": lot's uniformly random insertion order.
+**   GEOM_STREAM_PSLG        "pslgraph": the graph samplers that make their own
+**                           points (polygons with holes, the rotated grid's
+**                           segments) of `sample --sampler holes|grid`.
+**   GEOM_STREAM_SEGMENTS    "segments": the segments sampler_segments draws
+**                           on a point set drawn from GEOM_STREAM_POINTS
+**                           (`sample --sampler segments`, the benchmark).
 ** One run never draws two of these from one seed under the same number:
 ** lot draws its points, then one order, and no samples; "points" (about
 ** 1.2e14) lies above every sample index anyway; got draws only its polygon
-** (stream 0, which is sample 0's stream of another command).
+** (stream 0, which is sample 0's stream of another command); the two graph
+** streams, above 2^62, are taken by `sample` alone and lie above every
+** sample index too.
 **
 ** Fixed generator states (no user seed):
 **   GEOM_STATE_FORMULA_SIGNS the splitmix64 counter of the sample triangles
@@ -84,6 +92,8 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 #define GEOM_STREAM_POINTS 0x706f696e7473ull          /* "points" */
 #define GEOM_STREAM_BRIO 0x6272696full                /* "brio" */
 #define GEOM_STREAM_RANDOM_ORDER 0x72616e64ull        /* "rand" */
+#define GEOM_STREAM_PSLG 0x70736c6772617068ull        /* "pslgraph" */
+#define GEOM_STREAM_SEGMENTS 0x7365676d656e7473ull    /* "segments" */
 #define GEOM_STATE_FORMULA_SIGNS 0x5EED5167ull
 #define GEOM_STATE_LOT_WALK 0x9e3779b97f4a7c15ull
 #define GEOM_STATE_LOT_SWEEP 0x5357454550ull                /* "SWEEP" */

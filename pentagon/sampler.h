@@ -116,4 +116,42 @@ extern const char sampler_points_names[];
 
 void sampler_points(sampler_points_kind k, uint64_t seed, size_t n, geom_point *out);
 
+/* ---- planar straight-line graphs (pentagon/pslg.c, docs/sampling.md) ----
+** Inputs of constrained triangulations.  In each, two segments meet only at
+** points of the graph (an end point of one of them), decided exactly. */
+
+/* A polygon with holes: an outer ring of nouter vertices (anticlockwise,
+** star-shaped from the origin, radii in [0.75, 1]) and nholes rings of m
+** vertices each (radius about 0.3 / sqrt(nholes), at most 0.2, centres in
+** the disc of radius 0.6), each hole strictly inside the outer ring, their
+** bounding boxes pairwise disjoint; out->hole[h] is hole h's centre,
+** strictly inside it.  Points: the outer ring, then each hole's; segments:
+** every ring's edges.  0, SAMPLER_ENOMEM, or -1 (nouter or m below 3, more
+** than SAMPLER_PSLG_MAX_HOLES holes, or the holes did not fit). */
+#define SAMPLER_PSLG_MAX_HOLES 100000
+int sampler_pslg_holes(sampler_rng *g, size_t nouter, size_t nholes, size_t m, geom_pslg *out);
+
+/* Up to m non-crossing segments on the points p[0..n): their bounding box
+** cut into c x c cells, c = ceil(sqrt(min(m, n / 4))) (so about n / c^2 >=
+** 4 points a cell, and some 3n / 4 candidates); in each cell, the segments from
+** its first point (input order) to each other point of the cell (equal
+** points and a second point in the same direction skipped, exactly); m of
+** those drawn uniformly.  Cells are disjoint convex sets, so segments of
+** two cells never meet; segments of one cell share only their first point.
+** A segment may pass through another point of its cell (which splits it).
+** seg gets 2 indices per segment, *got how many (fewer than m when there
+** are fewer candidates).  0 or SAMPLER_ENOMEM. */
+int sampler_segments(sampler_rng *g, const geom_point *p, size_t n, size_t m, uint32_t *seg,
+                     size_t *got);
+
+/* The first n points, row by row, of a square grid turned by atan(4/3):
+** (i, j) -> (3i - 4j, 4i + 3j), exact integers (so rows are exactly
+** collinear, and unit squares exactly cocircular); segments along its
+** lines: each piece between row neighbours is chosen with probability 1/2,
+** a run of chosen pieces being one segment through the points between;
+** each piece between column neighbours is a segment with probability 1/2.
+** 0, SAMPLER_ENOMEM, or -1 (n below 3 or above SAMPLER_PSLG_MAX_GRID). */
+#define SAMPLER_PSLG_MAX_GRID 0x3fffffffu
+int sampler_pslg_grid(sampler_rng *g, size_t n, geom_pslg *out);
+
 #endif

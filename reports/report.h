@@ -243,6 +243,33 @@ int report_census_add(report_census_row *acc, int nacc, const report_census_row 
 int report_points_read(const char *path, geom_point **out, uint64_t **lines, size_t *n,
                        char *err, size_t errlen);
 
+/* ---- Triangle's .poly files (reports/poly.c) ---- */
+
+/* A planar straight-line graph: vertices, segments (pairs of 0-based
+** vertex indices), hole points.  What the file had beyond that is counted,
+** not kept: per-vertex attributes, regional attribute / area lines. */
+typedef struct report_poly {
+  geom_pslg g;            /* segment endpoints 0-based and different */
+  uint64_t *seg_line;     /* each segment's 1-based file line */
+  size_t attributes;      /* attributes per vertex in the file (ignored) */
+  size_t regions;         /* regional attribute / area constraint lines (ignored) */
+  int first;              /* the file numbers its vertices from 0 or 1 */
+} report_poly;
+
+/* Read a .poly file (path "-": standard input), strictly (docs/formats.md):
+** exact field counts per line, consecutive vertex numbers from 0 or 1,
+** endpoints that name vertices, no segment from a vertex to itself,
+** coordinates (vertices, holes, regions) under the contract of geom.h, no
+** line beyond the last section, '#' comments anywhere.  A first line
+** announcing 0 vertices (a separate .node file) is refused.  Errors are one
+** line, "FILE line N: problem".  0 (free with report_poly_free), or -1. */
+int report_poly_read(const char *path, report_poly *out, char *err, size_t errlen);
+void report_poly_free(report_poly *p);
+/* Write g in the same format (vertices numbered from 0, no attributes or
+** markers, coordinates with %.17g so they read back bit for bit); 0, or -1
+** once the stream has an error. */
+int report_poly_write(FILE *f, const geom_pslg *g);
+
 /* ---- fliplab got (reports/csv_got.c, reports/svg_got.c) ---- */
 
 /* Read a polygon from CSV (path "-": standard input): one vertex per row

@@ -242,7 +242,8 @@ static void test_stream_registry(void **state) {
   (void)state;
   static const struct { uint64_t tag; const char *ascii; } tags[] = {
     {GEOM_STREAM_POINTS, "points"}, {GEOM_STREAM_BRIO, "brio"},
-    {GEOM_STREAM_RANDOM_ORDER, "rand"}};
+    {GEOM_STREAM_RANDOM_ORDER, "rand"}, {GEOM_STREAM_PSLG, "pslgraph"},
+    {GEOM_STREAM_SEGMENTS, "segments"}};
   for (size_t k = 0; k < sizeof tags / sizeof tags[0]; k++) {
     uint64_t v = 0;
     for (const char *c = tags[k].ascii; *c; c++) v = v << 8 | (unsigned char)*c;
