@@ -4,7 +4,9 @@
 ** flip algorithm (DT also by the sweepline algorithm); prints the counts, the status (converged, cycle, budget
 ** exhausted) and the time; optionally re-checks local optimality from
 ** scratch, compares with the Delaunay triangulation or (convex position)
-** the GOT, and writes the triangles as CSV and an SVG.
+** the GOT, and writes the triangles as CSV and an SVG.  --rule A,B,...
+** builds one LOT per rule of the same points: a block of lines each, and
+** one SVG panel each.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +21,13 @@
 
 #define CMD "lot"
 #define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
+
+/* One rule's triangles and their badness (a panel of a list's SVG). */
+typedef struct cli_lot_tri {
+  uint32_t *tri;
+  double *bad;
+  size_t ntri;
+} cli_lot_tri;
 
 typedef struct cli_lot_args {
   const char *rule, *points, *out, *svg, *cdf;
@@ -44,9 +53,12 @@ static int cli_lot_sampler(const char *cmd, const cli_option *o, const char *v, 
 
 #define T cli_lot_args
 static const cli_option cli_lot_opts[] = {
-  CLI_OPT_STRING("--rule", "RULE", "required",
-                 "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), a --define'd\n"
-                 "                     measure with a joint, or a --plugin quadrilateral rule",
+  CLI_OPT_STRING("--rule", "RULE,...", "required",
+                 "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), ES:SHAPE, a\n"
+                 "                     --define'd measure with a joint, or a --plugin\n"
+                 "                     quadrilateral rule; a comma list builds one LOT per\n"
+                 "                     rule (lines per rule, --svg one panel each; not\n"
+                 "                     with --out, --cdf, --shade)",
                  T, rule),
   CLI_OPT_STRING("--points", "FILE.csv", "none: give --points or --random",
                  "CSV, one point 'x,y' per row (optional header 'x,y');\n"
@@ -88,7 +100,8 @@ static const cli_option cli_lot_opts[] = {
                "                     graph: kept triangles i,j,k, then extra edges i,j,", T, cdf),
   CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
                "draw the LOT (next to the DT with --compare DT; with\n"
-               "                     --cdf, the CDF graph over it in bold)", T, svg),
+               "                     --cdf, the CDF graph over it in bold; with a list\n"
+               "                     of rules, one panel per rule, no other)", T, svg),
   CLI_OPT_FLAG("--shade", "with --svg: fill the triangles by badness (light = good)", T, shade),
   CLI_OPT_TIE_EPS("relative tolerance under which a triangle rule ties", 1, T, tie_eps),
   CLI_OPT_THREADS("OpenMP threads for --compare GOT; the LOT itself is\n"
@@ -97,11 +110,12 @@ static const cli_option cli_lot_opts[] = {
 #undef T
 
 static const cli_spec cli_lot_spec = {
-  CMD, "usage: fliplab lot --rule RULE (--points FILE.csv | --random N) [options]",
+  CMD, "usage: fliplab lot --rule RULE[,RULE...] (--points FILE.csv | --random N) [options]",
   "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
   "edge of a strictly convex quadrilateral is the diagonal the rule keeps\n"
-  "(docs/lot.md).  Exit status 0 (also for status cycle or budget exhausted),\n"
-  "1 when --check fails, 2 for bad usage or input.\n",
+  "(docs/lot.md).  A list of rules builds one LOT per rule of the same points.\n"
+  "Exit status 0 (also for status cycle or budget exhausted), 1 when --check\n"
+  "fails, 2 for bad usage or input.\n",
   cli_lot_opts, CLI_NOPTS(cli_lot_opts), NULL};
 
 /* The options into a and o: 0, 1 after --help, 2 after an error. */
@@ -121,9 +135,35 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o)
       return cli_error(CMD, "--order applies to --algorithm incremental only");
   }
   if (a->shade && a->svg == NULL) return cli_error(CMD, "--shade needs --svg FILE");
-  if (a->cdf && strncmp(a->rule, "ES:", 3) != 0)
-    return cli_error(CMD, "--cdf needs an empty-shape rule (--rule ES:SHAPE), not '%s'", a->rule);
   return 0;
+}
+
+/* --rule: one rule read whole (so "ES:ellipse:2,1" is one rule), else a
+** comma list (cli_rule_list_new: shape numbers take blanks there); what
+** draws or writes one triangulation refuses a list.  The count, or -1
+** after the error. */
+static int cli_lot_rules(const cli_lot_args *a, rule **r) {
+  rule one;
+  char err[512];
+  int n = 1;
+  if (rule_parse(a->rule, &one, err, sizeof err) == 0) {
+    if ((*r = malloc(sizeof **r)) == NULL) return cli_error(CMD, "out of memory"), -1;
+    **r = one;
+  } else if (strchr(a->rule, ',') == NULL) {
+    cli_parse_rule(CMD, a->rule, &one);   /* says why, with hints */
+    return -1;
+  } else if ((n = cli_rule_list_new(CMD, a->rule, r)) < 0) {
+    return -1;
+  }
+  const char *one_only = a->out ? "--out" : a->cdf ? "--cdf" : a->shade ? "--shade" : NULL;
+  if (n > 1 && one_only)
+    cli_error(CMD, "%s takes one rule, not a list of %d (--rule '%s')", one_only, n, a->rule);
+  else if (a->cdf && strncmp(rule_name(&(*r)[0]), "ES:", 3) != 0)
+    cli_error(CMD, "--cdf needs an empty-shape rule (--rule ES:SHAPE), not '%s'", a->rule);
+  else
+    return n;
+  free(*r);
+  return -1;
 }
 
 /* The points, read or sampled; desc names them. */
@@ -349,17 +389,78 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
          st->seconds_init + st->seconds_flip, st->seconds_init, st->seconds_flip);
 }
 
+/* A list's --svg: one panel per rule (captions as for one rule), no DT
+** panel of its own (list DT among the rules). */
+static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, const char *desc,
+                            const cli_lot_tri *t, const rule *r, int nr) {
+  report_lot_panel *pn = calloc((size_t)nr, sizeof *pn);
+  char (*cap)[160] = calloc((size_t)nr, sizeof *cap);
+  FILE *f = pn && cap ? cli_open_out(CMD, path) : NULL;
+  int rc = 2;
+  if (pn == NULL || cap == NULL) cli_error(CMD, "out of memory");
+  if (f != NULL) {
+    for (int k = 0; k < nr; k++) {
+      snprintf(cap[k], sizeof cap[k], "LOT(%s): %zu triangles", rule_name(&r[k]), t[k].ntri);
+      pn[k] = (report_lot_panel){t[k].tri, t[k].ntri, NULL, cap[k], NULL};
+    }
+    char title[700];
+    snprintf(title, sizeof title, "%s: one LOT per rule", desc);
+    report_lot_svg(f, p, n, pn, nr, 0, title);
+    rc = cli_close_out(f) != 0;   /* it said why */
+  }
+  free(pn);
+  free(cap);
+  return rc;
+}
+
+/* One rule's LOT of the points: its lines (summary, --check, --compare) and,
+** for a single rule, its outputs; *t keeps the triangles (caller frees),
+** *failed is set when --check fails.  0, 1 after a formula's error, 2
+** after another. */
+static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rule *r,
+                       const geom_point *p, size_t n, const char *desc, int single,
+                       cli_lot_tri *t, int *failed) {
+  char err[512];
+  lot_options o = *base;
+  o.r = *r;
+  uint32_t *dt = NULL;
+  size_t ndt = 0;
+  lot *L = NULL;
+  int rc = 0;
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (cli_userdefs_failed(CMD)) {
+    lot_free(L);
+    return 1;
+  }
+  const lot_stats *st = lot_get_stats(L);
+  t->ntri = st->triangles;
+  t->tri = malloc(3 * st->triangles * sizeof *t->tri);
+  t->bad = malloc(st->triangles * sizeof *t->bad);
+  if (t->tri == NULL || t->bad == NULL) {
+    lot_free(L);
+    return cli_error(CMD, "out of memory");
+  }
+  lot_get_triangles(L, t->tri);
+  lot_get_badness(p, t->tri, t->ntri, r, t->bad);
+  cli_lot_summary(r, desc, &o, st, a->tie_eps);
+  if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r) != 0) *failed = 1;
+  if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
+  else if (a->compare == 1) rc = cli_lot_compare_got(p, L, r, t->bad, t->ntri, a);
+  if (rc == 0 && single) rc = cli_lot_write(a, p, n, t->tri, t->ntri, t->bad, dt, ndt, r);
+  lot_free(L);
+  free(dt);
+  return rc;
+}
+
 int cli_cmd_lot(int argc, char **argv) {
   cli_lot_args a;
-  rule r = rule_delaunay();
-  char err[512];
+  rule d = rule_delaunay(), *r = NULL;
   lot_options o;
-  lot_options_init(&o, &r);
-  int rc = cli_lot_parse(argc, argv, &a, &o);
+  lot_options_init(&o, &d);
+  int rc = cli_lot_parse(argc, argv, &a, &o), nr;
   if (rc != 0) return rc == 1 ? 0 : rc;
-  if (cli_parse_rule(CMD, a.rule, &r) != 0) return 2;
-  rule_set_tie_eps(&r, a.tie_eps);
-  o.r = r;
+  if ((nr = cli_lot_rules(&a, &r)) < 0) return 2;
+  for (int k = 0; k < nr; k++) rule_set_tie_eps(&r[k], a.tie_eps);
   o.seed = a.seed;
   o.max_flips = a.max_flips;
   o.tie_eps = a.tie_eps;
@@ -367,42 +468,19 @@ int cli_cmd_lot(int argc, char **argv) {
   geom_point *p = NULL;
   size_t n = 0;
   char desc[600];
-  uint32_t *tri = NULL, *dt = NULL;
-  double *bad = NULL;
-  size_t ndt = 0;
-  lot *L = NULL;
-  if ((rc = cli_lot_points(&a, &p, &n, desc, sizeof desc)) != 0) goto done;
-  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
-    rc = cli_error(CMD, "%s", err);
-    goto done;
+  cli_lot_tri *t = calloc((size_t)nr, sizeof *t);
+  int failed = 0;
+  if (t == NULL) rc = cli_error(CMD, "out of memory");
+  else rc = cli_lot_points(&a, &p, &n, desc, sizeof desc);
+  for (int k = 0; rc == 0 && k < nr; k++)
+    rc = cli_lot_one(&a, &o, &r[k], p, n, desc, nr == 1, &t[k], &failed);
+  if (rc == 0 && nr > 1 && a.svg) rc = cli_lot_svg_list(a.svg, p, n, desc, t, r, nr);
+  for (int k = 0; t && k < nr; k++) {
+    free(t[k].tri);
+    free(t[k].bad);
   }
-  if (cli_userdefs_failed(CMD)) {
-    rc = 1;
-    goto done;
-  }
-  const lot_stats *st = lot_get_stats(L);
-  tri = malloc(3 * st->triangles * sizeof *tri);
-  bad = malloc(st->triangles * sizeof *bad);
-  if (tri == NULL || bad == NULL) {
-    rc = cli_error(CMD, "out of memory");
-    goto done;
-  }
-  lot_get_triangles(L, tri);
-  lot_get_badness(p, tri, st->triangles, &r, bad);
-
-  cli_lot_summary(&r, desc, &o, st, a.tie_eps);
-  int check_failed = a.check && cli_lot_check(p, n, tri, st->triangles, &r) != 0;
-  if (a.compare == 0)
-    rc = cli_lot_compare_dt(p, n, &o, tri, st->triangles, &dt, &ndt);
-  else if (a.compare == 1)
-    rc = cli_lot_compare_got(p, L, &r, bad, st->triangles, &a);
-  if (rc == 0) rc = cli_lot_write(&a, p, n, tri, st->triangles, bad, dt, ndt, &r);
-  if (rc == 0 && check_failed) rc = 1;
-done:
-  lot_free(L);
+  free(t);
   free(p);
-  free(tri);
-  free(bad);
-  free(dt);
-  return rc;
+  free(r);
+  return rc == 0 && failed ? 1 : rc;
 }

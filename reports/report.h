@@ -327,7 +327,8 @@ typedef struct report_lot_panel {
 } report_lot_panel;
 
 /* The panels side by side (e.g. a LOT and the Delaunay triangulation of
-** the same points), each scaled to about 600 px, edges as hairlines,
+** the same points), each scaled to about 600 px; beyond three panels, in
+** rows of the smallest square grid, about 400 px each; edges as hairlines,
 ** points as dots; with shade, triangles filled by badness on one scale
 ** shared by all panels.  0, or -1 on a write error. */
 int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,

@@ -1,7 +1,8 @@
 /*
 ** svg_lot.c: an SVG picture of triangulations of one point set side by
 ** side (`fliplab lot --svg`, with --compare DT the LOT next to the
-** Delaunay triangulation).  Edges are hairlines in one <path> per panel
+** Delaunay triangulation; `--rule A,B,...` one panel per rule, in rows of
+** a grid beyond three panels).  Edges are hairlines in one <path> per panel
 ** (each interior edge drawn twice, which an SVG viewer does not show);
 ** shading fills triangles by badness on one scale for all panels; a
 ** convex-distance Delaunay graph (`lot --cdf`) is drawn in bold red over its
@@ -12,19 +13,22 @@
 #include "report_internal.h"
 
 #define REPORT_LOT_SIZE 600.0
+#define REPORT_LOT_GRID_SIZE 400.0   /* a panel's side beyond three panels */
 #define REPORT_LOT_MARGIN 14.0
 #define REPORT_LOT_TOP 34.0
 #define REPORT_LOT_CAPTION 22.0
 
+/* Where a panel goes: the data box's corner, the scale, and the panel's
+** left edge and top (its caption's band starts at y0). */
 typedef struct report_lot_view {
-  double minx, maxy, s, x0;
+  double minx, maxy, s, x0, y0;
 } report_lot_view;
 
 static double report_lot_px(const report_lot_view *v, double x) {
   return v->x0 + (x - v->minx) * v->s;
 }
 static double report_lot_py(const report_lot_view *v, double y) {
-  return REPORT_LOT_TOP + REPORT_LOT_CAPTION + (v->maxy - y) * v->s;
+  return v->y0 + REPORT_LOT_CAPTION + (v->maxy - y) * v->s;
 }
 
 static void report_lot_range(const report_lot_panel *panels, int np, double *lo, double *hi) {
@@ -61,7 +65,7 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
                                   int shade, double lo, double hi) {
   double hair = n > 2000 ? 0.2 : n > 300 ? 0.4 : 0.8;
   double dot = n > 2000 ? 0.5 : n > 300 ? 1.0 : 2.0;
-  if (pn->caption) report_svg_text(f, v->x0, REPORT_LOT_TOP + 12, 13, pn->caption);
+  if (pn->caption) report_svg_text(f, v->x0, v->y0 + 12, 13, pn->caption);
   for (size_t t = 0; shade && pn->badness && t < pn->ntri; t++) {
     char col[16] = "#dddddd";
     double b = pn->badness[t];
@@ -83,15 +87,26 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
   fprintf(f, "</g>\n");
 }
 
+/* Panels per row: all of them up to three, then the smallest square grid
+** (four in 2 x 2, five and six in 3 x 2, up to nine in 3 x 3). */
+static int report_lot_columns(int npanels) {
+  int c = 1;
+  if (npanels <= 3) return npanels;
+  while (c * c < npanels) c++;
+  return c;
+}
+
 int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
                    int npanels, int shade, const char *title) {
   report_svg_box b = report_svg_bbox(p, n);
-  report_lot_view v = {b.minx, b.maxy, report_svg_fit_scale(&b, REPORT_LOT_SIZE),
-                       REPORT_LOT_MARGIN};
+  int cols = report_lot_columns(npanels), rows = (npanels + cols - 1) / cols;
+  double size = npanels > 3 ? REPORT_LOT_GRID_SIZE : REPORT_LOT_SIZE;
+  report_lot_view v = {b.minx, b.maxy, report_svg_fit_scale(&b, size), REPORT_LOT_MARGIN,
+                       REPORT_LOT_TOP};
   double w = b.maxx - b.minx, h = b.maxy - b.miny;
   double pw = w * v.s + 2 * REPORT_LOT_MARGIN;
-  double width = pw * npanels, height = h * v.s + REPORT_LOT_TOP + REPORT_LOT_CAPTION +
-                                        REPORT_LOT_MARGIN + (shade ? 26 : 0);
+  double ph = h * v.s + REPORT_LOT_CAPTION + REPORT_LOT_MARGIN;
+  double width = pw * cols, height = ph * rows + REPORT_LOT_TOP + (shade ? 26 : 0);
   if (width < 420) width = 420;
   fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
              "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n"
@@ -101,7 +116,8 @@ int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_pane
   double lo, hi;
   report_lot_range(panels, npanels, &lo, &hi);
   for (int k = 0; k < npanels; k++) {
-    v.x0 = REPORT_LOT_MARGIN + k * pw;
+    v.x0 = REPORT_LOT_MARGIN + (k % cols) * pw;
+    v.y0 = REPORT_LOT_TOP + (k / cols) * ph;
     report_lot_panel_draw(f, p, n, &panels[k], &v, shade, lo, hi);
   }
   if (shade && hi >= lo) report_svg_colour_legend(f, REPORT_LOT_MARGIN, height - 20, lo, hi);
