@@ -257,6 +257,20 @@ measure_points_fn measure_points(int id) {
   return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_points[id] : NULL;
 }
 
+void measure_eval_tris(int id, const geom_point *v, size_t m, double *out) {
+  measure_points_fn f = measure_points(id);
+  if (f != NULL) {
+    for (size_t i = 0; i < m; i++) out[i] = f(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    return;
+  }
+  const measure *u = measure_get(id);
+  for (size_t i = 0; i < m; i++) {
+    geom_tri t;
+    geom_tri_make(&t, v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    out[i] = u->fn(&t, u->ctx);
+  }
+}
+
 unsigned measure_fields(int id) {
   return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_fields[id] : GEOM_F_ALL;
 }

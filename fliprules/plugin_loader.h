@@ -1,6 +1,9 @@
 /*
 ** plugin_loader.h: loading plugins (fliplab/plugin.h) into the measure and
-** quadrilateral-rule registries.
+** quadrilateral-rule registries: the program's --plugin, and the Python
+** package's fliplab.load_plugin (python/, through the shared library).
+** Installed as <fliplab/plugin_loader.h>; a plugin itself needs only
+** <fliplab/plugin.h>.
 */
 #ifndef FLIPLAB_PLUGIN_LOADER_H
 #define FLIPLAB_PLUGIN_LOADER_H

@@ -211,6 +211,20 @@ rule_choice rule_eval(const rule *r, const geom_point q[4], double *ac, double *
   return rule_eval_tris(r, &abc, &acd, &abd, &bcd, ac, bd);
 }
 
+void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *out,
+                     double *ac, double *bd) {
+  for (size_t i = 0; i < m; i++) {
+    const geom_point *c = q + 4 * i;
+    int convex = 1;
+    for (int k = 0; k < 4 && convex; k++)
+      convex = geom_orient(c[k], c[(k + 1) % 4], c[(k + 2) % 4]) > 0;
+    double x = NAN, y = NAN;
+    out[i] = convex ? (signed char)rule_eval(r, c, &x, &y) : -1;
+    if (ac) ac[i] = x;
+    if (bd) bd[i] = y;
+  }
+}
+
 const rule_quad *rule_quad_of(const rule *r) {
   return r->kind == RULE_QUAD ? rule_quad_get(r->quad) : NULL;
 }

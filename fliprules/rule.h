@@ -101,6 +101,15 @@ rule_choice rule_eval_tris(const rule *r, const geom_tri *t_abc, const geom_tri 
 rule_choice rule_eval_badness(const rule *r, double b_abc, double b_acd, double b_abd,
                               double b_bcd, double *ac, double *bd);
 
+/* rule_eval on m quadrilaterals q[4i .. 4i+3] at once (python/'s vectorised
+** decisions): out[i] is RULE_AC (diagonal q[4i] q[4i+2]), RULE_BD or
+** RULE_EITHER, or -1 when the quadrilateral is not strictly convex and
+** anticlockwise (exact orientations), which no rule decides; ac and bd (may
+** be NULL) receive rule_eval's joint values (NaN when undecided or for a
+** quadrilateral rule). */
+void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *out,
+                     double *ac, double *bd);
+
 /* DT on ABCD directly: exact, so no canonical rotation is needed. */
 rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d);
 

@@ -188,6 +188,42 @@ int lot_compare(const uint32_t *a, size_t na, const uint32_t *b, size_t nb, lot_
   return rc;
 }
 
+/* Directed edges bucketed by their first vertex (a counting sort), each
+** slot holding the edge's head and its triangle, so that the twin of
+** u -> v is found by a scan of the few contiguous slots of the edges
+** leaving v. */
+int lot_neighbors(const uint32_t *tri, size_t ntri, size_t n, int32_t *nb) {
+  size_t *start = calloc(n + 1, sizeof *start);
+  uint64_t *slot = malloc((ntri ? 3 * ntri : 1) * sizeof *slot);   /* head << 32 | t */
+  if (start == NULL || slot == NULL) {
+    free(start);
+    free(slot);
+    return -1;
+  }
+  for (size_t c = 0; c < 3 * ntri; c++) start[tri[c] + 1]++;
+  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
+  for (size_t c = 0; c < 3 * ntri; c++) {
+    uint64_t head = tri[c - c % 3 + (c % 3 + 1) % 3];
+    slot[start[tri[c]]++] = head << 32 | (uint64_t)(c / 3);
+  }
+  for (size_t v = n; v > 0; v--) start[v] = start[v - 1];   /* back to the starts */
+  start[0] = 0;
+  for (size_t c = 0; c < 3 * ntri; c++) {
+    /* corner c = 3t + k: the edge opposite it runs u -> v; its twin is v -> u */
+    size_t t = c / 3, k = c % 3;
+    uint32_t u = tri[3 * t + (k + 1) % 3], v = tri[3 * t + (k + 2) % 3];
+    nb[c] = -1;
+    for (size_t s = start[v]; s < start[v + 1]; s++)
+      if ((uint32_t)(slot[s] >> 32) == u) {
+        nb[c] = (int32_t)(uint32_t)slot[s];
+        break;
+      }
+  }
+  free(start);
+  free(slot);
+  return 0;
+}
+
 void lot_get_badness(const geom_point *p, const uint32_t *tri, size_t ntri, const rule *r,
                      double *out) {
   for (size_t t = 0; t < ntri; t++) {

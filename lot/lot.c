@@ -674,6 +674,49 @@ static int lot_tri_cmp(const void *x, const void *y) {
   return 0;
 }
 
+/* Insertion sort of a few triangles (a bucket of lot_sort_triangles). */
+static void lot_tri_insertion(uint32_t *t, size_t k) {
+  for (size_t i = 1; i < k; i++) {
+    uint32_t x[3] = {t[3 * i], t[3 * i + 1], t[3 * i + 2]};
+    size_t j = i;
+    for (; j > 0 && lot_tri_cmp(t + 3 * (j - 1), x) > 0; j--)
+      for (int c = 0; c < 3; c++) t[3 * j + c] = t[3 * (j - 1) + c];
+    for (int c = 0; c < 3; c++) t[3 * j + c] = x[c];
+  }
+}
+
+/* The order of qsort with lot_tri_cmp (a total order: the triangles are
+** distinct), in linear time for bounded degree: a counting sort on the
+** first index (indices below n) into a copy, then each bucket (the
+** triangles whose smallest vertex is v: a handful) by insertion, or by
+** qsort when large (a vertex of high degree).  qsort alone when the copy
+** cannot be made.  For 2 10^6 triangles about ten times faster than qsort,
+** which cost as much as the triangulation. */
+static void lot_sort_triangles(uint32_t *tri, size_t w, size_t n) {
+  size_t *start = calloc(n + 1, sizeof *start);
+  uint32_t *copy = malloc((w ? 3 * w : 1) * sizeof *copy);
+  if (start == NULL || copy == NULL) {
+    free(start);
+    free(copy);
+    qsort(tri, w, 3 * sizeof *tri, lot_tri_cmp);
+    return;
+  }
+  memcpy(copy, tri, 3 * w * sizeof *tri);
+  for (size_t t = 0; t < w; t++) start[copy[3 * t] + 1]++;
+  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
+  for (size_t t = 0; t < w; t++) {
+    size_t d = start[copy[3 * t]]++;
+    for (int c = 0; c < 3; c++) tri[3 * d + c] = copy[3 * t + c];
+  }
+  for (size_t v = 0, b = 0; v < n; b = start[v++]) {   /* bucket v is [b, start[v]) */
+    size_t k = start[v] - b;
+    if (k > 32) qsort(tri + 3 * b, k, 3 * sizeof *tri, lot_tri_cmp);
+    else lot_tri_insertion(tri + 3 * b, k);
+  }
+  free(start);
+  free(copy);
+}
+
 void lot_get_triangles(const lot *L, uint32_t *tri) {
   const lot_mesh *m = &L->m;
   size_t w = 0;
@@ -685,7 +728,7 @@ void lot_get_triangles(const lot *L, uint32_t *tri) {
     for (int i = 0; i < 3; i++) tri[3 * w + i] = v[(s + i) % 3];
     w++;
   }
-  qsort(tri, w, 3 * sizeof *tri, lot_tri_cmp);
+  lot_sort_triangles(tri, w, L->st.n);
 }
 
 void lot_free(lot *L) {

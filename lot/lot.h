@@ -144,6 +144,15 @@ typedef struct lot_check_result {
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
               const rule *r, lot_check_result *out);
 
+/* The neighbours of the triangles tri (indices below n), in the convention
+** of scipy.spatial.Delaunay.neighbors: nb[3t + k] is the triangle across
+** the edge of t opposite its vertex k (from tri[3t + (k+1) % 3] to
+** tri[3t + (k+2) % 3]), -1 on the boundary.  For a triangulation whose
+** triangles are consistently oriented (lot_check's valid): the triangle
+** across edge u -> v is the one with edge v -> u.  O(ntri) time and
+** memory.  0, or -1 when out of memory. */
+int lot_neighbors(const uint32_t *tri, size_t ntri, size_t n, int32_t *nb);
+
 /* Each triangle's badness for the rule: measure_eval on the triangle of p
 ** (NaN for DT and quadrilateral rules). */
 void lot_get_badness(const geom_point *p, const uint32_t *tri, size_t ntri, const rule *r,

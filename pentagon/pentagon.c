@@ -145,8 +145,9 @@ static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
 
 /* Add p to the strictly convex anticlockwise hull h[0..n-1] (h has room
 ** for n + 1 points; n < SAMPLER_HULL_MAX) and return the new size.  Not in sampler.h:
-** exposed for test_sampler's degenerate cases, which declare it. */
-int sampler_hull_add(geom_point *h, int n, geom_point p);
+** exposed for test_sampler's degenerate cases, which declare it; hidden from
+** the shared library's symbols like an *_internal.h function. */
+FLIPLAB_INTERNAL int sampler_hull_add(geom_point *h, int n, geom_point p);
 int sampler_hull_add(geom_point *h, int n, geom_point p) {
   return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
 }

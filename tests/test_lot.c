@@ -27,6 +27,13 @@
 #include "sampler.h"
 #include "testutil.h"
 
+static int tu_tri_cmp(const void *x, const void *y) {
+  const uint32_t *a = x, *b = y;
+  for (int i = 0; i < 3; i++)
+    if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+  return 0;
+}
+
 static rule tl_rule(const char *name) {
   rule r;
   char err[256];
@@ -442,6 +449,56 @@ static void test_duplicates_and_collinear(void **state) {
     }
 }
 
+/* lot_get_triangles' order is qsort's (sorted, each triangle from its
+** smallest index), and lot_neighbors agrees with a brute force over all
+** pairs of triangles: across the edge opposite vertex k lies the one other
+** triangle holding both its ends, or none on the hull (one per hull edge).
+** Sets with a vertex of high degree (parabola, circle: the sort's qsort
+** buckets) and duplicates included. */
+static void test_triangle_order_and_neighbors(void **state) {
+  (void)state;
+  const sampler_points_kind kinds[] = {SAMPLER_UNIFORM, SAMPLER_PARABOLA, SAMPLER_CIRCLE,
+                                       SAMPLER_GRID};
+  for (size_t q = 0; q < sizeof kinds / sizeof *kinds; q++) {
+    size_t n = 150;
+    geom_point *p = tl_points(kinds[q], 3, n);
+    p[7] = p[3];   /* a duplicate */
+    rule r = rule_delaunay();
+    lot_options o;
+    lot_options_init(&o, &r);
+    uint32_t *tri;
+    lot *L = tl_build(p, n, &o, &tri);
+    size_t m = lot_get_stats(L)->triangles, hull = lot_get_stats(L)->hull;
+    uint32_t *sorted = malloc(3 * m * sizeof *sorted);
+    int32_t *nb = malloc(3 * m * sizeof *nb);
+    assert_non_null(sorted);
+    assert_non_null(nb);
+    memcpy(sorted, tri, 3 * m * sizeof *tri);
+    qsort(sorted, m, 3 * sizeof *sorted, tu_tri_cmp);
+    assert_memory_equal(sorted, tri, 3 * m * sizeof *tri);
+    assert_int_equal(lot_neighbors(tri, m, n, nb), 0);
+    size_t boundary = 0;
+    for (size_t t = 0; t < m; t++)
+      for (int k = 0; k < 3; k++) {
+        uint32_t u = tri[3 * t + (k + 1) % 3], v = tri[3 * t + (k + 2) % 3];
+        int32_t want = -1;
+        for (size_t s = 0; s < m; s++) {
+          int hu = 0, hv = 0;
+          for (int c = 0; c < 3; c++) hu |= tri[3 * s + c] == u, hv |= tri[3 * s + c] == v;
+          if (s != t && hu && hv) want = (int32_t)s;
+        }
+        assert_int_equal(nb[3 * t + k], want);
+        boundary += want < 0;
+      }
+    assert_int_equal(boundary, hull);
+    lot_free(L);
+    free(tri);
+    free(sorted);
+    free(nb);
+    free(p);
+  }
+}
+
 static void test_bad_input(void **state) {
   (void)state;
   rule dt = rule_delaunay();
@@ -483,6 +540,7 @@ int main(void) {
     cmocka_unit_test(test_budget),
     cmocka_unit_test(test_rotation),
     cmocka_unit_test(test_duplicates_and_collinear),
+    cmocka_unit_test(test_triangle_order_and_neighbors),
     cmocka_unit_test(test_bad_input),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -647,6 +647,36 @@ static void test_angle_bounds_sweep(void **state) {
   assert_true(n > 1000000);
 }
 
+/* measure_eval_tris is measure_eval on geom_tri_make's triangle, bit for
+** bit, for every measure, whatever the vertex order (random triangles and
+** a flat one: the same inf or NaN). */
+static void test_eval_tris(void **state) {
+  (void)state;
+  enum { M = 200 };
+  geom_point v[3 * M];
+  uint64_t s = 12345;
+  for (int i = 0; i < 3 * M; i++) {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    v[i].x = (double)(s >> 11) * 0x1p-53 - 0.5;
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    v[i].y = (double)(s >> 11) * 0x1p-53 - 0.5;
+  }
+  v[3] = (geom_point){0, 0}, v[4] = (geom_point){1, 1}, v[5] = (geom_point){2, 2};
+  double out[M];
+  for (int id = 0; id < measure_count(); id++) {
+    measure_eval_tris(id, v, M, out);
+    for (int i = 0; i < M; i++) {
+      geom_tri t;
+      geom_tri_make(&t, v[3 * i + 2], v[3 * i], v[3 * i + 1]);
+      double want = measure_eval(id, &t);
+      if (!(out[i] == want || (isnan(out[i]) && isnan(want))) ||
+          (out[i] == 0 && signbit(out[i]) != signbit(want)))
+        fail_msg("measure %s, triangle %d: %.17g, measure_eval %.17g", measure_get(id)->name, i,
+                 out[i], want);
+    }
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_registry),
@@ -662,6 +692,7 @@ int main(void) {
     cmocka_unit_test(test_floors),
     cmocka_unit_test(test_bounds),
     cmocka_unit_test(test_angle_rank_bounds),
+    cmocka_unit_test(test_eval_tris),
     cmocka_unit_test(test_angle_bounds_sweep),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -566,6 +566,42 @@ static void test_verbs(void **state) {
   TESTUTIL_NEAR(rule_gap(&h, rule_key(&h, 3), rule_key(&h, 4)), 0.25, 1e-15, 0);
 }
 
+/* rule_eval_quads: rule_eval's decision and joint values on strictly
+** convex anticlockwise quadrilaterals; -1 (and NaN) on their reversals
+** (clockwise), on a quadrilateral with three collinear corners and on a
+** reflex one, for a triangle rule and for DT. */
+static void test_eval_quads(void **state) {
+  (void)state;
+  enum { M = 6 };
+  geom_point q[4 * M] = {
+    {0, 0}, {2, 0}, {2, 1}, {0, 1},      {0, 0}, {3, 0.2}, {2, 2}, {-0.5, 1.5},
+    {0, 1}, {2, 1}, {2, 0}, {0, 0},      {0, 0}, {1, 0}, {2, 0}, {1, 1},
+    {0, 0}, {2, 0}, {0.5, 0.5}, {0, 2},  {1, -1}, {4, 0}, {3, 3}, {0, 2}};
+  const int convex[M] = {1, 1, 0, 0, 0, 1};
+  const char *names[] = {"P_1", "-alpha_inf", "DT"};
+  for (int k = 0; k < 3; k++) {
+    rule r;
+    char err[256];
+    assert_int_equal(rule_parse(names[k], &r, err, sizeof err), 0);
+    signed char out[M];
+    double ac[M], bd[M];
+    rule_eval_quads(&r, q, M, out, ac, bd);
+    for (int i = 0; i < M; i++) {
+      if (!convex[i]) {
+        assert_int_equal(out[i], -1);
+        assert_true(isnan(ac[i]) && isnan(bd[i]));
+        continue;
+      }
+      double x, y;
+      assert_int_equal(out[i], rule_eval(&r, q + 4 * i, &x, &y));
+      assert_true(ac[i] == x || (isnan(ac[i]) && isnan(x)));
+      assert_true(bd[i] == y || (isnan(bd[i]) && isnan(y)));
+    }
+    rule_eval_quads(&r, q, M, out, NULL, NULL);   /* the values are optional */
+    assert_int_equal(out[0], rule_eval(&r, q, NULL, NULL));
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_parse_all),
@@ -580,6 +616,7 @@ int main(void) {
     cmocka_unit_test(test_rotation),
     cmocka_unit_test(test_reflection),
     cmocka_unit_test(test_quad_registry),
+    cmocka_unit_test(test_eval_quads),
     cmocka_unit_test(test_verbs),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

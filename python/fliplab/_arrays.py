@@ -1,0 +1,55 @@
+"""_arrays.py: numpy arrays in and out of the C library: validation of
+point arrays against the coordinate contract of geom.h (with the C
+library's own wording), pointers into arrays for ctypes."""
+import ctypes
+import numpy as np
+
+from . import _lib
+
+
+def ptr(a, ctype):
+    """A ctypes pointer to the first element of the C-contiguous array a."""
+    return a.ctypes.data_as(ctypes.POINTER(ctype))
+
+
+def points_ptr(a):
+    return a.ctypes.data_as(_lib.Point_p)
+
+
+def as_coords(a, what, shape):
+    """a as a C-contiguous float64 array of the given shape (None: any
+    length in that axis, -1 in shape), refusing what is not real numbers.
+    Integers are converted exactly when below 2^53; booleans, complex
+    numbers, strings and objects are refused."""
+    arr = np.asarray(a)
+    if arr.dtype.kind not in "fiu":
+        raise ValueError("%s: expected an array of real numbers, got dtype %s" % (what, arr.dtype))
+    if arr.dtype.kind in "iu" and arr.size and np.abs(arr).max() >= 2 ** 53:
+        raise ValueError("%s: an integer coordinate of magnitude 2^53 or more is not a double"
+                         % what)
+    if arr.ndim != len(shape) or any(s >= 0 and d != s for d, s in zip(arr.shape, shape)):
+        want = "(" + ", ".join("m" if s < 0 else str(s) for s in shape) + ")"
+        raise ValueError("%s: expected an array of shape %s, got shape %s"
+                         % (what, want.replace("m", "n", 1) if len(shape) == 2 else want,
+                            arr.shape))
+    return np.ascontiguousarray(arr, dtype=np.float64)
+
+
+def check_contract(arr, what):
+    """Every coordinate of arr (float64, last axis x, y) is 0 or of magnitude
+    in [1e-30, 1e30] (geom_coord_check), else ValueError naming the first
+    offending point, in the words of the C library."""
+    flat = arr.reshape(-1, 2)
+    mag = np.abs(flat)
+    ok = (mag == 0) | ((mag >= 1e-30) & (mag <= 1e30))
+    bad = ~ok.all(axis=1)
+    if bad.any():
+        i = int(np.argmax(bad))
+        x, y = flat[i]
+        e = _lib.lib.geom_coord_check(float(x))
+        if e == 0:
+            e = _lib.lib.geom_coord_check(float(y))
+        where = np.unravel_index(i, arr.shape[:-1])
+        idx = " ".join(str(int(k)) for k in where)
+        raise ValueError("%s %s (%.6g, %.6g): a coordinate %s"
+                         % (what, idx, x, y, _lib.lib.geom_coorderr_str(e).decode()))
