@@ -231,6 +231,13 @@ int report_census_read(FILE *in, const char *path, report_census_row **rows, int
 int report_census_add(report_census_row *acc, int nacc, const report_census_row *add,
                       int nadd, const char *what, char *err, size_t errlen);
 
+/* ---- the badness colour scale of shaded drawings (got, lot; reports/svg.c) ----
+** f in [0, 1] (clamped; NaN as 0): light yellow = good to dark red = bad,
+** as "#rrggbb"; a drawing maps its smallest finite badness to 0 and its
+** largest to 1.  Public so that python/'s matplotlib pictures use the same
+** scale as the SVGs. */
+void report_svg_colour(double f, char *buf, size_t len);
+
 /* ---- point files (reports/csv_points.c) ---- */
 
 /* Read points from CSV (path "-": standard input): rows "x,y", an optional

@@ -126,9 +126,7 @@ FLIPLAB_INTERNAL double report_svg_fit_scale(const report_svg_box *b, double siz
 
 /* ---- the badness colour scale of shaded drawings (got, lot) ---- */
 
-/* f in [0, 1] (clamped; NaN as 0): light yellow = good to dark red = bad,
-** as "#rrggbb". */
-FLIPLAB_INTERNAL void report_svg_colour(double f, char *buf, size_t len);
+/* (report_svg_colour, the scale itself, is public: report.h.) */
 /* 20 swatches from lo to hi, labelled, left edge at x0, top at y. */
 FLIPLAB_INTERNAL void report_svg_colour_legend(FILE *f, double x0, double y, double lo,
                                                double hi);
