@@ -59,6 +59,8 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen);
 ** docs/emptyshape.md), registered as a quadrilateral rule on first use;
 ** rule_parse calls it for every name starting "ES:" not yet registered. */
 int rule_shape_make(const char *name, rule *out, char *err, size_t errlen);
+/* 1 when r is an empty-shape rule (made by rule_shape_make). */
+int rule_is_shape(const rule *r);
 
 /* The one grammar of rule names: a triangle-based rule is MEASURE_JOINT,
 ** split at the last '_' (measure names may contain '-', '/' and '\'', a

@@ -63,3 +63,8 @@ int rule_shape_make(const char *name, rule *out, char *err, size_t errlen) {
   snprintf(out->name, sizeof out->name, "%s", e->name);
   return 0;
 }
+
+int rule_is_shape(const rule *r) {
+  const rule_quad *q = rule_quad_of(r);
+  return q != NULL && q->fn == rule_shape_eval;
+}

@@ -81,6 +81,7 @@ typedef struct lot_run {
   lot_kind kind;
   int star_only;        /* DT insertion: only edges opposite the new point */
   int stopped;          /* cycle or budget: no more flips */
+  int settle_ties;      /* an empty-shape rule: its EITHER goes to lot_tie_flips */
   lot_enc any;          /* encloses every value of the measure (measure_floor) */
   int one_first;        /* exact cache: the first new triangle may decide (lot_prefers_exact):
                            0, or LOT_FIRST_SUM / LOT_FIRST_MAX, the joint's form */
@@ -310,6 +311,49 @@ static int lot_prefers_lazy(const lot_run *R, uint32_t a, uint32_t b, uint32_t c
   return rule_decide(R->r, n1->lo, n2->lo, m->enc[t].lo, m->enc[u].lo) == RULE_AC;
 }
 
+/* ---- the tie-break ------------------------------------------------------
+**
+** DT and the empty-shape rules answer EITHER when the four sites of a
+** strictly convex quadrilateral lie on one circle (one homothet of the
+** shape, for every small turn of it: geom/shape.c).  lot settles such a tie
+** by one rule, whatever the algorithm: the vertex greatest in the
+** lexicographic order of the plane (larger x, then larger y) counts as
+** outside the circle of the other three, so the diagonal NOT incident to it
+** is kept.  For DT this is the symbolic perturbation of the lifting
+** z = x^2 + y^2 + eps^(n - r), r the point's rank in that order (eps -> 0):
+** the in-circle determinant is linear in the z column, so it becomes
+** value + sum over the four of eps^(n - r) (+-) the orientation of the
+** other three; when the value is 0 the greatest vertex's term decides (in a
+** strictly convex quadrilateral no three are collinear), and it lifts that
+** vertex above the plane of the other three, whose lower hull is the two
+** triangles on the other diagonal.  No four perturbed lifts lie on a
+** non-vertical plane (a point's coefficient is 0 only when the other three
+** are collinear), so the lower hull projects to one triangulation, every
+** point a vertex: the unique triangulation whose every edge is locally
+** optimal under the perturbed rule, which Lawson's flips reach from any
+** triangulation (each flip lowers the perturbed surface) and which
+** incremental insertion keeps (an edge not locally optimal still has a
+** strictly convex quadrilateral: its four sites are cocircular or the exact
+** test already fails).  The order is one of the points, not of the input:
+** the result depends on the point set only (duplicates, insertion order and
+** algorithm do not matter), as with CGAL's Delaunay triangulation, which
+** perturbs the same way.  For the empty-shape rules the same last resort is
+** the first-order effect of additive weights eps^(n - r) on the sites; the
+** uniqueness of its LOT is checked by brute force (tests/test_lot_ties.c).
+** Triangle-based rules' ties (within tie_eps) and plugin rules' EITHER are
+** left alone. */
+
+static int lot_lex_less(geom_point p, geom_point q) {
+  return p.x < q.x || (p.x == q.x && p.y < q.y);
+}
+
+/* A tie at quadrilateral a b d c0 (diagonal b-c0): 1 when the tie-break
+** flips it to a-d, i.e. when the greatest of the four is b or c0. */
+static int lot_tie_flips(geom_point pa, geom_point pb, geom_point pc, geom_point pd) {
+  geom_point keep = lot_lex_less(pa, pd) ? pd : pa, drop = lot_lex_less(pb, pc) ? pc : pb;
+  return lot_lex_less(keep, drop);
+}
+
 /* Examine the edge opposite corner c; flip it when the rule prefers the
 ** other diagonal.  With t = (a, b, c0) and t' = (d, c0, b) the
 ** quadrilateral is a b d c0 (anticlockwise), its current diagonal b-c0
@@ -326,8 +370,11 @@ static int lot_examine(lot_run *R, uint32_t c) {
   if (R->kind == LOT_K_DT) {
     /* d strictly inside circle abc makes abdc strictly convex (a and d on
     ** opposite sides of bc, and the line ab meets the circle only at a and
-    ** b, so b is not on segment ad; likewise c), so no orientation test. */
-    if (geom_incircle_valid(pa, pb, pc, pd) <= 0) return 0;
+    ** b, so b is not on segment ad; likewise c), so no orientation test.
+    ** d on it (a tie) makes four distinct cocircular sites, a and d apart:
+    ** strictly convex too. */
+    int in = geom_incircle_valid(pa, pb, pc, pd);
+    if (in < 0 || (in == 0 && !lot_tie_flips(pa, pb, pc, pd))) return 0;
     n1 = n2 = (lot_enc){0, 0};
   } else {
     n1 = n2 = (lot_enc){0, 0};
@@ -344,6 +391,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
     } else {
       ch = o->decide(q, RULE_BD, o->decide_ctx);
     }
+    if (ch == RULE_EITHER && R->settle_ties) ch = lot_tie_flips(pa, pb, pc, pd) ? RULE_AC : RULE_BD;
     if (ch != RULE_AC) return 0;
   }
   if (R->st->flips >= R->st->max_flips) {
@@ -392,6 +440,20 @@ static int lot_push_all(lot_run *R) {
   return 0;
 }
 
+/* The flip phase over every interior edge: the flip algorithm's second
+** half, and the pass that finishes every sweep.  The sweep decides each
+** tie by the order of its events, so its triangulation is one LOT of the
+** rule, not always the tie-broken one; Lawson's flips with the tie-break
+** (lot_tie_flips) turn it into that one.  For DT only tied edges flip: the
+** sweep's triangulation refines the Delaunay subdivision (convex faces of
+** cocircular sites), a flip inside a face keeps the faces, and an edge
+** between two faces has its far apex strictly outside its circle whatever
+** the near apex, so it never flips.  An empty-shape sweep (same table of
+** primitives, lot/sweep_internal.h) goes through the same pass. */
+static int lot_flip_all(lot_run *R) {
+  return lot_push_all(R) != 0 || lot_drain(R) != 0 ? -1 : 0;
+}
+
 /* What the mesh caches for rule r and options o (mesh.h). */
 static lot_cache lot_cache_of(const rule *r, const lot_options *o) {
   if (!rule_is_triangle(r) || o->decide) return LOT_CACHE_NONE;
@@ -410,6 +472,7 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
           : rule_is_triangle(r) ? LOT_K_TRI
           : rule_is_delaunay(r) ? LOT_K_DT : LOT_K_QUAD;
   R->track = R->kind >= LOT_K_QUAD;
+  R->settle_ties = R->kind == LOT_K_QUAD && rule_is_shape(r);
   if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(rule_measure(r)), INFINITY};
   /* Built-in measures only: their floors hold for every value they give
   ** (a user's formula or plugin promises its sign, but nothing checks it). */
@@ -589,13 +652,13 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
     lot_free(L);
     return -1;
   }
-  if (rc != 0) goto oom_run;
+  if (rc != 0 || (o->algorithm == LOT_SWEEP && lot_flip_all(&R) != 0)) goto oom_run;
   double t1 = lot_now();
   if (o->algorithm == LOT_FLIP) {
     L->st.seconds_init = t1 - t0;
-    if (lot_push_all(&R) != 0 || lot_drain(&R) != 0) goto oom_run;
+    if (lot_flip_all(&R) != 0) goto oom_run;
     L->st.seconds_flip = lot_now() - t1;
-  } else {   /* insertion and flips interleave: the split is ordering | the rest */
+  } else {   /* the split is ordering | the rest (insertion or sweep, with their flips) */
     L->st.seconds_init = tord - t0;
     L->st.seconds_flip = t1 - tord;
   }
@@ -624,7 +687,7 @@ int lot_reflip(lot *L, const lot_options *o) {
   L->st.cycle_quads = 0;
   lot_run_init(&R, L, o);
   double t0 = lot_now();
-  int rc = lot_push_all(&R) != 0 || lot_drain(&R) != 0 ? -1 : 0;
+  int rc = lot_flip_all(&R);
   L->st.seconds_init = 0;
   L->st.seconds_flip = lot_now() - t0;
   lot_run_free(&R);
