@@ -441,17 +441,33 @@ static int lot_push_all(lot_run *R) {
 }
 
 /* The flip phase over every interior edge: the flip algorithm's second
-** half, and the pass that finishes every sweep.  The sweep decides each
-** tie by the order of its events, so its triangulation is one LOT of the
-** rule, not always the tie-broken one; Lawson's flips with the tie-break
+** half (and lot_reflip's), every edge queued at once. */
+static int lot_flip_all(lot_run *R) {
+  return lot_push_all(R) != 0 || lot_drain(R) != 0 ? -1 : 0;
+}
+
+/* The pass that finishes every sweep.  The sweep decides each tie by the
+** order of its events, so its triangulation is one LOT of the rule, not
+** always the tie-broken one; Lawson's flips with the tie-break
 ** (lot_tie_flips) turn it into that one.  For DT only tied edges flip: the
 ** sweep's triangulation refines the Delaunay subdivision (convex faces of
 ** cocircular sites), a flip inside a face keeps the faces, and an edge
 ** between two faces has its far apex strictly outside its circle whatever
-** the near apex, so it never flips.  An empty-shape sweep (same table of
-** primitives, lot/sweep_internal.h) goes through the same pass. */
-static int lot_flip_all(lot_run *R) {
-  return lot_push_all(R) != 0 || lot_drain(R) != 0 ? -1 : 0;
+** the near apex, so it never flips.  The edges are examined in a scan
+** rather than queued first (the stack of 3n entries cost more than the
+** examinations); each flip queues the edges it changes and drains them
+** before the scan goes on, so every edge is examined after its last
+** change, by the scan or from the queue, and the result is a LOT with the
+** tie-break: the one triangulation, whatever the order of the flips.  An
+** empty-shape sweep (same table of primitives, lot/sweep_internal.h)
+** goes through the same pass. */
+static int lot_settle_ties(lot_run *R) {
+  const lot_mesh *m = R->m;
+  for (uint32_t c = 0; c < LOT_CORNER(m->nt, 0) && !R->stopped; c++)
+    if (lot_slot(c) < 3 && c < m->tn[c] && !lot_is_ghost(m, lot_tri_of(c)) &&
+        !lot_is_ghost(m, lot_tri_of(m->tn[c])) && lot_examine(R, c))
+      if (lot_push_after(R, c) != 0 || lot_drain(R) != 0) return -1;
+  return 0;
 }
 
 /* What the mesh caches for rule r and options o (mesh.h). */
@@ -652,7 +668,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
     lot_free(L);
     return -1;
   }
-  if (rc != 0 || (o->algorithm == LOT_SWEEP && lot_flip_all(&R) != 0)) goto oom_run;
+  if (rc != 0 || (o->algorithm == LOT_SWEEP && lot_settle_ties(&R) != 0)) goto oom_run;
   double t1 = lot_now();
   if (o->algorithm == LOT_FLIP) {
     L->st.seconds_init = t1 - t0;
