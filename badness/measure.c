@@ -259,12 +259,15 @@ measure_points_fn measure_points(int id) {
 
 void measure_eval_tris(int id, const geom_point *v, size_t m, double *out) {
   measure_points_fn f = measure_points(id);
+  long long mm = (long long)m;
   if (f != NULL) {
-    for (size_t i = 0; i < m; i++) out[i] = f(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+#pragma omp parallel for schedule(static) if (mm > 20000)
+    for (long long i = 0; i < mm; i++) out[i] = f(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
     return;
   }
   const measure *u = measure_get(id);
-  for (size_t i = 0; i < m; i++) {
+#pragma omp parallel for schedule(static) if (mm > 20000)
+  for (long long i = 0; i < mm; i++) {
     geom_tri t;
     geom_tri_make(&t, v[3 * i], v[3 * i + 1], v[3 * i + 2]);
     out[i] = u->fn(&t, u->ctx);

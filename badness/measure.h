@@ -73,7 +73,9 @@ static inline double measure_eval(int id, const geom_tri *t) {
 ** out[i] = measure_eval(id, t) for t = geom_tri_make(v[3i], v[3i+1],
 ** v[3i+2]), bit for bit (a built-in through measure_points, a user measure
 ** through geom_tri_make).  A flat triangle gets what its quantities give
-** (an infinite or NaN value, as measure_eval does).  id must be a measure. */
+** (an infinite or NaN value, as measure_eval does).  id must be a measure.
+** Large batches are split over OpenMP threads: every value depends on its
+** triangle only, and measures are reentrant by contract. */
 void measure_eval_tris(int id, const geom_point *v, size_t m, double *out);
 
 /* Every registered measure of t into out[0 .. measure_count()-1]; the

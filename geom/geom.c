@@ -178,6 +178,12 @@ geom_coorderr geom_coord_check(double x) {
   return GEOM_COORD_OK;
 }
 
+size_t geom_coord_check_n(const double *x, size_t n) {
+  for (size_t i = 0; i < n; i++)
+    if (geom_coord_check(x[i]) != GEOM_COORD_OK) return i;
+  return n;
+}
+
 /* A number that overflows, underflows or is subnormal is out of range
 ** ("1e-400" is neither "not a number" nor silently 0), and so is one
 ** outside the contract. */

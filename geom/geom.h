@@ -170,6 +170,9 @@ const char *geom_numerr_str(geom_numerr e);
 
 /* Is x a coordinate of the contract? */
 geom_coorderr geom_coord_check(double x);
+/* The index of the first of x[0 .. n-1] that is not (geom_coord_check), or
+** n when all are: the check of a whole array (python/'s inputs). */
+size_t geom_coord_check_n(const double *x, size_t n);
 /* Parse a whole string (geom_number_parse on its strlen bytes) into *out
 ** and check it against the contract; geom_coord_parse_n reads a span of
 ** len bytes (a CSV field), refusing a NUL byte inside it. */

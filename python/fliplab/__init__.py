@@ -13,10 +13,15 @@ from ._rules import (AC, BD, EITHER, UNDECIDED, Rule, badness, decide, define, j
                      load_plugin, measures, quad_rules, rules)
 from ._lot import ALGORITHMS, ORDERS, Check, CheckError, Triangulation, check, lot
 from . import _samplers as samplers
+from ._census import Counts, census, table34
+from ._got import Got, got
+from ._flipgraph import FlipGraph, flipgraph
+from ._pymeasure import measure, quantities
 
 __version__ = "0.1.0"
 library_path = _lib.path
 
 __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "define", "joints",
            "load_plugin", "measures", "quad_rules", "rules", "ALGORITHMS", "ORDERS", "Check",
-           "CheckError", "Triangulation", "check", "lot", "samplers", "library_path"]
+           "CheckError", "Triangulation", "check", "lot", "samplers", "library_path", "Counts",
+           "census", "table34", "Got", "got", "FlipGraph", "flipgraph", "measure", "quantities"]

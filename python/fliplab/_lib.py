@@ -169,6 +169,7 @@ _PROTOS = {
     "plugin_load": (_int, [_char_p, _char_p, _size]),
     "geom_coord_check": (_int, [ctypes.c_double]),
     "geom_coorderr_str": (_char_p, [_int]),
+    "geom_coord_check_n": (_size, [c_double_p, _size]),
     "lot_options_init": (None, [ctypes.POINTER(LotOptionsRoom), Rule_p]),
     "lot_default_max_flips": (_u64, [_size]),
     "lot_build": (_int, [ctypes.POINTER(_void_p), Point_p, _size,

@@ -14,11 +14,16 @@ _SIGNS = {-1: "<= 0", 0: "any", 1: ">= 0"}
 
 
 def _raise_user_errors():
-    """A bad value a formula or plugin measure produced during the last call
-    (formula_check_errors) as ValueError, cleared for the next call."""
+    """An exception a Python measure raised during the last call, or a bad
+    value a formula, plugin or Python measure produced (formula_check_errors)
+    as ValueError, cleared for the next call."""
+    from . import _pymeasure
     msg = ctypes.create_string_buffer(_lib.ERRLEN)
-    if lib.formula_check_errors(msg, _lib.ERRLEN):
+    bad = lib.formula_check_errors(msg, _lib.ERRLEN)
+    if bad:
         lib.formula_clear_errors()
+    _pymeasure.raise_pending()
+    if bad:
         raise ValueError(_lib.text(msg))
 
 
@@ -177,6 +182,12 @@ def _measure_id(m):
 
 
 def _badness_id(mid, triangles):
+    from . import _pymeasure
+    if mid in _pymeasure._registry:
+        try:
+            return _pymeasure.badness_python(mid, triangles)
+        finally:
+            _raise_user_errors()
     t = as_coords(triangles, "triangles", (-1, 3, 2))
     check_contract(t, "triangle")
     out = np.empty(t.shape[0], dtype=np.float64)

@@ -1,0 +1,138 @@
+"""_pymeasure.py: badness measures written in Python.
+
+measure(name, fn, sign) registers fn as a measure of the registry
+(measure_register), usable by name wherever a built-in one is:
+badness(), rules NAME_JOINT in lot(), table34(), census(), got(),
+flipgraph().  fn is called on numpy arrays of triangle quantities, a
+dict of arrays keyed by the formula variables of docs/measures.md (a b c
+alpha beta gamma A P R r h rx ry x1 y1 x2 y2 x3 y3), and returns an array
+of the same length:
+
+    fliplab.measure("aspect", lambda q: q["a"] / q["h"], sign=">= 0")
+
+badness() evaluates it once on the whole array of triangles; the C
+algorithms ask for one triangle at a time, and get fn on arrays of length
+one through a ctypes callback (correct, about a microsecond per call
+slower than a formula).  Values are checked as a plugin's are
+(formula_check_value): NaN or a value outside the declared sign is an
+error after the call.  An exception raised by fn is re-raised after the
+call."""
+import ctypes
+import numpy as np
+
+from . import _lib
+from ._arrays import as_coords, check_contract, points_ptr
+
+lib = _lib.lib
+
+TRI_DTYPE = np.dtype([("x1", "f8"), ("y1", "f8"), ("x2", "f8"), ("y2", "f8"), ("x3", "f8"),
+                      ("y3", "f8"), ("a", "f8"), ("b", "f8"), ("c", "f8"), ("alpha", "f8"),
+                      ("beta", "f8"), ("gamma", "f8"), ("A", "f8"), ("P", "f8"), ("R", "f8"),
+                      ("r", "f8"), ("h", "f8"), ("rx", "f8"), ("ry", "f8")])
+VARS = TRI_DTYPE.names
+
+
+class GeomTri(ctypes.Structure):
+    """geom_tri (geom/geom.h): 19 doubles in TRI_DTYPE's order."""
+    _fields_ = [(n, ctypes.c_double) for n in VARS]
+
+
+MeasureFn = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.POINTER(GeomTri), ctypes.c_void_p)
+lib.measure_register.restype = ctypes.c_int
+lib.measure_register.argtypes = [ctypes.POINTER(_lib.Measure)]
+lib.measure_check_name.restype = ctypes.c_int
+lib.measure_check_name.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p,
+                                   ctypes.c_size_t]
+lib.formula_check_value.restype = ctypes.c_double
+lib.formula_check_value.argtypes = [ctypes.c_char_p, ctypes.POINTER(GeomTri), ctypes.c_double,
+                                    ctypes.c_int, ctypes.c_int]
+lib.formula_note_message.restype = None
+lib.formula_note_message.argtypes = [ctypes.c_char_p]
+lib.geom_tri_make.restype = None
+lib.geom_tri_make.argtypes = [ctypes.POINTER(GeomTri), _lib.Point, _lib.Point, _lib.Point]
+
+_SIGN = {">= 0": 1, "<= 0": -1, "any": 0}
+_registry = {}      # measure id -> (fn, sign, keep-alive objects)
+_pending = []       # the first exception a callback raised, re-raised after the call
+
+
+def quantities(triangles):
+    """The quantities of every triangle of an (m, 3, 2) array, as the C
+    library computes them (geom_tri_make: vertices in canonical order): a
+    structured (m,) array with the fields of VARS."""
+    t = as_coords(triangles, "triangles", (-1, 3, 2))
+    check_contract(t, "triangle")
+    out = np.empty(len(t), dtype=TRI_DTYPE)
+    g = GeomTri()
+    for i in range(len(t)):    # one C call per triangle; geom_tri_make is the one home
+        P = [_lib.Point(*t[i, k]) for k in range(3)]
+        lib.geom_tri_make(ctypes.byref(g), *P)
+        out[i] = tuple(getattr(g, n) for n in VARS)
+    return out
+
+
+def _as_dict(rec):
+    return {n: rec[n] for n in VARS}
+
+
+def measure(name, fn, sign="any", desc="a Python measure"):
+    """Register fn (arrays of triangle quantities -> array of badness; small
+    is good) as the measure NAME; sign ">= 0", "<= 0" or "any" (the joints'
+    sign convention, docs/joints.md).  Returns NAME."""
+    if sign not in _SIGN:
+        raise ValueError("sign: expected '>= 0', '<= 0' or 'any', got %r" % (sign,))
+    e = _lib.errbuf()
+    if lib.measure_check_name(b"measure", name.encode(), e, _lib.ERRLEN) != 0:
+        raise ValueError(_lib.text(e))
+    if lib.measure_find(name.encode()) >= 0:
+        raise ValueError("measure '%s' is already defined" % name)
+    s = _SIGN[sign]
+    bname = name.encode()
+
+    def one(tp, ctx):
+        t = tp.contents
+        try:
+            q = {n: np.array([getattr(t, n)]) for n in VARS}
+            v = float(np.asarray(fn(q), dtype=np.float64).reshape(-1)[0])
+        except BaseException as ex:          # noqa: B902 - kept, re-raised after the call
+            if not _pending:
+                _pending.append(ex)
+            v = float("nan")
+        return lib.formula_check_value(bname, tp, v, s, 1)
+
+    cb = MeasureFn(one)
+    nbuf, dbuf = ctypes.create_string_buffer(bname), ctypes.create_string_buffer(desc.encode())
+    m = _lib.Measure(name=ctypes.cast(nbuf, ctypes.c_char_p),
+                     symbol=ctypes.cast(nbuf, ctypes.c_char_p),
+                     desc=ctypes.cast(dbuf, ctypes.c_char_p), sign=s,
+                     fn=ctypes.cast(cb, ctypes.c_void_p), ctx=None)
+    keep = [nbuf, dbuf, cb, m]      # the registry keeps pointers into these
+    mid = lib.measure_register(ctypes.byref(m))
+    if mid < 0:
+        raise ValueError("measure '%s': the registry is full" % name)
+    _registry[mid] = (fn, s, keep)
+    return name
+
+
+def raise_pending():
+    if _pending:
+        ex = _pending.pop()
+        _pending.clear()
+        raise ex
+
+
+def badness_python(mid, triangles):
+    """badness() of a Python measure: fn once on the whole array."""
+    fn, s, _ = _registry[mid]
+    q = quantities(triangles)
+    v = np.asarray(fn(_as_dict(q)), dtype=np.float64).reshape(-1)
+    if v.shape != (len(q),):
+        raise ValueError("measure %s returned %d values for %d triangles"
+                         % (lib.measure_get(mid).contents.name.decode(), v.size, len(q)))
+    bad = np.isnan(v) | ((s > 0) & (v < 0)) | ((s < 0) & (v > 0))
+    if bad.any():
+        i = int(np.argmax(bad))
+        g = GeomTri(*[float(q[i][n]) for n in VARS])
+        lib.formula_check_value(lib.measure_get(mid).contents.name, ctypes.byref(g),
+                                float(v[i]), s, 1)
+    return v
