@@ -771,6 +771,25 @@ static void test_number_parse(void **state) {
   assert_int_equal(geom_coord_parse_n("1e31", 4, &x), GEOM_COORD_OUT_OF_RANGE);
 }
 
+/* geom_coord_check_n finds the first coordinate geom_coord_check refuses,
+** in an array of valid ones with each kind of bad one planted at each place. */
+static void test_coord_check_n(void **state) {
+  (void)state;
+  double ok[8] = {0, 1, -1e30, 1e-30, -0.0, 3.5, -2e-30, 1e30};
+  assert_int_equal(geom_coord_check_n(ok, 8), 8);
+  assert_int_equal(geom_coord_check_n(ok, 0), 0);
+  const double bad[] = {NAN, INFINITY, -INFINITY, 1e31, 1e-31, 4e-320, -2e30};
+  for (size_t b = 0; b < sizeof bad / sizeof *bad; b++)
+    for (size_t at = 0; at < 8; at++) {
+      double x[8];
+      memcpy(x, ok, sizeof x);
+      x[at] = bad[b];
+      assert_int_equal(geom_coord_check_n(x, 8), at);
+      if (at < 7) x[7] = bad[b];   /* the first one counts */
+      assert_int_equal(geom_coord_check_n(x, 8), at);
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_tri_equilateral),
@@ -790,6 +809,7 @@ int main(void) {
     cmocka_unit_test(test_dist_finite),
     cmocka_unit_test(test_polygon_check),
     cmocka_unit_test(test_number_parse),
+    cmocka_unit_test(test_coord_check_n),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
