@@ -1,7 +1,8 @@
 /*
 ** cmd_lot.c: `fliplab lot`: a locally optimal triangulation of a point set
 ** for any rule (built-in, formula or plugin) by the incremental or the
-** flip algorithm (DT also by the sweepline algorithm); prints the counts, the status (converged, cycle, budget
+** flip algorithm (DT and empty-shape rules also by the sweepline
+** algorithm); prints the counts, the status (converged, cycle, budget
 ** exhausted) and the time; optionally re-checks local optimality from
 ** scratch, compares with the Delaunay triangulation or (convex position)
 ** the GOT, and writes the triangles as CSV and an SVG.  --rule A,B,...
@@ -73,7 +74,7 @@ static const cli_option cli_lot_opts[] = {
   {.name = "--algorithm", .arg = "A",
    .help = "incremental: insert, then flip back to a LOT; flip: a\n"
            "                     sweep triangulation, then Lawson's flip algorithm;\n"
-           "                     sweep (rule DT): the sweepline Delaunay algorithm",
+           "                     sweep (rule DT or ES:SHAPE): the sweepline algorithm",
    .kind = CLI_CHOICE, .off = CLI_AT(T, algorithm, int), .names = cli_lot_algorithms,
    .idef = LOT_INCREMENTAL, .bad = "unknown algorithm '%s' (valid: incremental, flip, sweep)"},
   {.name = "--order", .arg = "O",

@@ -349,7 +349,7 @@ static int shape_contacts_all(const shape *k, const int start[3], const int len[
 ** shape_contact_ok is the circumscribing homothet's, and every passing
 ** triple gives the same homothet), so when it stalls, leaves a range or
 ** takes too long, every triple is tried. */
-static int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]) {
+int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]) {
   /* sup = s_AB, s_BC, s_CA; A's range starts at s_CA, B's at s_AB, C's at s_BC. */
   int start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3];
   for (int r = 0; r < 3; r++) {

@@ -63,6 +63,14 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
 ** the start vertex of an edge of the same direction as PQ. */
 int shape_support(const shape *k, geom_point p, geom_point q);
 
+/* The circumscribing shape of the anticlockwise triangle ABC (with the
+** tie-break, docs/emptyshape.md): 1 when it is a homothet of polygon K, its
+** contact edges (edge i joins vertices i and i + 1) of A, B, C in
+** contact[]; 0 when it is the rounding shape of the corner *corner; -1 when
+** no contact triple was found (never expected).  geom/shape_sweep.c. */
+int shape_circumscribe(const shape *k, geom_point a, geom_point b, geom_point c, int contact[3],
+                       int *corner);
+
 /* Calls that needed the exact (GMP) fallback, over the process (diagnostics). */
 unsigned long shape_exact_calls(void);
 

@@ -35,6 +35,11 @@ FLIPLAB_INTERNAL int shape_sign(shape_prog f, const shape_args *g);
 ** when both are 0. */
 FLIPLAB_INTERNAL int shape_eps_sign(shape_prog f, shape_args g, int *level);
 
+/* The contact edges t (of A, B, C = p[0..2]) of the circumscribing
+** homothet of the anticlockwise triangle p whose supports s_AB, s_BC, s_CA
+** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
+FLIPLAB_INTERNAL int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]);
+
 /* The programs.  cross: cross(e_{e[0]}, p[1] - p[0]) (deriv: -e.(p[1] - p[0]));
 ** det3h: rows (e_x, e_y, h) of edges e[0..2], h = cross(k_i, k_{i+1});
 ** det3w: rows (e_x, e_y, w) of (e[r], p[r]), w = cross(p - o, e) (deriv: e.(p - o));

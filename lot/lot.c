@@ -511,10 +511,15 @@ static void lot_run_free(lot_run *R) {
 
 static int lot_validate(const geom_point *p, size_t n, const lot_options *o, char *err,
                         size_t errlen) {
-  if (o->algorithm == LOT_SWEEP && (!rule_is_delaunay(&o->r) || o->decide)) {
-    snprintf(err, errlen, "the sweep algorithm makes the Delaunay triangulation: it needs "
-             "rule DT (got %s)", o->decide ? "a decision hook" : rule_name(&o->r));
-    return -1;
+  if (o->algorithm == LOT_SWEEP) {
+    lot_sweep_pick pk;
+    if (o->decide) {
+      snprintf(err, errlen, "the sweep algorithm decides by its rule's shape: it takes no "
+               "decision hook");
+      return -1;
+    }
+    if (lot_sweep_pick_rule(&o->r, &pk, err, errlen) != 0) return -1;
+    lot_sweep_pick_free(&pk);
   }
   if (n > LOT_MAX_POINTS) {
     snprintf(err, errlen, "%zu points: at most %u are supported", n, (unsigned)LOT_MAX_POINTS);
@@ -625,7 +630,16 @@ static void lot_use_rule(lot *L) {
 ** out of memory; -2 with the message in err (no triangle). */
 static int lot_triangulate(lot *L, lot_run *R, const lot_options *o, char *err, size_t errlen) {
   if (o->algorithm == LOT_SWEEP) {
-    int rc = lot_sweep_run(&L->m, &lot_sweep_circle, &L->st.duplicates);
+    lot_sweep_pick pk;
+    if (lot_sweep_pick_rule(&L->r, &pk, err, errlen) != 0) return -2;
+    int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
+    lot_sweep_pick_free(&pk);
+    if (rc == 0 && pk.special > 0) {
+      snprintf(err, errlen, "the sweep for %s met %zu ties that only the rule's tie-break "
+               "settles (sites in special position): use --algorithm incremental or flip",
+               rule_name(&L->r), pk.special);
+      return -2;
+    }
     if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);
     return rc;
   }

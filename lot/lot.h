@@ -17,10 +17,11 @@
 **   sweep        the thesis's sweepline algorithm (sections 2.5.1, 4.1.1):
 **                a vertical line sweeps the points from left to right,
 **                keeping the boundary of the part of the triangulation
-**                that is certain; site events and circumcircle events
-**                (keyed by the circle's rightmost point, compared exactly)
-**                make the Delaunay triangulation directly, no flips (rule
-**                DT only, for now).
+**                that is certain; site events and circumshape events
+**                (keyed by the circumscribing shape's rightmost point,
+**                compared exactly) make the triangulation directly, no
+**                flips (rule DT or an empty-shape rule ES:SHAPE; for a
+**                polygon, sites in special position are refused for now).
 **
 ** Every geometric decision is exact (geom_orient, geom_incircle).  Rules are
 ** decided through the rule API (rule.h): DT exactly, triangle-based b_f with
@@ -99,7 +100,8 @@ typedef struct lot lot;
 ** with a one-line message in err: fewer than three distinct points, all
 ** collinear, a coordinate outside the contract of geom.h (geom_coord_check,
 ** naming the point), too many points, out of memory, LOT_SWEEP with a rule
-** other than DT or a decision hook. */
+** other than DT or ES:SHAPE, with a decision hook, or on sites in special
+** position for a polygon (ties only the rule's tie-break settles). */
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
               char *err, size_t errlen);
 

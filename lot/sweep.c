@@ -179,7 +179,7 @@ static uint32_t sw_locate(const lot_sweep *S, geom_point X) {
       uint32_t q = nd[cur].nx[l];
       if (q == SW_NONE) break;
       uint32_t a = nd[q].pv[0];
-      if (a != SW_HEAD && !S->s->above(nd[a].pt, nd[q].pt, X)) break;
+      if (a != SW_HEAD && !S->s->above(S->s->ctx, nd[a].pt, nd[q].pt, X)) break;
       cur = q;
     }
   return cur;
@@ -193,9 +193,9 @@ static uint32_t sw_walk(const lot_sweep *S, uint32_t h, geom_point X) {
   const sw_node *nd = S->nd;
   for (int k = 0; k < SW_WALK; k++) {
     uint32_t a = nd[h].pv[0], c = nd[h].nx[0];
-    if (a != SW_HEAD && !S->s->above(nd[a].pt, nd[h].pt, X)) {
+    if (a != SW_HEAD && !S->s->above(S->s->ctx, nd[a].pt, nd[h].pt, X)) {
       h = a;
-    } else if (c != SW_NONE && S->s->above(nd[h].pt, nd[c].pt, X)) {
+    } else if (c != SW_NONE && S->s->above(S->s->ctx, nd[h].pt, nd[c].pt, X)) {
       h = c;
     } else {
       return h;
@@ -230,6 +230,13 @@ static void sw_points(const lot_sweep *S, const sw_event *e, geom_point t[3]) {
   for (int i = 0; i < 3; i++) t[i] = S->m->p[e->v[i]];
 }
 
+/* The sites events a and b share: 2 for neighbouring triples (3: one triple, made again). */
+static int sw_shared(const sw_event *a, const sw_event *b) {
+  int n = 0;
+  for (int i = 0; i < 3; i++) n += a->v[i] == b->v[0] || a->v[i] == b->v[1] || a->v[i] == b->v[2];
+  return n;
+}
+
 /* Does event a come before b?  Exact keys, then creation order. */
 static int sw_before(const lot_sweep *S, const sw_event *a, const sw_event *b) {
   if (a->hi < b->lo) return 1;
@@ -237,7 +244,8 @@ static int sw_before(const lot_sweep *S, const sw_event *a, const sw_event *b) {
   geom_point ta[3], tb[3];
   sw_points(S, a, ta);
   sw_points(S, b, tb);
-  int c = S->s->key_cmp(ta, 0, tb, 0);
+  int c = S->s->key_cmp(S->s->ctx, ta, 0, tb, 0);
+  if (c == 0 && S->s->ties != NULL && sw_shared(a, b) == 2) ++*S->s->ties;
   return c != 0 ? c < 0 : a->seq < b->seq;
 }
 
@@ -247,7 +255,7 @@ static int sw_before_site(const lot_sweep *S, const sw_event *e, double x) {
   if (e->lo > x) return 0;
   geom_point t[3];
   sw_points(S, e, t);
-  return S->s->key_cmp(t, 0, NULL, x) <= 0;
+  return S->s->key_cmp(S->s->ctx, t, 0, NULL, x) <= 0;
 }
 
 static int sw_push(lot_sweep *S, const sw_event *e) {
@@ -289,8 +297,8 @@ static int sw_schedule(lot_sweep *S, uint32_t b) {
   if (a == SW_HEAD || c == SW_NONE) return 0;
   sw_event e = {0, 0, b, nd[b].gen, S->seq++, {nd[a].site, nd[b].site, nd[c].site}};
   const geom_point t[3] = {nd[a].pt, nd[b].pt, nd[c].pt};
-  if (!S->s->closes(t[0], t[1], t[2])) return 0;
-  S->s->key_bounds(t, &e.lo, &e.hi);
+  if (!S->s->closes(S->s->ctx, t[0], t[1], t[2])) return 0;
+  S->s->key_bounds(S->s->ctx, t, &e.lo, &e.hi);
   return sw_push(S, &e);
 }
 

@@ -12,75 +12,15 @@
 #include <math.h>
 #include "sweep_internal.h"
 
-/* ---- certified floating-point intervals -------------------------------- */
-
-/* A value v with a bound e on its distance to the exact quantity.  Each
-** operation below returns v = fl(op(x.v, y.v)) and an e that bounds
-** |op(X, Y) - v| for every X within x.e of x.v and Y within y.e of y.v:
-**   add: |X + Y - (x.v + y.v)| <= x.e + y.e;
-**   mul: |XY - x.v y.v| <= |x.v| y.e + |y.v| x.e + x.e y.e;
-**   div: |X/Y - x.v/y.v| = |(X - x.v) y.v - x.v (Y - y.v)| / |Y y.v|
-**        <= (|y.v| x.e + |x.v| y.e) / ((|y.v| - y.e) |y.v|), when |y.v| > y.e;
-**   sqrt: |sqrt X - sqrt x.v| = |X - x.v| / (sqrt X + sqrt x.v) <= x.e / sqrt x.v,
-**        or, when x.v <= x.e, sqrt X and sqrt x.v both lie in [0, sqrt(x.v + x.e)];
-** plus the rounding of v itself, at most eps |op| <= 2 eps |v|.  The bound
-** is evaluated in floating point from non-negative terms, a dozen roundings
-** at most, each shrinking it by a factor (1 - eps) at worst: lot_iv_fix's
-** factor 1 + 2^-40 outweighs them all, and its 2^-1000 the absolute error
-** of any term that underflows.  A NaN or infinite v or e (overflow, a
-** division by an interval holding 0) makes the final bounds infinite, and
-** the exact path decides. */
-typedef struct lot_iv {
-  double v, e;
-} lot_iv;
-
-static double lot_iv_fix(double e) {
-  return e * (1.0 + 0x1p-40) + 0x1p-1000;
-}
-
-static lot_iv lot_iv_diff(double a, double b) {   /* a - b of two doubles */
-  double v = a - b;
-  return (lot_iv){v, lot_iv_fix(2 * GEOM_EPS * fabs(v))};
-}
-
-static lot_iv lot_iv_add(lot_iv x, lot_iv y) {
-  double v = x.v + y.v;
-  return (lot_iv){v, lot_iv_fix(x.e + y.e + 2 * GEOM_EPS * fabs(v))};
-}
-
-static lot_iv lot_iv_neg(lot_iv x) {
-  return (lot_iv){-x.v, x.e};
-}
-
-static lot_iv lot_iv_mul(lot_iv x, lot_iv y) {
-  double v = x.v * y.v;
-  return (lot_iv){v, lot_iv_fix(fabs(x.v) * y.e + fabs(y.v) * x.e + x.e * y.e
-                                + 2 * GEOM_EPS * fabs(v))};
-}
-
-static lot_iv lot_iv_div(lot_iv x, lot_iv y) {
-  double v = x.v / y.v, ay = fabs(y.v);
-  if (!(ay > y.e)) return (lot_iv){v, INFINITY};
-  return (lot_iv){v, lot_iv_fix((ay * x.e + fabs(x.v) * y.e) / ((ay - y.e) * ay)
-                                + 2 * GEOM_EPS * fabs(v))};
-}
-
-static lot_iv lot_iv_sqrt(lot_iv x) {
-  double v = sqrt(x.v > 0 ? x.v : 0);
-  if (x.v <= x.e) return (lot_iv){v, lot_iv_fix(sqrt(x.v + x.e) + 2 * GEOM_EPS * v)};
-  return (lot_iv){v, lot_iv_fix(x.e / v + 2 * GEOM_EPS * v)};
-}
-
 /* ---- the event key ----------------------------------------------------- */
 
 /* The circumcentre of a, b, c relative to a, with b' = b - a, c' = c - a:
 **   ox = nx / D, oy = ny / D,  D = 2 (b'x c'y - b'y c'x),
 **   nx = |b'|^2 c'y - |c'|^2 b'y,  ny = |c'|^2 b'x - |b'|^2 c'x,
 ** and the key is a.x + ox + sqrt(ox^2 + oy^2), evaluated here in
-** certified intervals (above).  The final bounds v -+ E, E = fix(e +
-** 4 eps |v|), are rounded too: fl(v - E) <= v - E + eps (|v| + E), which
-** stays below v - e because E (1 - eps) - e >= 3 eps |v|; likewise above. */
-static void lot_circle_key_bounds(const geom_point t[3], double *lo, double *hi) {
+** certified intervals (sweep_internal.h), bounded by lot_iv_bounds. */
+static void lot_circle_key_bounds(const void *ctx, const geom_point t[3], double *lo, double *hi) {
+  (void)ctx;
   lot_iv bx = lot_iv_diff(t[1].x, t[0].x), by = lot_iv_diff(t[1].y, t[0].y);
   lot_iv cx = lot_iv_diff(t[2].x, t[0].x), cy = lot_iv_diff(t[2].y, t[0].y);
   lot_iv bb = lot_iv_add(lot_iv_mul(bx, bx), lot_iv_mul(by, by));
@@ -93,13 +33,7 @@ static void lot_circle_key_bounds(const geom_point t[3], double *lo, double *hi)
   lot_iv ox = lot_iv_div(nx, d), oy = lot_iv_div(ny, d);
   lot_iv r = lot_iv_sqrt(lot_iv_add(lot_iv_mul(ox, ox), lot_iv_mul(oy, oy)));
   lot_iv k = lot_iv_add(lot_iv_add((lot_iv){t[0].x, 0}, ox), r);
-  double E = lot_iv_fix(k.e + 4 * GEOM_EPS * fabs(k.v));
-  *lo = k.v - E;
-  *hi = k.v + E;
-  if (!isfinite(*lo) || !isfinite(*hi)) {
-    *lo = -INFINITY;
-    *hi = INFINITY;
-  }
+  lot_iv_bounds(k, lo, hi);
 }
 
 /* The exact key as q + sqrt(r2): q = a.x + nx / D, r2 = (nx^2 + ny^2) / D^2
@@ -140,7 +74,7 @@ static void lot_circle_key_q(const geom_point *t, double x, mpq_t q, mpq_t r2) {
 ** r2)^2 = r1 + r2 - 2 sqrt(r1 r2), i.e. when e + 2 sqrt(r1 r2) > 0 for
 ** e = d^2 - r1 - r2: true when e > 0 (e = 0: when r1 r2 > 0), and for
 ** e < 0 when 4 r1 r2 > e^2; equality gives 0. */
-static int lot_sqrt_cmp(mpq_t q1, mpq_t r1, mpq_t q2, mpq_t r2) {
+int lot_sweep_sqrt_cmp(mpq_t q1, mpq_t r1, mpq_t q2, mpq_t r2) {
   mpq_t d, e, f;
   mpq_inits(d, e, f, NULL);
   mpq_sub(d, q1, q2);
@@ -168,15 +102,17 @@ static int lot_sqrt_cmp(mpq_t q1, mpq_t r1, mpq_t q2, mpq_t r2) {
 }
 
 /* Exact: both keys as q + sqrt(r2) (lot_circle_key_q), compared by
-** lot_sqrt_cmp.  The sweep calls it only when the certified bounds of the
+** lot_sweep_sqrt_cmp.  The sweep calls it only when the certified bounds of the
 ** two keys overlap. */
-static int lot_circle_key_cmp(const geom_point *t, double tx, const geom_point *u, double ux) {
+static int lot_circle_key_cmp(const void *ctx, const geom_point *t, double tx, const geom_point *u,
+                              double ux) {
+  (void)ctx;
   if (t == NULL && u == NULL) return (tx > ux) - (tx < ux);
   mpq_t q1, r1, q2, r2;
   mpq_inits(q1, r1, q2, r2, NULL);
   lot_circle_key_q(t, tx, q1, r1);
   lot_circle_key_q(u, ux, q2, r2);
-  int s = lot_sqrt_cmp(q1, r1, q2, r2);
+  int s = lot_sweep_sqrt_cmp(q1, r1, q2, r2);
   mpq_clears(q1, r1, q2, r2, NULL);
   return s;
 }
@@ -259,7 +195,8 @@ static int lot_lift_sign(geom_point A, geom_point B, geom_point X) {
 **   T1: X above it iff o > 0, or X.y > oy;   T2: iff o > 0 and X.y > oy;
 ** o = 0 puts X at M, strictly between T1 and T2.  A.x = B.x: the contact
 ** point is at (A.y + B.y) / 2 whatever the sweepline.  All exact. */
-static int lot_circle_above(geom_point A, geom_point B, geom_point X) {
+static int lot_circle_above(const void *ctx, geom_point A, geom_point B, geom_point X) {
+  (void)ctx;
   if (A.x == B.x) return lot_mid_sign(A.y, B.y, X.y) > 0;
   int lower = A.x < B.x, oab = geom_orient_valid(A, B, X);   /* = orient(X, A, B) */
   int o = lower ? oab : -oab;
@@ -272,9 +209,10 @@ static int lot_circle_above(geom_point A, geom_point B, geom_point X) {
 /* Consecutive a, b, c (bottom to top) close an event when c is strictly
 ** right of a -> b: then the arcs' breakpoints converge (the circumcentre
 ** lies behind b). */
-static int lot_circle_closes(geom_point a, geom_point b, geom_point c) {
+int lot_sweep_closes(const void *ctx, geom_point a, geom_point b, geom_point c) {
+  (void)ctx;
   return geom_orient_valid(a, b, c) < 0;
 }
 
-const lot_sweep_shape lot_sweep_circle = {"circle", lot_circle_closes, lot_circle_key_bounds,
-                                          lot_circle_key_cmp, lot_circle_above};
+const lot_sweep_shape lot_sweep_circle = {"circle", NULL, lot_sweep_closes, lot_circle_key_bounds,
+                                          lot_circle_key_cmp, lot_circle_above, NULL};

@@ -72,14 +72,14 @@ static void test_same_out(void **state) {
 static void test_refusals(void **state) {
   (void)state;
   assert_int_equal(tsc_run("lot --rule P_1 --random 20 --algorithm sweep%s%s", "", ""), 2);
-  assert_non_null(strstr(tsc_err, "needs rule DT (got P_1)"));
+  assert_non_null(strstr(tsc_err, "needs rule DT or ES:SHAPE (got P_1)"));
   assert_int_equal(tsc_run("lot --rule DT --random 20 --algorithm sweep --order input%s%s",
                            "", ""), 2);
   assert_non_null(strstr(tsc_err, "--order applies to --algorithm incremental only"));
   assert_int_equal(tsc_run("lot --rule DT --random 20 --algorithm sweeps%s%s", "", ""), 2);
   assert_non_null(strstr(tsc_err, "(valid: incremental, flip, sweep)"));
   assert_int_equal(tsc_run("lot --help%s%s", "", ""), 0);
-  assert_non_null(strstr(tsc_out, "sweep (rule DT): the sweepline Delaunay algorithm"));
+  assert_non_null(strstr(tsc_out, "sweep (rule DT or ES:SHAPE): the sweepline algorithm"));
 }
 
 int main(void) {

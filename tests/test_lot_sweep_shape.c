@@ -1,0 +1,232 @@
+/*
+** test_lot_sweep_shape.c: the sweepline algorithm for empty-shape rules
+** (lot --algorithm sweep --rule ES:SHAPE).
+**
+** The sweep shares no decision code with the other two algorithms: they
+** flip by shape_decide, the sweep orders events by the exact keys of the
+** circumscribing shapes' rightmost points and locates sites by its own
+** "above" test.  So the checks are: sweep == incremental == flip as sets
+** of triangles on inputs where the rule's triangulation is unique (no four
+** sites on one homothet), and lot_check (structure, Euler's count, the
+** rule on every interior edge, from scratch) on all of them.  Inputs: the
+** samplers of lot, rotated ellipses on grids and circles (no four sites
+** on one ellipse there), polygons on generic sites (sites in special
+** position for a polygon are refused, for now), columns of equal x, tiny
+** and huge coordinates.
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lot.h"
+#include "rule.h"
+#include "sampler.h"
+#include "testutil.h"
+
+typedef struct tss_result {
+  uint32_t *tri;
+  size_t ntri;
+} tss_result;
+
+static rule tss_rule(const char *name) {
+  rule r;
+  char err[256];
+  if (rule_parse(name, &r, err, sizeof err) != 0) fail_msg("rule_parse %s: %s", name, err);
+  return r;
+}
+
+/* Build the LOT of p for rule name with algorithm a; its sorted triangles. */
+static tss_result tss_build(const char *name, const geom_point *p, size_t n, lot_algorithm a) {
+  rule r = tss_rule(name);
+  lot_options o;
+  lot_options_init(&o, &r);
+  o.algorithm = a;
+  lot *L;
+  char err[256];
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) fail_msg("lot_build %s: %s", name, err);
+  const lot_stats *st = lot_get_stats(L);
+  tss_result res = {malloc(3 * (st->triangles + 1) * sizeof *res.tri), st->triangles};
+  assert_non_null(res.tri);
+  lot_get_triangles(L, res.tri);
+  if (a == LOT_SWEEP) assert_int_equal(st->flips, 0);
+  assert_int_equal(st->status, LOT_CONVERGED);
+  lot_free(L);
+  return res;
+}
+
+/* The sweep's triangulation is one of the rule (lot_check); when unique,
+** the incremental and flip algorithms give the very same triangles. */
+static void tss_agree(const char *name, const geom_point *p, size_t n, int unique) {
+  tss_result s = tss_build(name, p, n, LOT_SWEEP);
+  rule r = tss_rule(name);
+  lot_check_result c;
+  assert_int_equal(lot_check(p, n, s.tri, s.ntri, &r, &c), 0);
+  assert_true(c.valid);
+  if (c.not_optimal != 0) fail_msg("%s, %zu points: %zu edges not optimal", name, n, c.not_optimal);
+  for (int a = 0; a < 2 && unique; a++) {
+    tss_result o = tss_build(name, p, n, a == 0 ? LOT_INCREMENTAL : LOT_FLIP);
+    if (o.ntri != s.ntri || memcmp(o.tri, s.tri, 3 * s.ntri * sizeof *s.tri) != 0)
+      fail_msg("%s, %zu points: the sweep differs from %s", name, n,
+               a == 0 ? "incremental" : "flip");
+    free(o.tri);
+  }
+  free(s.tri);
+}
+
+/* Rotated ellipses: no four sites of a grid or of the circle sampler lie
+** on one of their homothets, so the triangulation is unique there too. */
+static const char *const tss_ellipses[] = {"ES:ellipse:2 1 0.3", "ES:ellipse:3 0.5 1.1",
+                                           "ES:ellipse:1 4 -0.7"};
+
+static void test_ellipse_samplers(void **state) {
+  (void)state;
+  static const size_t ns[] = {3, 4, 7, 30, 400, 2000};
+  for (size_t e = 0; e < sizeof tss_ellipses / sizeof *tss_ellipses; e++)
+    for (int k = 0; k < SAMPLER_POINTS_COUNT; k++)
+      for (size_t i = 0; i < sizeof ns / sizeof *ns; i++) {
+        geom_point *p = malloc(ns[i] * sizeof *p);
+        assert_non_null(p);
+        sampler_points((sampler_points_kind)k, 1 + i, ns[i], p);
+        tss_agree(tss_ellipses[e], p, ns[i], 1);
+        free(p);
+      }
+}
+
+/* Axis-aligned ellipses and the unit circle on grids: four sites on one
+** homothet everywhere (the triangulation is not unique), so only
+** lot_check; on uniform points they agree. */
+static void test_ellipse_special(void **state) {
+  (void)state;
+  geom_point p[900];
+  const char *names[] = {"ES:ellipse:2 1", "ES:ellipse:1 1", "ES:ellipse:1 3"};
+  for (int e = 0; e < 3; e++) {
+    sampler_points(SAMPLER_GRID, 1, 900, p);
+    tss_agree(names[e], p, 900, 0);
+    sampler_points(SAMPLER_UNIFORM, 5, 900, p);
+    tss_agree(names[e], p, 900, 1);
+  }
+}
+
+/* Columns of equal x (the sweep's first-column case and later columns),
+** tiny and huge coordinates (the exact fallbacks). */
+static void test_ellipse_adversarial(void **state) {
+  (void)state;
+  geom_point a[40];
+  for (int i = 0; i < 20; i++) {
+    a[i] = (geom_point){0, i * 0.37};
+    a[20 + i] = (geom_point){1, i * 0.41 + 0.05};
+  }
+  for (size_t e = 0; e < sizeof tss_ellipses / sizeof *tss_ellipses; e++)
+    tss_agree(tss_ellipses[e], a, 40, 1);
+  const double sc[] = {1e-28, 1e-20, 1e20, 1e28};   /* coordinates within 2^-100 .. 2^100 */
+  geom_point p[300];
+  for (size_t s = 0; s < sizeof sc / sizeof *sc; s++) {
+    sampler_points(SAMPLER_NORMAL, 3, 300, p);
+    for (int i = 0; i < 300; i++)
+      p[i] = (geom_point){(10 + p[i].x) * sc[s], (10 + p[i].y) * sc[s]};
+    tss_agree("ES:ellipse:2 1 0.3", p, 300, 1);
+  }
+}
+
+/* Polygons: the named ones, a regular heptagon, a quadrilateral and a
+** triangle with a vertical right edge (the tie-break's rightmost corner is
+** its lower end, and the upper end's rounding shape has the smallest
+** infinite keys), a thin slanted quadrilateral. */
+static const char *const tss_polygons[] = {
+  "ES:square", "ES:diamond", "ES:triangle", "ES:hexagon", "ES:ngon:7",
+  "ES:poly:0 0;3 1;2 3;-1 2", "ES:poly:0 0;1 0;1 1", "ES:poly:0 0;5 1;5.5 1.5;0.2 0.3"};
+
+/* Generic sites (no two on a line parallel to a side of K, no four on one
+** homothet): the triangles of the incremental and flip algorithms, index
+** for index, from 3 sites up. */
+static void test_polygon_samplers(void **state) {
+  (void)state;
+  static const size_t ns[] = {3, 4, 5, 9, 31, 150, 400};
+  const sampler_points_kind ks[] = {SAMPLER_UNIFORM, SAMPLER_NORMAL, SAMPLER_DISC,
+                                    SAMPLER_CIRCLE};
+  for (size_t e = 0; e < sizeof tss_polygons / sizeof *tss_polygons; e++)
+    for (size_t k = 0; k < sizeof ks / sizeof *ks; k++)
+      for (size_t i = 0; i < sizeof ns / sizeof *ns; i++)
+        for (uint64_t seed = 1; seed <= (ns[i] < 100 ? 3u : 1u); seed++) {
+          geom_point *p = malloc(ns[i] * sizeof *p);
+          assert_non_null(p);
+          sampler_points(ks[k], seed, ns[i], p);
+          tss_agree(tss_polygons[e], p, ns[i], 1);
+          free(p);
+        }
+}
+
+/* Columns of equal x (no other tie for a shape without vertical edges),
+** and tiny and huge coordinates. */
+static void test_polygon_adversarial(void **state) {
+  (void)state;
+  geom_point a[40];
+  for (int i = 0; i < 20; i++) {
+    a[i] = (geom_point){0, i * 0.37};
+    a[20 + i] = (geom_point){1, i * 0.41 + 0.05};
+  }
+  tss_agree("ES:hexagon", a, 40, 1);   /* no vertical side (ngon:7 has one on the left) */
+  tss_agree("ES:poly:0 0;3 1;2 3;-1 2", a, 40, 1);
+  const double sc[] = {1e-28, 1e-20, 1e20, 1e28};
+  geom_point p[300];
+  for (size_t s = 0; s < sizeof sc / sizeof *sc; s++) {
+    sampler_points(SAMPLER_NORMAL, 3, 300, p);
+    for (int i = 0; i < 300; i++)
+      p[i] = (geom_point){(10 + p[i].x) * sc[s], (10 + p[i].y) * sc[s]};
+    for (size_t e = 0; e < 4; e += 3) tss_agree(tss_polygons[e], p, 300, 1);
+  }
+}
+
+/* Sites in special position for a polygon (a grid for the square: equal
+** keys, sites on lines parallel to its sides) are refused in one line
+** naming the way out, not triangulated wrongly. */
+static void test_polygon_special(void **state) {
+  (void)state;
+  geom_point p[100];
+  sampler_points(SAMPLER_GRID, 1, 100, p);
+  rule r = tss_rule("ES:square");
+  lot_options o;
+  lot_options_init(&o, &r);
+  o.algorithm = LOT_SWEEP;
+  lot *L;
+  char err[256];
+  assert_int_equal(lot_build(&L, p, 100, &o, err, sizeof err), -1);
+  assert_non_null(strstr(err, "special position"));
+  assert_non_null(strstr(err, "use --algorithm incremental or flip"));
+  assert_null(strchr(err, '\n'));
+}
+
+/* The sweep takes DT and empty-shape rules only, in one line. */
+static void test_errors(void **state) {
+  (void)state;
+  rule r = tss_rule("P_1");
+  lot_options o;
+  lot_options_init(&o, &r);
+  o.algorithm = LOT_SWEEP;
+  lot *L;
+  char err[256];
+  geom_point t[] = {{0, 0}, {1, 0}, {0, 1}};
+  assert_int_equal(lot_build(&L, t, 3, &o, err, sizeof err), -1);
+  assert_non_null(strstr(err, "it needs rule DT or ES:SHAPE (got P_1)"));
+  assert_null(strchr(err, '\n'));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_ellipse_samplers),
+    cmocka_unit_test(test_ellipse_special),
+    cmocka_unit_test(test_ellipse_adversarial),
+    cmocka_unit_test(test_polygon_samplers),
+    cmocka_unit_test(test_polygon_adversarial),
+    cmocka_unit_test(test_polygon_special),
+    cmocka_unit_test(test_errors),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
