@@ -1,28 +1,32 @@
 /*
-** bench_lot_sweep.c: the sweepline Delaunay triangulation against the
-** incremental one.
+** bench_lot_sweep.c: the sweepline algorithm against the incremental one,
+** for DT and empty-shape rules.
 **
-**   bench_lot_sweep [N [RUNS [SEED [SAMPLER]]]]     (defaults 1000000, 5, 1, uniform)
+**   bench_lot_sweep [N [RUNS [SEED [SAMPLER [RULE,RULE,...]]]]]
+**       (defaults 1000000, 5, 1, uniform, DT)
 **
-** RUNS paired runs on the same N points: the incremental DT (spatial
-** order), then the sweep, one after the other so that both see the same
-** machine load.  Prints each algorithm's median wall and CPU time and the
-** medians of the pairs' ratios sweep / incremental (on a shared machine the
-** paired ratios, and the CPU ones above all, are the steady figures).
-** Times cover lot_build only (validation, ordering, triangulation).
+** For each rule, RUNS paired runs on the same N points: the incremental
+** algorithm (spatial order), then the sweep, one after the other so that
+** both see the same machine load.  Prints each algorithm's median wall and
+** CPU time and the medians of the pairs' ratios sweep / incremental (on a
+** shared machine the paired ratios, and the CPU ones above all, are the
+** steady figures).  Times cover lot_build only (validation, ordering,
+** triangulation, flips).  Rules are separated by commas, so a shape's
+** numbers take blanks (ES:ellipse:2 1 0.3).
 */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 #include "benchutil.h"
 #include "lot.h"
+#include "rule.h"
 #include "sampler.h"
 
-static void bench_build(const geom_point *p, size_t n, lot_algorithm a, double *wall,
-                        double *cpu) {
-  rule r = rule_delaunay();
+static void bench_build(const geom_point *p, size_t n, const rule *r, lot_algorithm a,
+                        double *wall, double *cpu) {
   lot_options o;
-  lot_options_init(&o, &r);
+  lot_options_init(&o, r);
   o.algorithm = a;
   lot *L;
   char err[256];
@@ -36,13 +40,31 @@ static void bench_build(const geom_point *p, size_t n, lot_algorithm a, double *
   lot_free(L);
 }
 
+/* RUNS paired runs of rule r; one table row per algorithm. */
+static void bench_rule(const geom_point *p, size_t n, const rule *r, int runs) {
+  double iw[16], ic[16], sw[16], sc[16], rw[16], rc[16];
+  for (int k = 0; k < runs; k++) {
+    bench_build(p, n, r, LOT_INCREMENTAL, &iw[k], &ic[k]);
+    bench_build(p, n, r, LOT_SWEEP, &sw[k], &sc[k]);
+    rw[k] = sw[k] / iw[k];
+    rc[k] = sc[k] / ic[k];
+  }
+  printf("| %s | incremental (spatial order) | %.3f | %.3f | 1.00 |\n", rule_name(r),
+         bench_median(iw, runs), bench_median(ic, runs));
+  printf("| %s | sweep | %.3f | %.3f | wall %.2f, CPU %.2f |\n", rule_name(r),
+         bench_median(sw, runs), bench_median(sc, runs), bench_median(rw, runs),
+         bench_median(rc, runs));
+  fflush(stdout);
+}
+
 int main(int argc, char **argv) {
   size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 1000000;
   int runs = argc > 2 ? atoi(argv[2]) : 5;
   uint64_t seed = argc > 3 ? strtoull(argv[3], NULL, 10) : 1;
   int kind = argc > 4 ? sampler_points_find(argv[4]) : SAMPLER_UNIFORM;
+  const char *rules = argc > 5 ? argv[5] : "DT";
   if (n < 3 || runs < 1 || runs > 15 || kind < 0) {
-    fprintf(stderr, "usage: bench_lot_sweep [N >= 3 [RUNS 1..15 [SEED [SAMPLER]]]]\n");
+    fprintf(stderr, "usage: bench_lot_sweep [N >= 3 [RUNS 1..15 [SEED [SAMPLER [RULES]]]]]\n");
     return 2;
   }
   geom_point *p = malloc(n * sizeof *p);
@@ -52,19 +74,21 @@ int main(int argc, char **argv) {
          sampler_points_name((sampler_points_kind)kind), (unsigned long long)seed, runs);
   printf("(load average at start: %.2f on %ld cores)\n\n", bench_load(),
          sysconf(_SC_NPROCESSORS_ONLN));
-  double iw[16], ic[16], sw[16], sc[16], rw[16], rc[16];
-  for (int k = 0; k < runs; k++) {
-    bench_build(p, n, LOT_INCREMENTAL, &iw[k], &ic[k]);
-    bench_build(p, n, LOT_SWEEP, &sw[k], &sc[k]);
-    rw[k] = sw[k] / iw[k];
-    rc[k] = sc[k] / ic[k];
+  printf("| rule | algorithm | time (s) | CPU (s) | sweep / incremental (paired, median) |\n");
+  printf("|---|---|---:|---:|---:|\n");
+  for (const char *s = rules; *s != '\0';) {
+    const char *comma = strchr(s, ',');
+    size_t len = comma ? (size_t)(comma - s) : strlen(s);
+    char name[128], err[256];
+    rule r;
+    snprintf(name, sizeof name, "%.*s", (int)len, s);
+    if (rule_parse(name, &r, err, sizeof err) != 0) {
+      fprintf(stderr, "bench_lot_sweep: %s\n", err);
+      return 2;
+    }
+    bench_rule(p, n, &r, runs);
+    s += len + (comma != NULL);
   }
-  printf("| DT algorithm | time (s) | CPU (s) | sweep / incremental (paired, median) |\n");
-  printf("|---|---:|---:|---:|\n");
-  printf("| incremental (spatial order) | %.3f | %.3f | 1.00 |\n", bench_median(iw, runs),
-         bench_median(ic, runs));
-  printf("| sweep | %.3f | %.3f | wall %.2f, CPU %.2f |\n", bench_median(sw, runs),
-         bench_median(sc, runs), bench_median(rw, runs), bench_median(rc, runs));
   printf("(load average at end: %.2f)\n", bench_load());
   free(p);
   return 0;
