@@ -635,9 +635,9 @@ static int lot_triangulate(lot *L, lot_run *R, const lot_options *o, char *err, 
     int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
     lot_sweep_pick_free(&pk);
     if (rc == 0 && pk.special > 0) {
-      snprintf(err, errlen, "the sweep for %s met %zu ties that only the rule's tie-break "
-               "settles (sites in special position): use --algorithm incremental or flip",
-               rule_name(&L->r), pk.special);
+      snprintf(err, errlen, "the sweep algorithm met %zu ties of %s that only the rule's "
+               "tie-break settles (sites in special position): use --algorithm incremental or "
+               "flip", pk.special, rule_name(&L->r));
       return -2;
     }
     if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);

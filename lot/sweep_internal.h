@@ -28,8 +28,9 @@ typedef struct lot_sweep_shape {
   ** an event (c strictly right of the line a -> b). */
   int (*closes)(const void *ctx, geom_point a, geom_point b, geom_point c);
   /* lo <= key <= hi, the key of the event of t (for the circle: cx + R),
-  ** or lo = -inf, hi = +inf when no bound is known; lo = hi = +inf for an
-  ** infinite key (a shape unbounded to the right), which key_cmp orders. */
+  ** or lo = -inf, hi = +inf when no bound is known.  A shape may also give
+  ** infinite keys (unbounded to the right) bounds in bands above every
+  ** finite key's: disjoint bounds must order as the keys do. */
   void (*key_bounds)(const void *ctx, const geom_point t[3], double *lo, double *hi);
   /* The exact sign of key(t) - key(u), where t == NULL stands for the
   ** site key tx (an x coordinate), u == NULL for ux. */

@@ -148,16 +148,51 @@ static lot_iv lot_poly_corner_iv(const lot_sweep_poly *P, const lot_poly_ev *ev)
   return lot_iv_add((lot_iv){ev->p[0].x, 0}, lot_iv_div(num, delta));
 }
 
+/* The infinite key's leading coefficient alpha sqrt(r) (lot_poly_inf_q)
+** in intervals; *level 1 for the top end of a vertical right edge. */
+static lot_iv lot_poly_inf_iv(const lot_sweep_poly *P, const lot_poly_ev *ev, int *level) {
+  lot_iv u[2], v[2], b[2], c[2], hx, hy;
+  lot_poly_sides_iv(P, ev->corner, u, v);
+  lot_poly_map_iv(u, v, ev->p[1], ev->p[0], b);
+  lot_poly_map_iv(u, v, ev->p[2], ev->p[0], c);
+  lot_poly_centre_iv(b, c, &hx, &hy);
+  geom_point kc = P->k->v[ev->corner], kj = P->k->v[P->right];
+  *level = kc.x == kj.x;
+  lot_iv al = *level ? lot_iv_diff(kc.y, kj.y) : lot_iv_diff(kj.x, kc.x);
+  return lot_iv_mul(al, lot_iv_sqrt(lot_iv_mul(hx, hy)));
+}
+
+/* Heap bounds of an infinite key, in bands above every finite one: the
+** heap decides by disjoint bounds only, so they need only be monotone in
+** the key's order (a larger band, or the same band and a larger
+** coefficient), never enclose it.  Finite bounds are clipped to
+** [-inf, 2^140] from above (lo) and sent to +inf beyond 2^140 (hi), so a
+** finite key never looks larger than a band: level 1 maps the coefficient
+** a to 2^300 clamp(a, 2^-150, 2^150) in [2^150, 2^450], level 0 to 2^600
+** clamp(a, 2^-140, 2^390) in [2^460, 2^990]; anything overlapping goes to
+** the exact comparison. */
+static double lot_poly_band(int level, double a) {
+  double lo = level ? 0x1p-150 : 0x1p-140, hi = level ? 0x1p150 : 0x1p390;
+  a = a < lo ? lo : a > hi ? hi : a;
+  return a * (level ? 0x1p300 : 0x1p600);
+}
+
 static void lot_poly_key_bounds(const void *ctx, const geom_point t[3], double *lo, double *hi) {
   const lot_sweep_poly *P = ctx;
   lot_poly_ev ev;
   lot_poly_classify(P, t, &ev);
   if (ev.kind == LOT_PK_INFINITE) {
-    *lo = *hi = INFINITY;
+    int level;
+    double l, h;
+    lot_iv_bounds(lot_poly_inf_iv(P, &ev, &level), &l, &h);   /* infinite when unknown */
+    *lo = lot_poly_band(level, l);
+    *hi = lot_poly_band(level, h);
     return;
   }
   lot_iv_bounds(ev.kind == LOT_PK_HOMOTHET ? lot_poly_hom_iv(P, &ev) : lot_poly_corner_iv(P, &ev),
                 lo, hi);
+  if (*lo > 0x1p140) *lo = 0x1p140;
+  if (*hi > 0x1p140) *hi = INFINITY;
 }
 
 /* ---- rationals --------------------------------------------------------- */
