@@ -25,13 +25,19 @@ static rule_quad rule_quads[RULE_QUAD_MAX] = {
   [RULE_DT] = {"DT", "Delaunay: the empty-circle diagonal (exact incircle test)", rule_dt, NULL},
 };
 static int rule_nquads = 1;
+static unsigned char rule_quad_systematic[RULE_QUAD_MAX] = {[RULE_DT] = 1};
 
 int rule_quad_register(const rule_quad *q) {
   if (rule_nquads >= RULE_QUAD_MAX || q->name == NULL || q->fn == NULL) return -1;
   for (int i = 0; i < rule_nquads; i++)
     if (strcmp(rule_quads[i].name, q->name) == 0) return -1;
   rule_quads[rule_nquads] = *q;
+  rule_quad_systematic[rule_nquads] = 0;
   return rule_nquads++;
+}
+
+void rule_quad_set_systematic(int id) {
+  if (id >= 0 && id < rule_nquads) rule_quad_systematic[id] = 1;
 }
 
 int rule_quad_count(void) {
@@ -227,6 +233,11 @@ void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *
 
 const rule_quad *rule_quad_of(const rule *r) {
   return r->kind == RULE_QUAD ? rule_quad_get(r->quad) : NULL;
+}
+
+int rule_is_systematic(const rule *r) {
+  return r->kind == RULE_QUAD && r->quad >= 0 && r->quad < rule_nquads &&
+         rule_quad_systematic[r->quad];
 }
 
 const char *rule_measure_name(const rule *r) {

@@ -77,6 +77,13 @@ rule rule_delaunay(void);
 
 /* Quadrilateral-rule registry (DT is id RULE_DT). */
 int rule_quad_register(const rule_quad *q);   /* new id, or -1 */
+/* Mark quadrilateral rule id as systematic and acyclic as DT is (the
+** empty-shape rules, docs/emptyshape.md): the same diagonal whatever
+** rotation of the quadrilateral it is given, a unique LOT that incremental
+** insertion reaches by flipping the new point's link only, and no flip
+** cycle; lot/ then takes DT's path (rule_is_systematic).  Unmarked rules
+** (plugins): lot re-examines every changed edge and watches for cycles. */
+void rule_quad_set_systematic(int id);
 int rule_quad_count(void);
 const rule_quad *rule_quad_get(int id);
 void rule_quad_unregister_user(void);
@@ -127,6 +134,8 @@ static inline int rule_is_triangle(const rule *r) { return r->kind == RULE_TRIAN
 static inline int rule_is_delaunay(const rule *r) {
   return r->kind == RULE_QUAD && r->quad == RULE_DT;
 }
+/* DT, or a quadrilateral rule registered as systematic (rule_quad). */
+int rule_is_systematic(const rule *r);
 /* The measure's registry id (-1 for a quadrilateral rule), its sign, the joint. */
 static inline int rule_measure(const rule *r) { return r->kind == RULE_TRIANGLE ? r->measure : -1; }
 static inline int rule_sign(const rule *r) { return r->sign; }

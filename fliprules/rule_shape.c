@@ -59,6 +59,8 @@ int rule_shape_make(const char *name, rule *out, char *err, size_t errlen) {
     free(e);
     return -1;
   }
+  /* Systematic and acyclic (docs/emptyshape.md): lot takes DT's path. */
+  rule_quad_set_systematic(id);
   *out = (rule){.kind = RULE_QUAD, .measure = -1, .quad = id, .tie_eps = RULE_DEFAULT_TIE_EPS};
   snprintf(out->name, sizeof out->name, "%s", e->name);
   return 0;

@@ -80,6 +80,14 @@
 #define FLIPLAB_INTERNAL extern
 #endif
 
+/* A small helper that must be inlined into its caller, so that a constant
+** argument (shape_arith.c's double run) folds away. */
+#if defined(__GNUC__)
+#define FLIPLAB_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define FLIPLAB_ALWAYS_INLINE inline
+#endif
+
 /* GCC/Clang generic vectors (vector_size) and always_inline. */
 #if defined(__GNUC__)
 #define FLIPLAB_HAVE_VECTORS 1

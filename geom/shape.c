@@ -30,6 +30,7 @@ static shape *shape_new_polygon(int n) {
 
 void shape_free(shape *k) {
   if (k == NULL) return;
+  shape_memo_free(k);
   free(k->v);
   free(k->half);
   free(k);
@@ -76,7 +77,7 @@ static int shape_numbers(const char *s, size_t len, double *out, int max, int *c
 static void shape_halves(shape *k) {
   for (int j = 0; j < k->n; j++) {
     shape_args g = {.K = k, .e = {0}, .p = {k->v[j], k->v[(j + 1) % k->n]}};
-    k->half[j] = j > 0 && shape_sign(shape_prog_cross, &g) <= 0;
+    k->half[j] = j > 0 && shape_sign(SHAPE_PROG_CROSS, &g) <= 0;
   }
 }
 
@@ -103,6 +104,11 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
+  if (shape_memo_build(k) != 0) {
+    snprintf(err, errlen, "shape '%.60s': out of memory", spec);
+    shape_free(k);
+    return NULL;
+  }
   return k;
 }
 
@@ -260,7 +266,7 @@ int shape_parse(const char *spec, shape **out, char *err, size_t errlen) {
 static int shape_before(const shape *k, int j, geom_point p, geom_point q, int hw) {
   if (k->half[j] != hw) return k->half[j] < hw;
   shape_args g = {.K = k, .e = {j}, .p = {p, q}};
-  return shape_eps_sign(shape_prog_cross, g, NULL) > 0;
+  return shape_eps_sign(SHAPE_PROG_CROSS, g, NULL) > 0;
 }
 
 /* The edges before Q - P form a prefix 0..s-1 of the edge list (edge
@@ -268,7 +274,7 @@ static int shape_before(const shape *k, int j, geom_point p, geom_point q, int h
 ** the first edge not before Q - P, found by binary search (s = n: 0). */
 int shape_support(const shape *k, geom_point p, geom_point q) {
   shape_args g = {.K = k, .e = {0}, .p = {p, q}};
-  int hw = shape_eps_sign(shape_prog_cross, g, NULL) > 0 ? 0 : 1;
+  int hw = shape_eps_sign(SHAPE_PROG_CROSS, g, NULL) > 0 ? 0 : 1;
   int lo = 1, hi = k->n;   /* edge 0 is always before: its angle is 0 */
   while (lo < hi) {
     int mid = lo + (hi - lo) / 2;
@@ -288,7 +294,7 @@ int shape_support(const shape *k, geom_point p, geom_point q) {
 ** det3 (n.P - c_m), det3 that of the rows (n, h) of i, j, k.  Columns
 ** (e_x, e_y) instead of (n_x, n_y) give the same determinants, and the
 ** last column may be taken relative to any common origin (a column
-** operation): shape_prog_det4 and shape_prog_det3h.  So
+** operation): SHAPE_PROG_DET4 and SHAPE_PROG_DET3H.  So
 **   sign(c_m - n_m.P) = -sign(det4) sign(det3),
 **   sign(s)            = sign(det3 of rows (n | n.P)) sign(det3).
 ** A triple is the circumscribing homothet's contact triple when det3 != 0,
@@ -303,7 +309,7 @@ int shape_support(const shape *k, geom_point p, geom_point q) {
 static int shape_slack(const shape *k, const int t[3], const geom_point p[3], int m,
                        geom_point pm, int d3, int *level) {
   shape_args g = {.K = k, .e = {t[0], t[1], t[2], m}, .p = {p[0], p[1], p[2], pm}, .o = pm};
-  return -shape_eps_sign(shape_prog_det4, g, level) * d3;
+  return -shape_eps_sign(SHAPE_PROG_DET4, g, level) * d3;
 }
 
 /* The contact test of triple t: det3's sign when t is the contact triple,
@@ -313,8 +319,8 @@ static int shape_slack(const shape *k, const int t[3], const geom_point p[3], in
 static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3], int *viol) {
   shape_args g = {.K = k, .e = {t[0], t[1], t[2]}, .p = {p[0], p[1], p[2]}, .o = p[0]};
   *viol = 0;
-  int d3 = shape_sign(shape_prog_det3h, &g);
-  if (d3 == 0 || shape_eps_sign(shape_prog_det3w, g, NULL) * d3 <= 0) return 0;
+  int d3 = shape_sign(SHAPE_PROG_DET3H, &g);
+  if (d3 == 0 || shape_eps_sign(SHAPE_PROG_DET3W, g, NULL) * d3 <= 0) return 0;
   for (int r = 0; r < 3; r++)
     for (int side = -1; side <= 1; side += 2)
       if (shape_slack(k, t, p, (t[r] + side + k->n) % k->n, p[r], d3, NULL) < 0)
@@ -400,14 +406,14 @@ static shape_choice shape_homothet_decide(const shape *k, const int t[3], int d3
 ** -det4(rows (x y, x, y, 1) of A, B, C, D) / orient(A, B, C) in mapped
 ** coordinates: the region is f > 0, and orient(A, B, C) > 0 (the map has
 ** determinant delta > 0, ABC is anticlockwise).  So D is inside when the
-** determinant (shape_prog_corner) is negative.  D lies beyond chord CA,
+** determinant (SHAPE_PROG_CORNER) is negative.  D lies beyond chord CA,
 ** away from the other branch (which lies on B's side of the chord), so the
 ** sign of f alone decides.  Cone sides are never antiparallel: a strictly
 ** convex polygon's corner has an angle strictly between 0 and pi. */
 static shape_choice shape_corner_decide(const shape *k, int c, const geom_point p[4],
                                         shape_trace *tr) {
   shape_args g = {.K = k, .p = {p[0], p[1], p[2]}, .o = p[3], .corner = c};
-  int level = 0, s = shape_eps_sign(shape_prog_corner, g, &level);
+  int level = 0, s = shape_eps_sign(SHAPE_PROG_CORNER, g, &level);
   if (tr) *tr = (shape_trace){.rounding = 1, .corner = c, .contact = {-1, -1, -1}, .level = level};
   return s < 0 ? SHAPE_BD : s > 0 ? SHAPE_AC : SHAPE_EITHER;
 }
@@ -436,7 +442,7 @@ static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], 
 ** four sites on one ellipse are the rule's genuine ties. */
 static shape_choice shape_ellipse_decide(const shape *k, const geom_point p[4], shape_trace *tr) {
   shape_args g = {.K = k, .p = {p[0], p[1], p[2]}, .o = p[3]};
-  int s = shape_sign(shape_prog_ellipse, &g);
+  int s = shape_sign(SHAPE_PROG_ELLIPSE, &g);
   if (tr) tr->level = s == 0 ? 2 : 0;
   return s > 0 ? SHAPE_BD : s < 0 ? SHAPE_AC : SHAPE_EITHER;
 }

@@ -47,17 +47,23 @@
 **
 ** The exact run repeats the program on mpq_t registers (every double is a
 ** rational), so both runs are the same program: one place to get right. */
-
 #define SHAPE_REGS 320
+
+/* A program's value: in the double run the value v, its twin t and its
+** rounding count k (plain numbers: a double run inlines into straight-line
+** code that keeps them in machine registers); in the exact run the index q
+** of its rational in the register file. */
+typedef struct shape_num {
+  double v, t;
+  int k, q;
+} shape_num;
 
 typedef struct shape_ar {
   int exact;               /* 0: the double run, 1: the exact run */
-  int n;                   /* registers used */
+  int n;                   /* registers used (exact run) */
   int nq;                  /* mpq registers initialised (exact run) */
   int poison;              /* a product underflowed: the double run decides nothing */
-  double v[SHAPE_REGS], t[SHAPE_REGS];
-  int k[SHAPE_REGS];
-  mpq_t q[SHAPE_REGS];
+  mpq_t *q;                /* the register file (exact run) */
   mpq_t s;                 /* scratch (exact run) */
 } shape_ar;
 
@@ -67,158 +73,108 @@ unsigned long shape_exact_calls(void) {
   return atomic_load_explicit(&shape_exact_count, memory_order_relaxed);
 }
 
-/* A new register.  The programs are fixed trees far smaller than the file
-** (tests/test_shape.c runs every one), so running out is a bug. */
-static int shape_ar_new(shape_ar *a) {
+/* A new register of the exact run.  The programs are fixed trees far
+** smaller than the file (tests/test_shape.c runs every one), so running
+** out is a bug. */
+static shape_num shape_reg(shape_ar *a) {
   if (a->n >= SHAPE_REGS) abort();
   int r = a->n++;
-  if (a->exact && r >= a->nq) mpq_init(a->q[a->nq++]);
-  return r;
+  if (r >= a->nq) mpq_init(a->q[a->nq++]);
+  return (shape_num){.q = r};
 }
 
-/* The double run's value, twin and rounding count of register r. */
-static void shape_set(shape_ar *a, int r, double v, double t, int k) {
-  a->v[r] = v;
-  a->t[r] = t;
-  a->k[r] = k;
-}
-
-static int shape_in(shape_ar *a, double x) {
-  int r = shape_ar_new(a);
-  if (a->exact) mpq_set_d(a->q[r], x);
-  else shape_set(a, r, x, fabs(x), 0);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_in(shape_ar *a, double x) {
+  if (!a->exact) return (shape_num){x, fabs(x), 0, 0};
+  shape_num r = shape_reg(a);
+  mpq_set_d(a->q[r.q], x);
   return r;
 }
 
 /* x - y of two inputs, one rounded leaf (the bound's argument). */
-static int shape_dif(shape_ar *a, double x, double y) {
-  int r = shape_ar_new(a);
-  if (a->exact) {
-    mpq_set_d(a->q[r], x);
-    mpq_set_d(a->s, y);
-    mpq_sub(a->q[r], a->q[r], a->s);
-  } else {
-    shape_set(a, r, x - y, fabs(x - y), 1);
-  }
+static FLIPLAB_ALWAYS_INLINE shape_num shape_dif(shape_ar *a, double x, double y) {
+  if (!a->exact) return (shape_num){x - y, fabs(x - y), 1, 0};
+  shape_num r = shape_reg(a);
+  mpq_set_d(a->q[r.q], x);
+  mpq_set_d(a->s, y);
+  mpq_sub(a->q[r.q], a->q[r.q], a->s);
   return r;
 }
 
-static int shape_kmax(const shape_ar *a, int i, int j) {
-  return a->k[i] > a->k[j] ? a->k[i] : a->k[j];
+static FLIPLAB_ALWAYS_INLINE int shape_kmax(shape_num i, shape_num j) {
+  return i.k > j.k ? i.k : j.k;
 }
 
-static int shape_add(shape_ar *a, int i, int j) {
-  int r = shape_ar_new(a);
-  if (a->exact) mpq_add(a->q[r], a->q[i], a->q[j]);
-  else shape_set(a, r, a->v[i] + a->v[j], a->t[i] + a->t[j], shape_kmax(a, i, j) + 1);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_add(shape_ar *a, shape_num i, shape_num j) {
+  if (!a->exact) return (shape_num){i.v + j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
+  shape_num r = shape_reg(a);
+  mpq_add(a->q[r.q], a->q[i.q], a->q[j.q]);
   return r;
 }
 
-static int shape_sub(shape_ar *a, int i, int j) {
-  int r = shape_ar_new(a);
-  if (a->exact) mpq_sub(a->q[r], a->q[i], a->q[j]);
-  else shape_set(a, r, a->v[i] - a->v[j], a->t[i] + a->t[j], shape_kmax(a, i, j) + 1);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_sub(shape_ar *a, shape_num i, shape_num j) {
+  if (!a->exact) return (shape_num){i.v - j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
+  shape_num r = shape_reg(a);
+  mpq_sub(a->q[r.q], a->q[i.q], a->q[j.q]);
   return r;
 }
 
-static int shape_neg(shape_ar *a, int i) {
-  int r = shape_ar_new(a);
-  if (a->exact) mpq_neg(a->q[r], a->q[i]);
-  else shape_set(a, r, -a->v[i], a->t[i], a->k[i]);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_neg(shape_ar *a, shape_num i) {
+  if (!a->exact) return (shape_num){-i.v, i.t, i.k, 0};
+  shape_num r = shape_reg(a);
+  mpq_neg(a->q[r.q], a->q[i.q]);
   return r;
 }
 
-static int shape_mul(shape_ar *a, int i, int j) {
-  int r = shape_ar_new(a);
-  if (a->exact) {
-    mpq_mul(a->q[r], a->q[i], a->q[j]);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_mul(shape_ar *a, shape_num i, shape_num j) {
+  if (!a->exact) {
+    shape_num r = {i.v * j.v, i.t * j.t, i.k + j.k + 2, 0};
+    a->poison |= (r.t < 0x1p-1000) & (i.t != 0) & (j.t != 0);
     return r;
   }
-  shape_set(a, r, a->v[i] * a->v[j], a->t[i] * a->t[j], a->k[i] + a->k[j] + 2);
-  a->poison |= a->t[r] < 0x1p-1000 && a->t[i] != 0 && a->t[j] != 0;
+  shape_num r = shape_reg(a);
+  mpq_mul(a->q[r.q], a->q[i.q], a->q[j.q]);
   return r;
 }
 
 /* x_i y_j - x_j y_i style: a b - c d. */
-static int shape_cross2(shape_ar *a, int pa, int pb, int pc, int pd) {
+static FLIPLAB_ALWAYS_INLINE shape_num shape_cross2(shape_ar *a, shape_num pa, shape_num pb,
+                                                    shape_num pc, shape_num pd) {
   return shape_sub(a, shape_mul(a, pa, pb), shape_mul(a, pc, pd));
 }
 
-/* The double run's verdict on register r: its sign, or 2 (undecided). */
-static int shape_ar_filter(const shape_ar *a, int r) {
+/* The double run's verdict on value r: its sign, or 2 (undecided). */
+static FLIPLAB_ALWAYS_INLINE int shape_ar_filter(const shape_ar *a, shape_num r) {
   if (a->poison) return 2;
-  double v = a->v[r], t = a->t[r];
-  if (t == 0) return 0;
-  double bound = (2.0 * a->k[r] + 2.0) * 0x1p-53 * t;
-  if (v > bound) return 1;
-  if (-v > bound) return -1;
+  if (r.t == 0) return 0;
+  double bound = (2.0 * r.k + 2.0) * 0x1p-53 * r.t;
+  if (r.v > bound) return 1;
+  if (-r.v > bound) return -1;
   return 2;
-}
-
-int shape_sign(shape_prog f, const shape_args *g) {
-  shape_ar a;
-  a.exact = 0;
-  a.n = a.nq = a.poison = 0;
-  int s = shape_ar_filter(&a, f(&a, g));
-  if (s != 2) return s;
-  atomic_fetch_add_explicit(&shape_exact_count, 1, memory_order_relaxed);
-  a.exact = 1;
-  a.n = 0;
-  mpq_init(a.s);
-  s = mpq_sgn(a.q[f(&a, g)]);
-  for (int i = 0; i < a.nq; i++) mpq_clear(a.q[i]);
-  mpq_clear(a.s);
-  return s;
-}
-
-int shape_eps_sign(shape_prog f, shape_args g, int *level) {
-  g.deriv = 0;
-  int s = shape_sign(f, &g);
-  if (s == 0) {
-    g.deriv = 1;
-    s = shape_sign(f, &g);
-  }
-  if (level) *level = g.deriv + (s == 0);
-  return s;
 }
 
 /* ---- determinants of register matrices ------------------------------- */
 
 /* m is row-major: m[3 * row + col]. */
-static int shape_det3(shape_ar *a, const int m[9]) {
-  int c0 = shape_cross2(a, m[4], m[8], m[5], m[7]);
-  int c1 = shape_cross2(a, m[3], m[8], m[5], m[6]);
-  int c2 = shape_cross2(a, m[3], m[7], m[4], m[6]);
-  int s = shape_sub(a, shape_mul(a, m[0], c0), shape_mul(a, m[1], c1));
+static FLIPLAB_ALWAYS_INLINE shape_num shape_det3(shape_ar *a, const shape_num m[9]) {
+  shape_num c0 = shape_cross2(a, m[4], m[8], m[5], m[7]);
+  shape_num c1 = shape_cross2(a, m[3], m[8], m[5], m[6]);
+  shape_num c2 = shape_cross2(a, m[3], m[7], m[4], m[6]);
+  shape_num s = shape_sub(a, shape_mul(a, m[0], c0), shape_mul(a, m[1], c1));
   return shape_add(a, s, shape_mul(a, m[2], c2));
-}
-
-/* Laplace along the first two columns: sum over row pairs of the 2x2 minor
-** of columns 0, 1 times the complementary minor of columns 2, 3, signed. */
-static int shape_det4(shape_ar *a, const int m[16]) {
-  static const int pr[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                               {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  static const int sg[6] = {1, -1, 1, 1, -1, 1};
-  int acc = -1;
-  for (int p = 0; p < 6; p++) {
-    const int *r = pr[p];
-    int lo = shape_cross2(a, m[4 * r[0]], m[4 * r[1] + 1], m[4 * r[1]], m[4 * r[0] + 1]);
-    int hi = shape_cross2(a, m[4 * r[2] + 2], m[4 * r[3] + 3], m[4 * r[3] + 2], m[4 * r[2] + 3]);
-    int term = shape_mul(a, lo, hi);
-    acc = acc < 0 ? term : sg[p] > 0 ? shape_add(a, acc, term) : shape_sub(a, acc, term);
-  }
-  return acc;
 }
 
 /* ---- polygon rows ------------------------------------------------------ */
 
-static geom_point shape_vertex(const shape *K, int i) {
-  return K->v[((i % K->n) + K->n) % K->n];
+/* Vertex i for i in [-n, 2n): every caller asks for an edge's ends or a
+** corner's neighbours (a division per vertex was a tenth of the run). */
+static FLIPLAB_ALWAYS_INLINE geom_point shape_vertex(const shape *K, int i) {
+  return K->v[i < 0 ? i + K->n : i >= K->n ? i - K->n : i];
 }
 
 /* Edge e's direction (e_x, e_y) into r[0], r[1], and h = cross(k_e, k_{e+1})
 ** into r[2]. */
-static void shape_edge_regs(shape_ar *a, const shape *K, int e, int r[3]) {
+static FLIPLAB_ALWAYS_INLINE void shape_edge_regs(shape_ar *a, const shape *K, int e,
+                                                  shape_num r[3]) {
   geom_point p = shape_vertex(K, e), q = shape_vertex(K, e + 1);
   r[0] = shape_dif(a, q.x, p.x);
   r[1] = shape_dif(a, q.y, p.y);
@@ -227,44 +183,125 @@ static void shape_edge_regs(shape_ar *a, const shape *K, int e, int r[3]) {
 
 /* w = cross(p - o, e) = n.(p - o), n the outward normal (e_y, -e_x); its
 ** eps coefficient is e.(p - o) (the sites turned by -eps). */
-static int shape_w(shape_ar *a, const shape_args *g, int ex, int ey, geom_point p) {
-  int dx = shape_dif(a, p.x, g->o.x), dy = shape_dif(a, p.y, g->o.y);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_w(shape_ar *a, const shape_args *g, shape_num ex,
+                                               shape_num ey, geom_point p) {
+  shape_num dx = shape_dif(a, p.x, g->o.x), dy = shape_dif(a, p.y, g->o.y);
   if (g->deriv) return shape_add(a, shape_mul(a, ex, dx), shape_mul(a, ey, dy));
   return shape_cross2(a, dx, ey, dy, ex);
 }
 
-int shape_prog_cross(shape_ar *a, const shape_args *g) {
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_cross(shape_ar *a, const shape_args *g) {
   geom_point p = shape_vertex(g->K, g->e[0]), q = shape_vertex(g->K, g->e[0] + 1);
-  int ex = shape_dif(a, q.x, p.x), ey = shape_dif(a, q.y, p.y);
-  int wx = shape_dif(a, g->p[1].x, g->p[0].x), wy = shape_dif(a, g->p[1].y, g->p[0].y);
+  shape_num ex = shape_dif(a, q.x, p.x), ey = shape_dif(a, q.y, p.y);
+  shape_num wx = shape_dif(a, g->p[1].x, g->p[0].x), wy = shape_dif(a, g->p[1].y, g->p[0].y);
   if (g->deriv) return shape_neg(a, shape_add(a, shape_mul(a, ex, wx), shape_mul(a, ey, wy)));
   return shape_cross2(a, ex, wy, ey, wx);
 }
 
-int shape_prog_det3h(shape_ar *a, const shape_args *g) {
-  int m[9];
-  for (int r = 0; r < 3; r++) shape_edge_regs(a, g->K, g->e[r], &m[3 * r]);
+/* ---- shape-only 3x3 determinants -----------------------------------------
+**
+** det3h(i, j, k), the determinant of the rows (e_x, e_y, h) of three edges,
+** depends on the shape alone.  Its double run (value, twin, rounding count
+** and poison) is kept for every triple of a polygon of at most
+** SHAPE_MEMO_MAX edges (shape_memo_build), and a double run reads the kept
+** value instead of repeating the program: the very numbers the program
+** would give, so the filter's argument and its verdicts are unchanged.  The
+** exact run always computes. */
+
+#define SHAPE_MEMO_MAX 16
+
+typedef struct shape_memo_entry {
+  shape_num x;
+  int poison;
+} shape_memo_entry;
+
+struct shape_memo {
+  int n;
+  shape_memo_entry *cof;   /* [(i n + j) n + k] */
+};
+
+static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3_run(shape_ar *a, const shape *K, int i, int j,
+                                                      int k) {
+  shape_num m[9];
+  shape_edge_regs(a, K, i, &m[0]);
+  shape_edge_regs(a, K, j, &m[3]);
+  shape_edge_regs(a, K, k, &m[6]);
   return shape_det3(a, m);
 }
 
-int shape_prog_det3w(shape_ar *a, const shape_args *g) {
-  int m[9], rr[3];
+static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3(shape_ar *a, const shape *K, int i, int j,
+                                                  int k) {
+  const struct shape_memo *mm = K->memo;
+  if (a->exact || mm == NULL) return shape_cof3_run(a, K, i, j, k);
+  size_t n = (size_t)mm->n;
+  const shape_memo_entry *e = &mm->cof[((size_t)i * n + (size_t)j) * n + (size_t)k];
+  a->poison |= e->poison;
+  return e->x;
+}
+
+int shape_memo_build(shape *K) {
+  int n = K->n;
+  if (K->kind != SHAPE_POLYGON || n > SHAPE_MEMO_MAX) return 0;
+  struct shape_memo *mm = malloc(sizeof *mm);
+  shape_memo_entry *cof = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *cof);
+  if (mm == NULL || cof == NULL) {
+    free(mm);
+    free(cof);
+    return -1;
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++)
+      for (int k = 0; k < n; k++) {
+        shape_ar a = {.exact = 0};
+        shape_num x = shape_cof3_run(&a, K, i, j, k);
+        cof[((size_t)i * (size_t)n + (size_t)j) * (size_t)n + (size_t)k] =
+          (shape_memo_entry){x, a.poison};
+      }
+  mm->n = n;
+  mm->cof = cof;
+  K->memo = mm;
+  return 0;
+}
+
+void shape_memo_free(shape *K) {
+  if (K->memo == NULL) return;
+  free(K->memo->cof);
+  free(K->memo);
+  K->memo = NULL;
+}
+
+/* det3h of edges e[0..2]. */
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_det3h(shape_ar *a, const shape_args *g) {
+  return shape_cof3(a, g->K, g->e[0], g->e[1], g->e[2]);
+}
+
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_det3w(shape_ar *a, const shape_args *g) {
+  shape_num m[9];
   for (int r = 0; r < 3; r++) {
-    shape_edge_regs(a, g->K, g->e[r], rr);
-    m[3 * r] = rr[0];
-    m[3 * r + 1] = rr[1];
-    m[3 * r + 2] = shape_w(a, g, rr[0], rr[1], g->p[r]);
+    geom_point p = shape_vertex(g->K, g->e[r]), q = shape_vertex(g->K, g->e[r] + 1);
+    m[3 * r] = shape_dif(a, q.x, p.x);
+    m[3 * r + 1] = shape_dif(a, q.y, p.y);
+    m[3 * r + 2] = shape_w(a, g, m[3 * r], m[3 * r + 1], g->p[r]);
   }
   return shape_det3(a, m);
 }
 
-int shape_prog_det4(shape_ar *a, const shape_args *g) {
-  int m[16];
+/* det4 of the rows (e_x, e_y, h, w) expanded along its last column:
+** -w_0 M_0 + w_1 M_1 - w_2 M_2 + w_3 M_3, M_r the det3h of the other three
+** rows (in order), which are shape-only (kept, above).  The eps coefficient
+** replaces the w column by its coefficients (det4 is linear in it). */
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_det4(shape_ar *a, const shape_args *g) {
+  static const int other[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  shape_num acc = {0, 0, 0, 0};
   for (int r = 0; r < 4; r++) {
-    shape_edge_regs(a, g->K, g->e[r], &m[4 * r]);
-    m[4 * r + 3] = shape_w(a, g, m[4 * r], m[4 * r + 1], g->p[r]);
+    geom_point p = shape_vertex(g->K, g->e[r]), q = shape_vertex(g->K, g->e[r] + 1);
+    shape_num ex = shape_dif(a, q.x, p.x), ey = shape_dif(a, q.y, p.y);
+    shape_num w = shape_w(a, g, ex, ey, g->p[r]);
+    const int *o = other[r];
+    shape_num t = shape_mul(a, w, shape_cof3(a, g->K, g->e[o[0]], g->e[o[1]], g->e[o[2]]));
+    acc = r == 0 ? shape_neg(a, t) : r % 2 ? shape_add(a, acc, t) : shape_sub(a, acc, t);
   }
-  return shape_det4(a, m);
+  return acc;
 }
 
 /* ---- the rounding shape of a corner -------------------------------------
@@ -279,37 +316,38 @@ int shape_prog_det4(shape_ar *a, const shape_args *g) {
 ** sites turned by -eps change p - o = w by eps (w_y, -w_x), so X by
 ** eps w.v and Y by -eps u.w; the determinant's derivative is the sum of
 ** the three determinants with one column differentiated. */
-static void shape_corner_row(shape_ar *a, const shape_args *g, int r, int out[6]) {
+static FLIPLAB_ALWAYS_INLINE void shape_corner_row(shape_ar *a, const shape_args *g, int r,
+                                                   shape_num out[6]) {
   geom_point c = shape_vertex(g->K, g->corner);
   geom_point nx = shape_vertex(g->K, g->corner + 1), pv = shape_vertex(g->K, g->corner - 1);
-  int ux = shape_dif(a, nx.x, c.x), uy = shape_dif(a, nx.y, c.y);
-  int vx = shape_dif(a, pv.x, c.x), vy = shape_dif(a, pv.y, c.y);
-  int dx = shape_dif(a, g->p[r].x, g->o.x), dy = shape_dif(a, g->p[r].y, g->o.y);
-  int X = shape_cross2(a, dx, vy, dy, vx), Y = shape_cross2(a, ux, dy, uy, dx);
+  shape_num ux = shape_dif(a, nx.x, c.x), uy = shape_dif(a, nx.y, c.y);
+  shape_num vx = shape_dif(a, pv.x, c.x), vy = shape_dif(a, pv.y, c.y);
+  shape_num dx = shape_dif(a, g->p[r].x, g->o.x), dy = shape_dif(a, g->p[r].y, g->o.y);
+  shape_num X = shape_cross2(a, dx, vy, dy, vx), Y = shape_cross2(a, ux, dy, uy, dx);
   out[0] = shape_mul(a, X, Y);
   out[1] = X;
   out[2] = Y;
   if (!g->deriv) return;
-  int X1 = shape_add(a, shape_mul(a, dx, vx), shape_mul(a, dy, vy));
-  int Y1 = shape_neg(a, shape_add(a, shape_mul(a, ux, dx), shape_mul(a, uy, dy)));
+  shape_num X1 = shape_add(a, shape_mul(a, dx, vx), shape_mul(a, dy, vy));
+  shape_num Y1 = shape_neg(a, shape_add(a, shape_mul(a, ux, dx), shape_mul(a, uy, dy)));
   out[3] = shape_add(a, shape_mul(a, X1, Y), shape_mul(a, X, Y1));
   out[4] = X1;
   out[5] = Y1;
 }
 
-int shape_prog_corner(shape_ar *a, const shape_args *g) {
-  int rows[3][6], m[9];
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_corner(shape_ar *a, const shape_args *g) {
+  shape_num rows[3][6], m[9];
   for (int r = 0; r < 3; r++) shape_corner_row(a, g, r, rows[r]);
   for (int r = 0; r < 3; r++)
     for (int c = 0; c < 3; c++) m[3 * r + c] = rows[r][c];
   if (!g->deriv) return shape_det3(a, m);
-  int acc = -1;
+  shape_num acc = {0, 0, 0, 0};
   for (int col = 0; col < 3; col++) {
-    int d[9];
+    shape_num d[9];
     for (int r = 0; r < 3; r++)
       for (int c = 0; c < 3; c++) d[3 * r + c] = c == col ? rows[r][3 + c] : rows[r][c];
-    int t = shape_det3(a, d);
-    acc = acc < 0 ? t : shape_add(a, acc, t);
+    shape_num t = shape_det3(a, d);
+    acc = col == 0 ? t : shape_add(a, acc, t);
   }
   return acc;
 }
@@ -318,16 +356,84 @@ int shape_prog_corner(shape_ar *a, const shape_args *g) {
 
 /* Rows (x, y, Q(x, y)) of p[r] - o: positive when o is inside the ellipse
 ** homothet through p[0..2] (anticlockwise), as the incircle determinant. */
-int shape_prog_ellipse(shape_ar *a, const shape_args *g) {
-  int m[9];
-  int q11 = shape_in(a, g->K->q11), q12 = shape_in(a, 2 * g->K->q12), q22 = shape_in(a, g->K->q22);
+static FLIPLAB_ALWAYS_INLINE shape_num shape_p_ellipse(shape_ar *a, const shape_args *g) {
+  shape_num m[9];
+  shape_num q11 = shape_in(a, g->K->q11), q12 = shape_in(a, 2 * g->K->q12);
+  shape_num q22 = shape_in(a, g->K->q22);
   for (int r = 0; r < 3; r++) {
-    int x = shape_dif(a, g->p[r].x, g->o.x), y = shape_dif(a, g->p[r].y, g->o.y);
-    int xx = shape_mul(a, shape_mul(a, q11, x), x), yy = shape_mul(a, shape_mul(a, q22, y), y);
-    int xy = shape_mul(a, shape_mul(a, q12, x), y);
+    shape_num x = shape_dif(a, g->p[r].x, g->o.x), y = shape_dif(a, g->p[r].y, g->o.y);
+    shape_num xx = shape_mul(a, shape_mul(a, q11, x), x);
+    shape_num yy = shape_mul(a, shape_mul(a, q22, y), y);
+    shape_num xy = shape_mul(a, shape_mul(a, q12, x), y);
     m[3 * r] = x;
     m[3 * r + 1] = y;
     m[3 * r + 2] = shape_add(a, shape_add(a, xx, xy), yy);
   }
   return shape_det3(a, m);
+}
+
+/* ---- running a program ----------------------------------------------- */
+
+typedef shape_num (*shape_prog_fn)(shape_ar *a, const shape_args *g);
+
+static shape_prog_fn const shape_progs[SHAPE_PROG_COUNT] = {
+  [SHAPE_PROG_CROSS] = shape_p_cross,   [SHAPE_PROG_DET3H] = shape_p_det3h,
+  [SHAPE_PROG_DET3W] = shape_p_det3w,   [SHAPE_PROG_DET4] = shape_p_det4,
+  [SHAPE_PROG_CORNER] = shape_p_corner, [SHAPE_PROG_ELLIPSE] = shape_p_ellipse};
+
+/* The double run of f: its sign, or 2.  Inlined with f a constant at each
+** call of shape_filter_of, so the program becomes straight-line double
+** code (the exact branches fold away, exact being 0). */
+static FLIPLAB_ALWAYS_INLINE int shape_filter(shape_prog_fn f, const shape_args *g) {
+  shape_ar a = {.exact = 0};
+  shape_num r = f(&a, g);
+  return shape_ar_filter(&a, r);
+}
+
+static int shape_filter_of(shape_prog p, const shape_args *g) {
+  switch (p) {
+  case SHAPE_PROG_CROSS: return shape_filter(shape_p_cross, g);
+  case SHAPE_PROG_DET3H: return shape_filter(shape_p_det3h, g);
+  case SHAPE_PROG_DET3W: return shape_filter(shape_p_det3w, g);
+  case SHAPE_PROG_DET4: return shape_filter(shape_p_det4, g);
+  case SHAPE_PROG_CORNER: return shape_filter(shape_p_corner, g);
+  case SHAPE_PROG_ELLIPSE: return shape_filter(shape_p_ellipse, g);
+  case SHAPE_PROG_COUNT: break;
+  }
+  return 2;
+}
+
+/* The exact run: the same program on rationals. */
+static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
+  atomic_fetch_add_explicit(&shape_exact_count, 1, memory_order_relaxed);
+  mpq_t q[SHAPE_REGS];
+  shape_ar a = {.exact = 1, .q = q};
+  mpq_init(a.s);
+  int r = shape_progs[p](&a, g).q;   /* mpq_sgn is a macro reading its argument twice */
+  int s = mpq_sgn(a.q[r]);
+  for (int i = 0; i < a.nq; i++) mpq_clear(a.q[i]);
+  mpq_clear(a.s);
+  return s;
+}
+
+static int shape_only_exact;
+
+void shape_set_exact_only(int on) {
+  shape_only_exact = on;
+}
+
+int shape_sign(shape_prog p, const shape_args *g) {
+  int s = shape_only_exact ? 2 : shape_filter_of(p, g);
+  return s != 2 ? s : shape_exact(p, g);
+}
+
+int shape_eps_sign(shape_prog p, shape_args g, int *level) {
+  g.deriv = 0;
+  int s = shape_sign(p, &g);
+  if (s == 0) {
+    g.deriv = 1;
+    s = shape_sign(p, &g);
+  }
+  if (level) *level = g.deriv + (s == 0);
+  return s;
 }

@@ -21,36 +21,44 @@ typedef struct shape_args {
   int e[4];             /* polygon edges (edge i joins vertices i and i+1) */
   geom_point p[4];      /* the rows' sites */
   geom_point o;         /* the origin of the site differences */
-  int corner;           /* shape_prog_corner: the corner's vertex */
+  int corner;           /* SHAPE_PROG_CORNER: the corner's vertex */
   int deriv;            /* 0: the value; 1: the coefficient of eps */
 } shape_args;
 
 struct shape_ar;
-typedef int (*shape_prog)(struct shape_ar *a, const shape_args *g);
+
+/* The predicates, each one program (shape_arith.c).  cross: cross(e_{e[0]},
+** p[1] - p[0]) (deriv: -e.(p[1] - p[0]));
+** det3h: rows (e_x, e_y, h) of edges e[0..2], h = cross(k_i, k_{i+1});
+** det3w: rows (e_x, e_y, w) of (e[r], p[r]), w = cross(p - o, e) (deriv: e.(p - o));
+** det4: rows (e_x, e_y, h, w) of (e[r], p[r]), r < 4;
+** corner: the rounding-shape determinant of p[0..2] about o (shape.c);
+** ellipse: rows (x, y, Q(x, y)) of p[r] - o, r < 3. */
+typedef enum shape_prog {
+  SHAPE_PROG_CROSS, SHAPE_PROG_DET3H, SHAPE_PROG_DET3W, SHAPE_PROG_DET4, SHAPE_PROG_CORNER,
+  SHAPE_PROG_ELLIPSE, SHAPE_PROG_COUNT
+} shape_prog;
 
 /* The exact sign of a program's value (filter, then GMP). */
-FLIPLAB_INTERNAL int shape_sign(shape_prog f, const shape_args *g);
+FLIPLAB_INTERNAL int shape_sign(shape_prog p, const shape_args *g);
 /* The sign under the perturbation: the value's sign, or when it is 0 the
 ** sign of the eps coefficient; *level (may be NULL) gets 0 or 1, or 2
 ** when both are 0. */
-FLIPLAB_INTERNAL int shape_eps_sign(shape_prog f, shape_args g, int *level);
+FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
+
+/* Tests: 1 makes every sign skip the double run and take the exact one
+** (so a decision can be compared with its purely exact twin); 0 restores. */
+FLIPLAB_INTERNAL void shape_set_exact_only(int on);
 
 /* The contact edges t (of A, B, C = p[0..2]) of the circumscribing
 ** homothet of the anticlockwise triangle p whose supports s_AB, s_BC, s_CA
 ** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
 FLIPLAB_INTERNAL int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]);
 
-/* The programs.  cross: cross(e_{e[0]}, p[1] - p[0]) (deriv: -e.(p[1] - p[0]));
-** det3h: rows (e_x, e_y, h) of edges e[0..2], h = cross(k_i, k_{i+1});
-** det3w: rows (e_x, e_y, w) of (e[r], p[r]), w = cross(p - o, e) (deriv: e.(p - o));
-** det4: rows (e_x, e_y, h, w) of (e[r], p[r]), r < 4;
-** corner: the rounding-shape determinant of p[0..2] about o (shape.c);
-** ellipse: rows (x, y, Q(x, y)) of p[r] - o, r < 3. */
-FLIPLAB_INTERNAL int shape_prog_cross(struct shape_ar *a, const shape_args *g);
-FLIPLAB_INTERNAL int shape_prog_det3h(struct shape_ar *a, const shape_args *g);
-FLIPLAB_INTERNAL int shape_prog_det3w(struct shape_ar *a, const shape_args *g);
-FLIPLAB_INTERNAL int shape_prog_det4(struct shape_ar *a, const shape_args *g);
-FLIPLAB_INTERNAL int shape_prog_corner(struct shape_ar *a, const shape_args *g);
-FLIPLAB_INTERNAL int shape_prog_ellipse(struct shape_ar *a, const shape_args *g);
+/* The kept shape-only determinants of a polygon (shape_arith.c): built by
+** shape.c once a polygon is checked (0, or -1 out of memory; none for an
+** ellipse or more than SHAPE_MEMO_MAX edges), freed with the shape. */
+FLIPLAB_INTERNAL int shape_memo_build(shape *k);
+FLIPLAB_INTERNAL void shape_memo_free(shape *k);
 
 #endif

@@ -31,7 +31,12 @@
 **   overflow in the joint (inf ties with inf).  We believe the potentials
 **   extend to them (count of zero or infinite terms first), but rely on the
 **   flip budget there rather than on that argument.
-** - Quadrilateral rules (plugins) have no such potential: a flip sequence
+** - Empty-shape rules (ES:SHAPE, marked systematic by
+**   rule_quad_set_systematic): acyclic and systematic as DT is
+**   (docs/emptyshape.md), so they take DT's path: incremental insertion
+**   flips only the new point's link (star_only), and nothing watches for
+**   cycles; the flip budget still bounds every run.
+** - Other quadrilateral rules (plugins) have no such potential: a flip sequence
 **   can return to an earlier triangulation (a type-V flip graph, or a
 **   rounding-inconsistent DT as in thesis 7.5).  For them the sum of 64-bit
 **   hashes of the edges is kept up to date at each flip; when it repeats
@@ -415,7 +420,7 @@ static int lot_push_after(lot_run *R, uint32_t c) {
   uint32_t j1 = R->m->tn[lot_next3(c)];   /* t's b corner faces t' across a-d: c0's corner */
   int rc = lot_push(R, c) | lot_push(R, lot_next3(j1));   /* b-d, d-c0: opposite a */
   if (!R->star_only) rc |= lot_push(R, lot_prev3(c)) | lot_push(R, lot_prev3(j1));   /* a-b, c0-a */
-  if (R->kind >= LOT_K_QUAD) rc |= lot_push(R, lot_next3(c));   /* a-d, for any rule */
+  if (R->track) rc |= lot_push(R, lot_next3(c));   /* a-d, for a rule not systematic */
   return rc;
 }
 
@@ -487,7 +492,9 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   R->kind = o->decide ? LOT_K_HOOK
           : rule_is_triangle(r) ? LOT_K_TRI
           : rule_is_delaunay(r) ? LOT_K_DT : LOT_K_QUAD;
-  R->track = R->kind >= LOT_K_QUAD;
+  /* A decision hook, or a quadrilateral rule not known to be systematic
+  ** (rule_quad_set_systematic), may cycle. */
+  R->track = R->kind == LOT_K_HOOK || (R->kind == LOT_K_QUAD && !rule_is_systematic(r));
   R->settle_ties = R->kind == LOT_K_QUAD && rule_is_shape(r);
   if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(rule_measure(r)), INFINITY};
   /* Built-in measures only: their floors hold for every value they give
@@ -666,7 +673,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   lot_use_rule(L);
   L->st.n = n;
   lot_run_init(&R, L, o);
-  R.star_only = R.kind == LOT_K_DT && o->algorithm == LOT_INCREMENTAL;
+  R.star_only = rule_is_systematic(&L->r) && !o->decide && o->algorithm == LOT_INCREMENTAL;
   double t0 = lot_now();
   if (lot_make_order(p, (uint32_t)n, o, ord) != 0) goto oom_run;
   double tord = lot_now();

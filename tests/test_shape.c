@@ -19,6 +19,7 @@
 
 #include "geom.h"
 #include "shape.h"
+#include "shape_internal.h"   /* shape_set_exact_only: the filters against the exact runs */
 #include "testutil.h"
 
 static shape *tshape_get(const char *spec) {
@@ -568,8 +569,99 @@ static void test_bad_specs(void **state) {
   }
 }
 
+
+/* ---- the filters against the exact runs ------------------------------------
+**
+** A predicate's double run answers only when its error bound proves the sign
+** (geom/shape_arith.c), reads kept shape-only determinants, and evaluates
+** det4 along its last column; none of that may change a decision.  So the
+** decision with the filters must be, trace and all, the decision with every
+** predicate taken exactly (shape_set_exact_only).  The quadrilaterals are
+** where a filter is most likely to be wrong: grid points (sites on lines
+** parallel to the edges, on a corner's cone, four on one homothet), sites
+** displaced by small multiples of two edge directions of the shape (every
+** site pair parallel to some edge), near-degenerate random quadrilaterals
+** far from the origin, and tiny and huge scales within the coordinate
+** contract (2^-90 .. 2^90 of the unit). */
+
+static long tshape_fallbacks;
+
+static void tshape_same_exact(const shape *k, const geom_point q[4]) {
+  shape_trace t1, t2;
+  unsigned long before = shape_exact_calls();
+  shape_choice c1 = shape_decide(k, q[0], q[1], q[2], q[3], &t1);
+  tshape_fallbacks += shape_exact_calls() > before;
+  shape_set_exact_only(1);
+  shape_choice c2 = shape_decide(k, q[0], q[1], q[2], q[3], &t2);
+  shape_set_exact_only(0);
+  if (c1 != c2 || t1.rounding != t2.rounding || t1.corner != t2.corner ||
+      t1.level != t2.level || t1.failed != t2.failed ||
+      memcmp(t1.contact, t2.contact, sizeof t1.contact) != 0)
+    fail_msg("filtered %d (level %d) vs exact %d (level %d) on (%a,%a) (%a,%a) (%a,%a) (%a,%a)",
+             c1, t1.level, c2, t2.level, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y,
+             q[3].x, q[3].y);
+}
+
+/* Four sites base + a_i u + b_i w (small integers a_i, b_i; u, w two edge
+** directions of k, or the axes for an ellipse) in strictly convex position,
+** anticlockwise: 0 if the draw is not. */
+static int tshape_edge_quad(testutil_rng *rng, const shape *k, geom_point q[4]) {
+  geom_point u = {1, 0}, w = {0, 1};
+  if (k->kind == SHAPE_POLYGON) {
+    int i = (int)(testutil_next(rng) % (uint64_t)k->n), j = (int)(testutil_next(rng) % (uint64_t)k->n);
+    u = (geom_point){k->v[(i + 1) % k->n].x - k->v[i].x, k->v[(i + 1) % k->n].y - k->v[i].y};
+    w = (geom_point){k->v[(j + 1) % k->n].x - k->v[j].x, k->v[(j + 1) % k->n].y - k->v[j].y};
+  }
+  geom_point p[4];
+  for (int r = 0; r < 4; r++) {
+    double a = (double)(testutil_next(rng) % 7) - 3, b = (double)(testutil_next(rng) % 7) - 3;
+    p[r] = (geom_point){3 + a * u.x + b * w.x, 5 + a * u.y + b * w.y};
+  }
+  static const int perm[6][3] = {{1, 2, 3}, {1, 3, 2}, {2, 1, 3}, {2, 3, 1}, {3, 1, 2}, {3, 2, 1}};
+  for (int i = 0; i < 6; i++) {
+    q[0] = p[0], q[1] = p[perm[i][0]], q[2] = p[perm[i][1]], q[3] = p[perm[i][2]];
+    if (tshape_convex(q)) return 1;
+  }
+  return 0;
+}
+
+static void tshape_scaled(const shape *k, const geom_point q[4], double s, double o) {
+  geom_point r[4];
+  for (int i = 0; i < 4; i++) r[i] = (geom_point){o + s * q[i].x, o + s * q[i].y};
+  if (tshape_convex(r)) tshape_same_exact(k, r);
+}
+
+static void test_filter_exact(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "diamond", "triangle", "hexagon", "octagon",
+                                      "ngon:7", "poly:0 0;3 1;4 4;1 3", "ngon:24", "ellipse:2 1",
+                                      "ellipse:2 1 0.5"};
+  static const double scale[] = {1, 0x1p-90, 0x1p90, 0.1};
+  testutil_rng rng = {2026};
+  tshape_fallbacks = 0;
+  for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
+    shape *k = tshape_get(specs[si]);
+    geom_point q[4];
+    for (int it = 0; it < 80; it++) {
+      if (tshape_grid_quad(&rng, 4 + it % 5, 1, 0, q))
+        for (size_t j = 0; j < 4; j++) tshape_scaled(k, q, scale[j], 0);
+      if (tshape_edge_quad(&rng, k, q)) {
+        tshape_same_exact(k, q);
+        tshape_scaled(k, q, 0x1p-60, 0x1p-40);
+      }
+      testutil_convex_quad(&rng, q);
+      tshape_same_exact(k, q);
+      tshape_scaled(k, q, 0x1p-30, 1e6);   /* nearly equal coordinates: cancellation */
+    }
+    shape_free(k);
+  }
+  /* The inputs reach the exact runs (else the comparison proves little). */
+  assert_true(tshape_fallbacks > 300);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_filter_exact),
     cmocka_unit_test(test_rotations_random),
     cmocka_unit_test(test_rotations_grid),
     cmocka_unit_test(test_oracle),
