@@ -1,7 +1,7 @@
 /*
 ** bench_lot.c: locally optimal triangulations of many points.
 **
-**   bench_lot [N [RUNS [SEED [RULE_RUNS]]]]      (defaults 1000000, 3, 1, 1)
+**   bench_lot [N [RUNS [SEED [RULE_RUNS [RULES]]]]]   (defaults 1000000, 3, 1, 1)
 **
 ** On N uniform random points in the unit square (sampler "uniform"):
 **   1. the Delaunay triangulation (default algorithm: incremental, BRIO +
@@ -17,7 +17,10 @@
 **   3. every built-in triangle-based rule with joint l_1: time (median of
 **      RULE_RUNS), ratio to fliplab's DT time (each rule run is paired
 **      with a DT run just before it; the median of the pairs' ratios),
-**      flips per point, status.
+**      flips per point, status; or, with RULES (a comma list of rule
+**      names: "ES:square,ES:hexagon,ES:ellipse:2 1"), those rules instead,
+**      each paired with DT the same way (README's empty-shape speed table:
+**      bench_lot 1000000 3 1 5 'ES:square,ES:hexagon,...').
 ** Times cover the triangulation only (input validation, ordering,
 ** insertion, flips), not sampling or output.
 */
@@ -112,13 +115,42 @@ static void bench_cgal(const char *argv0, size_t n, uint64_t seed, double *wall,
   pclose(f);
 }
 
+/* One table row: rule r timed next to DT (bench_rule). */
+static void bench_row(const geom_point *p, size_t n, const rule *r, int runs) {
+  uint64_t flips;
+  lot_status status;
+  double c, q, cq, t = bench_rule(p, n, r, runs, &c, &q, &cq, &flips, &status);
+  printf("| %s | %.3f | %.3f | %.2f (CPU %.2f) | %.3f | %s |\n", r->name, t, c, q, cq,
+         (double)flips / (double)n,
+         status == LOT_CONVERGED ? "converged" : status == LOT_CYCLE ? "cycle" : "budget");
+  fflush(stdout);
+}
+
+/* A row for each rule of the comma list; -1 (message printed) on a bad name. */
+static int bench_rule_list(const geom_point *p, size_t n, const char *list, int runs) {
+  char name[256];
+  for (const char *s = list; *s;) {
+    size_t len = strcspn(s, ",");
+    snprintf(name, sizeof name, "%.*s", (int)len, s);
+    rule r;
+    char err[512];
+    if (rule_parse(name, &r, err, sizeof err) != 0) {
+      fprintf(stderr, "bench_lot: %s\n", err);
+      return -1;
+    }
+    bench_row(p, n, &r, runs);
+    s += len + (s[len] == ',');
+  }
+  return 0;
+}
+
 int main(int argc, char **argv) {
   size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 1000000;
   int runs = argc > 2 ? atoi(argv[2]) : 3;
   uint64_t seed = argc > 3 ? strtoull(argv[3], NULL, 10) : 1;
   int rule_runs = argc > 4 ? atoi(argv[4]) : 1;
   if (n < 3 || runs < 1 || runs > 15 || rule_runs < 1 || rule_runs > 15) {
-    fprintf(stderr, "usage: bench_lot [N >= 3 [RUNS 1..15 [SEED [RULE_RUNS 1..15]]]]\n");
+    fprintf(stderr, "usage: bench_lot [N >= 3 [RUNS 1..15 [SEED [RULE_RUNS 1..15 [RULES]]]]]\n");
     return 2;
   }
   geom_point *p = malloc(n * sizeof *p);
@@ -152,15 +184,15 @@ int main(int argc, char **argv) {
     printf("| CGAL Delaunay_triangulation_2 (Epick) | %.3f | %.3f | %.2f | - | - |\n", tcg, ccg,
            tcg / tdt);
   fflush(stdout);
-  for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
-    rule r;
-    char err[256];
-    if (rule_triangle(m, JOINT_SUM, &r, err, sizeof err) != 0) continue;
-    double c, q, cq, t = bench_rule(p, n, &r, rule_runs, &c, &q, &cq, &flips, &status);
-    printf("| %s | %.3f | %.3f | %.2f (CPU %.2f) | %.3f | %s |\n", r.name, t, c, q, cq,
-           (double)flips / (double)n,
-           status == LOT_CONVERGED ? "converged" : status == LOT_CYCLE ? "cycle" : "budget");
-    fflush(stdout);
+  if (argc > 5) {
+    if (bench_rule_list(p, n, argv[5], rule_runs) != 0) return 2;
+  } else {
+    for (int m = 0; m < MEASURE_BUILTIN_COUNT; m++) {
+      rule r;
+      char err[256];
+      if (rule_triangle(m, JOINT_SUM, &r, err, sizeof err) != 0) continue;
+      bench_row(p, n, &r, rule_runs);
+    }
   }
   printf("\nfliplab DT / CGAL: wall %.3f, CPU %.3f (<= 1: fliplab as fast or faster)\n",
          tdt / tcg, cdt / ccg);
