@@ -349,7 +349,8 @@ static int cli_lot_svg(const cli_lot_args *a, const geom_point *p, size_t n,
              "%zu extra edges", g->triangles, g->edges);
   snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
   snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
-  report_lot_panel pn[2] = {{tri, ntri, bad, cap[0], g}, {dt, ndt, NULL, cap[1], NULL}};
+  report_lot_panel pn[2] = {{tri, ntri, bad, cap[0], g, NULL, 0},
+                             {dt, ndt, NULL, cap[1], NULL, NULL, 0}};
   report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title);
   return cli_close_out(f) != 0;
 }
@@ -402,7 +403,7 @@ static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, con
   if (f != NULL) {
     for (int k = 0; k < nr; k++) {
       snprintf(cap[k], sizeof cap[k], "LOT(%s): %zu triangles", rule_name(&r[k]), t[k].ntri);
-      pn[k] = (report_lot_panel){t[k].tri, t[k].ntri, NULL, cap[k], NULL};
+      pn[k] = (report_lot_panel){t[k].tri, t[k].ntri, NULL, cap[k], NULL, NULL, 0};
     }
     char title[700];
     snprintf(title, sizeof title, "%s: one LOT per rule", desc);

@@ -250,6 +250,19 @@ void report_svg_colour(double f, char *buf, size_t len);
 int report_points_read(const char *path, geom_point **out, uint64_t **lines, size_t *n,
                        char *err, size_t errlen);
 
+/* ---- segment files (reports/csv_segments.c) ---- */
+
+/* Read segments from CSV (path "-": standard input): rows "i,j" of 0-based
+** indices into a point set of npoints points (the rows of its file), an
+** optional header line "i,j".  Errors are one line naming the file and
+** line: a wrong field count, an index that is not a non-negative integer
+** (negative ones said so), an index >= npoints, i == j, no segments at all.
+** *seg gets 2 indices per segment in file order, *lines (when lines is not
+** NULL) each segment's 1-based file line.  0 on success (free *seg and
+** *lines), -1 on error.  Crossings and overlaps are lot_build's to judge. */
+int report_segments_read(const char *path, size_t npoints, uint32_t **seg, uint64_t **lines,
+                         size_t *nseg, char *err, size_t errlen);
+
 /* ---- Triangle's .poly files (reports/poly.c) ---- */
 
 /* A planar straight-line graph: vertices, segments (pairs of 0-based
@@ -323,14 +336,18 @@ int report_lot_csv(FILE *f, const uint32_t *tri, size_t ntri, const double *badn
 int report_lot_cdf_csv(FILE *f, const lot_cdf *g);
 
 /* One triangulation to draw: triangles (indices into the points), their
-** badness for shading (may be NULL), a caption, and (may be NULL) a
-** convex-distance Delaunay graph drawn over it in bold. */
+** badness for shading (may be NULL), a caption, (may be NULL) a
+** convex-distance Delaunay graph drawn over it in bold, and the constrained
+** edges (2 point indices each; nseg == 0: none) drawn over it in a thick
+** dark stroke. */
 typedef struct report_lot_panel {
   const uint32_t *tri;
   size_t ntri;
   const double *badness;
   const char *caption;
   const lot_cdf *cdf;
+  const uint32_t *seg;
+  size_t nseg;
 } report_lot_panel;
 
 /* The panels side by side (e.g. a LOT and the Delaunay triangulation of

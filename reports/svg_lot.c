@@ -6,7 +6,9 @@
 ** (each interior edge drawn twice, which an SVG viewer does not show);
 ** shading fills triangles by badness on one scale for all panels; a
 ** convex-distance Delaunay graph (`lot --cdf`) is drawn in bold red over its
-** panel's triangulation.
+** panel's triangulation; the constrained edges of a constrained run (`lot
+** --segments`, `--poly`) in a thick near-black stroke over everything but
+** the points.  A panel without them draws exactly what it drew before.
 */
 #include <math.h>
 #include <stdio.h>
@@ -60,6 +62,15 @@ static void report_lot_cdf_draw(FILE *f, const geom_point *p, const lot_cdf *g,
   fprintf(f, "\"/>\n");
 }
 
+/* The constrained edges, pairs of point indices, in one thick path. */
+static void report_lot_seg_draw(FILE *f, const geom_point *p, const uint32_t *seg, size_t nseg,
+                                const report_lot_view *v, double width) {
+  fprintf(f, "<path fill=\"none\" stroke=\"#111111\" stroke-width=\"%.2f\" "
+             "stroke-linecap=\"round\" d=\"", width);
+  for (size_t e = 0; e < nseg; e++) report_lot_moves(f, p, seg + 2 * e, 2, v);
+  fprintf(f, "\"/>\n");
+}
+
 static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
                                   const report_lot_panel *pn, const report_lot_view *v,
                                   int shade, double lo, double hi) {
@@ -80,6 +91,7 @@ static void report_lot_panel_draw(FILE *f, const geom_point *p, size_t n,
   for (size_t t = 0; t < pn->ntri; t++) report_lot_moves(f, p, pn->tri + 3 * t, 3, v);
   fprintf(f, "\"/>\n");
   if (pn->cdf) report_lot_cdf_draw(f, p, pn->cdf, v, 3 * hair);
+  if (pn->nseg) report_lot_seg_draw(f, p, pn->seg, pn->nseg, v, 3 * hair);
   fprintf(f, "<g fill=\"black\">\n");
   for (size_t q = 0; q < n; q++)
     fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.1f\"/>\n", report_lot_px(v, p[q].x),
