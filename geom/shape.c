@@ -260,21 +260,27 @@ int shape_parse(const char *spec, shape **out, char *err, size_t errlen) {
 ** Q - P) becomes cross(e_j, Q - P) - eps e_j.(Q - P): an edge parallel to
 ** PQ counts as turned clockwise from it when it has PQ's direction. */
 
+/* eps-sign of cross(e_j, q - p): the fast path, else the full one. */
+static int shape_cross_eps(const shape *k, int j, geom_point p, geom_point q) {
+  int s = shape_fast_cross(k, j, p, q);
+  if (s != 2) return s;
+  shape_args g = {.K = k, .e = {j}, .p = {p, q}};
+  return shape_eps_sign(SHAPE_PROG_CROSS, g, NULL);
+}
+
 /* Is edge j's direction angularly before the (perturbed) direction of
 ** Q - P, angles measured anticlockwise from edge 0 in [0, 2 pi)?  hw is
 ** the half of Q - P (shape_halves). */
 static int shape_before(const shape *k, int j, geom_point p, geom_point q, int hw) {
   if (k->half[j] != hw) return k->half[j] < hw;
-  shape_args g = {.K = k, .e = {j}, .p = {p, q}};
-  return shape_eps_sign(SHAPE_PROG_CROSS, g, NULL) > 0;
+  return shape_cross_eps(k, j, p, q) > 0;
 }
 
 /* The edges before Q - P form a prefix 0..s-1 of the edge list (edge
 ** directions turn monotonically): the support vertex is s, the start of
 ** the first edge not before Q - P, found by binary search (s = n: 0). */
 int shape_support(const shape *k, geom_point p, geom_point q) {
-  shape_args g = {.K = k, .e = {0}, .p = {p, q}};
-  int hw = shape_eps_sign(SHAPE_PROG_CROSS, g, NULL) > 0 ? 0 : 1;
+  int hw = shape_cross_eps(k, 0, p, q) > 0 ? 0 : 1;
   int lo = 1, hi = k->n;   /* edge 0 is always before: its angle is 0 */
   while (lo < hi) {
     int mid = lo + (hi - lo) / 2;
@@ -305,26 +311,44 @@ int shape_support(const shape *k, geom_point p, geom_point q) {
 ** (those are the edges whose outward normal has that vertex as the
 ** triangle's extreme point), so only those triples are tried. */
 
-/* eps-sign of c_m - n_m.P for the contact triple t[3] of A, B, C = p[0..2]. */
-static int shape_slack(const shape *k, const int t[3], const geom_point p[3], int m,
-                       geom_point pm, int d3, int *level) {
+/* eps-sign of c_m - n_m.P for the contact triple t[3] of A, B, C = p[0..2];
+** w holds the rows' w values relative to P (shape_w3_prep), which every
+** edge m of the same P shares. */
+static int shape_slack(const shape *k, const int t[3], const geom_point p[3], const shape_w3 *w,
+                       int m, geom_point pm, int d3, int *level) {
+  int s = shape_fast_det4(w, k, t, m);
+  if (s != 2) {
+    if (level) *level = 0;
+    return -s * d3;
+  }
   shape_args g = {.K = k, .e = {t[0], t[1], t[2], m}, .p = {p[0], p[1], p[2], pm}, .o = pm};
   return -shape_eps_sign(SHAPE_PROG_DET4, g, level) * d3;
 }
 
 /* The contact test of triple t: det3's sign when t is the contact triple,
 ** else 0.  On failure *viol gets a bit 2 r + (side > 0) for each point r
-** beyond its contact's neighbouring edge t[r] + side (0: no such hint, the
-** triple solves to no homothet). */
-static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3], int *viol) {
+** found beyond its contact's neighbouring edge t[r] + side (0: no such
+** hint, the triple solves to no homothet).  The bits are tested in order
+** and the test stops at the first one set in stop: a caller that acts on
+** the first set bit of stop (or on any violation, stop = all) gets the
+** answer all six would give. */
+static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3], int stop,
+                            int *viol) {
   shape_args g = {.K = k, .e = {t[0], t[1], t[2]}, .p = {p[0], p[1], p[2]}, .o = p[0]};
   *viol = 0;
   int d3 = shape_sign(SHAPE_PROG_DET3H, &g);
   if (d3 == 0 || shape_eps_sign(SHAPE_PROG_DET3W, g, NULL) * d3 <= 0) return 0;
-  for (int r = 0; r < 3; r++)
-    for (int side = -1; side <= 1; side += 2)
-      if (shape_slack(k, t, p, (t[r] + side + k->n) % k->n, p[r], d3, NULL) < 0)
-        *viol |= 1 << (2 * r + (side > 0));
+  for (int r = 0; r < 3; r++) {
+    shape_w3 w;
+    shape_w3_prep(&w, k, t, p, p[r]);
+    for (int side = -1; side <= 1; side += 2) {
+      int bit = 1 << (2 * r + (side > 0));
+      if (shape_slack(k, t, p, &w, (t[r] + side + k->n) % k->n, p[r], d3, NULL) < 0) {
+        *viol |= bit;
+        if (stop & bit) return 0;
+      }
+    }
+  }
   return *viol ? 0 : d3;
 }
 
@@ -343,7 +367,7 @@ static int shape_contacts_all(const shape *k, const int start[3], const int len[
         t[0] = (start[0] + a) % k->n;
         t[1] = (start[1] + b) % k->n;
         t[2] = (start[2] + c) % k->n;
-        int d3 = shape_contact_ok(k, t, p, &viol);
+        int d3 = shape_contact_ok(k, t, p, 63, &viol);
         if (d3 != 0) return d3;
       }
   return 0;
@@ -363,12 +387,17 @@ int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int 
     off[r] = len[r] / 2;
   }
   for (int step = 0; step < 2 * k->n + 8; step++) {
+    int movable = 0;
+    for (int bit = 0; bit < 6; bit++) {
+      int r = bit / 2, dir = bit % 2 ? 1 : -1;
+      movable |= (off[r] + dir >= 0 && off[r] + dir < len[r]) << bit;
+    }
     for (int r = 0; r < 3; r++) t[r] = (start[r] + off[r]) % k->n;
-    int viol, d3 = shape_contact_ok(k, t, p, &viol), moved = 0;
+    int viol, d3 = shape_contact_ok(k, t, p, movable, &viol), moved = 0;
     if (d3 != 0) return d3;
     for (int bit = 0; bit < 6 && !moved; bit++) {
       int r = bit / 2, dir = bit % 2 ? 1 : -1;
-      if ((viol >> bit & 1) && off[r] + dir >= 0 && off[r] + dir < len[r]) {
+      if ((viol >> bit & 1) && (movable >> bit & 1)) {
         off[r] += dir;
         moved = 1;
       }
@@ -384,8 +413,10 @@ int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int 
 static shape_choice shape_homothet_decide(const shape *k, const int t[3], int d3,
                                           const geom_point p[4], shape_trace *tr) {
   int out = 0, on = 0, lv = 0;
+  shape_w3 w;
+  shape_w3_prep(&w, k, t, p, p[3]);
   for (int m = t[2];; m = (m + 1) % k->n) {
-    int level = 0, s = shape_slack(k, t, p, m, p[3], d3, &level);
+    int level = 0, s = shape_slack(k, t, p, &w, m, p[3], d3, &level);
     lv = level > lv ? level : lv;
     out |= s < 0;
     on |= s == 0;

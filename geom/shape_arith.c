@@ -403,6 +403,65 @@ static int shape_filter_of(shape_prog p, const shape_args *g) {
   return 2;
 }
 
+static int shape_only_exact;   /* shape_set_exact_only */
+
+/* ---- the fast paths (shape_internal.h) ------------------------------
+**
+** No new bound: each is the double run of a program tree of the kind the
+** argument at the top covers (+, -, * over inputs and differences of two
+** inputs, with the same twin and rounding-count rules, filtered by
+** shape_ar_filter), so a sign it returns is the exact sign.
+** shape_fast_det4's tree is shape_p_det4's without the terms w_r M_r whose
+** w_r has twin 0: such a w_r is exactly 0 (a twin of 0 means every
+** monomial is 0), so the dropped terms add exactly 0 and the tree's exact
+** value is det4's.  The fourth row's w is always such a term (its site is
+** o: both differences are exactly 0), and so is a row whose site is o.
+** A w computed once and read by several trees is the same double, twin
+** and count each tree would compute (the double run is deterministic: no
+** FMA, no fast-math), and its poison is carried into each.  A returned 0
+** (twin 0) is passed on as 2: the caller's eps_sign then takes the
+** perturbation's coefficient. */
+
+int shape_fast_cross(const shape *K, int e, geom_point p, geom_point q) {
+  if (shape_only_exact) return 2;
+  shape_args g = {.K = K, .e = {e}, .p = {p, q}};
+  int s = shape_filter(shape_p_cross, &g);
+  return s == 0 ? 2 : s;
+}
+
+void shape_w3_prep(shape_w3 *w, const shape *K, const int e[3], const geom_point p[3],
+                   geom_point o) {
+  shape_args g = {.K = K, .o = o};
+  shape_ar a = {.exact = 0};
+  for (int r = 0; r < 3; r++) {
+    geom_point u = shape_vertex(K, e[r]), v = shape_vertex(K, e[r] + 1);
+    shape_num x = shape_w(&a, &g, shape_dif(&a, v.x, u.x), shape_dif(&a, v.y, u.y), p[r]);
+    w->v[r] = x.v;
+    w->t[r] = x.t;
+    w->k[r] = x.k;
+  }
+  w->poison = a.poison;
+}
+
+int shape_fast_det4(const shape_w3 *w, const shape *K, const int e[3], int m) {
+  if (shape_only_exact) return 2;
+  /* M_r, the det3h of the rows other than r among (e[0], e[1], e[2], m). */
+  const int other[3][3] = {{e[1], e[2], m}, {e[0], e[2], m}, {e[0], e[1], m}};
+  shape_ar a = {.exact = 0, .poison = w->poison};
+  shape_num acc = {0, 0, 0, 0};
+  int have = 0;
+  for (int r = 0; r < 3; r++) {
+    if (w->t[r] == 0) continue;
+    shape_num wr = {w->v[r], w->t[r], w->k[r], 0};
+    shape_num t = shape_mul(&a, wr, shape_cof3(&a, K, other[r][0], other[r][1], other[r][2]));
+    if (!have) acc = r % 2 ? t : shape_neg(&a, t);
+    else acc = r % 2 ? shape_add(&a, acc, t) : shape_sub(&a, acc, t);
+    have = 1;
+  }
+  int s = have ? shape_ar_filter(&a, acc) : 2;
+  return s == 0 ? 2 : s;
+}
+
 /* The exact run: the same program on rationals. */
 static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
   atomic_fetch_add_explicit(&shape_exact_count, 1, memory_order_relaxed);
@@ -415,8 +474,6 @@ static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
   mpq_clear(a.s);
   return s;
 }
-
-static int shape_only_exact;
 
 void shape_set_exact_only(int on) {
   shape_only_exact = on;

@@ -50,6 +50,24 @@ FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
 ** (so a decision can be compared with its purely exact twin); 0 restores. */
 FLIPLAB_INTERNAL void shape_set_exact_only(int on);
 
+/* The fast paths of the hot predicates (shape_arith.c): the double run
+** alone, returning its sign, or 2 when it cannot tell a non-zero sign (or
+** in the exact-only test mode); the caller then asks shape_eps_sign, so
+** every answer is the exact one.  shape_fast_cross: SHAPE_PROG_CROSS of
+** edge e and p, q.  shape_w3: the w values of three rows (e[r], p[r])
+** relative to o, computed once; shape_fast_det4: SHAPE_PROG_DET4 of those
+** rows and a fourth row (m, o), whose w is 0, from them. */
+typedef struct shape_w3 {
+  double v[3], t[3];    /* each w's double value and twin */
+  int k[3];             /* and rounding count */
+  int poison;
+} shape_w3;
+
+FLIPLAB_INTERNAL int shape_fast_cross(const shape *K, int e, geom_point p, geom_point q);
+FLIPLAB_INTERNAL void shape_w3_prep(shape_w3 *w, const shape *K, const int e[3],
+                                    const geom_point p[3], geom_point o);
+FLIPLAB_INTERNAL int shape_fast_det4(const shape_w3 *w, const shape *K, const int e[3], int m);
+
 /* The contact edges t (of A, B, C = p[0..2]) of the circumscribing
 ** homothet of the anticlockwise triangle p whose supports s_AB, s_BC, s_CA
 ** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
