@@ -336,11 +336,15 @@ static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3
                             int *viol) {
   shape_args g = {.K = k, .e = {t[0], t[1], t[2]}, .p = {p[0], p[1], p[2]}, .o = p[0]};
   *viol = 0;
-  int d3 = shape_sign(SHAPE_PROG_DET3H, &g);
-  if (d3 == 0 || shape_eps_sign(SHAPE_PROG_DET3W, g, NULL) * d3 <= 0) return 0;
+  int d3 = shape_det3h_sign(k, t);
+  if (d3 == 0) return 0;
+  shape_w3 w;
+  shape_w3_prep(&w, k, t, p, p[0]);   /* det3w's w values, and the slacks' of A */
+  int s = shape_fast_det3w(&w, k, t);
+  if (s == 2) s = shape_eps_sign(SHAPE_PROG_DET3W, g, NULL);
+  if (s * d3 <= 0) return 0;
   for (int r = 0; r < 3; r++) {
-    shape_w3 w;
-    shape_w3_prep(&w, k, t, p, p[r]);
+    if (r > 0) shape_w3_prep(&w, k, t, p, p[r]);
     for (int side = -1; side <= 1; side += 2) {
       int bit = 1 << (2 * r + (side > 0));
       if (shape_slack(k, t, p, &w, (t[r] + side + k->n) % k->n, p[r], d3, NULL) < 0) {

@@ -218,6 +218,7 @@ typedef struct shape_memo_entry {
 struct shape_memo {
   int n;
   shape_memo_entry *cof;   /* [(i n + j) n + k] */
+  signed char *sgn;        /* the same index: the exact sign (shape_sign) */
 };
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3_run(shape_ar *a, const shape *K, int i, int j,
@@ -244,9 +245,11 @@ int shape_memo_build(shape *K) {
   if (K->kind != SHAPE_POLYGON || n > SHAPE_MEMO_MAX) return 0;
   struct shape_memo *mm = malloc(sizeof *mm);
   shape_memo_entry *cof = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *cof);
-  if (mm == NULL || cof == NULL) {
+  signed char *sgn = malloc((size_t)n * (size_t)n * (size_t)n);
+  if (mm == NULL || cof == NULL || sgn == NULL) {
     free(mm);
     free(cof);
+    free(sgn);
     return -1;
   }
   for (int i = 0; i < n; i++)
@@ -254,11 +257,14 @@ int shape_memo_build(shape *K) {
       for (int k = 0; k < n; k++) {
         shape_ar a = {.exact = 0};
         shape_num x = shape_cof3_run(&a, K, i, j, k);
-        cof[((size_t)i * (size_t)n + (size_t)j) * (size_t)n + (size_t)k] =
-          (shape_memo_entry){x, a.poison};
+        size_t at = ((size_t)i * (size_t)n + (size_t)j) * (size_t)n + (size_t)k;
+        cof[at] = (shape_memo_entry){x, a.poison};
+        shape_args g = {.K = K, .e = {i, j, k}};
+        sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* K->memo is not yet set */
       }
   mm->n = n;
   mm->cof = cof;
+  mm->sgn = sgn;
   K->memo = mm;
   return 0;
 }
@@ -266,6 +272,7 @@ int shape_memo_build(shape *K) {
 void shape_memo_free(shape *K) {
   if (K->memo == NULL) return;
   free(K->memo->cof);
+  free(K->memo->sgn);
   free(K->memo);
   K->memo = NULL;
 }
@@ -434,6 +441,11 @@ void shape_w3_prep(shape_w3 *w, const shape *K, const int e[3], const geom_point
   shape_args g = {.K = K, .o = o};
   shape_ar a = {.exact = 0};
   for (int r = 0; r < 3; r++) {
+    if (p[r].x == o.x && p[r].y == o.y) {   /* both differences 0: w is exactly 0, twin 0 */
+      w->v[r] = w->t[r] = 0;
+      w->k[r] = 0;
+      continue;
+    }
     geom_point u = shape_vertex(K, e[r]), v = shape_vertex(K, e[r] + 1);
     shape_num x = shape_w(&a, &g, shape_dif(&a, v.x, u.x), shape_dif(&a, v.y, u.y), p[r]);
     w->v[r] = x.v;
@@ -460,6 +472,40 @@ int shape_fast_det4(const shape_w3 *w, const shape *K, const int e[3], int m) {
   }
   int s = have ? shape_ar_filter(&a, acc) : 2;
   return s == 0 ? 2 : s;
+}
+
+/* det3w expanded along its w column, w_0 M_0 - w_1 M_1 + w_2 M_2, M_r the
+** cross product of the other two rows' edge directions (in order): a tree
+** over the same inputs, so the argument at the top covers it. */
+int shape_fast_det3w(const shape_w3 *w, const shape *K, const int e[3]) {
+  if (shape_only_exact) return 2;
+  const int other[3][2] = {{e[1], e[2]}, {e[0], e[2]}, {e[0], e[1]}};
+  shape_ar a = {.exact = 0, .poison = w->poison};
+  shape_num acc = {0, 0, 0, 0};
+  int have = 0;
+  for (int r = 0; r < 3; r++) {
+    if (w->t[r] == 0) continue;
+    geom_point u0 = shape_vertex(K, other[r][0]), u1 = shape_vertex(K, other[r][0] + 1);
+    geom_point v0 = shape_vertex(K, other[r][1]), v1 = shape_vertex(K, other[r][1] + 1);
+    shape_num m = shape_cross2(&a, shape_dif(&a, u1.x, u0.x), shape_dif(&a, v1.y, v0.y),
+                               shape_dif(&a, u1.y, u0.y), shape_dif(&a, v1.x, v0.x));
+    shape_num t = shape_mul(&a, (shape_num){w->v[r], w->t[r], w->k[r], 0}, m);
+    if (!have) acc = r % 2 ? shape_neg(&a, t) : t;
+    else acc = r % 2 ? shape_sub(&a, acc, t) : shape_add(&a, acc, t);
+    have = 1;
+  }
+  int s = have ? shape_ar_filter(&a, acc) : 2;
+  return s == 0 ? 2 : s;
+}
+
+int shape_det3h_sign(const shape *K, const int e[3]) {
+  const struct shape_memo *mm = K->memo;
+  if (mm != NULL) {
+    size_t n = (size_t)mm->n;
+    return mm->sgn[((size_t)e[0] * n + (size_t)e[1]) * n + (size_t)e[2]];
+  }
+  shape_args g = {.K = K, .e = {e[0], e[1], e[2]}};
+  return shape_sign(SHAPE_PROG_DET3H, &g);
 }
 
 /* The exact run: the same program on rationals. */

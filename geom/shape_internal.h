@@ -56,7 +56,10 @@ FLIPLAB_INTERNAL void shape_set_exact_only(int on);
 ** every answer is the exact one.  shape_fast_cross: SHAPE_PROG_CROSS of
 ** edge e and p, q.  shape_w3: the w values of three rows (e[r], p[r])
 ** relative to o, computed once; shape_fast_det4: SHAPE_PROG_DET4 of those
-** rows and a fourth row (m, o), whose w is 0, from them. */
+** rows and a fourth row (m, o), whose w is 0, from them;
+** shape_fast_det3w: SHAPE_PROG_DET3W of the rows from them (o = p[0]).
+** shape_det3h_sign: the exact sign of SHAPE_PROG_DET3H of edges e[0..2]
+** (kept per shape, else computed). */
 typedef struct shape_w3 {
   double v[3], t[3];    /* each w's double value and twin */
   int k[3];             /* and rounding count */
@@ -67,6 +70,8 @@ FLIPLAB_INTERNAL int shape_fast_cross(const shape *K, int e, geom_point p, geom_
 FLIPLAB_INTERNAL void shape_w3_prep(shape_w3 *w, const shape *K, const int e[3],
                                     const geom_point p[3], geom_point o);
 FLIPLAB_INTERNAL int shape_fast_det4(const shape_w3 *w, const shape *K, const int e[3], int m);
+FLIPLAB_INTERNAL int shape_fast_det3w(const shape_w3 *w, const shape *K, const int e[3]);
+FLIPLAB_INTERNAL int shape_det3h_sign(const shape *K, const int e[3]);
 
 /* The contact edges t (of A, B, C = p[0..2]) of the circumscribing
 ** homothet of the anticlockwise triangle p whose supports s_AB, s_BC, s_CA
