@@ -160,6 +160,11 @@ int geom_angle_rank_bounds(geom_point p, geom_point q, geom_point r, int k, doub
   return 1;
 }
 
+int geom_ahead(geom_point a, geom_point b, geom_point x) {
+  if (a.x != b.x) return x.x != a.x && (b.x > a.x) == (x.x > a.x);
+  return x.y != a.y && (b.y > a.y) == (x.y > a.y);
+}
+
 double geom_dist(geom_point p, geom_point q) {
   double dx = p.x - q.x, dy = p.y - q.y;
   return sqrt(dx * dx + dy * dy);

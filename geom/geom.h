@@ -218,6 +218,9 @@ geom_polyerr geom_simple_polygon_check(geom_point *p, size_t n, size_t *bad, siz
                                        int *reversed);
 /* 1 if the closed segments ab and cd have a point in common (exact). */
 int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d);
+/* For x on the line through a != b: 1 when x lies strictly beyond a in the
+** direction of b (comparisons of coordinates only, so exact). */
+int geom_ahead(geom_point a, geom_point b, geom_point x);
 const char *geom_polyerr_str(geom_polyerr e);
 
 /* A planar straight-line graph: points, segments between them (pairs of

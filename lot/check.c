@@ -6,7 +6,9 @@
 ** (rule_eval on the quadrilateral's own points; DT by the exact empty-circle
 ** test), the comparison of two triangulations, and each triangle's badness.
 */
+#include <limits.h>
 #include <math.h>
+#include <string.h>
 #include <stdlib.h>
 #include "lot.h"
 #include "measure.h"
@@ -50,9 +52,14 @@ static void lot_check_edge(const geom_point *p, uint32_t u, uint32_t v, uint32_t
   }
 }
 
-int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-              const rule *r, lot_check_result *out) {
-  *out = (lot_check_result){0};
+static int lot_u64_cmp(const void *x, const void *y);
+
+/* The structure and local optimality of tri; the edges in skip (sorted
+** lot_ukey keys: constrained) are interior but not decided.  Sets
+** out->valid for the structure alone; *vertices: the points used. */
+static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                         const rule *r, const uint64_t *skip, size_t nskip,
+                         lot_check_result *out, size_t *vertices) {
   lot_dedge *e = malloc(3 * ntri * sizeof *e);
   unsigned char *used = calloc(n ? n : 1, 1);
   if (e == NULL || used == NULL) {
@@ -86,23 +93,204 @@ int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
       if (u2 != v) valid = 0;   /* the same direction in both: inconsistent */
       else {
         out->interior_edges++;
-        lot_check_edge(p, u, v, a, d, r, out);
+        if (skip == NULL || bsearch(&e[i].key, skip, nskip, sizeof *skip, lot_u64_cmp) == NULL)
+          lot_check_edge(p, u, v, a, d, r, out);
       }
     }
     i = j;
   }
-  size_t vertices = 0;
-  for (size_t i = 0; i < n; i++) vertices += used[i];
-  if (valid && ntri + out->boundary_edges + 2 != 2 * vertices) valid = 0;
+  *vertices = 0;
+  for (size_t i = 0; i < n; i++) *vertices += used[i];
   out->valid = valid;
   free(e);
   free(used);
   return 0;
 }
 
+int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+              const rule *r, lot_check_result *out) {
+  *out = (lot_check_result){0};
+  size_t vertices;
+  if (lot_check_run(p, n, tri, ntri, r, NULL, 0, out, &vertices) != 0) return -1;
+  if (out->valid && ntri + out->boundary_edges + 2 != 2 * vertices) out->valid = 0;
+  return 0;
+}
+
 static int lot_u64_cmp(const void *x, const void *y) {
   uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
   return a < b ? -1 : a > b;
+}
+
+/* ---- constrained triangulations ---------------------------------------- */
+
+/* Directed edges u -> v as u << 32 | v, sorted, with their triangles: the
+** adjacency the constrained checks walk. */
+typedef struct lot_darc {
+  uint64_t key;
+  uint32_t t, e;        /* edge e of triangle t */
+} lot_darc;
+
+static int lot_darc_cmp(const void *x, const void *y) {
+  const lot_darc *a = x, *b = y;
+  return a->key < b->key ? -1 : a->key > b->key;
+}
+
+static const lot_darc *lot_darc_find(const lot_darc *d, size_t nd, uint32_t u, uint32_t v) {
+  lot_darc q = {(uint64_t)u << 32 | v, 0, 0};
+  return bsearch(&q, d, nd, sizeof *d, lot_darc_cmp);
+}
+
+/* The first index of each point's coordinates (merged duplicates):
+** first[i] == i for the first occurrence. */
+static int lot_first_copies(const geom_point *p, size_t n, uint32_t *first) {
+  uint32_t *ix = malloc((n ? n : 1) * sizeof *ix);
+  if (ix == NULL) return -1;
+  for (size_t i = 0; i < n; i++) ix[i] = (uint32_t)i;
+  for (size_t i = 0; i < n; i++) first[i] = (uint32_t)i;
+  /* a hash would do; a sort by coordinates keeps it simple and exact */
+  for (size_t w = 1; w < n; w *= 2)   /* bottom-up merge sort, stable by index */
+    for (size_t lo = 0; lo < n; lo += 2 * w) {
+      size_t mid = lo + w < n ? lo + w : n, hi = lo + 2 * w < n ? lo + 2 * w : n;
+      uint32_t *tmp = malloc((hi - lo) * sizeof *tmp);
+      if (tmp == NULL) { free(ix); return -1; }
+      size_t a = lo, b = mid, k = 0;
+      while (a < mid || b < hi) {
+        int take_a = b >= hi || (a < mid && (p[ix[a]].x < p[ix[b]].x ||
+                     (p[ix[a]].x == p[ix[b]].x && p[ix[a]].y <= p[ix[b]].y)));
+        tmp[k++] = take_a ? ix[a++] : ix[b++];
+      }
+      memcpy(ix + lo, tmp, (hi - lo) * sizeof *tmp);
+      free(tmp);
+    }
+  for (size_t i = 1; i < n; i++)
+    if (p[ix[i]].x == p[ix[i - 1]].x && p[ix[i]].y == p[ix[i - 1]].y) first[ix[i]] = first[ix[i - 1]];
+  free(ix);
+  return 0;
+}
+
+/* Walk segment u-v along the edges (adjacency adj: sorted u << 32 | v in
+** both directions): each step to the neighbour that is v or lies on the
+** segment strictly between the current vertex and v.  The chain's edges
+** go to keys; returns 1 when the chain reaches v. */
+static int lot_chain(const geom_point *p, const uint64_t *adj, size_t nadj, uint32_t u, uint32_t v,
+                     uint64_t **keys, size_t *nk, size_t *cap) {
+  uint32_t cur = u;
+  for (size_t steps = 0; cur != v && steps <= nadj; steps++) {
+    uint64_t lo = (uint64_t)cur << 32;
+    size_t i = 0, j = nadj;
+    while (i < j) {   /* the first arc leaving cur */
+      size_t h = (i + j) / 2;
+      if (adj[h] < lo) i = h + 1;
+      else j = h;
+    }
+    uint32_t next = UINT32_MAX;
+    for (; i < nadj && adj[i] >> 32 == cur && next == UINT32_MAX; i++) {
+      uint32_t w = (uint32_t)adj[i];
+      if (w == v || (geom_orient(p[u], p[v], p[w]) == 0 && geom_ahead(p[cur], p[v], p[w]) &&
+                     geom_ahead(p[v], p[cur], p[w])))
+        next = w;
+    }
+    if (next == UINT32_MAX) return 0;
+    if (*nk == *cap) {
+      size_t c = *cap ? 2 * *cap : 256;
+      uint64_t *k = realloc(*keys, c * sizeof *k);
+      if (k == NULL) return -1;
+      *keys = k;
+      *cap = c;
+    }
+    (*keys)[(*nk)++] = lot_ukey(cur, next);
+    cur = next;
+  }
+  return cur == v;
+}
+
+/* Boundary loops, each boundary edge u -> v followed by the next one from
+** v, found by turning around v through the triangles: as many as the
+** permutation's cycles.  Also the components, by union-find over shared
+** edges.  Returns 2C - L. */
+static long lot_euler_rhs(const uint32_t *tri, size_t ntri, const lot_darc *d, size_t nd) {
+  uint32_t *parent = malloc((ntri ? ntri : 1) * sizeof *parent);
+  uint8_t *seen = calloc(nd ? nd : 1, 1);
+  if (parent == NULL || seen == NULL) {
+    free(parent);
+    free(seen);
+    return LONG_MIN;
+  }
+  for (size_t t = 0; t < ntri; t++) parent[t] = (uint32_t)t;
+  long comps = (long)ntri, loops = 0;
+  for (size_t i = 0; i < nd; i++) {
+    uint32_t u = (uint32_t)(d[i].key >> 32), v = (uint32_t)d[i].key;
+    const lot_darc *tw = lot_darc_find(d, nd, v, u);
+    if (tw != NULL) {
+      uint32_t a = d[i].t, b = tw->t;
+      while (parent[a] != a) a = parent[a] = parent[parent[a]];
+      while (parent[b] != b) b = parent[b] = parent[parent[b]];
+      if (a != b) { parent[a] = b; comps--; }
+      continue;
+    }
+    if (seen[i]) continue;
+    loops++;
+    for (size_t j = i; !seen[j];) {   /* trace the loop of boundary edge j */
+      seen[j] = 1;
+      uint32_t t = d[j].t, e = d[j].e;
+      for (;;) {   /* the edge of t leaving the head of edge e */
+        uint32_t from = tri[3 * t + (e + 1) % 3], to = tri[3 * t + (e + 2) % 3];
+        const lot_darc *x = lot_darc_find(d, nd, to, from);
+        if (x == NULL) {
+          j = (size_t)(lot_darc_find(d, nd, from, to) - d);
+          break;
+        }
+        t = x->t;
+        e = x->e;
+      }
+    }
+  }
+  free(parent);
+  free(seen);
+  return 2 * comps - loops;
+}
+
+int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                          const uint32_t *seg, size_t nseg, const rule *r,
+                          lot_check_result *out) {
+  *out = (lot_check_result){0};
+  for (size_t t = 0; t < 3 * ntri; t++)
+    if (tri[t] >= n) return 0;   /* not valid */
+  lot_darc *d = malloc((3 * ntri + 1) * sizeof *d);
+  uint64_t *adj = malloc((6 * ntri + 1) * sizeof *adj), *keys = NULL;
+  uint32_t *first = malloc((n ? n : 1) * sizeof *first);
+  size_t nk = 0, kcap = 0, nadj = 0, vertices;
+  int rc = -1;
+  if (d == NULL || adj == NULL || first == NULL || lot_first_copies(p, n, first) != 0) goto done;
+  for (size_t t = 0; t < ntri; t++)
+    for (uint32_t e = 0; e < 3; e++) {
+      uint32_t u = tri[3 * t + e], v = tri[3 * t + (e + 1) % 3];
+      d[3 * t + e] = (lot_darc){(uint64_t)u << 32 | v, (uint32_t)t, e};
+      adj[nadj++] = (uint64_t)u << 32 | v;
+      adj[nadj++] = (uint64_t)v << 32 | u;
+    }
+  qsort(d, 3 * ntri, sizeof *d, lot_darc_cmp);
+  qsort(adj, nadj, sizeof *adj, lot_u64_cmp);
+  for (size_t k = 0; k < nseg; k++) {
+    uint32_t u = seg[2 * k], v = seg[2 * k + 1];
+    int ok = u < n && v < n && first[u] != first[v];
+    if (ok) ok = lot_chain(p, adj, nadj, first[u], first[v], &keys, &nk, &kcap);
+    if (ok < 0) goto done;
+    if (!ok && out->segments_missing++ == 0) out->missing_segment = k;
+  }
+  qsort(keys, nk, sizeof *keys, lot_u64_cmp);
+  if (lot_check_run(p, n, tri, ntri, r, keys, nk, out, &vertices) != 0) goto done;
+  long rhs = out->valid ? lot_euler_rhs(tri, ntri, d, 3 * ntri) : 0;
+  if (rhs == LONG_MIN) goto done;
+  long edges = (long)(out->interior_edges + out->boundary_edges);
+  if (out->valid && (long)vertices - edges + (long)ntri != rhs) out->valid = 0;
+  rc = 0;
+done:
+  free(d);
+  free(adj);
+  free(keys);
+  free(first);
+  return rc;
 }
 
 /* Sorted distinct undirected edges of a list. */

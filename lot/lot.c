@@ -55,6 +55,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "mesh.h"
+#include "cdt.h"
 #include "order.h"
 #include "sweep_internal.h"
 #include "measure.h"
@@ -68,6 +69,8 @@ struct lot {
   lot_mesh m;
   lot_stats st;
   rule r;
+  lot_cdt cdt;          /* constraints (cdt.c); all zero when there are none */
+  int constrained;
 };
 
 typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
@@ -83,6 +86,7 @@ typedef struct lot_run {
   const lot_options *o;
   const rule *r;        /* the lot's rule (struct lot) */
   lot_stats *st;
+  const lot_cons *cons; /* constrained edges, never flipped; NULL: none */
   lot_kind kind;
   int star_only;        /* DT insertion: only edges opposite the new point */
   int stopped;          /* cycle or budget: no more flips */
@@ -370,6 +374,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
   uint32_t cd = m->tn[c], t = lot_tri_of(c), u = lot_tri_of(cd), d = m->tv[cd];
   if (d == LOT_GHOST) return 0;
   uint32_t a = m->tv[c], b = m->tv[lot_next3(c)], c0 = m->tv[lot_prev3(c)];
+  if (R->cons != NULL && lot_cons_has(R->cons, b, c0)) return 0;
   geom_point pa = m->p[a], pb = m->p[b], pc = m->p[c0], pd = m->p[d];
   lot_enc n1, n2;
   if (R->kind == LOT_K_DT) {
@@ -489,6 +494,7 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   R->o = o;
   R->r = r;
   R->st = &L->st;
+  R->cons = L->constrained ? &L->cdt.cons : NULL;
   R->kind = o->decide ? LOT_K_HOOK
           : rule_is_triangle(r) ? LOT_K_TRI
           : rule_is_delaunay(r) ? LOT_K_DT : LOT_K_QUAD;
@@ -527,6 +533,10 @@ static int lot_validate(const geom_point *p, size_t n, const lot_options *o, cha
     }
     if (lot_sweep_pick_rule(&o->r, &pk, err, errlen) != 0) return -1;
     lot_sweep_pick_free(&pk);
+  }
+  if ((o->nsegments > 0 && o->segments == NULL) || (o->nholes > 0 && o->holes == NULL)) {
+    snprintf(err, errlen, "constraints: a count without its array");
+    return -1;
   }
   if (n > LOT_MAX_POINTS) {
     snprintf(err, errlen, "%zu points: at most %u are supported", n, (unsigned)LOT_MAX_POINTS);
@@ -611,7 +621,7 @@ static void lot_finish_stats(lot *L) {
   size_t ghosts = 0;
   for (uint32_t t = 0; t < m->nt; t++) ghosts += lot_is_ghost(m, t);
   L->st.hull = ghosts;
-  L->st.triangles = m->nt - ghosts;
+  L->st.triangles = m->nt - ghosts - L->st.removed;
   L->st.distinct = L->st.n - L->st.duplicates;
 }
 
@@ -655,6 +665,52 @@ static int lot_triangulate(lot *L, lot_run *R, const lot_options *o, char *err, 
   return lot_insert_all(L, R, kb, kc, o->algorithm == LOT_INCREMENTAL);
 }
 
+/* The segments, inserted into the triangulation one by one (cdt.c); after
+** each, the new triangles' edges are flipped with the rule (not for the
+** flip algorithm, whose one flip phase follows).  0, -1 (memory), -2 (err). */
+static int lot_constrain(lot *L, lot_run *R, const lot_options *o, const uint32_t *ord,
+                         char *err, size_t errlen) {
+  if (lot_cdt_begin(&L->cdt, &L->m, ord, L->st.n) != 0) return -1;
+  R->cons = &L->cdt.cons;
+  R->star_only = 0;   /* a new triangle is no star of a new point */
+  uint32_t *cand = NULL;
+  size_t candcap = 0;
+  int rc = 0;
+  for (size_t k = 0; k < o->nsegments && rc == 0; k++) {
+    long nc = lot_cdt_segment(&L->cdt, &L->m, o, &L->st, k, &cand, &candcap, err, errlen);
+    if (nc < 0) rc = (int)nc;
+    for (long i = 0; rc == 0 && o->algorithm != LOT_FLIP && i < nc && !R->stopped; i++)
+      rc = lot_push(R, cand[i]);
+    if (rc == 0 && o->algorithm != LOT_FLIP) rc = lot_drain(R);
+  }
+  free(cand);
+  return rc;
+}
+
+/* The flip algorithm's flip phase, and the times (started at t0, the
+** order made at tord).  0, or -1 when out of memory. */
+static int lot_flip_phase(lot *L, lot_run *R, const lot_options *o, double t0, double tord) {
+  double t1 = lot_now();
+  if (o->algorithm == LOT_FLIP) {
+    L->st.seconds_init = t1 - t0;
+    if (lot_flip_all(R) != 0) return -1;
+    L->st.seconds_flip = lot_now() - t1;
+  } else {   /* the split is ordering | the rest (insertion or sweep, with their flips) */
+    L->st.seconds_init = tord - t0;
+    L->st.seconds_flip = t1 - tord;
+  }
+  return 0;
+}
+
+/* 1 with the message when the constraints removed every triangle. */
+static int lot_none_left(const lot *L, const lot_options *o, char *err, size_t errlen) {
+  if (!L->constrained || L->st.triangles > 0) return 0;
+  snprintf(err, errlen, "no triangle is left: the %s every triangle (--keep-hull keeps the "
+           "convex hull's)", o->nholes > 0 ? "holes and segments remove"
+                                           : "segments bound no region and the outside takes");
+  return 1;
+}
+
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
               size_t errlen) {
   *out = NULL;
@@ -672,6 +728,7 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   if (lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(&L->r, o)) != 0) goto oom;
   lot_use_rule(L);
   L->st.n = n;
+  L->constrained = o->nsegments > 0 || o->nholes > 0;
   lot_run_init(&R, L, o);
   R.star_only = rule_is_systematic(&L->r) && !o->decide && o->algorithm == LOT_INCREMENTAL;
   double t0 = lot_now();
@@ -681,28 +738,30 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
     L->m.p[k] = p[ord[k]];
     L->m.inp[k] = ord[k];
   }
+  int rc = lot_triangulate(L, &R, o, err, errlen);
+  if (rc == 0 && o->algorithm == LOT_SWEEP) rc = lot_settle_ties(&R);
+  if (rc == 0 && L->constrained) rc = lot_constrain(L, &R, o, ord, err, errlen);
   free(ord);
   ord = NULL;
-  int rc = lot_triangulate(L, &R, o, err, errlen);
-  if (rc == -2) {
-    lot_run_free(&R);
-    lot_free(L);
-    return -1;
-  }
-  if (rc != 0 || (o->algorithm == LOT_SWEEP && lot_settle_ties(&R) != 0)) goto oom_run;
-  double t1 = lot_now();
-  if (o->algorithm == LOT_FLIP) {
-    L->st.seconds_init = t1 - t0;
-    if (lot_flip_all(&R) != 0) goto oom_run;
-    L->st.seconds_flip = lot_now() - t1;
-  } else {   /* the split is ordering | the rest (insertion or sweep, with their flips) */
-    L->st.seconds_init = tord - t0;
-    L->st.seconds_flip = t1 - tord;
+  if (rc == -2) goto refused;
+  if (rc != 0) goto oom_run;
+  if (lot_flip_phase(L, &R, o, t0, tord) != 0) goto oom_run;
+  if (L->constrained && (rc = lot_cdt_remove(&L->cdt, &L->m, o, &L->st, err, errlen)) != 0) {
+    if (rc == -1) goto oom_run;
+    goto refused;
   }
   lot_run_free(&R);
   lot_finish_stats(L);
+  if (lot_none_left(L, o, err, errlen)) {
+    lot_free(L);
+    return -1;
+  }
   *out = L;
   return 0;
+refused:
+  lot_run_free(&R);
+  lot_free(L);
+  return -1;
 oom_run:
   lot_run_free(&R);
 oom:
@@ -767,6 +826,10 @@ const lot_stats *lot_get_stats(const lot *L) {
   return &L->st;
 }
 
+size_t lot_get_constrained(const lot *L, uint32_t *out) {
+  return L->constrained ? lot_cdt_edges(&L->cdt, &L->m, out) : 0;
+}
+
 static int lot_tri_cmp(const void *x, const void *y) {
   const uint32_t *a = x, *b = y;
   for (int i = 0; i < 3; i++)
@@ -821,7 +884,7 @@ void lot_get_triangles(const lot *L, uint32_t *tri) {
   const lot_mesh *m = &L->m;
   size_t w = 0;
   for (uint32_t t = 0; t < m->nt; t++) {
-    if (lot_is_ghost(m, t)) continue;
+    if (lot_is_ghost(m, t) || lot_cdt_gone(&L->cdt, t)) continue;
     uint32_t v[3];
     for (int i = 0; i < 3; i++) v[i] = m->inp[m->tv[LOT_CORNER(t, i)]];
     int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
@@ -834,5 +897,6 @@ void lot_get_triangles(const lot *L, uint32_t *tri) {
 void lot_free(lot *L) {
   if (L == NULL) return;
   lot_mesh_free(&L->m);
+  lot_cdt_free(&L->cdt);
   free(L);
 }

@@ -67,6 +67,14 @@ typedef struct lot_options {
   double tie_eps;       /* the rule's tie tolerance in this run (lot_options_init: r's) */
   lot_decide_fn decide; /* NULL: the rule decides */
   void *decide_ctx;
+  /* Constraints (lot/cdt.c, docs/lot.md "Constrained triangulations"):
+  ** none gives the unconstrained LOT, byte for byte. */
+  const uint32_t *segments;  /* 2 per segment: 0-based input point indices */
+  size_t nsegments;
+  const geom_point *holes;   /* hole points: the regions holding them are removed */
+  size_t nholes;
+  int keep_hull;             /* 1: keep the triangles outside the outermost segment-bounded
+                                region (0: removed, as Triangle's -p) */
 } lot_options;
 
 /* Defaults: incremental, spatial order, seed 1, RULE_DEFAULT_TIE_EPS. */
@@ -92,6 +100,15 @@ typedef struct lot_stats {
   double seconds_init;  /* flip: the sweep triangulation; incremental, sweep: ordering the points */
   double seconds_flip;  /* flip: the flips; incremental: insertion and flips (interleaved);
                            sweep: the sweep */
+  /* constrained runs */
+  size_t segments;          /* input segments */
+  size_t constrained;       /* constrained edges in the result (the segments' pieces: split
+                               at the points on them, duplicates and overlaps merged) */
+  size_t segments_merged;   /* input segments with a piece an earlier segment made */
+  size_t segments_split;    /* input segments with a point inside them */
+  size_t segments_removed;  /* input segments with a piece in no kept triangle */
+  size_t holes;             /* hole points */
+  size_t removed;           /* triangles removed (holes, and the outside) */
 } lot_stats;
 
 typedef struct lot lot;
@@ -111,6 +128,10 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
 int lot_reflip(lot *L, const lot_options *o);
 
 const lot_stats *lot_get_stats(const lot *L);
+
+/* The constrained edges of the result: 2 input indices each, smaller
+** first, sorted; out holds 2 * stats.constrained entries.  Returns the count. */
+size_t lot_get_constrained(const lot *L, uint32_t *out);
 
 /* The triangles, 3 input indices each, anticlockwise, each starting at its
 ** smallest index, sorted; tri must hold 3 * stats.triangles entries. */
@@ -137,7 +158,10 @@ typedef struct lot_check_result {
   size_t not_optimal;       /* of those, the rule prefers the other diagonal */
   uint32_t bad_edge[2];     /* the first such edge */
   int valid;                /* a triangulation: anticlockwise, every edge in <= 2 triangles,
-                               consistently oriented, T = 2n - h - 2 (Euler) */
+                               consistently oriented, T = 2n - h - 2 (Euler); constrained:
+                               V - E + T = 2C - L (components, boundary loops) */
+  size_t segments_missing;  /* lot_check_constrained: segments that are no chain of edges */
+  size_t missing_segment;   /* the first of them (an index into seg) */
 } lot_check_result;
 
 /* Re-verify a triangulation of p (indices into p) from scratch: structure,
@@ -145,6 +169,15 @@ typedef struct lot_check_result {
 ** tolerance (DT: the exact empty-circle test).  0, or -1 when out of memory. */
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
               const rule *r, lot_check_result *out);
+
+/* lot_check for a constrained triangulation, from the triangle list and the
+** input segments seg (2 indices each) alone: each segment must be a chain of
+** triangle edges through the points on it, else it counts as missing; those
+** edges are not decided; every other interior edge is checked as lot_check
+** does, and valid asks Euler's relation with holes.  0, or -1 (memory). */
+int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                          const uint32_t *seg, size_t nseg, const rule *r,
+                          lot_check_result *out);
 
 /* The neighbours of the triangles tri (indices below n), in the convention
 ** of scipy.spatial.Delaunay.neighbors: nb[3t + k] is the triangle across

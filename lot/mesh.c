@@ -93,12 +93,12 @@ int lot_mesh_recache(lot_mesh *m, lot_cache cache) {
   return 0;
 }
 
-static void lot_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
+void lot_mesh_link(lot_mesh *m, uint32_t c1, uint32_t c2) {
   m->tn[c1] = c2;
   m->tn[c2] = c1;
 }
 
-static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
+void lot_mesh_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
   uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
   v[0] = a;
   v[1] = b;
@@ -108,16 +108,16 @@ static void lot_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
 
 void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   /* t0 = abc; ghosts g1 = (b, a, G), g2 = (c, b, G), g3 = (a, c, G). */
-  lot_set(m, 0, a, b, c);
-  lot_set(m, 1, b, a, LOT_GHOST);
-  lot_set(m, 2, c, b, LOT_GHOST);
-  lot_set(m, 3, a, c, LOT_GHOST);
-  lot_link(m, 0, LOT_CORNER(2, 2));       /* opposite a: bc */
-  lot_link(m, 1, LOT_CORNER(3, 2));       /* opposite b: ca */
-  lot_link(m, 2, LOT_CORNER(1, 2));       /* opposite c: ab */
-  lot_link(m, LOT_CORNER(1, 0), LOT_CORNER(3, 1));
-  lot_link(m, LOT_CORNER(1, 1), LOT_CORNER(2, 0));
-  lot_link(m, LOT_CORNER(2, 1), LOT_CORNER(3, 0));
+  lot_mesh_set(m, 0, a, b, c);
+  lot_mesh_set(m, 1, b, a, LOT_GHOST);
+  lot_mesh_set(m, 2, c, b, LOT_GHOST);
+  lot_mesh_set(m, 3, a, c, LOT_GHOST);
+  lot_mesh_link(m, 0, LOT_CORNER(2, 2));       /* opposite a: bc */
+  lot_mesh_link(m, 1, LOT_CORNER(3, 2));       /* opposite b: ca */
+  lot_mesh_link(m, 2, LOT_CORNER(1, 2));       /* opposite c: ab */
+  lot_mesh_link(m, LOT_CORNER(1, 0), LOT_CORNER(3, 1));
+  lot_mesh_link(m, LOT_CORNER(1, 1), LOT_CORNER(2, 0));
+  lot_mesh_link(m, LOT_CORNER(2, 1), LOT_CORNER(3, 0));
   m->nt = 4;
   m->last = 0;
 }
@@ -433,14 +433,14 @@ static void lot_split_triangle(lot_mesh *m, uint32_t t, uint32_t k, uint32_t out
   uint32_t a = m->tv[LOT_CORNER(t, 0)], b = m->tv[LOT_CORNER(t, 1)], c = m->tv[LOT_CORNER(t, 2)];
   uint32_t na = m->tn[LOT_CORNER(t, 0)], nb = m->tn[LOT_CORNER(t, 1)];
   uint32_t t1 = m->nt++, t2 = m->nt++;
-  lot_set(m, t, a, b, k);
-  lot_set(m, t1, b, c, k);
-  lot_set(m, t2, c, a, k);
-  lot_link(m, LOT_CORNER(t, 0), LOT_CORNER(t1, 1));
-  lot_link(m, LOT_CORNER(t, 1), LOT_CORNER(t2, 0));
-  lot_link(m, LOT_CORNER(t1, 0), LOT_CORNER(t2, 1));
-  lot_link(m, LOT_CORNER(t1, 2), na);
-  lot_link(m, LOT_CORNER(t2, 2), nb);
+  lot_mesh_set(m, t, a, b, k);
+  lot_mesh_set(m, t1, b, c, k);
+  lot_mesh_set(m, t2, c, a, k);
+  lot_mesh_link(m, LOT_CORNER(t, 0), LOT_CORNER(t1, 1));
+  lot_mesh_link(m, LOT_CORNER(t, 1), LOT_CORNER(t2, 0));
+  lot_mesh_link(m, LOT_CORNER(t1, 0), LOT_CORNER(t2, 1));
+  lot_mesh_link(m, LOT_CORNER(t1, 2), na);
+  lot_mesh_link(m, LOT_CORNER(t2, 2), nb);
   out[0] = LOT_CORNER(t, 2);
   out[1] = LOT_CORNER(t1, 2);
   out[2] = LOT_CORNER(t2, 2);
@@ -455,18 +455,18 @@ static void lot_split_edge(lot_mesh *m, uint32_t c, uint32_t k, uint32_t out[4])
   uint32_t a = m->tv[c], b = m->tv[cb], c0 = m->tv[cc], d = m->tv[ud];
   uint32_t n_ca = m->tn[cb], n_ab = m->tn[cc], n_bd = m->tn[uc], n_dc = m->tn[ub];
   uint32_t t1 = m->nt++, t2 = m->nt++;
-  lot_set(m, t, a, b, k);
-  lot_set(m, t1, a, k, c0);
-  lot_set(m, u, d, c0, k);
-  lot_set(m, t2, d, k, b);
-  lot_link(m, LOT_CORNER(t, 0), LOT_CORNER(t2, 0));
-  lot_link(m, LOT_CORNER(t, 1), LOT_CORNER(t1, 2));
-  lot_link(m, LOT_CORNER(t, 2), n_ab);
-  lot_link(m, LOT_CORNER(t1, 0), LOT_CORNER(u, 0));
-  lot_link(m, LOT_CORNER(t1, 1), n_ca);
-  lot_link(m, LOT_CORNER(u, 1), LOT_CORNER(t2, 2));
-  lot_link(m, LOT_CORNER(u, 2), n_dc);
-  lot_link(m, LOT_CORNER(t2, 1), n_bd);
+  lot_mesh_set(m, t, a, b, k);
+  lot_mesh_set(m, t1, a, k, c0);
+  lot_mesh_set(m, u, d, c0, k);
+  lot_mesh_set(m, t2, d, k, b);
+  lot_mesh_link(m, LOT_CORNER(t, 0), LOT_CORNER(t2, 0));
+  lot_mesh_link(m, LOT_CORNER(t, 1), LOT_CORNER(t1, 2));
+  lot_mesh_link(m, LOT_CORNER(t, 2), n_ab);
+  lot_mesh_link(m, LOT_CORNER(t1, 0), LOT_CORNER(u, 0));
+  lot_mesh_link(m, LOT_CORNER(t1, 1), n_ca);
+  lot_mesh_link(m, LOT_CORNER(u, 1), LOT_CORNER(t2, 2));
+  lot_mesh_link(m, LOT_CORNER(u, 2), n_dc);
+  lot_mesh_link(m, LOT_CORNER(t2, 1), n_bd);
   out[0] = LOT_CORNER(t, 2);
   out[1] = LOT_CORNER(t1, 1);
   out[2] = LOT_CORNER(u, 2);
@@ -519,13 +519,13 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
   uint32_t u0 = m->tv[lot_next3(first)], vm = m->tv[lot_prev3(last)];
   uint32_t prev_in = m->tn[lot_prev3(first)];   /* previous ghost's corner facing edge (u0, G) */
   uint32_t next_in = m->tn[lot_next3(last)];    /* next ghost's corner facing edge (vm, G) */
-  lot_set(m, A, u0, k, LOT_GHOST);
-  lot_set(m, B, k, vm, LOT_GHOST);
-  lot_link(m, LOT_CORNER(A, 2), lot_prev3(first));    /* edge u0-k */
-  lot_link(m, LOT_CORNER(A, 1), prev_in);              /* edge G-u0 */
-  lot_link(m, LOT_CORNER(B, 2), lot_next3(last));      /* edge k-vm */
-  lot_link(m, LOT_CORNER(B, 0), next_in);              /* edge vm-G */
-  lot_link(m, LOT_CORNER(A, 0), LOT_CORNER(B, 1));            /* edge k-G */
+  lot_mesh_set(m, A, u0, k, LOT_GHOST);
+  lot_mesh_set(m, B, k, vm, LOT_GHOST);
+  lot_mesh_link(m, LOT_CORNER(A, 2), lot_prev3(first));    /* edge u0-k */
+  lot_mesh_link(m, LOT_CORNER(A, 1), prev_in);              /* edge G-u0 */
+  lot_mesh_link(m, LOT_CORNER(B, 2), lot_next3(last));      /* edge k-vm */
+  lot_mesh_link(m, LOT_CORNER(B, 0), next_in);              /* edge vm-G */
+  lot_mesh_link(m, LOT_CORNER(A, 0), LOT_CORNER(B, 1));            /* edge k-G */
   return (long)nc;
 }
 
@@ -573,9 +573,9 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
   uint32_t n_ca = m->tn[i1], n_bd = m->tn[j1];
   m->tv[i2] = d;
   m->tv[j2] = a;
-  lot_link(m, c, n_bd);
-  lot_link(m, j0, n_ca);
-  lot_link(m, i1, j1);
+  lot_mesh_link(m, c, n_bd);
+  lot_mesh_link(m, j0, n_ca);
+  lot_mesh_link(m, i1, j1);
   if (m->bad) {
     m->bad[t] = bad_t;
     m->bad[u] = bad_u;

@@ -87,6 +87,10 @@ FLIPLAB_INTERNAL int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache);
 FLIPLAB_INTERNAL int lot_mesh_recache(lot_mesh *m, lot_cache cache);
 FLIPLAB_INTERNAL void lot_mesh_free(lot_mesh *m);
 /* The first triangle a, b, c (anticlockwise) and its three ghosts. */
+/* Link corners c1 and c2 as neighbours across their opposite edge. */
+FLIPLAB_INTERNAL void lot_mesh_link(lot_mesh *m, uint32_t c1, uint32_t c2);
+/* Triangle t's vertices a, b, c (anticlockwise), its cache entry made. */
+FLIPLAB_INTERNAL void lot_mesh_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c);
 FLIPLAB_INTERNAL void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* Locate vertex k's point: *c is a triangle's corner (IN_TRIANGLE: 3t;
 ** ON_EDGE: the corner opposite the edge; ON_VERTEX: the vertex's corner;

@@ -71,14 +71,19 @@ class LotStats(ctypes.Structure):
                 ("cycle_quads", ctypes.c_size_t),
                 ("cycle_quad", (ctypes.c_uint32 * 4) * LOT_CYCLE_QUADS),
                 ("max_flips", ctypes.c_uint64), ("seconds_init", ctypes.c_double),
-                ("seconds_flip", ctypes.c_double)]
+                ("seconds_flip", ctypes.c_double),
+                ("segments", ctypes.c_size_t), ("constrained", ctypes.c_size_t),
+                ("segments_merged", ctypes.c_size_t), ("segments_split", ctypes.c_size_t),
+                ("segments_removed", ctypes.c_size_t), ("holes", ctypes.c_size_t),
+                ("removed", ctypes.c_size_t)]
 
 
 class LotCheckResult(ctypes.Structure):
     """lot_check_result (lot/lot.h)."""
     _fields_ = [("interior_edges", ctypes.c_size_t), ("boundary_edges", ctypes.c_size_t),
                 ("decided", ctypes.c_size_t), ("not_optimal", ctypes.c_size_t),
-                ("bad_edge", ctypes.c_uint32 * 2), ("valid", ctypes.c_int)]
+                ("bad_edge", ctypes.c_uint32 * 2), ("valid", ctypes.c_int),
+                ("segments_missing", ctypes.c_size_t), ("missing_segment", ctypes.c_size_t)]
 
 
 class Measure(ctypes.Structure):
