@@ -328,7 +328,20 @@ static int shape_slack(const shape *k, const int t[3], const geom_point p[3], co
 /* The contact test of triple t: det3's sign when t is the contact triple,
 ** else 0.  On failure *viol gets a bit 2 r + (side > 0) for each point r
 ** found beyond its contact's neighbouring edge t[r] + side (0: no such
-** hint, the triple solves to no homothet).  The bits are tested in order
+** hint, the triple solves to no homothet).
+** A check against the neighbouring edge that is the next point's (or the
+** previous point's) contact edge is settled without a determinant.  Say
+** P's contact edge is i and the next point Q's is i + 1 (anticlockwise:
+** A, B, C, A).  H's edge lines pass through their points, so P's slack on
+** edge i + 1 is n.(Q - P) = cross(Q - P, e_{i+1}) and Q's on edge i is
+** n.(P - Q) = cross(e_i, Q - P), exactly, and turning the sites by -eps
+** changes both sides alike (the same vectors), so their eps-signs agree.
+** Edge i is in P's range, before s_PQ, and edge i + 1 in Q's, from s_PQ:
+** e_i lies clockwise of Q - P and e_{i+1} anticlockwise of it (parallel
+** ones settled by eps as shape_before settles them), by less than pi (a
+** range spans the exterior angle at its point).  Both crosses are
+** eps-positive: the check would pass, so it sets no bit.
+** The bits are tested in order
 ** and the test stops at the first one set in stop: a caller that acts on
 ** the first set bit of stop (or on any violation, stop = all) gets the
 ** answer all six would give. */
@@ -346,8 +359,9 @@ static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3
   for (int r = 0; r < 3; r++) {
     if (r > 0) shape_w3_prep(&w, k, t, p, p[r]);
     for (int side = -1; side <= 1; side += 2) {
-      int bit = 1 << (2 * r + (side > 0));
-      if (shape_slack(k, t, p, &w, (t[r] + side + k->n) % k->n, p[r], d3, NULL) < 0) {
+      int bit = 1 << (2 * r + (side > 0)), m = (t[r] + side + k->n) % k->n;
+      if (m == t[(r + 3 + side) % 3]) continue;   /* settled (above) */
+      if (shape_slack(k, t, p, &w, m, p[r], d3, NULL) < 0) {
         *viol |= bit;
         if (stop & bit) return 0;
       }
