@@ -96,23 +96,11 @@ static double bench_peak_rss(const geom_point *p, size_t n) {
   return 1024.0 * (double)ru.ru_maxrss;
 }
 
-/* One run of bench_lot_cgal next to this program: wall and CPU seconds of
-** the insertion, or NAN when it is not built. */
+/* One run of bench_lot_cgal next to this program (bench_sibling). */
 static void bench_cgal(const char *argv0, size_t n, uint64_t seed, double *wall, double *cpu) {
-  char cmd[4200];
-  const char *slash = strrchr(argv0, '/');
-  int dir = slash ? (int)(slash - argv0 + 1) : 0;
-  snprintf(cmd, sizeof cmd, "%.*sbench_lot_cgal %zu 1 %llu 2>/dev/null", dir, argv0, n,
-           (unsigned long long)seed);
-  *wall = *cpu = NAN;
-  FILE *f = popen(cmd, "r");
-  if (f == NULL) return;
-  char line[256];
-  while (fgets(line, sizeof line, f)) {
-    sscanf(line, "cgal_seconds %lf", wall);
-    sscanf(line, "cgal_cpu_seconds %lf", cpu);
-  }
-  pclose(f);
+  char args[128];
+  snprintf(args, sizeof args, "%zu 1 %llu", n, (unsigned long long)seed);
+  bench_sibling(argv0, "bench_lot_cgal", args, wall, cpu);
 }
 
 /* One table row: rule r timed next to DT (bench_rule). */

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include "benchutil.h"
 
@@ -56,4 +57,21 @@ double bench_load(void) {
     fclose(f);
   }
   return l;
+}
+
+void bench_sibling(const char *argv0, const char *name, const char *args, double *wall,
+                   double *cpu) {
+  char cmd[4400];
+  const char *slash = strrchr(argv0, '/');
+  int dir = slash ? (int)(slash - argv0 + 1) : 0;
+  snprintf(cmd, sizeof cmd, "%.*s%s %s 2>/dev/null", dir, argv0, name, args);
+  *wall = *cpu = NAN;
+  FILE *f = popen(cmd, "r");
+  if (f == NULL) return;
+  char line[256];
+  while (fgets(line, sizeof line, f)) {
+    sscanf(line, "cgal_seconds %lf", wall);
+    sscanf(line, "cgal_cpu_seconds %lf", cpu);
+  }
+  pclose(f);
 }

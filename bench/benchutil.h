@@ -27,6 +27,12 @@ bench_time bench_median_time(bench_time *t, int n);
 /* The one-minute load average (Linux /proc/loadavg), or NAN. */
 double bench_load(void);
 
+/* Run the program `name ARGS` that lies beside argv0 (a C++ comparison)
+** and read its "cgal_seconds W" and "cgal_cpu_seconds C" lines into *wall
+** and *cpu: NAN when it is not built or prints neither. */
+void bench_sibling(const char *argv0, const char *name, const char *args, double *wall,
+                   double *cpu);
+
 /* A polygon sampler of pentagon/sampler.h (sampler_vector, sampler_star...). */
 typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
 /* n vertices from fn with seed 1 (malloc'd); exits with a message naming

@@ -1,0 +1,66 @@
+// bench_cdt_cgal.cpp: the comparison for bench_cdt: CGAL's
+// Constrained_Delaunay_triangulation_2 (Exact_predicates_inexact_constructions
+// kernel, Exact_predicates_tag: the segments never cross, so no intersection
+// is constructed) on the same points (fliplab's "uniform" sampler) and the
+// same segments (sampler_segments on the GEOM_STREAM_SEGMENTS stream), all
+// inserted by insert_constraints (CGAL's spatial sort of the points, then
+// the constraints).  Built only when CGAL is found; run by bench_cdt.
+//
+//   bench_cdt_cgal N M RUNS SEED   prints "cgal_seconds S", "cgal_cpu_seconds C"
+//                                  (medians) and the number of faces.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <utility>
+#include <vector>
+extern "C" {
+#include "sampler.h"
+}
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Default, CGAL::Exact_predicates_tag> CDT;
+
+int main(int argc, char **argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: bench_cdt_cgal N M RUNS SEED\n");
+    return 2;
+  }
+  size_t n = (size_t)std::strtod(argv[1], nullptr), m = (size_t)std::strtod(argv[2], nullptr);
+  int runs = std::atoi(argv[3]);
+  unsigned long long seed = std::strtoull(argv[4], nullptr, 10);
+  std::vector<geom_point> gp(n);
+  std::vector<uint32_t> seg(2 * m + 2);
+  size_t nseg = 0;
+  sampler_points(SAMPLER_UNIFORM, seed, n, gp.data());
+  sampler_rng g;
+  sampler_seed(&g, seed, GEOM_STREAM_SEGMENTS);
+  if (sampler_segments(&g, gp.data(), n, m, seg.data(), &nseg) != 0) return 1;
+  std::vector<K::Point_2> pts;
+  pts.reserve(n);
+  for (const geom_point &q : gp) pts.emplace_back(q.x, q.y);
+  std::vector<std::pair<std::size_t, std::size_t>> idx;
+  for (size_t k = 0; k < nseg; k++) idx.emplace_back(seg[2 * k], seg[2 * k + 1]);
+  std::vector<double> t, c;
+  size_t faces = 0;
+  for (int k = 0; k < runs; k++) {
+    timespec c0, c1;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
+    auto t0 = std::chrono::steady_clock::now();
+    CDT cdt;
+    cdt.insert_constraints(pts.begin(), pts.end(), idx.begin(), idx.end());
+    auto t1 = std::chrono::steady_clock::now();
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    t.push_back(std::chrono::duration<double>(t1 - t0).count());
+    c.push_back((double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec));
+    faces = cdt.number_of_faces();
+  }
+  std::sort(t.begin(), t.end());
+  std::sort(c.begin(), c.end());
+  std::printf("cgal_seconds %.6f\ncgal_cpu_seconds %.6f\ncgal_faces %zu\n", t[t.size() / 2],
+              c[c.size() / 2], faces);
+  return 0;
+}
