@@ -7,7 +7,10 @@
 ** scratch, compares with the Delaunay triangulation or (convex position)
 ** the GOT, and writes the triangles as CSV and an SVG.  --rule A,B,...
 ** builds one LOT per rule of the same points: a block of lines each, and
-** one SVG panel each.
+** one SVG panel each.  Constrained runs (--segments, --holes, --poly):
+** segments that must stay edges and hole points, through lot_options; the
+** CDT or constrained LOT gets its own count lines, check, comparisons and
+** drawn segments, and a run without them prints what it always did.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -28,14 +31,16 @@ typedef struct cli_lot_tri {
   uint32_t *tri;
   double *bad;
   size_t ntri;
+  uint32_t *con;        /* constrained edges in the result (2 each) */
+  size_t ncon;
 } cli_lot_tri;
 
 typedef struct cli_lot_args {
-  const char *rule, *points, *out, *svg, *cdf;
+  const char *rule, *points, *out, *svg, *cdf, *segments, *holes, *poly;
   int sampler, algorithm, order, compare;   /* compare: 0 DT, 1 GOT, -1 none */
   uint64_t random, seed, max_flips, threads;
   double tie_eps;
-  int check, shade;
+  int check, shade, keep_hull;
 } cli_lot_args;
 
 /* Indexed by lot_algorithm and lot_order. */
@@ -64,6 +69,19 @@ static const cli_option cli_lot_opts[] = {
   CLI_OPT_STRING("--points", "FILE.csv", "none: give --points or --random",
                  "CSV, one point 'x,y' per row (optional header 'x,y');\n"
                  "                     output indices are the file's rows, 0-based", T, points),
+  CLI_OPT_STRING("--segments", "S.csv", "none",
+                 "with --points: segments 'i,j' (0-based rows of the\n"
+                 "                     points file) that must be edges: the constrained\n"
+                 "                     LOT (the CDT for DT; docs/lot.md)", T, segments),
+  CLI_OPT_STRING("--holes", "H.csv", "none",
+                 "hole points 'x,y': the triangles reachable from one\n"
+                 "                     without crossing a segment are removed", T, holes),
+  CLI_OPT_STRING("--poly", "FILE.poly", "none",
+                 "Triangle's .poly file: points, segments and holes\n"
+                 "                     (instead of --points, --random, --segments, --holes)",
+                 T, poly),
+  CLI_OPT_FLAG("--keep-hull", "with segments: keep the triangles outside the outermost\n"
+               "                     segment-bounded region (default: removed)", T, keep_hull),
   {.name = "--random", .arg = "N", .dflt = "none", .help = "N random points from --sampler",
    .kind = CLI_U64, .off = CLI_AT(T, random, uint64_t), .lo = 3, .hi = CLI_LOT_MAX_N},
   {.name = "--sampler", .arg = "NAME", .dflt = "uniform",
@@ -89,8 +107,9 @@ static const cli_option cli_lot_opts[] = {
                check),
   {.name = "--compare", .arg = "DT|GOT", .dflt = "none",
    .help = "DT: edges and triangles shared with the exact Delaunay\n"
-           "                     triangulation; GOT (convex position, triangle rule):\n"
-           "                     the LOT's total badness against the GOT's",
+           "                     triangulation (with segments: the CDT); GOT (convex\n"
+           "                     position, or segments forming one simple polygon;\n"
+           "                     triangle rule): the LOT's total against the GOT's",
    .kind = CLI_CHOICE, .off = CLI_AT(T, compare, int), .names = cli_lot_compares, .idef = -1,
    .bad = "unknown --compare '%s' (valid: DT, GOT)"},
   CLI_OPT_OUT("FILE.csv", "none", "csv",
@@ -111,13 +130,38 @@ static const cli_option cli_lot_opts[] = {
 #undef T
 
 static const cli_spec cli_lot_spec = {
-  CMD, "usage: fliplab lot --rule RULE[,RULE...] (--points FILE.csv | --random N) [options]",
+  CMD, "usage: fliplab lot --rule RULE[,RULE...] (--points FILE.csv | --random N |\n"
+  "                       --poly FILE.poly) [options]",
   "A locally optimal triangulation LOT(RULE) of a planar point set: every interior\n"
   "edge of a strictly convex quadrilateral is the diagonal the rule keeps\n"
   "(docs/lot.md).  A list of rules builds one LOT per rule of the same points.\n"
+  "Segments that must stay edges and hole points (--segments, --holes, --poly)\n"
+  "give the constrained LOT (the CDT for DT).\n"
   "Exit status 0 (also for status cycle or budget exhausted), 1 when --check\n"
-  "fails, 2 for bad usage or input.\n",
+  "fails (or a constrained --compare GOT), 2 for bad usage or input.\n",
   cli_lot_opts, CLI_NOPTS(cli_lot_opts), NULL};
+
+/* Where the points (and constraints) come from: --poly alone, or one of
+** --points and --random with --segments (--points only) and --holes. */
+static int cli_lot_parse_input(const cli_lot_args *a, uint64_t given) {
+  int sampler = cli_option_given(&cli_lot_spec, given, "--sampler");
+  if (a->poly) {
+    const char *clash = a->points ? "--points" : a->random ? "--random" : sampler ? "--sampler"
+                      : a->segments ? "--segments" : a->holes ? "--holes" : NULL;
+    if (clash)
+      return cli_error(CMD, "--poly gives the points, segments and holes: not with %s", clash);
+    return 0;
+  }
+  if ((a->points != NULL) == (a->random != 0))
+    return cli_error(CMD, "give exactly one of --points FILE.csv and --random N");
+  if (sampler && a->points) return cli_error(CMD, "--sampler applies to --random only");
+  if (a->segments && a->points == NULL)
+    return cli_error(CMD, "--segments needs --points FILE.csv (its rows are the indices)");
+  if (a->keep_hull && a->segments == NULL && a->holes == NULL)
+    return cli_error(CMD, "--keep-hull applies to constrained runs (--segments, --holes, "
+                     "--poly)");
+  return 0;
+}
 
 /* The options into a and o: 0, 1 after --help, 2 after an error. */
 static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o) {
@@ -125,10 +169,7 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o)
   int st = cli_options_parse(&cli_lot_spec, argc, argv, a, &given);
   if (st != 0) return st;
   if (a->rule == NULL) return cli_error(CMD, "--rule is required (e.g. --rule DT or --rule P_1)");
-  if ((a->points != NULL) == (a->random != 0))
-    return cli_error(CMD, "give exactly one of --points FILE.csv and --random N");
-  if (cli_option_given(&cli_lot_spec, given, "--sampler") && a->points)
-    return cli_error(CMD, "--sampler applies to --random only");
+  if (cli_lot_parse_input(a, given) != 0) return 2;
   if (cli_option_given(&cli_lot_spec, given, "--algorithm")) o->algorithm = a->algorithm;
   if (cli_option_given(&cli_lot_spec, given, "--order")) {
     o->order = a->order;
@@ -188,6 +229,45 @@ static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char
   return 0;
 }
 
+/* --poly: the file's graph into *in (vertex attributes, boundary markers
+** and regions carry nothing here: a note says what was dropped). */
+static int cli_lot_poly(const char *path, geom_pslg *in, char *desc, size_t desclen) {
+  report_poly pf;
+  char err[512];
+  if (report_poly_read(path, &pf, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (pf.attributes || pf.regions)
+    fprintf(stderr, "%s: note: %s: %zu vertex attribute(s) and %zu regional attribute/area "
+            "line(s) ignored\n", CMD, path, pf.attributes, pf.regions);
+  *in = pf.g;
+  free(pf.seg_line);
+  snprintf(desc, desclen, "%zu points, %zu segments and %zu holes from %s", in->npts,
+           in->nseg, in->nholes, path);
+  return 0;
+}
+
+/* The input: --poly, or the points with --segments and --holes; desc names
+** them (as before when there are no constraints). */
+static int cli_lot_input(const cli_lot_args *a, geom_pslg *in, char *desc, size_t desclen) {
+  char err[512];
+  memset(in, 0, sizeof *in);
+  if (a->poly) return cli_lot_poly(a->poly, in, desc, desclen);
+  if (cli_lot_points(a, &in->pts, &in->npts, desc, desclen) != 0) return 2;
+  size_t len = strlen(desc);
+  if (a->segments) {
+    if (report_segments_read(a->segments, in->npts, &in->seg, NULL, &in->nseg, err,
+                             sizeof err) != 0)
+      return cli_error(CMD, "%s", err);
+    snprintf(desc + len, desclen - len, ", %zu segments from %s", in->nseg, a->segments);
+    len = strlen(desc);
+  }
+  if (a->holes) {
+    if (report_points_read(a->holes, &in->hole, NULL, &in->nholes, err, sizeof err) != 0)
+      return cli_error(CMD, "--holes: %s", err);
+    snprintf(desc + len, desclen - len, ", %zu holes from %s", in->nholes, a->holes);
+  }
+  return 0;
+}
+
 static void cli_lot_status(const lot_stats *st) {
   if (st->status == LOT_CONVERGED) {
     printf("status: converged\n");
@@ -205,11 +285,27 @@ static void cli_lot_status(const lot_stats *st) {
   }
 }
 
-/* --check: 0 when every interior edge is locally optimal. */
+/* --check of a constrained run, beyond lot_check's: every input segment a
+** chain of triangle edges except those with a piece in a removed region. */
+static int cli_lot_check_segments(const lot_check_result *c, const geom_pslg *in,
+                                  const lot_stats *st) {
+  if (c->segments_missing == st->segments_removed) return 0;
+  size_t k = c->missing_segment;
+  printf("check: FAILED: %zu input segments are not chains of triangle edges, %zu expected (in "
+         "removed regions); first: segment %zu (%u-%u)\n", c->segments_missing,
+         st->segments_removed, k, c->segments_missing ? in->seg[2 * k] : 0,
+         c->segments_missing ? in->seg[2 * k + 1] : 0);
+  return 1;
+}
+
+/* --check: 0 when the triangulation is valid, every interior edge (but
+** the segments' ones) is locally optimal, and no segment is lost. */
 static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-                         const rule *r) {
+                         const rule *r, const geom_pslg *in, const lot_stats *st) {
   lot_check_result c;
-  if (lot_check(p, n, tri, ntri, r, &c) != 0) {
+  int constrained = in->nseg || in->nholes;
+  if ((constrained ? lot_check_constrained(p, n, tri, ntri, in->seg, in->nseg, r, &c)
+                   : lot_check(p, n, tri, ntri, r, &c)) != 0) {
     printf("check: failed (out of memory)\n");
     return 1;
   }
@@ -217,26 +313,39 @@ static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, siz
     printf("check: FAILED: not a valid triangulation\n");
     return 1;
   }
+  if (constrained && cli_lot_check_segments(&c, in, st) != 0) return 1;
   if (c.not_optimal) {
     printf("check: FAILED: %zu of %zu interior edges not locally optimal (first %u-%u)\n",
            c.not_optimal, c.interior_edges, c.bad_edge[0], c.bad_edge[1]);
     return 1;
   }
-  printf("check: ok: locally optimal, re-verified from scratch: %zu interior edges, %zu in "
-         "strictly convex quadrilaterals, %s\n", c.interior_edges, c.decided,
-         rule_is_delaunay(r)
-             ? "every one passes the exact empty-circle test"
-             : "the rule keeps every one");
+  const char *how = rule_is_delaunay(r) ? "every one passes the exact empty-circle test"
+                                         : "the rule keeps every one";
+  if (constrained)
+    printf("check: ok: constrained, re-verified from scratch: %zu of %zu input segments are "
+           "chains of edges (the other %zu lie in removed regions); %zu interior edges, %zu "
+           "unconstrained in strictly convex quadrilaterals, %s\n",
+           in->nseg - st->segments_removed, in->nseg, st->segments_removed, c.interior_edges,
+           c.decided, how);
+  else
+    printf("check: ok: locally optimal, re-verified from scratch: %zu interior edges, %zu in "
+           "strictly convex quadrilaterals, %s\n", c.interior_edges, c.decided, how);
   return 0;
 }
 
-/* --compare DT: the Delaunay triangulation of the same points. */
+/* --compare DT: the Delaunay triangulation of the same points (with the
+** same segments and holes: the constrained one). */
 static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *base,
                               const uint32_t *tri, size_t ntri, uint32_t **dt, size_t *ndt) {
   rule d = rule_delaunay();
   lot_options o;
   lot_options_init(&o, &d);
   o.seed = base->seed;
+  o.segments = base->segments;
+  o.nsegments = base->nsegments;
+  o.holes = base->holes;
+  o.nholes = base->nholes;
+  o.keep_hull = base->keep_hull;
   lot *L;
   char err[512];
   if (lot_build(&L, p, n, &o, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
@@ -251,8 +360,8 @@ static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *
   lot_free(L);
   if (lot_compare(tri, ntri, *dt, *ndt, &df) != 0) return cli_error(CMD, "out of memory");
   printf("compare DT: %zu of %zu edges and %zu of %zu triangles shared with the exact "
-         "Delaunay triangulation (%.2f%% of triangles)\n", df.edges_common, df.edges_a,
-         df.triangles_common, df.triangles_a,
+         "%sDelaunay triangulation (%.2f%% of triangles)\n", df.edges_common, df.edges_a,
+         df.triangles_common, df.triangles_a, o.nsegments || o.nholes ? "constrained " : "",
          100.0 * (double)df.triangles_common / (double)(df.triangles_a ? df.triangles_a : 1));
   return 0;
 }
@@ -261,19 +370,147 @@ static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *
 ** of their certified error bounds (got_cert_err_of), i.e. floating point
 ** cannot tell them apart; without a bound, within the rule's tie tolerance,
 ** which the line says. */
+static int cli_lot_got_equal(const rule *r, const got_result *res, double key, double *rel,
+                             int *certified) {
+  double bound = res->cert_err + got_cert_err_of(res, key);
+  *rel = rule_gap(r, key, res->key);
+  *certified = isfinite(bound);
+  return key == res->key ||
+         (*certified ? fabs(key - res->key) <= bound : *rel <= rule_tie_eps(r));
+}
+
 static void cli_lot_got_verdict(const rule *r, const got_result *res, double key) {
   char lt[64], gt[64];
   got_format_total(res, key, lt, sizeof lt);
   got_format_total(res, res->key, gt, sizeof gt);
-  double rel = rule_gap(r, key, res->key), bound = res->cert_err + got_cert_err_of(res, key);
-  int certified = isfinite(bound);
-  int equal = key == res->key || (certified ? fabs(key - res->key) <= bound : rel <= rule_tie_eps(r));
+  double rel;
+  int certified, equal = cli_lot_got_equal(r, res, key, &rel, &certified);
   printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, ", lt, gt,
          equal ? "equal" : "NOT equal", rel);
   if (certified) printf("GOT computed to within rounding)\n");
   else printf("%s the tie tolerance %g; no certified bound: %s)\n", equal ? "within" : "beyond",
               rule_tie_eps(r), res->cert_why ? res->cert_why
                                              : "no forward error bound for the LOT's total");
+}
+
+/* The rules whose GOT is the Delaunay triangulation of a polygon in general
+** position (theorem 3 and appendix A, strictly monotone joints; tests/
+** test_got.c), so the CDT of a simple polygon: their constrained LOT is the
+** GOT itself, triangle for triangle. */
+static const char *const cli_lot_got_is_cdt[] = {"R_1", "R_2", "R_0", "R_-1", "-r_1", "abc_1",
+                                                 "-r/R_1", "-r2/A_0"};
+
+static int cli_lot_got_cdt_rule(const rule *r) {
+  for (size_t k = 0; k < sizeof cli_lot_got_is_cdt / sizeof *cli_lot_got_is_cdt; k++)
+    if (strcmp(rule_name(r), cli_lot_got_is_cdt[k]) == 0) return 1;
+  return 0;
+}
+
+/* The segments as one closed ring through all n points: ring[] the points
+** in ring order from point 0 (nb: 2 n scratch).  0, or a one-line refusal. */
+static int cli_lot_ring(const geom_pslg *in, uint32_t *ring, uint32_t *nb) {
+  size_t n = in->npts;
+  const char *need = "--compare GOT needs a simple polygon: segments forming one closed ring "
+                     "through every point";
+  if (in->nholes) return cli_error(CMD, "%s, no holes (%zu given)", need, in->nholes);
+  if (in->nseg != n) return cli_error(CMD, "%s (%zu segments, %zu points)", need, in->nseg, n);
+  memset(ring, 0, n * sizeof *ring);   /* the degrees, first */
+  for (size_t k = 0; k < 2 * n; k++) {
+    uint32_t v = in->seg[k], w = in->seg[k ^ 1];
+    if (ring[v] == 2) return cli_error(CMD, "%s (point %u is on more than 2 segments)", need, v);
+    nb[2 * v + ring[v]++] = w;
+  }
+  for (size_t v = 0; v < n; v++)
+    if (ring[v] != 2) return cli_error(CMD, "%s (point %zu is on %u segment)", need, v, ring[v]);
+  ring[0] = 0;
+  ring[1] = nb[0];
+  for (size_t i = 2; i < n; i++) {
+    uint32_t cur = ring[i - 1], prev = ring[i - 2];
+    ring[i] = nb[2 * cur] == prev ? nb[2 * cur + 1] : nb[2 * cur];
+    if (ring[i] == 0) return cli_error(CMD, "%s (they form more than one ring)", need);
+  }
+  return 0;
+}
+
+/* The GOT of the ring's polygon (anticlockwise; map[v]: its vertex v's
+** input point), its triangles as input indices in *gt (n - 2 of them). */
+static int cli_lot_ring_got(const geom_point *p, const geom_pslg *in, const rule *r,
+                            const cli_lot_args *a, size_t ntri, got_result *res, uint32_t *gt) {
+  size_t n = in->npts, b1, b2;
+  uint32_t *ring = malloc(n * sizeof *ring), *map = malloc(2 * n * sizeof *map);
+  geom_point *poly = malloc(n * sizeof *poly);
+  char err[512];
+  int rev = 0, rc = ring && map && poly ? cli_lot_ring(in, ring, map) : cli_error(CMD, "out of memory");
+  if (rc == 0 && ntri + 2 != n)
+    rc = cli_error(CMD, "--compare GOT: the LOT has %zu triangles, a triangulation of the "
+                   "polygon %zu (is --keep-hull keeping the outside?)", ntri, n - 2);
+  for (size_t i = 0; rc == 0 && i < n; i++) poly[i] = p[ring[i]];
+  geom_polyerr pe = rc == 0 ? geom_simple_polygon_check(poly, n, &b1, &b2, &rev) : GEOM_OK;
+  if (rc == 0 && pe != GEOM_OK)
+    rc = cli_error(CMD, "--compare GOT: the ring of segments is not a simple polygon: %s",
+                   geom_polyerr_str(pe));
+  for (size_t v = 0; rc == 0 && v < n; v++) map[v] = ring[rev ? (n - v) % n : v];
+  if (rc == 0 && got_check_memory(n, rule_measure(r), err, sizeof err) != 0)
+    rc = cli_error(CMD, "--compare GOT: %s", err);
+  got_options go = {(int)a->threads, rule_tie_eps(r)};
+  if (rc == 0 && got_solve(poly, n, r, &go, res, err, sizeof err) != 0)
+    rc = cli_error(CMD, "%s", err);
+  for (size_t t = 0; rc == 0 && t < res->ntri; t++) {
+    gt[3 * t] = map[res->tri[t].i];
+    gt[3 * t + 1] = map[res->tri[t].k];
+    gt[3 * t + 2] = map[res->tri[t].j];
+  }
+  free(ring);
+  free(map);
+  free(poly);
+  return rc;
+}
+
+/* The relation a constrained LOT of a simple polygon has with its GOT:
+** total >= GOT's (the GOT is the least), and for the rules of
+** cli_lot_got_is_cdt the same triangles.  0 when it holds. */
+static int cli_lot_ring_verdict(const rule *r, const got_result *res, double key,
+                                const lot_diff *df) {
+  char lt[64], gt[64];
+  got_format_total(res, key, lt, sizeof lt);
+  got_format_total(res, res->key, gt, sizeof gt);
+  double rel;
+  int certified, equal = cli_lot_got_equal(r, res, key, &rel, &certified);
+  int below = !equal && key < res->key, same = df->triangles_common == df->triangles_a &&
+                                               df->triangles_a == df->triangles_b;
+  int cdt = cli_lot_got_cdt_rule(r), bad = below || (cdt && !same && !equal);
+  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g%s); "
+         "%zu of %zu triangles shared%s\n", lt, gt,
+         below ? "LOT < GOT: FAILED (no triangulation is below the GOT)"
+               : equal ? "LOT = GOT" : "LOT > GOT, as it may be",
+         rel, certified ? ", GOT computed to within rounding" : ", within the tie tolerance",
+         df->triangles_common, df->triangles_b,
+         !cdt ? "" : same ? "; the rule's GOT is the CDT: equal triangles, as it must be"
+                   : equal ? "; equal totals, other triangles (a tie)"
+                           : "; the rule's GOT is the CDT: FAILED, the triangles differ");
+  return bad;
+}
+
+/* --compare GOT of a constrained run: the segments must form one simple
+** polygon without holes, whose triangles the LOT must be (no --keep-hull
+** outside). */
+static int cli_lot_compare_ring(const geom_point *p, const geom_pslg *in, const rule *r,
+                                const cli_lot_tri *t, const cli_lot_args *a, int *failed) {
+  size_t n = in->npts;
+  if (!rule_is_triangle(r))
+    return cli_error(CMD, "--compare GOT needs a triangle-based rule (MEASURE_JOINT)");
+  uint32_t *gt = malloc(3 * n * sizeof *gt);
+  got_result res;
+  memset(&res, 0, sizeof res);
+  lot_diff df;
+  int rc = gt ? cli_lot_ring_got(p, in, r, a, t->ntri, &res, gt) : cli_error(CMD, "out of memory");
+  if (rc == 0 && lot_compare(t->tri, t->ntri, gt, res.ntri, &df) != 0)
+    rc = cli_error(CMD, "out of memory");
+  if (rc == 0 && cli_lot_ring_verdict(r, &res, rule_total_key(r, t->bad, t->ntri), &df))
+    *failed = 1;
+  got_result_free(&res);
+  free(gt);
+  return rc;
 }
 
 /* --compare GOT: convex position only. */
@@ -338,40 +575,53 @@ static int cli_lot_cdf(const cli_lot_args *a, const geom_point *p, const uint32_
 }
 
 static int cli_lot_svg(const cli_lot_args *a, const geom_point *p, size_t n,
-                       const uint32_t *tri, size_t ntri, const double *bad, const uint32_t *dt,
-                       size_t ndt, const rule *r, const lot_cdf *g) {
+                       const cli_lot_tri *t, const uint32_t *dt, size_t ndt, const rule *r,
+                       const lot_cdf *g, int constrained) {
   FILE *f = cli_open_out(CMD, a->svg);
   if (f == NULL) return 2;
   char cap[2][160], title[200];
-  int len = snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, ntri);
+  int len = snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, t->ntri);
   if (g && len > 0 && (size_t)len < sizeof cap[0])
     snprintf(cap[0] + len, sizeof cap[0] - (size_t)len, "; CDF graph (bold): %zu triangles, "
              "%zu extra edges", g->triangles, g->edges);
-  snprintf(cap[1], sizeof cap[1], "Delaunay triangulation: %zu triangles", ndt);
-  snprintf(title, sizeof title, "%zu points%s", n, a->shade ? "; shaded by triangle badness" : "");
-  report_lot_panel pn[2] = {{tri, ntri, bad, cap[0], g, NULL, 0},
-                             {dt, ndt, NULL, cap[1], NULL, NULL, 0}};
+  snprintf(cap[1], sizeof cap[1], "%s triangulation: %zu triangles",
+           constrained ? "Constrained Delaunay" : "Delaunay", ndt);
+  snprintf(title, sizeof title, "%zu points%s%s", n,
+           constrained ? "; constrained edges in bold" : "",
+           a->shade ? "; shaded by triangle badness" : "");
+  report_lot_panel pn[2] = {{t->tri, t->ntri, t->bad, cap[0], g, t->con, t->ncon},
+                            {dt, ndt, NULL, cap[1], NULL, t->con, t->ncon}};
   report_lot_svg(f, p, n, pn, dt ? 2 : 1, a->shade, title);
   return cli_close_out(f) != 0;
 }
 
 static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
-                         const uint32_t *tri, size_t ntri, const double *bad,
-                         const uint32_t *dt, size_t ndt, const rule *r) {
+                         const cli_lot_tri *t, const uint32_t *dt, size_t ndt, const rule *r,
+                         int constrained) {
   lot_cdf g;
   memset(&g, 0, sizeof g);
-  int rc = a->cdf ? cli_lot_cdf(a, p, tri, ntri, &g) : 0;
+  int rc = a->cdf ? cli_lot_cdf(a, p, t->tri, t->ntri, &g) : 0;
   if (rc == 0 && a->out) {
     FILE *f = cli_open_out(CMD, a->out);
     if (f == NULL) rc = 2;
     else {
-      report_lot_csv(f, tri, ntri, bad);
+      report_lot_csv(f, t->tri, t->ntri, t->bad);
       rc = cli_close_out(f) != 0;   /* it said why */
     }
   }
-  if (rc == 0 && a->svg) rc = cli_lot_svg(a, p, n, tri, ntri, bad, dt, ndt, r, a->cdf ? &g : NULL);
+  if (rc == 0 && a->svg)
+    rc = cli_lot_svg(a, p, n, t, dt, ndt, r, a->cdf ? &g : NULL, constrained);
   lot_cdf_free(&g);
   return rc;
+}
+
+/* A constrained run's count lines: what became of the segments and holes. */
+static void cli_lot_constraint_lines(const lot_options *o, const lot_stats *st) {
+  printf("segments: %zu (%zu constrained edges; %zu merged, %zu split, %zu in removed "
+         "regions)\n", st->segments, st->constrained, st->segments_merged, st->segments_split,
+         st->segments_removed);
+  printf("holes: %zu (%zu triangles removed: in holes%s)\n", st->holes, st->removed,
+         o->keep_hull ? "; the hull kept" : " and outside the outermost boundary");
 }
 
 /* The header, counts, status and time lines. */
@@ -382,6 +632,7 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
          cli_lot_algorithms[o->algorithm], inc ? ", order " : "",
          inc ? cli_lot_order_name[o->order] : "", tie_eps);
   printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
+  if (o->nsegments || o->nholes) cli_lot_constraint_lines(o, st);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
   cli_lot_status(st);
@@ -403,9 +654,9 @@ static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, con
   if (f != NULL) {
     for (int k = 0; k < nr; k++) {
       snprintf(cap[k], sizeof cap[k], "LOT(%s): %zu triangles", rule_name(&r[k]), t[k].ntri);
-      pn[k] = (report_lot_panel){t[k].tri, t[k].ntri, NULL, cap[k], NULL, NULL, 0};
+      pn[k] = (report_lot_panel){t[k].tri, t[k].ntri, NULL, cap[k], NULL, t[k].con, t[k].ncon};
     }
-    char title[700];
+    char title[1300];
     snprintf(title, sizeof title, "%s: one LOT per rule", desc);
     report_lot_svg(f, p, n, pn, nr, 0, title);
     rc = cli_close_out(f) != 0;   /* it said why */
@@ -415,18 +666,36 @@ static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, con
   return rc;
 }
 
-/* One rule's LOT of the points: its lines (summary, --check, --compare) and,
+/* The LOT's triangles, badness and constrained edges into *t. */
+static int cli_lot_take(const lot *L, const geom_point *p, const rule *r, cli_lot_tri *t) {
+  const lot_stats *st = lot_get_stats(L);
+  t->ntri = st->triangles;
+  t->ncon = st->constrained;
+  t->tri = malloc(3 * st->triangles * sizeof *t->tri);
+  t->bad = malloc(st->triangles * sizeof *t->bad);
+  t->con = malloc((2 * st->constrained + 1) * sizeof *t->con);
+  if (t->tri == NULL || t->bad == NULL || t->con == NULL) return cli_error(CMD, "out of memory");
+  lot_get_triangles(L, t->tri);
+  lot_get_badness(p, t->tri, t->ntri, r, t->bad);
+  if (t->ncon) lot_get_constrained(L, t->con);
+  return 0;
+}
+
+/* One rule's LOT of the input: its lines (summary, --check, --compare) and,
 ** for a single rule, its outputs; *t keeps the triangles (caller frees),
-** *failed is set when --check fails.  0, 1 after a formula's error, 2
-** after another. */
+** *failed is set when --check or a constrained --compare GOT fails.  0, 1
+** after a formula's error, 2 after another. */
 static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rule *r,
-                       const geom_point *p, size_t n, const char *desc, int single,
-                       cli_lot_tri *t, int *failed) {
+                       const geom_pslg *in, const char *desc, int single, cli_lot_tri *t,
+                       int *failed) {
   char err[512];
   lot_options o = *base;
   o.r = *r;
   uint32_t *dt = NULL;
   size_t ndt = 0;
+  const geom_point *p = in->pts;
+  size_t n = in->npts;
+  int constrained = in->nseg || in->nholes;
   lot *L = NULL;
   int rc = 0;
   if (lot_build(&L, p, n, &o, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
@@ -435,20 +704,16 @@ static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rul
     return 1;
   }
   const lot_stats *st = lot_get_stats(L);
-  t->ntri = st->triangles;
-  t->tri = malloc(3 * st->triangles * sizeof *t->tri);
-  t->bad = malloc(st->triangles * sizeof *t->bad);
-  if (t->tri == NULL || t->bad == NULL) {
+  if (cli_lot_take(L, p, r, t) != 0) {
     lot_free(L);
-    return cli_error(CMD, "out of memory");
+    return 2;
   }
-  lot_get_triangles(L, t->tri);
-  lot_get_badness(p, t->tri, t->ntri, r, t->bad);
   cli_lot_summary(r, desc, &o, st, a->tie_eps);
-  if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r) != 0) *failed = 1;
+  if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, st) != 0) *failed = 1;
   if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
+  else if (a->compare == 1 && constrained) rc = cli_lot_compare_ring(p, in, r, t, a, failed);
   else if (a->compare == 1) rc = cli_lot_compare_got(p, L, r, t->bad, t->ntri, a);
-  if (rc == 0 && single) rc = cli_lot_write(a, p, n, t->tri, t->ntri, t->bad, dt, ndt, r);
+  if (rc == 0 && single) rc = cli_lot_write(a, p, n, t, dt, ndt, r, constrained);
   lot_free(L);
   free(dt);
   return rc;
@@ -467,22 +732,28 @@ int cli_cmd_lot(int argc, char **argv) {
   o.max_flips = a.max_flips;
   o.tie_eps = a.tie_eps;
 
-  geom_point *p = NULL;
-  size_t n = 0;
-  char desc[600];
+  geom_pslg in;
+  memset(&in, 0, sizeof in);
+  char desc[1200];
   cli_lot_tri *t = calloc((size_t)nr, sizeof *t);
   int failed = 0;
   if (t == NULL) rc = cli_error(CMD, "out of memory");
-  else rc = cli_lot_points(&a, &p, &n, desc, sizeof desc);
+  else rc = cli_lot_input(&a, &in, desc, sizeof desc);
+  o.segments = in.seg;
+  o.nsegments = in.nseg;
+  o.holes = in.hole;
+  o.nholes = in.nholes;
+  o.keep_hull = a.keep_hull;
   for (int k = 0; rc == 0 && k < nr; k++)
-    rc = cli_lot_one(&a, &o, &r[k], p, n, desc, nr == 1, &t[k], &failed);
-  if (rc == 0 && nr > 1 && a.svg) rc = cli_lot_svg_list(a.svg, p, n, desc, t, r, nr);
+    rc = cli_lot_one(&a, &o, &r[k], &in, desc, nr == 1, &t[k], &failed);
+  if (rc == 0 && nr > 1 && a.svg) rc = cli_lot_svg_list(a.svg, in.pts, in.npts, desc, t, r, nr);
   for (int k = 0; t && k < nr; k++) {
     free(t[k].tri);
     free(t[k].bad);
+    free(t[k].con);
   }
   free(t);
-  free(p);
+  geom_pslg_free(&in);
   free(r);
   return rc == 0 && failed ? 1 : rc;
 }
