@@ -230,14 +230,15 @@ static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char
 }
 
 /* --poly: the file's graph into *in (vertex attributes, boundary markers
-** and regions carry nothing here: a note says what was dropped). */
+** and regions carry nothing here: a one-line note says what was dropped). */
 static int cli_lot_poly(const char *path, geom_pslg *in, char *desc, size_t desclen) {
   report_poly pf;
   char err[512];
   if (report_poly_read(path, &pf, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
-  if (pf.attributes || pf.regions)
-    fprintf(stderr, "%s: note: %s: %zu vertex attribute(s) and %zu regional attribute/area "
-            "line(s) ignored\n", CMD, path, pf.attributes, pf.regions);
+  if (pf.attributes || pf.regions || pf.markers)
+    fprintf(stderr, "%s: note: %s: ignored: %zu vertex attribute(s), %zu regional "
+            "attribute/area line(s)%s\n", CMD, path, pf.attributes, pf.regions,
+            pf.markers ? ", boundary markers" : "");
   *in = pf.g;
   free(pf.seg_line);
   snprintf(desc, desclen, "%zu points, %zu segments and %zu holes from %s", in->npts,

@@ -229,6 +229,7 @@ static int report_poly_vertices(report_poly_reader *r, report_poly *out) {
   uint64_t nv, attrs, marks;
   if (report_poly_header(r, &nv, &attrs, &marks) != 0) return -1;
   out->attributes = (size_t)attrs;
+  out->markers = marks != 0;
   size_t cap = 0;
   for (uint64_t i = 0; i < nv; i++) {
     double xy[2], a;
@@ -271,6 +272,7 @@ static int report_poly_segments(report_poly_reader *r, report_poly *out) {
       report_poly_count(r, 0, "segment count", UINT32_MAX, &ns) ||
       (r->ntok > 1 && report_poly_count(r, 1, "boundary marker count", 1, &marks)))
     return -1;
+  out->markers |= marks != 0;
   size_t cap = 0, lcap = 0;
   for (uint64_t i = 0; i < ns; i++) {
     uint32_t a, b;

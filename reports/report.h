@@ -273,6 +273,7 @@ typedef struct report_poly {
   uint64_t *seg_line;     /* each segment's 1-based file line */
   size_t attributes;      /* attributes per vertex in the file (ignored) */
   size_t regions;         /* regional attribute / area constraint lines (ignored) */
+  int markers;            /* the file has boundary markers (vertices or segments; ignored) */
   int first;              /* the file numbers its vertices from 0 or 1 */
 } report_poly;
 

@@ -378,6 +378,18 @@ static void test_bad_poly_and_options(void **state) {
   assert_int_equal(TCDT_RUN("lot --rule DT --poly %s", p), 0);
   assert_true(testutil_one_line(tcdt_err));
   assert_non_null(strstr(tcdt_err, "note: "));
+  assert_non_null(strstr(tcdt_err, "1 vertex attribute(s), 1 regional"));
+  assert_null(strstr(tcdt_err, "markers"));
+  tcdt_file(p, "cdt_p7.poly", "3 2 0 1\n0 0 0 1\n1 1 0 1\n2 1 1 1\n3\n0 0 1\n1 1 2\n2 2 0\n0\n");
+  assert_int_equal(TCDT_RUN("lot --rule DT --poly %s", p), 0);
+  assert_true(testutil_one_line(tcdt_err));
+  assert_non_null(strstr(tcdt_err, "boundary markers"));
+  tcdt_file(p, "cdt_p8.poly", "3\n0 0 0\n1 1 0\n2 1 1\n3 1\n0 0 1 5\n1 1 2 5\n2 2 0 5\n0\n");
+  assert_int_equal(TCDT_RUN("lot --rule DT --poly %s", p), 0);
+  assert_non_null(strstr(tcdt_err, "boundary markers"));
+  tcdt_file(p, "cdt_p9.poly", "3\n0 0 0\n1 1 0\n2 1 1\n3\n0 0 1\n1 1 2\n2 2 0\n0\n");
+  assert_int_equal(TCDT_RUN("lot --rule DT --poly %s", p), 0);
+  assert_string_equal(tcdt_err, "");
   assert_int_equal(tcdt_count(tcdt_out, "\ntriangles: "), 1);
   /* --compare GOT: segments that are no single ring */
   tcdt_file(pts, "cdt_two.csv", "0,0\n1,0\n0,1\n-5,-5\n-6,-5\n-5,-6\n");

@@ -60,6 +60,7 @@ static void test_poly_triangle_style(void **state) {
   assert_int_equal(p.first, 1);
   assert_int_equal(p.attributes, 1);
   assert_int_equal(p.regions, 1);
+  assert_int_equal(p.markers, 1);
   static const double xy[8][2] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};
   for (int i = 0; i < 8; i++) {
     assert_true(p.g.pts[i].x == xy[i][0] && p.g.pts[i].y == xy[i][1]);
@@ -112,6 +113,7 @@ static void test_poly_round_trip(void **state) {
     assert_int_equal(r.g.nseg, w.nseg);
     assert_int_equal(r.g.nholes, w.nholes);
     assert_int_equal(r.first, 0);
+    assert_int_equal(r.markers, 0);   /* written without */
     assert_memory_equal(r.g.pts, w.pts, w.npts * sizeof *w.pts);   /* bit for bit */
     if (w.nseg) assert_memory_equal(r.g.seg, w.seg, 2 * w.nseg * sizeof *w.seg);
     if (w.nholes) assert_memory_equal(r.g.hole, w.hole, w.nholes * sizeof *w.hole);
