@@ -12,7 +12,9 @@ Prints medians of --runs runs (default 3) of:
      lot_get_hull, lot_free called directly through ctypes on the same array);
   3. vectorised badness of 10^7 triangles (fliplab.badness(t, "R")) against a
      Python loop computing the same formula R = abc / (4A) with math, timed
-     on the first 10^5 triangles and scaled by 100.
+     on the first 10^5 triangles and scaled by 100; and where the vectorised
+     time goes: the coordinate contract check (geom_coord_check_n) and the
+     C measure loop (measure_eval_tris) timed on their own.
 """
 import argparse
 import ctypes
@@ -26,7 +28,8 @@ import scipy.spatial
 
 import fliplab
 from fliplab import _lib
-from fliplab._arrays import points_ptr, ptr
+from fliplab._arrays import check_contract, points_ptr, ptr
+from fliplab._rules import _measure_id
 
 
 def median_time(fn, runs):
@@ -89,6 +92,13 @@ def main():
     tl = median_time(lambda: python_R(t[:k]), a.runs) * (len(t) / k)
     print("badness R of %d triangles: vectorised %.3f s, Python loop %.1f s (from %d): %.0fx"
           % (len(t), tv, tl, k, tl / tv))
+    out = np.empty(len(t))
+    mid = _measure_id("R")
+    tk = median_time(lambda: check_contract(t, "triangle"), a.runs)
+    te = median_time(lambda: _lib.lib.measure_eval_tris(mid, points_ptr(t), len(t),
+                                                        ptr(out, ctypes.c_double)), a.runs)
+    print("  of which: contract check %.3f s, C measure loop %.3f s, the rest %.3f s"
+          % (tk, te, tv - tk - te))
     print("# load average %.2f at the end" % os.getloadavg()[0])
 
 
