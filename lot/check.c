@@ -204,18 +204,27 @@ static int lot_chain(const geom_point *p, const uint64_t *adj, size_t nadj, uint
   return cur == v;
 }
 
-/* Boundary loops, each boundary edge u -> v followed by the next one from
-** v, found by turning around v through the triangles: as many as the
-** permutation's cycles.  Also the components, by union-find over shared
-** edges.  Returns 2C - L. */
-static long lot_euler_rhs(const uint32_t *tri, size_t ntri, const lot_darc *d, size_t nd) {
+/* What V - E + T must be for triangles that form planar surfaces with
+** holes.  Each component (C, by union-find over shared edges) of genus 0
+** with b boundary loops has Euler characteristic 2 - b, when a vertex where
+** several fans meet (two triangles touching at a corner only, a hole
+** touching the outer boundary) counts once per fan: V counts it once, so
+** the answer is 2C - L - (fans - V).  Loops: each boundary edge u -> v is
+** followed by the next one from v, found by turning around v through the
+** triangles (so within v's fan); L is the number of cycles.  A boundary
+** vertex has one outgoing boundary edge per fan.  n: the point count. */
+static long lot_euler_rhs(const uint32_t *tri, size_t ntri, size_t n, const lot_darc *d,
+                          size_t nd) {
   uint32_t *parent = malloc((ntri ? ntri : 1) * sizeof *parent);
   uint8_t *seen = calloc(nd ? nd : 1, 1);
-  if (parent == NULL || seen == NULL) {
+  uint32_t *out = calloc(n ? n : 1, sizeof *out);
+  if (parent == NULL || seen == NULL || out == NULL) {
     free(parent);
     free(seen);
+    free(out);
     return LONG_MIN;
   }
+  long extra = 0;
   for (size_t t = 0; t < ntri; t++) parent[t] = (uint32_t)t;
   long comps = (long)ntri, loops = 0;
   for (size_t i = 0; i < nd; i++) {
@@ -228,6 +237,7 @@ static long lot_euler_rhs(const uint32_t *tri, size_t ntri, const lot_darc *d, s
       if (a != b) { parent[a] = b; comps--; }
       continue;
     }
+    if (out[u]++ > 0) extra++;   /* a further fan at u */
     if (seen[i]) continue;
     loops++;
     for (size_t j = i; !seen[j];) {   /* trace the loop of boundary edge j */
@@ -247,7 +257,8 @@ static long lot_euler_rhs(const uint32_t *tri, size_t ntri, const lot_darc *d, s
   }
   free(parent);
   free(seen);
-  return 2 * comps - loops;
+  free(out);
+  return 2 * comps - loops - extra;
 }
 
 int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
@@ -278,9 +289,9 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
     if (ok < 0) goto done;
     if (!ok && out->segments_missing++ == 0) out->missing_segment = k;
   }
-  qsort(keys, nk, sizeof *keys, lot_u64_cmp);
+  if (nk > 0) qsort(keys, nk, sizeof *keys, lot_u64_cmp);
   if (lot_check_run(p, n, tri, ntri, r, keys, nk, out, &vertices) != 0) goto done;
-  long rhs = out->valid ? lot_euler_rhs(tri, ntri, d, 3 * ntri) : 0;
+  long rhs = out->valid ? lot_euler_rhs(tri, ntri, n, d, 3 * ntri) : 0;
   if (rhs == LONG_MIN) goto done;
   long edges = (long)(out->interior_edges + out->boundary_edges);
   if (out->valid && (long)vertices - edges + (long)ntri != rhs) out->valid = 0;

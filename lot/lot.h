@@ -159,7 +159,7 @@ typedef struct lot_check_result {
   uint32_t bad_edge[2];     /* the first such edge */
   int valid;                /* a triangulation: anticlockwise, every edge in <= 2 triangles,
                                consistently oriented, T = 2n - h - 2 (Euler); constrained:
-                               V - E + T = 2C - L (components, boundary loops) */
+                               V - E + T = 2C - L with a vertex counted once per fan (check.c) */
   size_t segments_missing;  /* lot_check_constrained: segments that are no chain of edges */
   size_t missing_segment;   /* the first of them (an index into seg) */
 } lot_check_result;

@@ -304,6 +304,41 @@ static void test_cdt_grid(void **state) {
   }
 }
 
+/* The sum of the triangles' areas. */
+static double tc_total_area(const geom_point *p, const tc_result *r) {
+  double a = 0;
+  for (size_t t = 0; t < r->ntri; t++)
+    a += tc_area((geom_point[]){p[r->tri[3 * t]], p[r->tri[3 * t + 1]], p[r->tri[3 * t + 2]]}, 3);
+  return a;
+}
+
+/* A hole touching the outer boundary at one vertex (a vertex of two fans:
+** the case the first Euler check got wrong), and nested rings: an island
+** inside a hole stays. */
+static void test_cdt_pinch_nested(void **state) {
+  (void)state;
+  rule dt = tc_rule("DT");
+  geom_point p[] = {{0, 0}, {6, 0}, {6, 6}, {0, 6}, {4, 2}, {2, 2},        /* outer, hole at 0-1 */
+                    {1, 3}, {5, 3}, {5, 5.5}, {1, 5.5}, {2, 4}, {4, 4}, {3, 5}};
+  uint32_t seg[] = {0, 1, 1, 2, 2, 3, 3, 0,                /* the outer square */
+                    0, 4, 4, 5, 5, 0,                      /* hole triangle 0 4 5 touching it at 0 */
+                    6, 7, 7, 8, 8, 9, 9, 6,                /* a second hole */
+                    10, 11, 11, 12, 12, 10};               /* an island inside it */
+  geom_point holes[] = {{2, 1.5}, {1.5, 3.5}};
+  for (int alg = 0; alg < 2; alg++) {
+    lot_options o = tc_opts(&dt, alg ? LOT_FLIP : LOT_INCREMENTAL, seg, 14);
+    o.holes = holes;
+    o.nholes = 2;
+    tc_result r = tc_build(p, 13, &o);
+    if (r.rc != 0) fail_msg("%s", r.err);
+    tc_checked(p, 13, &r, seg, 14, &dt);
+    TESTUTIL_NEAR(tc_total_area(p, &r), 36.0 - 2.0 - 10.0 + 1.0, 1e-12, 0);
+    assert_int_equal(r.st.holes, 2);
+    assert_int_equal(r.st.segments_removed, 0);
+    free(r.tri);
+  }
+}
+
 /* Points on segments split them; duplicates and overlaps merge. */
 static void test_cdt_split_merge(void **state) {
   (void)state;
@@ -433,6 +468,7 @@ int main(void) {
     cmocka_unit_test(test_cdt_unchanged),   cmocka_unit_test(test_cdt_holes),
     cmocka_unit_test(test_cdt_grid),        cmocka_unit_test(test_cdt_split_merge),
     cmocka_unit_test(test_cdt_refusals),    cmocka_unit_test(test_cdt_got),
+    cmocka_unit_test(test_cdt_pinch_nested),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
