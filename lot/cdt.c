@@ -142,10 +142,13 @@ static uint32_t lot_cdt_vertex(lot_cdt *C, lot_mesh *m, uint32_t i) {
   return m->tv[c];
 }
 
-/* A corner of vertex a, found again when a flip has moved it. */
+/* A corner of vertex a, found again when a flip has moved it: a flip
+** keeps the triangle of the old corner next to a, so the walk starts there
+** (from the mesh's last triangle it would cross the whole mesh). */
 static uint32_t lot_cdt_corner(lot_cdt *C, lot_mesh *m, uint32_t a) {
   uint32_t c = C->vc[a];
   if (c != LOT_NONE && c < LOT_CORNER(m->nt, 0) && m->tv[c] == a) return c;
+  if (c != LOT_NONE && c < LOT_CORNER(m->nt, 0)) m->last = lot_tri_of(c);
   if (lot_mesh_locate(m, m->p[a], &c) != LOT_ON_VERTEX) return LOT_NONE;
   C->vc[a] = c;
   return c;
@@ -510,6 +513,11 @@ int lot_cdt_remove(lot_cdt *C, lot_mesh *m, const lot_options *o, lot_stats *st,
     removed += n;
   }
   st->removed = (size_t)removed;
+  C->removed = st->removed;
+  if (removed == 0) {   /* every piece is in a kept triangle */
+    st->constrained = C->cons.count;
+    return 0;
+  }
   return lot_cdt_count_removed(C, m, o, st);
 }
 
@@ -521,7 +529,25 @@ static int lot_pair_cmp(const void *x, const void *y) {
   return a[1] < b[1] ? -1 : a[1] > b[1];
 }
 
+/* The pieces straight from the set, when no triangle was removed. */
+static size_t lot_cdt_all_edges(const lot_cdt *C, const lot_mesh *m, uint32_t *out) {
+  size_t w = 0;
+  for (size_t i = 0; i < C->cons.cap; i++) {
+    uint64_t key = C->cons.key[i];
+    if (key == 0) continue;
+    if (out) {
+      uint32_t x = m->inp[(uint32_t)((key - 1) >> 32)], y = m->inp[(uint32_t)(key - 1)];
+      out[2 * w] = x < y ? x : y;
+      out[2 * w + 1] = x < y ? y : x;
+    }
+    w++;
+  }
+  if (out) qsort(out, w, 2 * sizeof *out, lot_pair_cmp);
+  return w;
+}
+
 size_t lot_cdt_edges(const lot_cdt *C, const lot_mesh *m, uint32_t *out) {
+  if (C->removed == 0) return lot_cdt_all_edges(C, m, out);
   size_t w = 0;
   for (uint32_t c = 0; c < LOT_CORNER(m->nt, 0); c++) {
     uint32_t t = lot_tri_of(c), o = m->tn[c], u = lot_tri_of(o);

@@ -28,6 +28,7 @@ typedef struct lot_cdt {
   uint32_t *vc;         /* a corner of each vertex (checked before use) */
   uint8_t *mark;        /* per triangle: deleted by the current segment */
   uint8_t *gone;        /* per triangle: 1 removed as outside, 2 by a hole */
+  size_t removed;       /* how many are gone */
   uint32_t *chain;      /* the vertices of each segment's pieces, in order */
   size_t *chain_at;     /* segment k's vertices: chain[chain_at[k] .. chain_at[k + 1]) */
   size_t nchain, chaincap;
