@@ -339,6 +339,53 @@ static void test_cdt_pinch_nested(void **state) {
   }
 }
 
+/* Segments meeting at a shared end at tiny angles (a fan from the origin
+** to (10^6, k): angles of 10^-6 radians), a segment through 30 collinear
+** points, and random points around: the oracle and the check, for every
+** algorithm, the same CDT. */
+static void test_cdt_tiny_angles(void **state) {
+  (void)state;
+  rule dt = tc_rule("DT"), p1 = tc_rule("P_1");
+  enum { FAN = 20, ROW = 30, RND = 60, N = 1 + FAN + ROW + RND };
+  geom_point p[N];
+  uint32_t seg[2 * (FAN + 1)];
+  p[0] = (geom_point){0, 0};
+  for (int k = 0; k < FAN; k++) {
+    p[1 + k] = (geom_point){3e6, 3.0 * (k + 1)};
+    seg[2 * k] = 0;
+    seg[2 * k + 1] = (uint32_t)(1 + k);
+  }
+  for (int k = 0; k < ROW; k++) p[1 + FAN + k] = (geom_point){3.0 * 100000 * (k + 1), -3e5};
+  seg[2 * FAN] = 1 + FAN;                 /* the row's first point to its last */
+  seg[2 * FAN + 1] = FAN + ROW;
+  geom_point *r = tc_points(99, RND, 1000000);
+  for (int k = 0; k < RND; k++) p[1 + FAN + ROW + k] = (geom_point){r[k].x, r[k].y - 1.5e6};
+  free(r);
+  tc_result r0 = {0};
+  for (int alg = 0; alg < 3; alg++) {
+    lot_options o = tc_opts(&dt, (lot_algorithm)alg, seg, FAN + 1);
+    o.keep_hull = 1;
+    tc_result t = tc_build(p, N, &o);
+    if (t.rc != 0) fail_msg("%s", t.err);
+    tc_empty_circle(p, N, &t, seg, FAN + 1);
+    tc_checked(p, N, &t, seg, FAN + 1, &dt);
+    assert_int_equal(t.st.segments_split, 1);
+    assert_int_equal(t.st.constrained, FAN + ROW - 1);
+    if (alg == 0) r0 = t;
+    else {
+      assert_true(tc_same(&r0, &t));
+      free(t.tri);
+    }
+  }
+  lot_options o = tc_opts(&p1, LOT_INCREMENTAL, seg, FAN + 1);
+  o.keep_hull = 1;
+  tc_result t = tc_build(p, N, &o);
+  assert_int_equal(t.rc, 0);
+  tc_checked(p, N, &t, seg, FAN + 1, &p1);
+  free(t.tri);
+  free(r0.tri);
+}
+
 /* Points on segments split them; duplicates and overlaps merge. */
 static void test_cdt_split_merge(void **state) {
   (void)state;
@@ -468,7 +515,7 @@ int main(void) {
     cmocka_unit_test(test_cdt_unchanged),   cmocka_unit_test(test_cdt_holes),
     cmocka_unit_test(test_cdt_grid),        cmocka_unit_test(test_cdt_split_merge),
     cmocka_unit_test(test_cdt_refusals),    cmocka_unit_test(test_cdt_got),
-    cmocka_unit_test(test_cdt_pinch_nested),
+    cmocka_unit_test(test_cdt_pinch_nested), cmocka_unit_test(test_cdt_tiny_angles),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
