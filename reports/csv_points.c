@@ -69,25 +69,16 @@ int report_points_read(const char *path, geom_point **out, uint64_t **lines, siz
   *out = NULL;
   if (lines) *lines = NULL;
   *n = 0;
-  FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-  if (f == NULL) {
-    snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
-    return -1;
-  }
   report_points_reader r = {0};
   r.err = err;
   r.errlen = errlen;
   r.path = path;
-  err[0] = '\0';
-  char perr[256] = "";
-  int rc = report_csv_each(f, report_points_record, &r, perr, sizeof perr);
-  if (f != stdin) fclose(f);
+  int rc = report_csv_file(path, report_points_record, &r, err, errlen);
   if (rc == 0 && r.n == 0) {
     snprintf(err, errlen, "%s: no points (expected rows x,y)", path);
     rc = -1;
   }
   if (rc != 0) {
-    if (err[0] == '\0') snprintf(err, errlen, "%s %s", path, perr);
     free(r.pts);
     free(r.line);
     return -1;

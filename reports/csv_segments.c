@@ -104,22 +104,13 @@ int report_segments_read(const char *path, size_t npoints, uint32_t **seg, uint6
   *seg = NULL;
   if (lines) *lines = NULL;
   *nseg = 0;
-  FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-  if (f == NULL) {
-    snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
-    return -1;
-  }
   report_segments_reader r = {.npoints = npoints, .err = err, .errlen = errlen, .path = path};
-  err[0] = '\0';
-  char perr[256] = "";
-  int rc = report_csv_each(f, report_segments_record, &r, perr, sizeof perr);
-  if (f != stdin) fclose(f);
+  int rc = report_csv_file(path, report_segments_record, &r, err, errlen);
   if (rc == 0 && r.n == 0) {
     snprintf(err, errlen, "%s: no segments (expected rows i,j)", path);
     rc = -1;
   }
   if (rc != 0) {
-    if (err[0] == '\0') snprintf(err, errlen, "%s %s", path, perr);
     free(r.seg);
     free(r.line);
     return -1;

@@ -272,6 +272,20 @@ int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t 
   return rc != 0 ? rc : st.stop;
 }
 
+int report_csv_file(const char *path, report_record_fn fn, void *ctx, char *err, size_t errlen) {
+  FILE *f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+  if (f == NULL) {
+    snprintf(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+    return -1;
+  }
+  err[0] = '\0';
+  char perr[256] = "";
+  int rc = report_csv_each(f, fn, ctx, perr, sizeof perr);
+  if (f != stdin) fclose(f);
+  if (rc != 0 && err[0] == '\0') snprintf(err, errlen, "%s %s", path, perr);
+  return rc != 0 ? -1 : 0;
+}
+
 /* A parse error of report_csv_each ("line N: ...") gets the file's name. */
 static void report_prefix_err(char *err, size_t errlen, const char *name, const char *perr) {
   if (perr[0] == '\0') return;

@@ -141,6 +141,10 @@ int report_rows_add(report_row *acc, int nacc, const report_row *add, int nadd,
 typedef int (*report_record_fn)(char **fields, const size_t *len, int nfields, uint64_t line,
                                 void *ctx);
 int report_csv_each(FILE *in, report_record_fn fn, void *ctx, char *err, size_t errlen);
+/* report_csv_each over the file at path ("-": standard input): 0, or -1
+** with err "cannot read 'PATH': why", fn's own message (fn writes err and
+** leaves it empty otherwise) or the parse error after the path. */
+int report_csv_file(const char *path, report_record_fn fn, void *ctx, char *err, size_t errlen);
 
 /* Pentagon files: a header x1,y1,...,x5,y5 then one pentagon per row, each
 ** coordinate printed with %.17g so it reads back bit for bit. */
