@@ -8,7 +8,6 @@
 */
 #include <limits.h>
 #include <math.h>
-#include <string.h>
 #include <stdlib.h>
 #include "lot.h"
 #include "measure.h"
@@ -140,31 +139,29 @@ static const lot_darc *lot_darc_find(const lot_darc *d, size_t nd, uint32_t u, u
   return bsearch(&q, d, nd, sizeof *d, lot_darc_cmp);
 }
 
+typedef struct lot_pkey {
+  double x, y;
+  uint32_t i;
+} lot_pkey;
+
+static int lot_pkey_cmp(const void *a, const void *b) {
+  const lot_pkey *p = a, *q = b;
+  if (p->x != q->x) return p->x < q->x ? -1 : 1;
+  if (p->y != q->y) return p->y < q->y ? -1 : 1;
+  return p->i < q->i ? -1 : p->i > q->i;
+}
+
 /* The first index of each point's coordinates (merged duplicates):
-** first[i] == i for the first occurrence. */
+** first[i] == i for the first occurrence.  A sort by (x, y, index), so
+** equal points are adjacent with the first occurrence leading. */
 static int lot_first_copies(const geom_point *p, size_t n, uint32_t *first) {
-  uint32_t *ix = malloc((n ? n : 1) * sizeof *ix);
-  if (ix == NULL) return -1;
-  for (size_t i = 0; i < n; i++) ix[i] = (uint32_t)i;
-  for (size_t i = 0; i < n; i++) first[i] = (uint32_t)i;
-  /* a hash would do; a sort by coordinates keeps it simple and exact */
-  for (size_t w = 1; w < n; w *= 2)   /* bottom-up merge sort, stable by index */
-    for (size_t lo = 0; lo < n; lo += 2 * w) {
-      size_t mid = lo + w < n ? lo + w : n, hi = lo + 2 * w < n ? lo + 2 * w : n;
-      uint32_t *tmp = malloc((hi - lo) * sizeof *tmp);
-      if (tmp == NULL) { free(ix); return -1; }
-      size_t a = lo, b = mid, k = 0;
-      while (a < mid || b < hi) {
-        int take_a = b >= hi || (a < mid && (p[ix[a]].x < p[ix[b]].x ||
-                     (p[ix[a]].x == p[ix[b]].x && p[ix[a]].y <= p[ix[b]].y)));
-        tmp[k++] = take_a ? ix[a++] : ix[b++];
-      }
-      memcpy(ix + lo, tmp, (hi - lo) * sizeof *tmp);
-      free(tmp);
-    }
-  for (size_t i = 1; i < n; i++)
-    if (p[ix[i]].x == p[ix[i - 1]].x && p[ix[i]].y == p[ix[i - 1]].y) first[ix[i]] = first[ix[i - 1]];
-  free(ix);
+  lot_pkey *k = malloc((n ? n : 1) * sizeof *k);
+  if (k == NULL) return -1;
+  for (size_t i = 0; i < n; i++) k[i] = (lot_pkey){p[i].x, p[i].y, (uint32_t)i};
+  qsort(k, n, sizeof *k, lot_pkey_cmp);
+  for (size_t i = 0; i < n; i++)
+    first[k[i].i] = i > 0 && k[i].x == k[i - 1].x && k[i].y == k[i - 1].y ? first[k[i - 1].i] : k[i].i;
+  free(k);
   return 0;
 }
 
