@@ -89,6 +89,20 @@ MEASURE_LIST(MEASURE_FN)
 MEASURE_LIST(MEASURE_PTS)
 #undef MEASURE_PTS
 
+/* The same evaluation over a whole array, the loop inside each measure's
+** own function so that the compiler inlines the expression into it (a call
+** through measure_points per triangle costs as much as R itself).  Threads
+** write disjoint slots and each value depends only on its own triangle, so
+** the output is the same for any thread count. */
+typedef void (*measure_batch_fn)(const geom_point *v, long long m, double *out);
+#define MEASURE_BATCH(id, name, sym, sign, fields, desc, expr) \
+  static void measure_batch_##id(const geom_point *v, long long m, double *out) { \
+    _Pragma("omp parallel for schedule(static) if (m > 20000)") \
+    for (long long i = 0; i < m; i++) out[i] = measure_pts_##id(v[3 * i], v[3 * i + 1], v[3 * i + 2]); \
+  }
+MEASURE_LIST(MEASURE_BATCH)
+#undef MEASURE_BATCH
+
 #define NEG MEASURE_NONPOS
 #define POS MEASURE_NONNEG
 #define MEASURE_ENTRY(id, name, sym, sign, fields, desc, expr) [id] = {name, sym, desc, sign, measure_fn_##id, NULL},
@@ -253,16 +267,20 @@ static const measure_points_fn measure_builtin_points[MEASURE_BUILTIN_COUNT] = {
 };
 #undef MEASURE_PTS_ENTRY
 
+#define MEASURE_BATCH_ENTRY(id, name, sym, sign, fields, desc, expr) [id] = measure_batch_##id,
+static const measure_batch_fn measure_builtin_batch[MEASURE_BUILTIN_COUNT] = {
+  MEASURE_LIST(MEASURE_BATCH_ENTRY)
+};
+#undef MEASURE_BATCH_ENTRY
+
 measure_points_fn measure_points(int id) {
   return id >= 0 && id < MEASURE_BUILTIN_COUNT ? measure_builtin_points[id] : NULL;
 }
 
 void measure_eval_tris(int id, const geom_point *v, size_t m, double *out) {
-  measure_points_fn f = measure_points(id);
   long long mm = (long long)m;
-  if (f != NULL) {
-#pragma omp parallel for schedule(static) if (mm > 20000)
-    for (long long i = 0; i < mm; i++) out[i] = f(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  if (id >= 0 && id < MEASURE_BUILTIN_COUNT) {
+    measure_builtin_batch[id](v, mm, out);
     return;
   }
   const measure *u = measure_get(id);

@@ -15,6 +15,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "measure.h"
@@ -649,11 +650,15 @@ static void test_angle_bounds_sweep(void **state) {
 
 /* measure_eval_tris is measure_eval on geom_tri_make's triangle, bit for
 ** bit, for every measure, whatever the vertex order (random triangles and
-** a flat one: the same inf or NaN). */
+** a flat one: the same inf or NaN).  More triangles than the threshold of
+** the threaded loop, so that path is the one compared. */
 static void test_eval_tris(void **state) {
   (void)state;
-  enum { M = 200 };
-  geom_point v[3 * M];
+  enum { M = 30000 };
+  geom_point *v = malloc(3 * M * sizeof *v);
+  double *out = malloc(M * sizeof *out);
+  assert_non_null(v);
+  assert_non_null(out);
   uint64_t s = 12345;
   for (int i = 0; i < 3 * M; i++) {
     s = s * 6364136223846793005ull + 1442695040888963407ull;
@@ -662,7 +667,6 @@ static void test_eval_tris(void **state) {
     v[i].y = (double)(s >> 11) * 0x1p-53 - 0.5;
   }
   v[3] = (geom_point){0, 0}, v[4] = (geom_point){1, 1}, v[5] = (geom_point){2, 2};
-  double out[M];
   for (int id = 0; id < measure_count(); id++) {
     measure_eval_tris(id, v, M, out);
     for (int i = 0; i < M; i++) {
@@ -675,6 +679,8 @@ static void test_eval_tris(void **state) {
                  out[i], want);
     }
   }
+  free(v);
+  free(out);
 }
 
 int main(void) {
