@@ -4,7 +4,8 @@ Run with Debian's interpreter, which sees python3-numpy and python3-scipy:
 
     FLIPLAB_LIBRARY=build/libfliplab.so PYTHONPATH=python /usr/bin/python3 bench/bench_python.py
 
-Prints medians of --runs runs (default 3) of:
+Prints medians of --runs runs (default 3; the two sides of each comparison
+of lot() run alternately) of:
   1. DT of N = 10^6 uniform points from one numpy array: fliplab.lot(p, "DT")
      against scipy.spatial.Delaunay(p), side by side in one process;
   2. the module's overhead: lot() in full (validation, conversion, result
@@ -39,6 +40,16 @@ def median_time(fn, runs):
         fn()
         ts.append(time.perf_counter() - t0)
     return statistics.median(ts)
+
+
+def paired_medians(fa, fb, runs):
+    """Medians of fa's and fb's times, run alternately, so that a change of
+    load on a shared machine falls on both alike."""
+    ta, tb = [], []
+    for _ in range(runs):
+        ta.append(median_time(fa, 1))
+        tb.append(median_time(fb, 1))
+    return statistics.median(ta), statistics.median(tb)
 
 
 def c_only(p):
@@ -79,11 +90,11 @@ def main():
           % (fliplab.library_path, np.__version__, scipy.__version__, a.runs,
              os.getloadavg()[0]))
     p = fliplab.samplers.points(a.n, "uniform", 1)
-    tf = median_time(lambda: fliplab.lot(p, "DT"), a.runs)
-    ts = median_time(lambda: scipy.spatial.Delaunay(p), a.runs)
+    tf, ts = paired_medians(lambda: fliplab.lot(p, "DT"), lambda: scipy.spatial.Delaunay(p),
+                            a.runs)
     print("DT of %d points: fliplab.lot %.3f s, scipy.spatial.Delaunay %.3f s: %.1fx faster"
           % (a.n, tf, ts, ts / tf))
-    tc = median_time(lambda: c_only(p), a.runs)
+    tf, tc = paired_medians(lambda: fliplab.lot(p, "DT"), lambda: c_only(p), a.runs)
     print("lot() overhead over its C calls: lot() %.3f s, C %.3f s: %.1f%%"
           % (tf, tc, 100 * (tf - tc) / tc))
     t = fliplab.samplers.points(3 * a.triangles, "normal", 2).reshape(-1, 3, 2)
