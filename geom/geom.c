@@ -30,6 +30,10 @@ void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r) {
   geom_tri_fill(t, p, q, r, GEOM_F_ALL);
 }
 
+void geom_tri_make_n(geom_tri *t, const geom_point *v, size_t m) {
+  for (size_t i = 0; i < m; i++) geom_tri_fill(&t[i], v[3 * i], v[3 * i + 1], v[3 * i + 2], GEOM_F_ALL);
+}
+
 void geom_tri_make_fields(geom_tri *t, geom_point p, geom_point q, geom_point r,
                           unsigned fields) {
   geom_tri_fill(t, p, q, r, fields);

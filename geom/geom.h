@@ -31,6 +31,8 @@ typedef struct geom_tri {
 
 /* Fill *t from three points, in any order. */
 void geom_tri_make(geom_tri *t, geom_point p, geom_point q, geom_point r);
+/* geom_tri_make on each of m triangles v[3i], v[3i+1], v[3i+2], into t[i]. */
+void geom_tri_make_n(geom_tri *t, const geom_point *v, size_t m);
 
 /* Groups of geom_tri fields, for geom_tri_make_fields. */
 enum {

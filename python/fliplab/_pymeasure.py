@@ -48,8 +48,9 @@ lib.formula_check_value.argtypes = [ctypes.c_char_p, ctypes.POINTER(GeomTri), ct
                                     ctypes.c_int, ctypes.c_int]
 lib.formula_note_message.restype = None
 lib.formula_note_message.argtypes = [ctypes.c_char_p]
-lib.geom_tri_make.restype = None
-lib.geom_tri_make.argtypes = [ctypes.POINTER(GeomTri), _lib.Point, _lib.Point, _lib.Point]
+lib.geom_tri_make_n.restype = None
+lib.geom_tri_make_n.argtypes = [ctypes.POINTER(GeomTri), _lib.Point_p,
+                                ctypes.c_size_t]
 
 _SIGN = {">= 0": 1, "<= 0": -1, "any": 0}
 _registry = {}      # measure id -> (fn, sign, keep-alive objects)
@@ -62,12 +63,8 @@ def quantities(triangles):
     structured (m,) array with the fields of VARS."""
     t = as_coords(triangles, "triangles", (-1, 3, 2))
     check_contract(t, "triangle")
-    out = np.empty(len(t), dtype=TRI_DTYPE)
-    g = GeomTri()
-    for i in range(len(t)):    # one C call per triangle; geom_tri_make is the one home
-        P = [_lib.Point(*t[i, k]) for k in range(3)]
-        lib.geom_tri_make(ctypes.byref(g), *P)
-        out[i] = tuple(getattr(g, n) for n in VARS)
+    out = np.empty(len(t), dtype=TRI_DTYPE)    # geom_tri's layout: 19 doubles
+    lib.geom_tri_make_n(out.ctypes.data_as(ctypes.POINTER(GeomTri)), points_ptr(t), len(t))
     return out
 
 

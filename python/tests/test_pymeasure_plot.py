@@ -21,6 +21,22 @@ def test_python_measure_equals_builtin():
     assert t["type_I"][0] == t["type_I"][1] and t["dt"][0] == t["dt"][1]
 
 
+def test_quantities_are_the_measures():
+    # one C pass (geom_tri_make_n) gives the fields the built-in measures
+    # read, bit for bit, and the vertices in canonical (lexicographic) order
+    tri = fliplab.samplers.points(3 * 20000, "normal", 3).reshape(-1, 3, 2)
+    q = fliplab.quantities(tri)
+    for field, name, s in [("alpha", "-alpha", -1), ("beta", "beta", 1), ("gamma", "gamma", 1),
+                           ("a", "a", 1), ("c", "-c", -1), ("P", "P", 1), ("A", "-A", -1),
+                           ("R", "R", 1), ("r", "-r", -1), ("h", "-a'", -1)]:
+        assert np.array_equal(s * q[field], fliplab.badness(tri, name)), field
+    v = np.stack([q[["x%d" % k, "y%d" % k]].tolist() for k in (1, 2, 3)], axis=1)
+    assert np.array_equal(np.sort(v.view("f8,f8"), axis=1), v.view("f8,f8"))
+    assert np.array_equal(np.sort(tri.view("f8,f8"), axis=1)[..., 0], v.view("f8,f8")[..., 0])
+    with pytest.raises(ValueError, match="triangle"):
+        fliplab.quantities(np.array([[[0, 0], [1, 0], [np.nan, 1]]]))
+
+
 def test_python_measure_errors():
     fliplab.measure("pyneg", lambda q: q["a"] - 1.0, sign=">= 0")
     tri = np.array([[[0, 0], [0.5, 0], [0, 0.5]]])
