@@ -11,7 +11,8 @@ scipy's: docs/python.md.
 from . import _lib
 from ._rules import (AC, BD, EITHER, UNDECIDED, Rule, badness, decide, define, joints,
                      load_plugin, measures, quad_rules, rules)
-from ._lot import ALGORITHMS, ORDERS, Check, CheckError, Triangulation, check, lot
+from ._lot import (ALGORITHMS, ORDERS, Check, CheckError, Triangulation, check, lot,
+                   read_poly)
 from . import _samplers as samplers
 from ._census import Counts, census, table34
 from ._got import Got, got
@@ -23,5 +24,6 @@ library_path = _lib.path
 
 __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "define", "joints",
            "load_plugin", "measures", "quad_rules", "rules", "ALGORITHMS", "ORDERS", "Check",
-           "CheckError", "Triangulation", "check", "lot", "samplers", "library_path", "Counts",
-           "census", "table34", "Got", "got", "FlipGraph", "flipgraph", "measure", "quantities"]
+           "CheckError", "Triangulation", "check", "lot", "read_poly", "samplers",
+           "library_path", "Counts", "census", "table34", "Got", "got", "FlipGraph", "flipgraph",
+           "measure", "quantities"]

@@ -51,3 +51,25 @@ def check_contract(arr, what):
         idx = " ".join(str(int(k)) for k in where)
         raise ValueError("%s %s (%.6g, %.6g): a coordinate %s"
                          % (what, idx, x, y, _lib.lib.geom_coorderr_str(e).decode()))
+
+
+def as_indices(a, what, cols, n):
+    """a as a C-contiguous uint32 array of shape (m, cols) of indices into n
+    points (triangles, segments).  Integer arrays, and float arrays holding
+    whole numbers only (np.loadtxt's), are accepted; NaN, fractions, indices
+    outside [0, n) and other dtypes raise ValueError naming the first bad row."""
+    arr = np.asarray(a)
+    if arr.ndim != 2 or arr.shape[1] != cols or arr.dtype.kind not in "iuf":
+        raise ValueError("%s: expected an integer array of shape (m, %d), got %s of shape %s"
+                         % (what, cols, arr.dtype, arr.shape))
+    if arr.dtype.kind == "f":
+        bad = np.nonzero(~(np.isfinite(arr) & (arr == np.round(arr))).all(axis=1))[0]
+        if len(bad):
+            raise ValueError("%s %d %s: an index that is %s" % (
+                what, bad[0], arr[bad[0]].tolist(),
+                "NaN" if np.isnan(arr[bad[0]]).any() else "not a whole number"))
+    bad = np.nonzero(((arr < 0) | (arr >= n)).any(axis=1))[0]
+    if len(bad):
+        raise ValueError("%s %d %s: an index outside [0, %d)"
+                         % (what, bad[0], arr[bad[0]].tolist(), n))
+    return np.ascontiguousarray(arr, dtype=np.uint32)

@@ -46,11 +46,13 @@ RULE_DEFAULT_TIE_EPS = 1e-12
 
 
 class LotOptions(ctypes.Structure):
-    """lot_options (lot/lot.h): the fields this package sets, in order."""
+    """lot_options (lot/lot.h), constraints included."""
     _fields_ = [("r", Rule), ("algorithm", ctypes.c_int), ("order", ctypes.c_int),
                 ("seed", ctypes.c_uint64), ("max_flips", ctypes.c_uint64),
                 ("tie_eps", ctypes.c_double), ("decide", ctypes.c_void_p),
-                ("decide_ctx", ctypes.c_void_p)]
+                ("decide_ctx", ctypes.c_void_p), ("segments", c_uint32_p),
+                ("nsegments", ctypes.c_size_t), ("holes", Point_p),
+                ("nholes", ctypes.c_size_t), ("keep_hull", ctypes.c_int)]
 
 
 class LotOptionsRoom(ctypes.Structure):
@@ -84,6 +86,19 @@ class LotCheckResult(ctypes.Structure):
                 ("decided", ctypes.c_size_t), ("not_optimal", ctypes.c_size_t),
                 ("bad_edge", ctypes.c_uint32 * 2), ("valid", ctypes.c_int),
                 ("segments_missing", ctypes.c_size_t), ("missing_segment", ctypes.c_size_t)]
+
+
+class GeomPslg(ctypes.Structure):
+    """geom_pslg (geom/geom.h): vertices, segments, hole points."""
+    _fields_ = [("pts", Point_p), ("npts", ctypes.c_size_t), ("seg", c_uint32_p),
+                ("nseg", ctypes.c_size_t), ("hole", Point_p), ("nholes", ctypes.c_size_t)]
+
+
+class ReportPoly(ctypes.Structure):
+    """report_poly (reports/report.h): a .poly file's graph and what was ignored."""
+    _fields_ = [("g", GeomPslg), ("seg_line", ctypes.POINTER(ctypes.c_uint64)),
+                ("attributes", ctypes.c_size_t), ("regions", ctypes.c_size_t),
+                ("markers", ctypes.c_int), ("first", ctypes.c_int)]
 
 
 class Measure(ctypes.Structure):
@@ -186,6 +201,11 @@ _PROTOS = {
     "lot_free": (None, [_void_p]),
     "lot_check": (_int, [Point_p, _size, c_uint32_p, _size, Rule_p,
                          ctypes.POINTER(LotCheckResult)]),
+    "lot_get_constrained": (_size, [_void_p, c_uint32_p]),
+    "lot_check_constrained": (_int, [Point_p, _size, c_uint32_p, _size, c_uint32_p, _size,
+                                     Rule_p, ctypes.POINTER(LotCheckResult)]),
+    "report_poly_read": (_int, [_char_p, ctypes.POINTER(ReportPoly), _char_p, _size]),
+    "report_poly_free": (None, [ctypes.POINTER(ReportPoly)]),
     "lot_neighbors": (_int, [c_uint32_p, _size, _size, c_int32_p]),
     "lot_get_badness": (None, [Point_p, c_uint32_p, _size, Rule_p, c_double_p]),
     "sampler_points_find": (_int, [_char_p]),
@@ -229,8 +249,9 @@ def _check_layout():
     o = LotOptionsRoom()
     lib.lot_options_init(ctypes.byref(o), ctypes.byref(r))
     oo = o.o
-    if (oo.r.name, oo.algorithm, oo.order, oo.seed, oo.max_flips, oo.tie_eps, oo.decide) != \
-            (b"P_1", 0, 0, 1, 0, RULE_DEFAULT_TIE_EPS, None):
+    if (oo.r.name, oo.algorithm, oo.order, oo.seed, oo.max_flips, oo.tie_eps, oo.decide,
+            bool(oo.segments), oo.nsegments, bool(oo.holes), oo.nholes, oo.keep_hull) != \
+            (b"P_1", 0, 0, 1, 0, RULE_DEFAULT_TIE_EPS, None, False, 0, False, 0, 0):
         raise ImportError("fliplab: python/fliplab/_lib.py's LotOptions does not match lot.h")
 
 

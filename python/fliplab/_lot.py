@@ -1,10 +1,12 @@
 """_lot.py: locally optimal triangulations of point sets (lot/lot.h) from
 numpy arrays, with scipy.spatial.Delaunay's conventions for the result."""
 import ctypes
+import os
+import warnings
 import numpy as np
 
 from . import _lib
-from ._arrays import as_coords, points_ptr, ptr
+from ._arrays import as_coords, as_indices, points_ptr, ptr
 from ._rules import as_rule, _raise_user_errors
 
 lib = _lib.lib
@@ -33,44 +35,72 @@ def _u64(v, what, lo=0):
 
 class Check:
     """lot_check's verdict: valid (a triangulation), locally_optimal, the
-    counts, and the first edge the rule would flip (bad_edge, or None)."""
+    counts, and the first edge the rule would flip (bad_edge, or None).
+    Constrained (lot_check_constrained): segments_missing, the input
+    segments that are no chain of triangle edges, and missing_segment, the
+    first of them (an index into the segments, or None); such a check
+    passes when segments_missing equals the missing_ok it was given."""
 
-    def __init__(self, c):
+    def __init__(self, c, constrained=False, missing_ok=0):
         self.valid = bool(c.valid)
         self.interior_edges = c.interior_edges
         self.boundary_edges = c.boundary_edges
         self.decided = c.decided
         self.not_optimal = c.not_optimal
         self.bad_edge = (c.bad_edge[0], c.bad_edge[1]) if c.not_optimal else None
-        self.locally_optimal = self.valid and c.not_optimal == 0
+        self.constrained = constrained
+        self.segments_missing = c.segments_missing if constrained else 0
+        self.missing_segment = c.missing_segment if self.segments_missing else None
+        self.locally_optimal = self.valid and c.not_optimal == 0 and \
+            self.segments_missing == missing_ok
 
     def __bool__(self):
         return self.locally_optimal
 
+    def failure(self):
+        """Why the check failed, in lot --check's words (None when it passed)."""
+        if self.locally_optimal:
+            return None
+        if not self.valid:
+            return "not a valid triangulation"
+        if self.not_optimal == 0:
+            return ("%d input segments are not chains of triangle edges (first: segment %d)"
+                    % (self.segments_missing, self.missing_segment))
+        return ("%d of %d interior edges not locally optimal (first %d-%d)"
+                % (self.not_optimal, self.interior_edges, self.bad_edge[0], self.bad_edge[1]))
+
     def __repr__(self):
         return ("Check(valid=%s, locally_optimal=%s, interior_edges=%d, decided=%d, "
-                "not_optimal=%d)" % (self.valid, self.locally_optimal, self.interior_edges,
-                                     self.decided, self.not_optimal))
+                "not_optimal=%d%s)" % (self.valid, self.locally_optimal, self.interior_edges,
+                                       self.decided, self.not_optimal,
+                                       ", segments_missing=%d" % self.segments_missing
+                                       if self.constrained else ""))
 
 
-def check(points, triangles, rule):
+def check(points, triangles, rule, segments=None, missing_ok=0):
     """Re-verify a triangulation from scratch (lot_check): structure
     (anticlockwise, every edge in at most two triangles, Euler's count) and
-    local optimality of every interior edge for the rule."""
+    local optimality of every interior edge for the rule.  With segments
+    (a (k, 2) index array; an empty one for a triangulation with holes
+    only) lot_check_constrained: each segment must be a chain of edges
+    (missing_ok of them may not be: those in removed regions), its edges
+    are not decided, and Euler's relation allows holes."""
     r = as_rule(rule)
     p = as_coords(points, "points", (-1, 2))
-    t = np.asarray(triangles)
-    if t.ndim != 2 or t.shape[1] != 3 or t.dtype.kind not in "iu":
-        raise ValueError("triangles: expected an integer array of shape (m, 3)")
-    if t.size and (t.min() < 0 or t.max() >= len(p)):
-        raise ValueError("triangles: an index outside [0, %d)" % len(p))
-    t = np.ascontiguousarray(t, dtype=np.uint32)
+    t = as_indices(triangles, "triangles", 3, len(p))
     c = _lib.LotCheckResult()
-    if lib.lot_check(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
-                     ctypes.byref(r._c), ctypes.byref(c)) != 0:
+    if segments is None:
+        rc = lib.lot_check(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
+                           ctypes.byref(r._c), ctypes.byref(c))
+    else:
+        s = as_indices(segments, "segments", 2, len(p))
+        rc = lib.lot_check_constrained(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
+                                       ptr(s, ctypes.c_uint32), len(s), ctypes.byref(r._c),
+                                       ctypes.byref(c))
+    if rc != 0:
         raise MemoryError("lot check: out of memory")
     _raise_user_errors()
-    return Check(c)
+    return Check(c, segments is not None, missing_ok)
 
 
 class Triangulation:
@@ -87,6 +117,10 @@ class Triangulation:
     badness    (m,) float64, each triangle's badness under the rule (NaN
                for DT and quadrilateral rules)
     hull       the convex hull's vertices anticlockwise (collinear ones included)
+    constrained (c, 2) int32: the constrained edges of a run with segments
+               (the segments' pieces, split at the points on them, merged
+               where they overlap; smaller index first, sorted); (0, 2)
+               without; segments and holes are the run's input (or None)
     flips, status ("converged", "cycle", "budget exhausted"), stats (a dict
     of lot_stats: counts, cycle quadrilaterals, seconds), rule, algorithm,
     order, seed.
@@ -96,6 +130,9 @@ class Triangulation:
         self.points = points
         self.triangles = triangles
         self.hull = hull
+        self.constrained = np.empty((0, 2), dtype=np.int32)
+        self.segments = None
+        self.holes = None
         self.rule = rule
         self.algorithm = algorithm
         self.order = order
@@ -143,8 +180,14 @@ class Triangulation:
         return lib.rule_total_key(ctypes.byref(self.rule._c), ptr(b, ctypes.c_double), len(b))
 
     def check(self):
-        """Re-verify from scratch (lot_check): a Check, true when locally optimal."""
-        return check(self.points, self.triangles, self.rule)
+        """Re-verify from scratch (lot_check; lot_check_constrained for a run
+        with segments or holes, as lot --check): a Check, true when locally
+        optimal and every segment outside the removed regions is kept."""
+        if self.segments is None and self.holes is None:
+            return check(self.points, self.triangles, self.rule)
+        seg = self.segments if self.segments is not None else np.empty((0, 2), np.uint32)
+        return check(self.points, self.triangles, self.rule, seg,
+                     self.stats["segments_removed"])
 
     def __repr__(self):
         return ("<fliplab.Triangulation LOT(%s): %d points, %d triangles, %d flips, %s>"
@@ -157,11 +200,29 @@ def _stats(st):
     return {"n": st.n, "distinct": st.distinct, "duplicates": st.duplicates, "hull": st.hull,
             "triangles": st.triangles, "flips": st.flips, "status": STATUS[st.status],
             "cycle_length": st.cycle_length, "cycle_quads": quads, "max_flips": st.max_flips,
-            "seconds_init": st.seconds_init, "seconds_flip": st.seconds_flip}
+            "seconds_init": st.seconds_init, "seconds_flip": st.seconds_flip,
+            "segments": st.segments, "constrained": st.constrained,
+            "segments_merged": st.segments_merged, "segments_split": st.segments_split,
+            "segments_removed": st.segments_removed, "holes": st.holes, "removed": st.removed}
+
+
+def _constraints(o, n, segments, holes, keep_hull):
+    """segments, holes and keep_hull into the options o, validated as the
+    program's readers do (the arrays returned must outlive the call)."""
+    s = None if segments is None else as_indices(segments, "segments", 2, n)
+    h = None if holes is None else as_coords(holes, "holes", (-1, 2))
+    if keep_hull and s is None and h is None:
+        raise ValueError("keep_hull applies to constrained runs (segments, holes)")
+    if s is not None:
+        o.o.segments, o.o.nsegments = ptr(s, ctypes.c_uint32), len(s)
+    if h is not None:
+        o.o.holes, o.o.nholes = points_ptr(h), len(h)
+    o.o.keep_hull = 1 if keep_hull else 0
+    return s, h
 
 
 def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max_flips=None,
-        tie_eps=None, check=False):
+        tie_eps=None, check=False, segments=None, holes=None, keep_hull=False):
     """A locally optimal triangulation LOT(rule) of an (n, 2) array of points,
     as `fliplab lot --rule RULE` (same algorithm, order and seed: the same
     triangles).  Exact duplicates are merged (the first occurrence
@@ -169,7 +230,14 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
     line, or a coordinate outside the contract (0 or magnitude in [1e-30,
     1e30]) raise ValueError with the C library's message.  check=True
     re-verifies the result from scratch and raises CheckError when it is
-    not locally optimal (a cycle, an exhausted budget)."""
+    not locally optimal (a cycle, an exhausted budget).
+
+    Constrained (`lot --segments S.csv --holes H.csv [--keep-hull]`, the
+    CDT for DT): segments, a (k, 2) integer array of point indices, stay
+    edges; holes, (h, 2) points, remove the regions holding them; the
+    triangles outside the outermost segment-bounded region are removed
+    unless keep_hull.  Crossing segments, a hole on a segment or outside
+    every region raise ValueError with the C library's message."""
     r = as_rule(rule)
     if tie_eps is not None:
         r = type(r)(r, tie_eps=tie_eps)
@@ -186,6 +254,7 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
     o.o.seed = _u64(seed, "seed")
     o.o.max_flips = 0 if max_flips is None else _u64(max_flips, "max_flips", 1)
     o.o.tie_eps = r.tie_eps
+    seg, hol = _constraints(o, n, segments, holes, keep_hull)
     e = _lib.errbuf()
     if lib.lot_check_memory(n, e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
@@ -201,14 +270,49 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
         lib.lot_get_triangles(L, ptr(tri, ctypes.c_uint32))
         hull = np.empty(st.hull, dtype=np.int32)
         lib.lot_get_hull(L, ptr(hull, ctypes.c_uint32))
+        con = np.empty((st.constrained, 2), dtype=np.int32)
+        lib.lot_get_constrained(L, ptr(con, ctypes.c_uint32))
     finally:
         lib.lot_free(L)
     res = Triangulation(p, tri, hull, stats, r, algorithm, order, int(seed))
+    res.constrained, res.holes = con, hol
+    res.segments = None if seg is None else seg.astype(np.int32)
     if check:
         c = res.check()
         if not c:
-            raise CheckError("check: FAILED: %s" % (
-                "not a valid triangulation" if not c.valid else
-                "%d of %d interior edges not locally optimal (first %d-%d)"
-                % (c.not_optimal, c.interior_edges, c.bad_edge[0], c.bad_edge[1])))
+            raise CheckError("check: FAILED: %s" % c.failure())
     return res
+
+
+def _copy(ptr_, count, cols, dtype):
+    if count == 0:
+        return np.empty((0, cols), dtype=dtype)
+    return np.ctypeslib.as_array(ptr_, (count, cols)).astype(dtype)
+
+
+def read_poly(path):
+    """Triangle's .poly file as `lot --poly FILE.poly` reads it (the same C
+    reader, report_poly_read, docs/formats.md): (points (n, 2) float64,
+    segments (k, 2) int32 0-based, holes (h, 2) float64), ready for
+    lot(points, rule, segments=segments, holes=holes).  A malformed file
+    raises ValueError "FILE line N: problem"; what the file has beyond the
+    graph (vertex attributes, regional attribute / area lines, boundary
+    markers) is ignored with a warning, as the program's note."""
+    pf = _lib.ReportPoly()
+    e = _lib.errbuf()
+    if lib.report_poly_read(os.fsencode(path), ctypes.byref(pf), e, _lib.ERRLEN) != 0:
+        msg = _lib.text(e)
+        raise (MemoryError if "out of memory" in msg else ValueError)(msg)
+    try:
+        g = pf.g
+        pts = _copy(ctypes.cast(g.pts, _lib.c_double_p), g.npts, 2, np.float64)
+        seg = _copy(g.seg, g.nseg, 2, np.int32)
+        hol = _copy(ctypes.cast(g.hole, _lib.c_double_p), g.nholes, 2, np.float64)
+        note = (pf.attributes, pf.regions, pf.markers)
+    finally:
+        lib.report_poly_free(ctypes.byref(pf))
+    if any(note):
+        warnings.warn("%s: ignored: %d vertex attribute(s), %d regional attribute/area "
+                      "line(s)%s" % (os.fsdecode(path), note[0], note[1],
+                                     ", boundary markers" if note[2] else ""), stacklevel=2)
+    return pts, seg, hol

@@ -1,5 +1,6 @@
 """test_leaks.py: nothing leaks.  A loop of calls (lot with every result
-attribute, badness, decide, check, samplers, a failing call) must not grow
+attribute, badness, decide, check, samplers, constrained runs and read_poly,
+failing calls) must not grow
 the C heap (glibc's mallinfo2: bytes in use by malloc) nor the Python heap
 (tracemalloc) once warmed up."""
 import ctypes
@@ -27,7 +28,16 @@ def c_heap():
     return m.uordblks + m.hblkhd
 
 
-def _round(p, q, tri):
+def _round(p, q, tri, seg, poly):
+    c = fliplab.lot(p, "P_1", segments=seg, keep_hull=True)
+    c.constrained, c.check()
+    pts, s, h = fliplab.read_poly(poly)
+    fliplab.lot(pts, "DT", segments=s, holes=h)
+    for bad in ({"segments": [[0, 2], [1, 3]]}, {"segments": s, "holes": [[1, 2]]}):
+        try:
+            fliplab.lot(pts, "DT", **bad)
+        except ValueError:
+            pass
     t = fliplab.lot(p, "P_1")
     t.neighbors, t.badness, t.total(), t.check()
     fliplab.lot(p, "DT", algorithm="sweep").neighbors
@@ -40,17 +50,23 @@ def _round(p, q, tri):
         pass
 
 
-def test_no_leak():
+def test_no_leak(tmp_path):
+    poly = str(tmp_path / "sq.poly")
+    with open(poly, "w") as f:          # a square with a square hole
+        f.write("8 2 0 0\n0 0 0\n1 4 0\n2 4 4\n3 0 4\n4 1 1\n5 3 1\n6 3 3\n7 1 3\n"
+                "8 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 7\n7 7 4\n1\n0 2 2\n")
     p = fliplab.samplers.points(3000, "uniform", 1)
     q = fliplab.samplers.quads(500)
     tri = fliplab.samplers.points(3000, "normal", 2).reshape(-1, 3, 2)
+    e = fliplab.lot(p, "R_1").triangles[::5, :2]           # edges of one triangulation
+    args = (p, q, tri, e, poly)
     for _ in range(5):
-        _round(p, q, tri)                          # warm up (arenas, registries, caches)
+        _round(*args)                         # warm up (arenas, registries, caches)
     gc.collect()
     tracemalloc.start()
     c0, (py0, _) = c_heap(), tracemalloc.get_traced_memory()
     for _ in range(60):
-        _round(p, q, tri)
+        _round(*args)
     gc.collect()
     c1, (py1, _) = c_heap(), tracemalloc.get_traced_memory()
     tracemalloc.stop()
