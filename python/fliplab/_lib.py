@@ -10,10 +10,12 @@ Where the library is found, first match wins:
 
 ctypes.CDLL releases the GIL for the duration of every call, so a long C
 call (a triangulation of 10^6 points, a census) lets other Python threads
-run.  The structure mirrors must match the C headers field for field;
-_check_layout() verifies them against lot_options_init's documented
-defaults when the module loads, so that a change of a header fails at
-import with a message instead of reading garbage.
+run.  The structure mirrors must match the C headers field for field:
+python/tests/test_layout.py compares every mirror of the package with the
+sizes and offsets the compiler gave the headers (python/tests/layout.c),
+and _check_layout() verifies the rule and options against
+lot_options_init's documented defaults when the module loads, so that a
+library built from other headers fails at import instead of reading garbage.
 """
 import ctypes
 import os

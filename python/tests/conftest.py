@@ -1,9 +1,11 @@
 """conftest.py: how the Python tests find the library and the program.
 
 Run by ctest (tests/CMakeLists.txt: python_tests) with FLIPLAB_LIBRARY (the
-build's libfliplab.so), FLIPLAB_BIN (the build's fliplab) and PYTHONPATH
+build's libfliplab.so), FLIPLAB_BIN (the build's fliplab), FLIPLAB_LAYOUT
+(the build's python/fliplab_py_layout, for test_layout.py) and PYTHONPATH
 (python/) set.  By hand, from the repository, with Debian's interpreter:
     FLIPLAB_LIBRARY=build/libfliplab.so FLIPLAB_BIN=build/fliplab \\
+        FLIPLAB_LAYOUT=build/python/fliplab_py_layout \\
         PYTHONPATH=python /usr/bin/python3 -m pytest python/tests
 """
 import csv
