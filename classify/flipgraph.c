@@ -147,6 +147,22 @@ void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_e
   flipgraph_from_decisions(dec, p->delaunay_sink, out);
 }
 
+size_t flipgraph_classify_n(geom_point *v, size_t m, const rule *rules, int nrules,
+                            double tie_eps, int threads, flipgraph *out, geom_polyerr *err,
+                            size_t *bad) {
+  for (size_t i = 0; i < m; i++)
+    if ((*err = geom_polygon_check(v + 5 * i, 5, bad, NULL)) != GEOM_OK) return i;
+  long long mm = (long long)m;
+#pragma omp parallel for schedule(dynamic, 256) num_threads(flipgraph_tally_threads(threads, m))
+  for (long long i = 0; i < mm; i++) {
+    flipgraph_pentagon p;
+    flipgraph_prepare(&p, v + 5 * i);
+    for (int r = 0; r < nrules; r++)
+      flipgraph_classify(&p, &rules[r], tie_eps, &out[(size_t)i * (size_t)nrules + (size_t)r]);
+  }
+  return m;
+}
+
 /* ---- plans: many rules per pentagon -------------------------------------- */
 
 /* The shared plan (census_internal.h: rules checked, slots, joints) and

@@ -51,6 +51,17 @@ void flipgraph_classify(const flipgraph_pentagon *p, const rule *r, double tie_e
 
 const char *flipgraph_type_name(flipgraph_type t);   /* "I" .. "V" */
 
+/* The graphs of m pentagons v[5i..5i+4] under rules[0..nrules-1], into
+** out[i * nrules + r] (the library's batch for `fliplab classify`).  Each
+** pentagon goes through geom_polygon_check first, which reverses a
+** clockwise one in place keeping its first vertex, as the classify
+** command's reader does.  Returns m, or the index of the first pentagon
+** refused, with its error in *err and the vertex in *bad (nothing
+** classified then).  threads as flipgraph_tally's; no output depends on it. */
+size_t flipgraph_classify_n(geom_point *v, size_t m, const rule *rules, int nrules,
+                            double tie_eps, int threads, flipgraph *out, geom_polyerr *err,
+                            size_t *bad);
+
 /* Classify pentagons first .. first+count-1 of the sampler stream `seed`
 ** (sampler_pentagon) under every rule and add the outcomes to out[0..nrules-1].
 ** threads <= 0 means all cores.  Counts do not depend on the thread count.

@@ -440,6 +440,52 @@ static void test_tally_equals_loop(void **state) {
   assert_int_equal(flipgraph_tally(rules, 1, seed, UINT64_MAX, 10, TFG_EPS, 1, tally, NULL, NULL), -1);
 }
 
+/* flipgraph_classify_n is flipgraph_prepare + flipgraph_classify on every
+** pentagon, with any thread count; a clockwise pentagon gets the graph of
+** its renumbering v0, v4, v3, v2, v1; a pentagon that is not convex stops
+** the batch at its index with geom_polygon_check's error and vertex. */
+static void test_classify_n(void **state) {
+  (void)state;
+  rule rules[TFG_MAXRULES];
+  int n = tfg_all_rules(rules);
+  enum { M = 700 };
+  geom_point *v = malloc(5 * M * sizeof *v);
+  flipgraph *g = malloc((size_t)M * (size_t)n * sizeof *g);
+  assert_non_null(v);
+  assert_non_null(g);
+  for (int threads = 1; threads <= 2; threads++) {
+    for (int i = 0; i < M; i++) {
+      sampler_pentagon(17, (uint64_t)i, v + 5 * i);
+      if (i % 2) {
+        geom_point t = v[5 * i + 1];
+        v[5 * i + 1] = v[5 * i + 4], v[5 * i + 4] = t;
+        t = v[5 * i + 2], v[5 * i + 2] = v[5 * i + 3], v[5 * i + 3] = t;
+      }
+    }
+    geom_polyerr e;
+    size_t bad;
+    assert_int_equal(flipgraph_classify_n(v, M, rules, n, TFG_EPS, threads, g, &e, &bad), M);
+    for (int i = 0; i < M; i++) {
+      geom_point w[5];
+      sampler_pentagon(17, (uint64_t)i, w);
+      flipgraph_pentagon p;
+      flipgraph_prepare(&p, w);
+      for (int r = 0; r < n; r++) {
+        flipgraph want;
+        flipgraph_classify(&p, &rules[r], TFG_EPS, &want);
+        assert_memory_equal(&want, &g[(size_t)i * (size_t)n + (size_t)r], sizeof want);
+      }
+    }
+  }
+  v[5 * 3 + 2] = v[5 * 3 + 1];
+  geom_polyerr e;
+  size_t bad;
+  assert_int_equal(flipgraph_classify_n(v, M, rules, n, TFG_EPS, 2, g, &e, &bad), 3);
+  assert_int_equal(e, GEOM_DUPLICATE);
+  free(v);
+  free(g);
+}
+
 /* The per-sample hook sees every pentagon once, on a thread number below
 ** the thread count, with the graphs flipgraph_classify gives; its per-thread
 ** counts add up to the tally's. */
@@ -593,6 +639,7 @@ int main(void) {
     cmocka_unit_test(test_dt_always_type_one),
     cmocka_unit_test(test_fast_path_equals_rule_eval),
     cmocka_unit_test(test_tally_equals_loop),
+    cmocka_unit_test(test_classify_n),
     cmocka_unit_test(test_extremes_and_engines),
     cmocka_unit_test(test_tally_hook),
     cmocka_unit_test(test_types_reached),

@@ -18,6 +18,7 @@ from ._census import Counts, census, table34
 from ._got import Got, got
 from ._flipgraph import FlipGraph, flipgraph
 from ._pymeasure import measure, quantities
+from ._classify import classify, verdicts, wilson
 
 __version__ = "0.1.0"
 library_path = _lib.path
@@ -26,4 +27,4 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "load_plugin", "measures", "quad_rules", "rules", "ALGORITHMS", "ORDERS", "Check",
            "CheckError", "Triangulation", "check", "lot", "read_poly", "samplers",
            "library_path", "Counts", "census", "table34", "Got", "got", "FlipGraph", "flipgraph",
-           "measure", "quantities"]
+           "measure", "quantities", "classify", "verdicts", "wilson"]

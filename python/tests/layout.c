@@ -77,6 +77,8 @@ static void layout_lot(void) {
 static void layout_census(void) {
   Z(flipgraph_counts); F(flipgraph_counts, samples); F(flipgraph_counts, type);
   F(flipgraph_counts, dt);
+  Z(flipgraph); F(flipgraph, dec); F(flipgraph, type); F(flipgraph, nsinks); F(flipgraph, sink);
+  F(flipgraph, delaunay);
   Z(flipgraph_run); F(flipgraph_run, seed); F(flipgraph_run, first); F(flipgraph_run, count);
   F(flipgraph_run, tie_eps); F(flipgraph_run, threads); F(flipgraph_run, progress);
   F(flipgraph_run, progress_ctx); F(flipgraph_run, each); F(flipgraph_run, each_ctx);
