@@ -70,6 +70,8 @@ static void layout_lot(void) {
   F(lot_check_result, boundary_edges); F(lot_check_result, decided);
   F(lot_check_result, not_optimal); F(lot_check_result, bad_edge); F(lot_check_result, valid);
   F(lot_check_result, segments_missing); F(lot_check_result, missing_segment);
+  Z(lot_cdf); F(lot_cdf, triangles); F(lot_cdf, tri); F(lot_cdf, edges); F(lot_cdf, edge);
+  F(lot_cdf, rounded); F(lot_cdf, conflicts);
   Z(report_poly); F(report_poly, g); F(report_poly, seg_line); F(report_poly, attributes);
   F(report_poly, regions); F(report_poly, markers); F(report_poly, first);
 }

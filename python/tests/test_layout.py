@@ -10,7 +10,7 @@ import subprocess
 
 import pytest
 
-from fliplab import _census, _classify, _flipgraph, _got, _lib, _pymeasure
+from fliplab import _cdf, _census, _classify, _flipgraph, _got, _lib, _pymeasure
 from conftest import ROOT
 
 # mirror -> (C structure, complete: the sizes must agree too, {Python field: C designator})
@@ -31,6 +31,7 @@ MIRRORS = {
     _lib.ReportPoly: ("report_poly", True, {}),
     _census.FlipgraphCounts: ("flipgraph_counts", True, {}),
     _classify.Flipgraph: ("flipgraph", True, {}),
+    _cdf.LotCdf: ("lot_cdf", True, {}),
     _census.FlipgraphRun: ("flipgraph_run", True, {}),
     _census.SiteflipCounts: ("siteflip_counts", True, {}),
     _flipgraph.SiteflipQuad: ("siteflip_quad", True, {}),
@@ -109,7 +110,7 @@ def test_every_mirror_listed(layout):
     wraps LotOptions), and each structure layout.c prints has a mirror."""
     import fliplab
     found = set()
-    for mod in (_lib, _census, _classify, _flipgraph, _got, _pymeasure) + tuple(
+    for mod in (_lib, _cdf, _census, _classify, _flipgraph, _got, _pymeasure) + tuple(
             getattr(fliplab, m) for m in ("_lot", "_rules", "_samplers")):
         found |= {v for v in vars(mod).values()
                   if isinstance(v, type) and issubclass(v, ctypes.Structure)}

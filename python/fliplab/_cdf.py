@@ -1,0 +1,79 @@
+"""_cdf.py: the convex-distance Delaunay graph of an empty-shape
+triangulation (`fliplab lot --rule ES:SHAPE --cdf FILE`, lot/cdf.c,
+docs/emptyshape.md): the triangles whose circumscribing shape is a
+homothet of K, and the CDF-Delaunay edges that lie in no kept triangle."""
+import ctypes
+import numpy as np
+
+from . import _lib
+from ._arrays import points_ptr, ptr
+
+lib = _lib.lib
+
+
+class LotCdf(ctypes.Structure):
+    """lot_cdf (lot/lot.h)."""
+    _fields_ = [("triangles", ctypes.c_size_t), ("tri", ctypes.POINTER(ctypes.c_uint32)),
+                ("edges", ctypes.c_size_t), ("edge", ctypes.POINTER(ctypes.c_uint32)),
+                ("rounded", ctypes.c_size_t), ("conflicts", ctypes.c_size_t)]
+
+
+lib.shape_parse.restype = ctypes.c_int
+lib.shape_parse.argtypes = [ctypes.c_char_p, ctypes.POINTER(ctypes.c_void_p), ctypes.c_char_p,
+                            ctypes.c_size_t]
+lib.shape_free.restype = None
+lib.shape_free.argtypes = [ctypes.c_void_p]
+lib.lot_cdf_extract.restype = ctypes.c_int
+lib.lot_cdf_extract.argtypes = [_lib.Point_p, ctypes.POINTER(ctypes.c_uint32), ctypes.c_size_t,
+                                ctypes.c_void_p, ctypes.POINTER(LotCdf)]
+lib.lot_cdf_free.restype = None
+lib.lot_cdf_free.argtypes = [ctypes.POINTER(LotCdf)]
+
+
+class Cdf:
+    """The CDF Delaunay graph: triangles (k, 3) int32 (the kept ones, rows
+    of the triangulation), edges (e, 2) int32 (smaller index first,
+    sorted), rounded (triangles dropped: their circumscribing shape is a
+    corner's rounding shape) and conflicts (0 on an empty-shape
+    triangulation)."""
+
+    def __init__(self, triangles, edges, rounded, conflicts):
+        self.triangles, self.edges = triangles, edges
+        self.rounded, self.conflicts = rounded, conflicts
+
+    def __repr__(self):
+        return "<fliplab.Cdf: %d triangles, %d extra edges, %d dropped>" % (
+            len(self.triangles), len(self.edges), self.rounded)
+
+
+def _array(p, n, k):
+    a = np.empty((n, k), dtype=np.int32)
+    if n:
+        ctypes.memmove(a.ctypes.data, p, a.nbytes)
+    return a
+
+
+def cdf(t):
+    """The CDF Delaunay graph of a Triangulation made by lot() with an
+    empty-shape rule ES:SHAPE, extracted as `lot --cdf` does."""
+    name = t.rule.name
+    if not name.startswith("ES:"):
+        raise ValueError("cdf needs an empty-shape rule (ES:SHAPE), not '%s'" % name)
+    k = ctypes.c_void_p()
+    e = _lib.errbuf()
+    if lib.shape_parse(name[3:].encode(), ctypes.byref(k), e, _lib.ERRLEN) != 0:
+        raise ValueError(_lib.text(e))
+    g = LotCdf()
+    tri = np.ascontiguousarray(t.triangles, dtype=np.int32).view(np.uint32)
+    try:
+        rc = lib.lot_cdf_extract(points_ptr(t.points), ptr(tri, ctypes.c_uint32), len(tri), k,
+                                 ctypes.byref(g))
+    finally:
+        lib.shape_free(k)
+    if rc != 0:
+        raise MemoryError("cdf: out of memory")
+    try:
+        return Cdf(_array(g.tri, g.triangles, 3), _array(g.edge, g.edges, 2), int(g.rounded),
+                   int(g.conflicts))
+    finally:
+        lib.lot_cdf_free(ctypes.byref(g))
