@@ -75,6 +75,12 @@ class Counts(np.ndarray):
     def __array_finalize__(self, obj):
         self.meta = getattr(obj, "meta", None)
 
+    def to_csv(self, path=None, format="csv", columns=0):
+        """The table as the program writes it (_report.to_csv): the bytes of
+        `table34`/`census --format FORMAT` for the same run."""
+        from ._report import to_csv
+        return to_csv(self, path, format, columns)
+
 
 def _rules(rules, measures):
     """The rule list of the program: rules as given, else every MEASURE_JOINT
@@ -170,7 +176,8 @@ def table34(samples=5000, seed=1, rules=None, measures=None, tie_eps=None, threa
     for i, (r, c) in enumerate(zip(rs, counts)):
         out[i] = (r.measure, r.joint, r.name, count, *c.type, c.dt)
     meta = {"seed": seed, "tie_eps": eps, "first": first, "end": first + count,
-            "total": samples, "rules": len(rs), "sampler": sampler}
+            "total": samples, "rules": len(rs), "sampler": sampler,
+            "shard": None if shard is None else tuple(shard)}
     return Counts(out, meta)
 
 
@@ -209,5 +216,6 @@ def census(sites=6, samples=1000, sampler="convex", seed=1, rules=None, measures
                   c.one_sink, c.multi_sink, c.sink_dt, ms, c.max_sinks, mg, c.sinks,
                   c.gap_units)
     meta = {"seed": seed, "tie_eps": eps, "first": first, "end": first + count,
-            "total": samples, "rules": len(rs), "sites": int(sites), "sampler": sampler}
+            "total": samples, "rules": len(rs), "sites": int(sites), "sampler": sampler,
+            "shard": None if shard is None else tuple(shard)}
     return Counts(out, meta)

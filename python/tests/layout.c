@@ -72,6 +72,22 @@ static void layout_lot(void) {
   F(lot_check_result, segments_missing); F(lot_check_result, missing_segment);
   Z(lot_cdf); F(lot_cdf, triangles); F(lot_cdf, tri); F(lot_cdf, edges); F(lot_cdf, edge);
   F(lot_cdf, rounded); F(lot_cdf, conflicts);
+  Z(report_row); F(report_row, measure); F(report_row, joint); F(report_row, rule);
+  F(report_row, c);
+  Z(report_run); F(report_run, known); F(report_run, seed); F(report_run, tie_eps);
+  F(report_run, first); F(report_run, end); F(report_run, total); F(report_run, rules);
+  F(report_run, sampler);
+  Z(report_meta); F(report_meta, samples); F(report_meta, has_seed); F(report_meta, seed);
+  F(report_meta, has_tie_eps); F(report_meta, tie_eps); F(report_meta, shard_k);
+  F(report_meta, shard_n); F(report_meta, shard_first); F(report_meta, shard_total);
+  F(report_meta, sampler); F(report_meta, note); F(report_meta, text_columns);
+  F(report_meta, run);
+  Z(report_census_row); F(report_census_row, measure); F(report_census_row, joint);
+  F(report_census_row, rule); F(report_census_row, sites); F(report_census_row, sampler);
+  F(report_census_row, c);
+  Z(report_census_meta); F(report_census_meta, has_seed); F(report_census_meta, seed);
+  F(report_census_meta, has_tie_eps); F(report_census_meta, tie_eps);
+  F(report_census_meta, shard_k); F(report_census_meta, shard_n);
   Z(report_poly); F(report_poly, g); F(report_poly, seg_line); F(report_poly, attributes);
   F(report_poly, regions); F(report_poly, markers); F(report_poly, first);
 }

@@ -10,7 +10,7 @@ import subprocess
 
 import pytest
 
-from fliplab import _cdf, _census, _classify, _flipgraph, _got, _lib, _pymeasure
+from fliplab import _cdf, _census, _classify, _flipgraph, _got, _lib, _pymeasure, _report
 from conftest import ROOT
 
 # mirror -> (C structure, complete: the sizes must agree too, {Python field: C designator})
@@ -32,6 +32,11 @@ MIRRORS = {
     _census.FlipgraphCounts: ("flipgraph_counts", True, {}),
     _classify.Flipgraph: ("flipgraph", True, {}),
     _cdf.LotCdf: ("lot_cdf", True, {}),
+    _report.ReportRow: ("report_row", True, {}),
+    _report.ReportRun: ("report_run", True, {}),
+    _report.ReportMeta: ("report_meta", True, {}),
+    _report.ReportCensusRow: ("report_census_row", True, {}),
+    _report.ReportCensusMeta: ("report_census_meta", True, {}),
     _census.FlipgraphRun: ("flipgraph_run", True, {}),
     _census.SiteflipCounts: ("siteflip_counts", True, {}),
     _flipgraph.SiteflipQuad: ("siteflip_quad", True, {}),
@@ -110,7 +115,7 @@ def test_every_mirror_listed(layout):
     wraps LotOptions), and each structure layout.c prints has a mirror."""
     import fliplab
     found = set()
-    for mod in (_lib, _cdf, _census, _classify, _flipgraph, _got, _pymeasure) + tuple(
+    for mod in (_lib, _cdf, _census, _classify, _flipgraph, _got, _pymeasure, _report) + tuple(
             getattr(fliplab, m) for m in ("_lot", "_rules", "_samplers")):
         found |= {v for v in vars(mod).values()
                   if isinstance(v, type) and issubclass(v, ctypes.Structure)}
