@@ -30,6 +30,7 @@ static shape *shape_new_polygon(int n) {
 
 void shape_free(shape *k) {
   if (k == NULL) return;
+  shape_quick_free(k);
   shape_memo_free(k);
   free(k->v);
   free(k->half);
@@ -104,7 +105,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
-  if (shape_memo_build(k) != 0) {
+  if (shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
     return NULL;
@@ -370,8 +371,7 @@ static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3
   return *viol ? 0 : d3;
 }
 
-/* The number of edges in the cyclic range [from, to), from != to. */
-static int shape_range(const shape *k, int from, int to) {
+int shape_range(const shape *k, int from, int to) {
   return ((to - from) % k->n + k->n) % k->n;
 }
 
@@ -467,14 +467,24 @@ static shape_choice shape_corner_decide(const shape *k, int c, const geom_point 
   return s < 0 ? SHAPE_BD : s > 0 ? SHAPE_AC : SHAPE_EITHER;
 }
 
+/* The quick path (shape_quick.c) answers first where its signs are
+** certain, with this path's answer (the argument is there). */
 static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], shape_trace *tr) {
-  int sup[3] = {shape_support(k, p[0], p[1]), shape_support(k, p[1], p[2]),
-                shape_support(k, p[2], p[0])};
+  int sup[3], t[3];
+  if (shape_quick_supports(k, p, sup) != 0) {
+    sup[0] = shape_support(k, p[0], p[1]);
+    sup[1] = shape_support(k, p[1], p[2]);
+    sup[2] = shape_support(k, p[2], p[0]);
+  }
   /* All three cannot coincide: the three directions span the plane
   ** positively, and a corner's normal cone is narrower than pi. */
   if (sup[0] == sup[1] || sup[0] == sup[2]) return shape_corner_decide(k, sup[0], p, tr);
   if (sup[1] == sup[2]) return shape_corner_decide(k, sup[1], p, tr);
-  int t[3];
+  int quick = shape_quick_homothet(k, sup, p, t);
+  if (quick >= 0) {
+    if (tr) memcpy(tr->contact, t, sizeof t);
+    return (shape_choice)quick;
+  }
   int d3 = shape_contacts(k, sup, p, t);
   if (d3 == 0) {
     if (tr) tr->failed = 1;

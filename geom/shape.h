@@ -30,6 +30,7 @@ typedef struct shape {
   geom_point *v;          /* polygon: the vertices, anticlockwise (owned) */
   unsigned char *half;    /* polygon, internal: 1 for the edges turned by [pi, 2 pi) from edge 0 */
   struct shape_memo *memo; /* polygon, internal: shape-only determinants (geom/shape_arith.c) */
+  struct shape_quick *quick; /* polygon, internal: the quick decision's table (geom/shape_quick.c) */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
 } shape;
 

@@ -219,6 +219,8 @@ struct shape_memo {
   int n;
   shape_memo_entry *cof;   /* [(i n + j) n + k] */
   signed char *sgn;        /* the same index: the exact sign (shape_sign) */
+  double *val, *twin;      /* the same index: cof's values and twins, flat (shape_memo_flat) */
+  int kmax, poisoned;      /* the largest rounding count; 1 when some entry is poisoned */
 };
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3_run(shape_ar *a, const shape *K, int i, int j,
@@ -246,12 +248,17 @@ int shape_memo_build(shape *K) {
   struct shape_memo *mm = malloc(sizeof *mm);
   shape_memo_entry *cof = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *cof);
   signed char *sgn = malloc((size_t)n * (size_t)n * (size_t)n);
-  if (mm == NULL || cof == NULL || sgn == NULL) {
+  double *val = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *val);
+  double *twin = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *twin);
+  if (mm == NULL || cof == NULL || sgn == NULL || val == NULL || twin == NULL) {
     free(mm);
     free(cof);
     free(sgn);
+    free(val);
+    free(twin);
     return -1;
   }
+  *mm = (struct shape_memo){.n = n, .cof = cof, .sgn = sgn, .val = val, .twin = twin};
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++)
       for (int k = 0; k < n; k++) {
@@ -259,13 +266,21 @@ int shape_memo_build(shape *K) {
         shape_num x = shape_cof3_run(&a, K, i, j, k);
         size_t at = ((size_t)i * (size_t)n + (size_t)j) * (size_t)n + (size_t)k;
         cof[at] = (shape_memo_entry){x, a.poison};
+        val[at] = x.v;
+        twin[at] = x.t;
+        mm->kmax = x.k > mm->kmax ? x.k : mm->kmax;
+        mm->poisoned |= a.poison;
         shape_args g = {.K = K, .e = {i, j, k}};
         sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* K->memo is not yet set */
       }
-  mm->n = n;
-  mm->cof = cof;
-  mm->sgn = sgn;
   K->memo = mm;
+  return 0;
+}
+
+int shape_memo_flat(const shape *K, shape_memo_flat_view *out) {
+  const struct shape_memo *mm = K->memo;
+  if (mm == NULL || mm->poisoned) return -1;
+  *out = (shape_memo_flat_view){mm->val, mm->twin, mm->sgn, mm->kmax};
   return 0;
 }
 
@@ -273,6 +288,8 @@ void shape_memo_free(shape *K) {
   if (K->memo == NULL) return;
   free(K->memo->cof);
   free(K->memo->sgn);
+  free(K->memo->val);
+  free(K->memo->twin);
   free(K->memo);
   K->memo = NULL;
 }
@@ -523,6 +540,10 @@ static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
 
 void shape_set_exact_only(int on) {
   shape_only_exact = on;
+}
+
+int shape_exact_only(void) {
+  return shape_only_exact;
 }
 
 int shape_sign(shape_prog p, const shape_args *g) {

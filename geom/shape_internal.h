@@ -49,6 +49,7 @@ FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
 /* Tests: 1 makes every sign skip the double run and take the exact one
 ** (so a decision can be compared with its purely exact twin); 0 restores. */
 FLIPLAB_INTERNAL void shape_set_exact_only(int on);
+FLIPLAB_INTERNAL int shape_exact_only(void);
 
 /* The fast paths of the hot predicates (shape_arith.c): the double run
 ** alone, returning its sign, or 2 when it cannot tell a non-zero sign (or
@@ -78,10 +79,38 @@ FLIPLAB_INTERNAL int shape_det3h_sign(const shape *K, const int e[3]);
 ** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
 FLIPLAB_INTERNAL int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]);
 
+/* The number of edges in the cyclic range [from, to), from != to (shape.c). */
+FLIPLAB_INTERNAL int shape_range(const shape *k, int from, int to);
+
 /* The kept shape-only determinants of a polygon (shape_arith.c): built by
 ** shape.c once a polygon is checked (0, or -1 out of memory; none for an
 ** ellipse or more than SHAPE_MEMO_MAX edges), freed with the shape. */
 FLIPLAB_INTERNAL int shape_memo_build(shape *k);
 FLIPLAB_INTERNAL void shape_memo_free(shape *k);
+
+/* The kept det3h double runs as flat arrays indexed (i n + j) n + k: the
+** values, their twins, the exact signs, and kmax, the largest rounding
+** count of any entry; 0, or -1 when none are kept or one is poisoned. */
+typedef struct shape_memo_flat_view {
+  const double *val, *twin;
+  const signed char *sgn;
+  int kmax;
+} shape_memo_flat_view;
+
+FLIPLAB_INTERNAL int shape_memo_flat(const shape *k, shape_memo_flat_view *out);
+
+/* The quick polygon decision (shape_quick.c): the table of a polygon with
+** kept determinants, built once it is checked (0, or -1 out of memory; none
+** otherwise), freed with the shape. */
+FLIPLAB_INTERNAL int shape_quick_build(shape *k);
+FLIPLAB_INTERNAL void shape_quick_free(shape *k);
+/* The support vertices s_AB, s_BC, s_CA of p[0..2] into sup: 0 when every
+** sign they rest on is certain (they are then shape_support's), else -1. */
+FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]);
+/* The homothet decision of the anticlockwise quadrilateral p (supports sup,
+** three different vertices): shape_decide's answer and the contact triple
+** into t, or -1 when some sign is not certain (then nothing is known). */
+FLIPLAB_INTERNAL int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4],
+                                          int t[3]);
 
 #endif

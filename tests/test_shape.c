@@ -659,9 +659,109 @@ static void test_filter_exact(void **state) {
   assert_true(tshape_fallbacks > 300);
 }
 
+/* ---- the quick path against the exact runs ----------------------------------
+**
+** geom/shape_quick.c answers a decision only when every sign it rests on is
+** certain, and claims that answer (and its supports and contact triple) is
+** the filtered-exact path's.  Checked against the purely exact decision on
+** random quadrilaterals (where it must answer most of the time, else it
+** saves nothing) and where it is most likely to be wrong: four sites on one
+** homothet (exactly, at its corners, or nudged by an ulp), grid points,
+** sites displaced along the shape's edge directions (pairs parallel to
+** sides), and tiny and huge scales. */
+
+static long tquick_answers, tquick_tries;
+
+static void tquick_same1(const shape *k, const geom_point q[4]) {
+  shape_trace tr;
+  shape_set_exact_only(1);
+  shape_choice ce = shape_decide(k, q[0], q[1], q[2], q[3], &tr);
+  int se[3] = {shape_support(k, q[0], q[1]), shape_support(k, q[1], q[2]),
+               shape_support(k, q[2], q[0])}, sup[3], t[3];
+  int sq = shape_quick_supports(k, q, sup), hq = shape_quick_homothet(k, se, q, t);
+  shape_set_exact_only(0);
+  assert_int_equal(sq, -1);   /* the exact-only mode takes no quick answer */
+  assert_int_equal(hq, -1);
+  if (shape_quick_supports(k, q, sup) == 0)
+    for (int r = 0; r < 3; r++) assert_int_equal(sup[r], se[r]);
+  if (se[0] == se[1] || se[1] == se[2] || se[2] == se[0]) return;
+  tquick_tries++;
+  int c = shape_quick_homothet(k, se, q, t);
+  if (c < 0) return;
+  tquick_answers++;
+  if (c != (int)ce || tr.rounding || memcmp(t, tr.contact, sizeof t) != 0)
+    fail_msg("quick %d vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", c, ce, q[0].x, q[0].y,
+             q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y);
+}
+
+/* Every rotation of q (each is a decision of its own). */
+static void tquick_same(const shape *k, const geom_point q[4]) {
+  for (int r = 0; r < 4; r++) {
+    geom_point p[4] = {q[r], q[(r + 1) % 4], q[(r + 2) % 4], q[(r + 3) % 4]};
+    tquick_same1(k, p);
+  }
+}
+
+/* Four sites on the homothet c + s k at boundary parameters u (edge floor(u),
+** fraction u - floor(u), a corner when 0), sorted: anticlockwise; the last
+** nudged by `nudge` ulps in x.  0 when they are not strictly convex. */
+static int tquick_on_homothet(testutil_rng *rng, const shape *k, geom_point q[4], int nudge) {
+  double u[4], c = testutil_uniform(rng) * 8 - 4, s = 0.5 + testutil_uniform(rng) * 4;
+  for (int r = 0; r < 4; r++) {
+    u[r] = testutil_uniform(rng) * k->n;
+    if (testutil_next(rng) % 3 == 0) u[r] = floor(u[r]);   /* a corner of the homothet */
+  }
+  for (int i = 1; i < 4; i++)
+    for (int j = i; j > 0 && u[j - 1] > u[j]; j--) {
+      double x = u[j];
+      u[j] = u[j - 1], u[j - 1] = x;
+    }
+  for (int r = 0; r < 4; r++) {
+    int i = (int)u[r];
+    double f = u[r] - i;
+    geom_point a = k->v[i], b = k->v[(i + 1) % k->n];
+    q[r] = (geom_point){c + s * (a.x + f * (b.x - a.x)), c * 0.5 + s * (a.y + f * (b.y - a.y))};
+  }
+  for (int i = 0; i < nudge; i++) q[3].x = nextafter(q[3].x, 1e300);
+  for (int i = 0; i > nudge; i--) q[3].x = nextafter(q[3].x, -1e300);
+  return tshape_convex(q);
+}
+
+static void test_quick_exact(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "diamond", "triangle", "hexagon", "octagon",
+                                      "ngon:7", "ngon:16", "poly:0 0;3 1;4 4;1 3",
+                                      "poly:0.1 0.2;3.3 1.1;4 4.7;0.9 3.9;-0.7 1.3"};
+  testutil_rng rng = {2027};
+  for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
+    shape *k = tshape_get(specs[si]);
+    geom_point q[4];
+    tquick_answers = tquick_tries = 0;
+    for (int it = 0; it < 400; it++) {
+      testutil_convex_quad(&rng, q);
+      tquick_same(k, q);
+    }
+    /* Random quadrilaterals are the quick path's case. */
+    assert_true(tquick_answers > tquick_tries * 9 / 10);
+    long a0 = tquick_answers, t0 = tquick_tries;
+    for (int it = 0; it < 400; it++) {
+      if (tquick_on_homothet(&rng, k, q, it % 5 - 2)) tquick_same(k, q);
+      if (tshape_grid_quad(&rng, 3 + it % 6, it % 2 ? 0x1p-90 : 0x1p90, 0, q)) tquick_same(k, q);
+      if (tshape_edge_quad(&rng, k, q)) tquick_same(k, q);
+      testutil_convex_quad(&rng, q);
+      for (int r = 0; r < 4; r++) q[r] = (geom_point){1e6 + 0x1p-30 * q[r].x, 1e6 + 0x1p-30 * q[r].y};
+      if (tshape_convex(q)) tquick_same(k, q);
+    }
+    printf("quick   %-26s random: answered %ld of %ld; adversarial: %ld of %ld\n", specs[si], a0,
+           t0, tquick_answers - a0, tquick_tries - t0);
+    shape_free(k);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_filter_exact),
+    cmocka_unit_test(test_quick_exact),
     cmocka_unit_test(test_rotations_random),
     cmocka_unit_test(test_rotations_grid),
     cmocka_unit_test(test_oracle),

@@ -1,0 +1,251 @@
+/*
+** shape_quick.c: the quick polygon decision.  The support vertices and the
+** circumscribing homothet's test of geom/shape.c, computed in straight-line
+** doubles with a proven error bound on a per-shape table; at the first sign
+** the bound cannot certify as non-zero it gives up, and shape.c takes its
+** filtered-exact path, so every answer is that path's answer.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include "shape_internal.h"
+
+/* ---- why a quick answer is shape.c's answer ---------------------------
+**
+** Signs.  Every value below is a tree of +, -, * over inputs, differences
+** of two inputs (one rounded leaf) and the kept det3h runs of
+** shape_arith.c, with the twin computed beside it; so the argument at the
+** top of shape_arith.c bounds its error by (2k + 2) u t for any k at least
+** the tree's rounding count, and a value beyond that bound has the exact
+** value's sign.  The counts: a difference 1; cross(e, d) and w = cross(P -
+** A, e) (two products of differences, one subtraction) 5; cross(e_i, e_j)
+** 5; det3w = -w_B X_ik + w_C X_ij, 13; det4 = w_B M + w_C M' + w_P M'' (M
+** the kept det3h, count at most kmax), kmax + 9.  Underflow: every site and
+** shape coordinate is 0 or of magnitude in [2^-100, 2^100] (checked per
+** call for the sites, by geom_polygon_check for the shape), so each is a
+** multiple of 2^-152 and every non-zero difference is at least 2^-152; a
+** non-zero twin of a product of two differences is at least 2^-304, a
+** det3h twin at least 2^-504 (its products multiply two differences by an
+** h of twin at least 2^-200), and every product in these trees whose
+** factors' twins are non-zero has twin at least 2^-808 > 2^-1000: none
+** underflows (the kept runs are checked unpoisoned).  Overflow makes a
+** value or twin infinite or NaN, whose comparison fails: the sign is
+** uncertain.
+**
+** Decisions.  shape.c reads every predicate under the perturbation (the
+** value's sign, or the eps coefficient's when the value is 0).  A certain
+** sign is non-zero, so it is the perturbed sign too; each step below then
+** gives shape.c's result:
+** - support(P, Q) is the start s of the first edge not before Q - P: the
+**   perturbed cross(e_j, Q - P) changes sign from + to - exactly once
+**   going round the edges (it is never 0, P != Q), from e_{s-1} to e_s,
+**   so a certain + at s - 1 and a certain - at s find it, whatever search
+**   shape.c uses.
+** - The contact triple: a triple t whose det3h is not 0, whose det3w has
+**   det3h's sign (s > 0) and whose six slacks (each point against the two
+**   edges next to its own) are certainly positive passes shape.c's contact
+**   test (which skips two slacks it proves positive); every passing triple
+**   gives the same homothet H, and each point lies strictly inside its
+**   edge of H (both neighbouring slacks positive), so on no other edge:
+**   t is the only passing triple, the one shape.c's search returns.  How
+**   the quick search reaches t does not matter.
+** - D: shape.c answers AC at the first arc edge (from C's contact edge to
+**   A's) with a negative slack, else BD when none is 0; the same edges in
+**   the same order, each certain, give the same answer. */
+
+typedef struct shape_quick {
+  int n;
+  double *ex, *ey;       /* edge i's direction fl(k_{i+1} - k_i) */
+  double *xv, *xt;       /* cross(e_i, e_j) and its twin, [i n + j] */
+  shape_memo_flat_view m;
+  double bdet4;          /* (2 (kmax + 9) + 2) u */
+} shape_quick;
+
+#define SHAPE_Q_U 0x1p-53
+#define SHAPE_Q_BCROSS (12 * SHAPE_Q_U)   /* count 5 */
+#define SHAPE_Q_BDET3W (28 * SHAPE_Q_U)   /* count 13 */
+
+void shape_quick_free(shape *k) {
+  if (k->quick == NULL) return;
+  free(k->quick->ex);
+  free(k->quick->xv);
+  free(k->quick);
+  k->quick = NULL;
+}
+
+int shape_quick_build(shape *k) {
+  shape_memo_flat_view m;
+  if (k->kind != SHAPE_POLYGON || shape_memo_flat(k, &m) != 0) return 0;
+  int n = k->n;
+  shape_quick *q = calloc(1, sizeof *q);
+  double *e = malloc(2 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
+  if (q == NULL || e == NULL || x == NULL) {
+    free(q);
+    free(e);
+    free(x);
+    return -1;
+  }
+  *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .xv = x, .xt = x + n * n, .m = m,
+                     .bdet4 = (2.0 * (m.kmax + 9) + 2) * SHAPE_Q_U};
+  for (int i = 0; i < n; i++) {
+    q->ex[i] = k->v[(i + 1) % n].x - k->v[i].x;
+    q->ey[i] = k->v[(i + 1) % n].y - k->v[i].y;
+  }
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) {
+      q->xv[i * n + j] = q->ex[i] * q->ey[j] - q->ey[i] * q->ex[j];
+      q->xt[i * n + j] = fabs(q->ex[i] * q->ey[j]) + fabs(q->ey[i] * q->ex[j]);
+    }
+  k->quick = q;
+  return 0;
+}
+
+/* 1 when x is 0 or of magnitude in [2^-100, 2^100] (the underflow argument). */
+static inline int shape_q_coord(double x) {
+  double a = fabs(x);
+  return (a == 0) | ((a >= 0x1p-100) & (a <= 0x1p100));
+}
+
+/* The certain sign of a value v with twin t and bound factor b, or 0. */
+static inline int shape_q_sign(double v, double t, double b) {
+  double bound = b * t;
+  return (v > bound) - (-v > bound);
+}
+
+/* The certain sign of cross(e_j, (dx, dy)), or 0. */
+static inline int shape_q_cross(const shape_quick *q, int j, double dx, double dy) {
+  double a = q->ex[j] * dy, b = q->ey[j] * dx;
+  return shape_q_sign(a - b, fabs(a) + fabs(b), SHAPE_Q_BCROSS);
+}
+
+/* support(P, Q) for (dx, dy) = Q - P: the s with a certain + at s - 1 and
+** a certain - at s, or -1 (no such s: a sign uncertain where it matters). */
+static int shape_q_support(const shape_quick *q, double dx, double dy) {
+  int n = q->n, prev = shape_q_cross(q, n - 1, dx, dy);
+  for (int j = 0; j < n; j++) {
+    int c = shape_q_cross(q, j, dx, dy);
+    if (prev > 0 && c < 0) return j;
+    prev = c;
+  }
+  return -1;
+}
+
+int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
+  const shape_quick *q = k->quick;
+  if (q == NULL || shape_exact_only()) return -1;
+  int ok = 1;
+  for (int r = 0; r < 3; r++) ok &= shape_q_coord(p[r].x) & shape_q_coord(p[r].y);
+  if (!ok) return -1;
+  for (int r = 0; r < 3; r++) {
+    geom_point a = p[r], b = p[(r + 1) % 3];
+    sup[r] = shape_q_support(q, b.x - a.x, b.y - a.y);
+    if (sup[r] < 0) return -1;
+  }
+  return 0;
+}
+
+/* ---- the homothet ---------------------------------------------------------
+**
+** Rows (e, h, w) of (t0, A), (t1, B), (t2, C), w relative to A: w_A = 0,
+** so det3w = -w_B cross(e_t0, e_t2) + w_C cross(e_t0, e_t1) and, for a
+** fourth row (m, P), det4 = w_B M(t0, t2, m) - w_C M(t0, t1, m) + w_P
+** M(t0, t1, t2) (shape_arith.c's expansions, with the origin A: a column
+** operation, the same determinants). */
+
+typedef struct shape_q_tri {
+  const shape_quick *q;
+  int t[3], d3;
+  double ax, ay;          /* A */
+  double wb, wbt, wc, wct; /* w_B, w_C and their twins */
+} shape_q_tri;
+
+/* w = cross(P - A, e_j) and its twin. */
+static inline double shape_q_w(const shape_q_tri *T, int j, geom_point p, double *tw) {
+  double dx = p.x - T->ax, dy = p.y - T->ay;
+  double a = dx * T->q->ey[j], b = dy * T->q->ex[j];
+  *tw = fabs(a) + fabs(b);
+  return a - b;
+}
+
+/* The certain sign of P's slack c_m - n_m.P on edge m, or 0. */
+static int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
+  const shape_quick *q = T->q;
+  size_t n = (size_t)q->n, t0 = (size_t)T->t[0] * n;
+  size_t i1 = (t0 + (size_t)T->t[2]) * n + (size_t)m, i2 = (t0 + (size_t)T->t[1]) * n + (size_t)m;
+  size_t i3 = (t0 + (size_t)T->t[1]) * n + (size_t)T->t[2];
+  double wpt, wp = shape_q_w(T, m, p, &wpt);
+  double v1 = T->wb * q->m.val[i1], v2 = T->wc * q->m.val[i2], v3 = wp * q->m.val[i3];
+  double tw = T->wbt * q->m.twin[i1] + T->wct * q->m.twin[i2] + wpt * q->m.twin[i3];
+  return -shape_q_sign(v1 - v2 + v3, tw, q->bdet4) * T->d3;
+}
+
+/* Test triple T->t: 1 when it is the contact triple, 0 with *move set to
+** the first violation (point r beyond its edge's neighbour on side side,
+** bit 2 r + (side > 0)) among those in movable, or -1 (a sign uncertain,
+** no homothet with s > 0, or no violation in movable). */
+static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
+  const shape_quick *q = T->q;
+  int n = q->n, *t = T->t, viol = 0;
+  T->d3 = q->m.sgn[((size_t)t[0] * (size_t)n + (size_t)t[1]) * (size_t)n + (size_t)t[2]];
+  if (T->d3 == 0) return -1;
+  T->wb = shape_q_w(T, t[1], p[1], &T->wbt);
+  T->wc = shape_q_w(T, t[2], p[2], &T->wct);
+  double x02 = q->xv[t[0] * n + t[2]], x01 = q->xv[t[0] * n + t[1]];
+  double v = -T->wb * x02 + T->wc * x01;
+  double tw = T->wbt * q->xt[t[0] * n + t[2]] + T->wct * q->xt[t[0] * n + t[1]];
+  if (shape_q_sign(v, tw, SHAPE_Q_BDET3W) != T->d3) return -1;
+  for (int bit = 0; bit < 6; bit++) {
+    int r = bit / 2, side = bit % 2 ? 1 : -1, m = (t[r] + side + n) % n;
+    int s = shape_q_slack(T, m, p[r]);
+    if (s < 0 && (movable >> bit & 1)) {
+      *move = bit;
+      return 0;
+    }
+    if (s == 0) return -1;
+    viol |= s < 0;
+  }
+  return viol ? -1 : 1;
+}
+
+/* The contact triple into T: from the middles of the ranges, each failed
+** test moves the first violating point that can stay in its range one edge
+** towards the edge it lies beyond; 0, or -1 (uncertain, stalled, too many
+** steps). */
+static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
+                            const geom_point p[3]) {
+  int n = T->q->n, start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3];
+  for (int r = 0; r < 3; r++) {
+    len[r] = shape_range(k, start[r], sup[r]);
+    off[r] = len[r] / 2;
+  }
+  for (int step = 0; step < 2 * n; step++) {
+    int movable = 0, move = 0;
+    for (int r = 0; r < 3; r++) {
+      T->t[r] = (start[r] + off[r]) % n;
+      movable |= (off[r] > 0) << 2 * r | (off[r] + 1 < len[r]) << (2 * r + 1);
+    }
+    int ok = shape_q_contact(T, p, movable, &move);
+    if (ok != 0) return ok > 0 ? 0 : -1;
+    off[move / 2] += move % 2 ? 1 : -1;
+  }
+  return -1;
+}
+
+int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4], int t[3]) {
+  shape_q_tri T = {.q = k->quick, .ax = p[0].x, .ay = p[0].y};
+  int ok = T.q != NULL && !shape_exact_only();
+  for (int r = 0; r < 4; r++) ok &= shape_q_coord(p[r].x) & shape_q_coord(p[r].y);
+  if (!ok) return -1;
+  if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
+  int n = T.q->n, ans = SHAPE_BD;
+  for (int m = T.t[2];; m = (m + 1) % n) {
+    int s = shape_q_slack(&T, m, p[3]);
+    if (s == 0) return -1;
+    if (s < 0) {
+      ans = SHAPE_AC;
+      break;
+    }
+    if (m == T.t[0]) break;
+  }
+  for (int r = 0; r < 3; r++) t[r] = T.t[r];
+  return ans;
+}
