@@ -371,10 +371,6 @@ static int shape_contact_ok(const shape *k, const int t[3], const geom_point p[3
   return *viol ? 0 : d3;
 }
 
-int shape_range(const shape *k, int from, int to) {
-  return ((to - from) % k->n + k->n) % k->n;
-}
-
 /* The contact triple by trying every triple of the ranges: det3's sign, or 0. */
 static int shape_contacts_all(const shape *k, const int start[3], const int len[3],
                               const geom_point p[3], int t[3]) {
@@ -459,10 +455,11 @@ static shape_choice shape_homothet_decide(const shape *k, const int t[3], int d3
 ** away from the other branch (which lies on B's side of the chord), so the
 ** sign of f alone decides.  Cone sides are never antiparallel: a strictly
 ** convex polygon's corner has an angle strictly between 0 and pi. */
-static shape_choice shape_corner_decide(const shape *k, int c, const geom_point p[4],
+static shape_choice shape_corner_decide(const shape *k, int c, const geom_point p[4], int quick,
                                         shape_trace *tr) {
   shape_args g = {.K = k, .p = {p[0], p[1], p[2]}, .o = p[3], .corner = c};
-  int level = 0, s = shape_eps_sign(SHAPE_PROG_CORNER, g, &level);
+  int level = 0, s = quick ? shape_quick_corner(k, c, p) : 2;
+  if (s == 2) s = shape_eps_sign(SHAPE_PROG_CORNER, g, &level);
   if (tr) *tr = (shape_trace){.rounding = 1, .corner = c, .contact = {-1, -1, -1}, .level = level};
   return s < 0 ? SHAPE_BD : s > 0 ? SHAPE_AC : SHAPE_EITHER;
 }
@@ -470,20 +467,20 @@ static shape_choice shape_corner_decide(const shape *k, int c, const geom_point 
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
 static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], shape_trace *tr) {
-  int sup[3], t[3];
-  if (shape_quick_supports(k, p, sup) != 0) {
+  int sup[3], t[3], quick = shape_quick_ready(k, p);
+  if (!quick || shape_quick_supports(k, p, sup) != 0) {
     sup[0] = shape_support(k, p[0], p[1]);
     sup[1] = shape_support(k, p[1], p[2]);
     sup[2] = shape_support(k, p[2], p[0]);
   }
   /* All three cannot coincide: the three directions span the plane
   ** positively, and a corner's normal cone is narrower than pi. */
-  if (sup[0] == sup[1] || sup[0] == sup[2]) return shape_corner_decide(k, sup[0], p, tr);
-  if (sup[1] == sup[2]) return shape_corner_decide(k, sup[1], p, tr);
-  int quick = shape_quick_homothet(k, sup, p, t);
-  if (quick >= 0) {
+  if (sup[0] == sup[1] || sup[0] == sup[2]) return shape_corner_decide(k, sup[0], p, quick, tr);
+  if (sup[1] == sup[2]) return shape_corner_decide(k, sup[1], p, quick, tr);
+  int ans = quick ? shape_quick_homothet(k, sup, p, t) : -1;
+  if (ans >= 0) {
     if (tr) memcpy(tr->contact, t, sizeof t);
-    return (shape_choice)quick;
+    return (shape_choice)ans;
   }
   int d3 = shape_contacts(k, sup, p, t);
   if (d3 == 0) {

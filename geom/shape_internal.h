@@ -79,8 +79,10 @@ FLIPLAB_INTERNAL int shape_det3h_sign(const shape *K, const int e[3]);
 ** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
 FLIPLAB_INTERNAL int shape_contacts(const shape *k, const int sup[3], const geom_point p[3], int t[3]);
 
-/* The number of edges in the cyclic range [from, to), from != to (shape.c). */
-FLIPLAB_INTERNAL int shape_range(const shape *k, int from, int to);
+/* The number of edges in the cyclic range [from, to), from != to, both in [0, n). */
+static inline int shape_range(const shape *k, int from, int to) {
+  return to > from ? to - from : to - from + k->n;
+}
 
 /* The kept shape-only determinants of a polygon (shape_arith.c): built by
 ** shape.c once a polygon is checked (0, or -1 out of memory; none for an
@@ -104,6 +106,11 @@ FLIPLAB_INTERNAL int shape_memo_flat(const shape *k, shape_memo_flat_view *out);
 ** otherwise), freed with the shape. */
 FLIPLAB_INTERNAL int shape_quick_build(shape *k);
 FLIPLAB_INTERNAL void shape_quick_free(shape *k);
+/* 1 when the quick path may be asked about the sites p[0..3]: k has a
+** table, the exact-only test mode is off, and every coordinate is 0 or of
+** magnitude at least 2^-100 (its underflow argument); else 0.  The three
+** verbs below require it. */
+FLIPLAB_INTERNAL int shape_quick_ready(const shape *k, const geom_point p[4]);
 /* The support vertices s_AB, s_BC, s_CA of p[0..2] into sup: 0 when every
 ** sign they rest on is certain (they are then shape_support's), else -1. */
 FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]);
@@ -112,5 +119,8 @@ FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3],
 ** into t, or -1 when some sign is not certain (then nothing is known). */
 FLIPLAB_INTERNAL int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4],
                                           int t[3]);
+/* The certain sign of SHAPE_PROG_CORNER of corner c, p[0..2] about o = p[3]
+** (shape.c's rounding-shape test), or 2. */
+FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
 
 #endif

@@ -16,12 +16,13 @@
 ** shape_arith.c, with the twin computed beside it; so the argument at the
 ** top of shape_arith.c bounds its error by (2k + 2) u t for any k at least
 ** the tree's rounding count, and a value beyond that bound has the exact
-** value's sign.  The counts: a difference 1; cross(e, d) and w = cross(P -
+** value's sign (values that only choose where to look are not trusted:
+** the signs the answer rests on are certified).  The counts: a difference 1; cross(e, d) and w = cross(P -
 ** A, e) (two products of differences, one subtraction) 5; cross(e_i, e_j)
 ** 5; det3w = -w_B X_ik + w_C X_ij, 13; det4 = w_B M + w_C M' + w_P M'' (M
 ** the kept det3h, count at most kmax), kmax + 9.  Underflow: every site and
-** shape coordinate is 0 or of magnitude in [2^-100, 2^100] (checked per
-** call for the sites, by geom_polygon_check for the shape), so each is a
+** shape coordinate is 0 or of magnitude at least 2^-100 (shape_quick_ready
+** checks the sites, geom_polygon_check the shape), so each is a
 ** multiple of 2^-152 and every non-zero difference is at least 2^-152; a
 ** non-zero twin of a product of two differences is at least 2^-304, a
 ** det3h twin at least 2^-504 (its products multiply two differences by an
@@ -41,13 +42,15 @@
 **   so a certain + at s - 1 and a certain - at s find it, whatever search
 **   shape.c uses.
 ** - The contact triple: a triple t whose det3h is not 0, whose det3w has
-**   det3h's sign (s > 0) and whose six slacks (each point against the two
-**   edges next to its own) are certainly positive passes shape.c's contact
-**   test (which skips two slacks it proves positive); every passing triple
-**   gives the same homothet H, and each point lies strictly inside its
-**   edge of H (both neighbouring slacks positive), so on no other edge:
-**   t is the only passing triple, the one shape.c's search returns.  How
-**   the quick search reaches t does not matter.
+**   det3h's sign (s > 0) and whose slacks (each point against the two
+**   edges next to its own) are certainly positive, but for those that
+**   shape.c's contact test skips because it proves them positive under the
+**   perturbation (above shape_contact_ok), passes that test, with all six
+**   perturbed slacks positive.  Every passing triple gives the same
+**   homothet H (of the turned shape), and each point lies strictly inside
+**   its edge of H (both neighbouring slacks positive), so on no other
+**   edge: t is the only passing triple, the one shape.c's search returns.
+**   How the quick search reaches t does not matter.
 ** - D: shape.c answers AC at the first arc edge (from C's contact edge to
 **   A's) with a negative slack, else BD when none is 0; the same edges in
 **   the same order, each certain, give the same answer. */
@@ -99,10 +102,14 @@ int shape_quick_build(shape *k) {
   return 0;
 }
 
-/* 1 when x is 0 or of magnitude in [2^-100, 2^100] (the underflow argument). */
-static inline int shape_q_coord(double x) {
-  double a = fabs(x);
-  return (a == 0) | ((a >= 0x1p-100) & (a <= 0x1p100));
+int shape_quick_ready(const shape *k, const geom_point p[4]) {
+  if (k->quick == NULL || shape_exact_only()) return 0;
+  int ok = 1;
+  for (int r = 0; r < 4; r++) {
+    double x = fabs(p[r].x), y = fabs(p[r].y);
+    ok &= ((x == 0) | (x >= 0x1p-100)) & ((y == 0) | (y >= 0x1p-100));
+  }
+  return ok;
 }
 
 /* The certain sign of a value v with twin t and bound factor b, or 0. */
@@ -117,26 +124,27 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
   return shape_q_sign(a - b, fabs(a) + fabs(b), SHAPE_Q_BCROSS);
 }
 
-/* support(P, Q) for (dx, dy) = Q - P: the s with a certain + at s - 1 and
-** a certain - at s, or -1 (no such s: a sign uncertain where it matters). */
+/* support(P, Q) for (dx, dy) = Q - P: the s where cross(e_j, Q - P)
+** changes sign from + at s - 1 to - at s, found on the values and then
+** certified at s - 1 and s; -1 when there is no such s or a sign there is
+** not certain. */
 static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  int n = q->n, prev = shape_q_cross(q, n - 1, dx, dy);
-  for (int j = 0; j < n; j++) {
-    int c = shape_q_cross(q, j, dx, dy);
-    if (prev > 0 && c < 0) return j;
+  int n = q->n, j = 0;
+  double prev = q->ex[n - 1] * dy - q->ey[n - 1] * dx;
+  for (; j < n; j++) {
+    double c = q->ex[j] * dy - q->ey[j] * dx;
+    if (prev > 0 && c < 0) break;
     prev = c;
   }
-  return -1;
+  if (j == n) return -1;
+  int i = j > 0 ? j - 1 : n - 1;
+  return shape_q_cross(q, i, dx, dy) > 0 && shape_q_cross(q, j, dx, dy) < 0 ? j : -1;
 }
 
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
   const shape_quick *q = k->quick;
-  if (q == NULL || shape_exact_only()) return -1;
-  int ok = 1;
-  for (int r = 0; r < 3; r++) ok &= shape_q_coord(p[r].x) & shape_q_coord(p[r].y);
-  if (!ok) return -1;
   for (int r = 0; r < 3; r++) {
-    geom_point a = p[r], b = p[(r + 1) % 3];
+    geom_point a = p[r], b = p[r < 2 ? r + 1 : 0];
     sup[r] = shape_q_support(q, b.x - a.x, b.y - a.y);
     if (sup[r] < 0) return -1;
   }
@@ -154,8 +162,10 @@ int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
 typedef struct shape_q_tri {
   const shape_quick *q;
   int t[3], d3;
-  double ax, ay;          /* A */
+  double ax, ay;           /* A */
   double wb, wbt, wc, wct; /* w_B, w_C and their twins */
+  const double *m1, *m1t, *m2, *m2t;   /* M(t0, t2, .), M(t0, t1, .) and twins */
+  double m3, m3t;          /* M(t0, t1, t2) */
 } shape_q_tri;
 
 /* w = cross(P - A, e_j) and its twin. */
@@ -167,34 +177,44 @@ static inline double shape_q_w(const shape_q_tri *T, int j, geom_point p, double
 }
 
 /* The certain sign of P's slack c_m - n_m.P on edge m, or 0. */
-static int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
-  const shape_quick *q = T->q;
-  size_t n = (size_t)q->n, t0 = (size_t)T->t[0] * n;
-  size_t i1 = (t0 + (size_t)T->t[2]) * n + (size_t)m, i2 = (t0 + (size_t)T->t[1]) * n + (size_t)m;
-  size_t i3 = (t0 + (size_t)T->t[1]) * n + (size_t)T->t[2];
+static inline int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
   double wpt, wp = shape_q_w(T, m, p, &wpt);
-  double v1 = T->wb * q->m.val[i1], v2 = T->wc * q->m.val[i2], v3 = wp * q->m.val[i3];
-  double tw = T->wbt * q->m.twin[i1] + T->wct * q->m.twin[i2] + wpt * q->m.twin[i3];
-  return -shape_q_sign(v1 - v2 + v3, tw, q->bdet4) * T->d3;
+  double v = T->wb * T->m1[m] - T->wc * T->m2[m] + wp * T->m3;
+  double tw = T->wbt * T->m1t[m] + T->wct * T->m2t[m] + wpt * T->m3t;
+  return -shape_q_sign(v, tw, T->q->bdet4) * T->d3;
+}
+
+/* Triple T->t's determinants: det3h's sign (0: no triple) and the rows of M. */
+static void shape_q_rows(shape_q_tri *T) {
+  const shape_quick *q = T->q;
+  size_t n = (size_t)q->n, b1 = ((size_t)T->t[0] * n + (size_t)T->t[2]) * n;
+  size_t b2 = ((size_t)T->t[0] * n + (size_t)T->t[1]) * n;
+  T->m1 = q->m.val + b1, T->m1t = q->m.twin + b1;
+  T->m2 = q->m.val + b2, T->m2t = q->m.twin + b2;
+  T->m3 = T->m2[T->t[2]], T->m3t = T->m2t[T->t[2]];
+  T->d3 = q->m.sgn[b2 + (size_t)T->t[2]];
 }
 
 /* Test triple T->t: 1 when it is the contact triple, 0 with *move set to
 ** the first violation (point r beyond its edge's neighbour on side side,
 ** bit 2 r + (side > 0)) among those in movable, or -1 (a sign uncertain,
-** no homothet with s > 0, or no violation in movable). */
+** no homothet with s > 0, or no violation in movable).  The two checks
+** shape.c settles without a determinant are skipped as there. */
 static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
   const shape_quick *q = T->q;
   int n = q->n, *t = T->t, viol = 0;
-  T->d3 = q->m.sgn[((size_t)t[0] * (size_t)n + (size_t)t[1]) * (size_t)n + (size_t)t[2]];
+  shape_q_rows(T);
   if (T->d3 == 0) return -1;
   T->wb = shape_q_w(T, t[1], p[1], &T->wbt);
   T->wc = shape_q_w(T, t[2], p[2], &T->wct);
-  double x02 = q->xv[t[0] * n + t[2]], x01 = q->xv[t[0] * n + t[1]];
-  double v = -T->wb * x02 + T->wc * x01;
+  double v = -T->wb * q->xv[t[0] * n + t[2]] + T->wc * q->xv[t[0] * n + t[1]];
   double tw = T->wbt * q->xt[t[0] * n + t[2]] + T->wct * q->xt[t[0] * n + t[1]];
   if (shape_q_sign(v, tw, SHAPE_Q_BDET3W) != T->d3) return -1;
+  /* bit 2 r + (side > 0): the neighbouring point on that side, its edge */
+  static const signed char nb[6] = {2, 1, 0, 2, 1, 0};
   for (int bit = 0; bit < 6; bit++) {
-    int r = bit / 2, side = bit % 2 ? 1 : -1, m = (t[r] + side + n) % n;
+    int r = bit >> 1, m = bit & 1 ? (t[r] == n - 1 ? 0 : t[r] + 1) : (t[r] == 0 ? n - 1 : t[r] - 1);
+    if (m == t[nb[bit]]) continue;
     int s = shape_q_slack(T, m, p[r]);
     if (s < 0 && (movable >> bit & 1)) {
       *move = bit;
@@ -220,7 +240,7 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
   for (int step = 0; step < 2 * n; step++) {
     int movable = 0, move = 0;
     for (int r = 0; r < 3; r++) {
-      T->t[r] = (start[r] + off[r]) % n;
+      T->t[r] = start[r] + off[r] < n ? start[r] + off[r] : start[r] + off[r] - n;
       movable |= (off[r] > 0) << 2 * r | (off[r] + 1 < len[r]) << (2 * r + 1);
     }
     int ok = shape_q_contact(T, p, movable, &move);
@@ -232,12 +252,9 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
 
 int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4], int t[3]) {
   shape_q_tri T = {.q = k->quick, .ax = p[0].x, .ay = p[0].y};
-  int ok = T.q != NULL && !shape_exact_only();
-  for (int r = 0; r < 4; r++) ok &= shape_q_coord(p[r].x) & shape_q_coord(p[r].y);
-  if (!ok) return -1;
   if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
   int n = T.q->n, ans = SHAPE_BD;
-  for (int m = T.t[2];; m = (m + 1) % n) {
+  for (int m = T.t[2];; m = m == n - 1 ? 0 : m + 1) {
     int s = shape_q_slack(&T, m, p[3]);
     if (s == 0) return -1;
     if (s < 0) {
@@ -248,4 +265,38 @@ int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4]
   }
   for (int r = 0; r < 3; r++) t[r] = T.t[r];
   return ans;
+}
+
+/* ---- the rounding shape ---------------------------------------------------
+**
+** shape_arith.c's corner program with o = D: u = e_c, v = k_{c-1} - k_c =
+** -e_{c-1} (a rounded difference is odd in its order), d = P - D, X =
+** cross(d, v), Y = cross(u, d) (count 5), rows (X Y, X, Y) of A, B, C
+** (count 12 for X Y) and their det3, m0 (m4 m8 - m5 m7) - m1 (m3 m8 - m5 m6)
+** + m2 (m3 m7 - m4 m6): inner counts 13, 20, 20, products 27, total 29.
+** Degree 8 in differences, so the underflow argument above does not cover
+** the three outer products (their twins may fall to 2^-1216): one below
+** 2^-1000 makes the sign uncertain; the inner ones have twins of at least
+** 2^-912.  A certain sign is the perturbed one, shape_corner_decide's. */
+#define SHAPE_Q_BCORNER (60 * SHAPE_Q_U)
+
+int shape_quick_corner(const shape *k, int c, const geom_point p[4]) {
+  const shape_quick *q = k->quick;
+  int b = c > 0 ? c - 1 : q->n - 1;
+  double ux = q->ex[c], uy = q->ey[c], vx = -q->ex[b], vy = -q->ey[b];
+  double X[3], Xt[3], Y[3], Yt[3], Z[3], Zt[3];
+  for (int r = 0; r < 3; r++) {
+    double dx = p[r].x - p[3].x, dy = p[r].y - p[3].y;
+    double a = dx * vy, e = dy * vx, f = ux * dy, g = uy * dx;
+    X[r] = a - e, Xt[r] = fabs(a) + fabs(e);
+    Y[r] = f - g, Yt[r] = fabs(f) + fabs(g);
+    Z[r] = X[r] * Y[r], Zt[r] = Xt[r] * Yt[r];
+  }
+  double c0 = X[1] * Y[2] - Y[1] * X[2], c0t = Xt[1] * Yt[2] + Yt[1] * Xt[2];
+  double c1 = Z[1] * Y[2] - Y[1] * Z[2], c1t = Zt[1] * Yt[2] + Yt[1] * Zt[2];
+  double c2 = Z[1] * X[2] - X[1] * Z[2], c2t = Zt[1] * Xt[2] + Xt[1] * Zt[2];
+  double t0 = Zt[0] * c0t, t1 = Xt[0] * c1t, t2 = Yt[0] * c2t;
+  if (t0 < 0x1p-1000 || t1 < 0x1p-1000 || t2 < 0x1p-1000) return 2;
+  int s = shape_q_sign(Z[0] * c0 - X[0] * c1 + Y[0] * c2, t0 + t1 + t2, SHAPE_Q_BCORNER);
+  return s != 0 ? s : 2;
 }
