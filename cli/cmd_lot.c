@@ -304,9 +304,10 @@ static int cli_lot_check_segments(const lot_check_result *c, const geom_pslg *in
 static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
                          const rule *r, const geom_pslg *in, const lot_stats *st) {
   lot_check_result c;
+  lot_tie_result tie = {0};   /* unconstrained runs only */
   int constrained = in->nseg || in->nholes;
   if ((constrained ? lot_check_constrained(p, n, tri, ntri, in->seg, in->nseg, r, &c)
-                   : lot_check(p, n, tri, ntri, r, &c)) != 0) {
+                   : lot_check_ties(p, n, tri, ntri, r, &c, &tie)) != 0) {
     printf("check: failed (out of memory)\n");
     return 1;
   }
@@ -320,8 +321,18 @@ static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, siz
            c.not_optimal, c.interior_edges, c.bad_edge[0], c.bad_edge[1]);
     return 1;
   }
-  const char *how = rule_is_delaunay(r) ? "every one passes the exact empty-circle test"
-                                         : "the rule keeps every one";
+  if (tie.not_tie_broken) {
+    printf("check: FAILED: %zu of %zu tied interior edges not as the tie-break settles them "
+           "(first %u-%u): not the rule's one tie-broken LOT\n", tie.not_tie_broken, tie.ties,
+           tie.tie_edge[0], tie.tie_edge[1]);
+    return 1;
+  }
+  char how[160];
+  int len = snprintf(how, sizeof how, "%s", rule_is_delaunay(r)
+                     ? "every one passes the exact empty-circle test" : "the rule keeps every one");
+  if (tie.ties)   /* no ties, no words: the line stays as before */
+    snprintf(how + len, sizeof how - (size_t)len, "; %zu ties, every one as the tie-break "
+             "settles it", tie.ties);
   if (constrained)
     printf("check: ok: constrained, re-verified from scratch: %zu of %zu input segments are "
            "chains of edges (the other %zu lie in removed regions); %zu interior edges, %zu "
@@ -627,7 +638,10 @@ static void cli_lot_constraint_lines(const lot_options *o, const lot_stats *st) 
 
 /* The header, counts, status and time lines. */
 static void cli_lot_summary(const rule *r, const char *desc, const lot_options *o,
-                            const lot_stats *st, double tie_eps) {
+                            const lot *L, double tie_eps) {
+  const lot_stats *st = lot_get_stats(L);
+  int restarted;
+  size_t ties = lot_get_sweep_ties(L, &restarted);
   int flip = o->algorithm == LOT_FLIP, inc = o->algorithm == LOT_INCREMENTAL;
   printf("# fliplab lot: rule %s, %s, %s algorithm%s%s, tie-eps %.3g\n", r->name, desc,
          cli_lot_algorithms[o->algorithm], inc ? ", order " : "",
@@ -636,6 +650,11 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
   if (o->nsegments || o->nholes) cli_lot_constraint_lines(o, st);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
+  if (ties > 0)   /* a polygon's sweep met sites in special position */
+    printf("sweep: %zu ties in special position (%s, then the %llu flips above with the "
+           "tie-break)\n", ties, restarted
+           ? "the polygon sweep's result was no triangulation: the Delaunay sweep's"
+           : "decided by a fixed order", (unsigned long long)st->flips);
   cli_lot_status(st);
   printf(flip ? "time: %.4f s (initial triangulation %.4f s, flips %.4f s)\n"
          : inc ? "time: %.4f s (ordering %.4f s, insertion with flips %.4f s)\n"
@@ -709,7 +728,7 @@ static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rul
     lot_free(L);
     return 2;
   }
-  cli_lot_summary(r, desc, &o, st, a->tie_eps);
+  cli_lot_summary(r, desc, &o, L, a->tie_eps);
   if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, st) != 0) *failed = 1;
   if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
   else if (a->compare == 1 && constrained) rc = cli_lot_compare_ring(p, in, r, t, a, failed);

@@ -4,7 +4,8 @@
 ** triangles, each edge in one or two triangles with opposite directions,
 ** Euler's count), local optimality of every interior edge decided afresh
 ** (rule_eval on the quadrilateral's own points; DT by the exact empty-circle
-** test), the comparison of two triangulations, and each triangle's badness.
+** test) and, for DT and the empty-shape rules, lot's tie-break on every
+** tied edge, the comparison of two triangulations, and each triangle's badness.
 */
 #include <limits.h>
 #include <math.h>
@@ -34,20 +35,52 @@ static int lot_strictly_convex(const geom_point q[4]) {
   return 1;
 }
 
-/* The interior edge u -> v of triangle (u, v, a), v -> u of (v, u, d). */
+/* Is p after q in the plane's lexicographic order (x, then y)? */
+static int lot_lex_after(geom_point p, geom_point q) {
+  return p.x > q.x || (p.x == q.x && p.y > q.y);
+}
+
+/* A tie at the strictly convex u d v a (diagonal u-v) against lot's
+** tie-break (docs/lot.md, Ties): the greatest of the four vertices counts
+** as outside, so the kept diagonal is the one not incident to it; 1 when
+** the greatest is u or v.  Written from the rule's statement, not from the
+** algorithms' code. */
+static int lot_tie_wrong(const geom_point *p, uint32_t u, uint32_t v, uint32_t a, uint32_t d) {
+  const uint32_t q[4] = {u, v, a, d};
+  int g = 0;
+  for (int i = 1; i < 4; i++)
+    if (lot_lex_after(p[q[i]], p[q[g]])) g = i;
+  return g < 2;
+}
+
+/* The interior edge u -> v of triangle (u, v, a), v -> u of (v, u, d).
+** DT and the empty-shape rules have lot's tie-break: their ties (the four
+** sites on one circle, one shape) are counted and checked against it. */
 static void lot_check_edge(const geom_point *p, uint32_t u, uint32_t v, uint32_t a,
-                           uint32_t d, const rule *r, lot_check_result *out) {
+                           uint32_t d, const rule *r, lot_check_result *out,
+                           lot_tie_result *tr) {
   const geom_point q[4] = {p[u], p[d], p[v], p[a]};   /* anticlockwise; diagonal q0 q2 */
   int convex = lot_strictly_convex(q);
   out->decided += convex;
-  int bad;
-  if (rule_is_delaunay(r))
-    bad = geom_incircle(p[u], p[v], p[a], p[d]) > 0;   /* d strictly inside circle uva */
-  else
-    bad = convex && rule_eval(r, q, NULL, NULL) == RULE_BD;
+  int bad, tie;
+  if (rule_is_delaunay(r)) {
+    int in = geom_incircle(p[u], p[v], p[a], p[d]);
+    bad = in > 0;   /* d strictly inside circle uva */
+    tie = convex && in == 0;
+  } else {
+    rule_choice ch = convex ? rule_eval(r, q, NULL, NULL) : RULE_EITHER;
+    bad = ch == RULE_BD;
+    tie = convex && ch == RULE_EITHER && rule_is_shape(r);
+  }
   if (bad && out->not_optimal++ == 0) {
     out->bad_edge[0] = u < v ? u : v;
     out->bad_edge[1] = u < v ? v : u;
+  }
+  if (!tie || tr == NULL) return;
+  tr->ties++;
+  if (lot_tie_wrong(p, u, v, a, d) && tr->not_tie_broken++ == 0) {
+    tr->tie_edge[0] = u < v ? u : v;
+    tr->tie_edge[1] = u < v ? v : u;
   }
 }
 
@@ -58,7 +91,7 @@ static int lot_u64_cmp(const void *x, const void *y);
 ** out->valid for the structure alone; *vertices: the points used. */
 static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
                          const rule *r, const uint64_t *skip, size_t nskip,
-                         lot_check_result *out, size_t *vertices) {
+                         lot_check_result *out, lot_tie_result *tie, size_t *vertices) {
   lot_dedge *e = malloc(3 * ntri * sizeof *e);
   unsigned char *used = calloc(n ? n : 1, 1);
   if (e == NULL || used == NULL) {
@@ -93,7 +126,7 @@ static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, siz
       else {
         out->interior_edges++;
         if (skip == NULL || bsearch(&e[i].key, skip, nskip, sizeof *skip, lot_u64_cmp) == NULL)
-          lot_check_edge(p, u, v, a, d, r, out);
+          lot_check_edge(p, u, v, a, d, r, out, tie);
       }
     }
     i = j;
@@ -106,13 +139,19 @@ static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, siz
   return 0;
 }
 
-int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-              const rule *r, lot_check_result *out) {
+int lot_check_ties(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                   const rule *r, lot_check_result *out, lot_tie_result *tie) {
   *out = (lot_check_result){0};
+  if (tie != NULL) *tie = (lot_tie_result){0};
   size_t vertices;
-  if (lot_check_run(p, n, tri, ntri, r, NULL, 0, out, &vertices) != 0) return -1;
+  if (lot_check_run(p, n, tri, ntri, r, NULL, 0, out, tie, &vertices) != 0) return -1;
   if (out->valid && ntri + out->boundary_edges + 2 != 2 * vertices) out->valid = 0;
   return 0;
+}
+
+int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+              const rule *r, lot_check_result *out) {
+  return lot_check_ties(p, n, tri, ntri, r, out, NULL);
 }
 
 static int lot_u64_cmp(const void *x, const void *y) {
@@ -287,7 +326,7 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
     if (!ok && out->segments_missing++ == 0) out->missing_segment = k;
   }
   if (nk > 0) qsort(keys, nk, sizeof *keys, lot_u64_cmp);
-  if (lot_check_run(p, n, tri, ntri, r, keys, nk, out, &vertices) != 0) goto done;
+  if (lot_check_run(p, n, tri, ntri, r, keys, nk, out, NULL, &vertices) != 0) goto done;
   long rhs = out->valid ? lot_euler_rhs(tri, ntri, n, d, 3 * ntri) : 0;
   if (rhs == LONG_MIN) goto done;
   long edges = (long)(out->interior_edges + out->boundary_edges);

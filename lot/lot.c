@@ -71,6 +71,8 @@ struct lot {
   rule r;
   lot_cdt cdt;          /* constraints (cdt.c); all zero when there are none */
   int constrained;
+  size_t sweep_ties;    /* a polygon's sweep: ties decided by its fixed order */
+  int sweep_restarted;  /* 1: its mesh was replaced by the circle's sweep */
 };
 
 typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
@@ -470,7 +472,9 @@ static int lot_flip_all(lot_run *R) {
 ** change, by the scan or from the queue, and the result is a LOT with the
 ** tie-break: the one triangulation, whatever the order of the flips.  An
 ** empty-shape sweep (same table of primitives, lot/sweep_internal.h)
-** goes through the same pass. */
+** goes through the same pass; after a polygon's ties in special position
+** (lot_sweep_mesh) edges that are no tie flip too, as any flip pass
+** would: the examination is the full rule's. */
 static int lot_settle_ties(lot_run *R) {
   const lot_mesh *m = R->m;
   for (uint32_t c = 0; c < LOT_CORNER(m->nt, 0) && !R->stopped; c++)
@@ -642,24 +646,43 @@ static void lot_use_rule(lot *L) {
   L->m.pts = tri ? measure_points(mi) : NULL;
 }
 
+/* The sweep's triangulation (lot_triangulate).  A polygon's sweep that
+** met ties of sites in special position (pk.special > 0: equal keys of
+** neighbouring events, a zero "above" sign, lot/sweep_polygon.c) has
+** decided them by a fixed rule (equal keys in creation order, a zero sign
+** as "not above"), and nothing proves that this gives a triangulation: its
+** mesh is checked (lot_mesh_valid, exact), and when it is none, or the
+** sweep's structure broke (-3), the circle's sweep makes the Delaunay
+** triangulation instead, which is valid on every input.  Either way the
+** pass after it (lot_settle_ties, Lawson's flips with the rule and its
+** tie-break) ends at the rule's one tie-broken LOT (docs/lot.md, Ties),
+** the triangles of the other algorithms.  0, -1 (memory), -2 (err). */
+static int lot_sweep_mesh(lot *L, char *err, size_t errlen) {
+  lot_sweep_pick pk;
+  if (lot_sweep_pick_rule(&L->r, &pk, err, errlen) != 0) return -2;
+  int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
+  lot_sweep_pick_free(&pk);
+  L->sweep_ties = pk.special;
+  if (rc == 0 && pk.special > 0) {
+    int v = lot_mesh_valid(&L->m, L->m.np - (uint32_t)L->st.duplicates);
+    if (v < 0) return -1;
+    rc = v ? 0 : -3;
+  }
+  if (rc == -2 && pk.special > 0) rc = -3;   /* no triangle after ties: the circle's says why */
+  if (rc == -3) {
+    L->sweep_restarted = 1;
+    rc = lot_sweep_run(&L->m, &lot_sweep_circle, &L->st.duplicates);
+  }
+  if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);
+  if (rc == -3) snprintf(err, errlen, "internal error: the circle's sweep broke");
+  return rc == -3 ? -2 : rc;
+}
+
 /* The triangulation of L's points in their order: the sweep, or the first
 ** triangle and every insertion (flipping after each, incremental).  0; -1
 ** out of memory; -2 with the message in err (no triangle). */
 static int lot_triangulate(lot *L, lot_run *R, const lot_options *o, char *err, size_t errlen) {
-  if (o->algorithm == LOT_SWEEP) {
-    lot_sweep_pick pk;
-    if (lot_sweep_pick_rule(&L->r, &pk, err, errlen) != 0) return -2;
-    int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
-    lot_sweep_pick_free(&pk);
-    if (rc == 0 && pk.special > 0) {
-      snprintf(err, errlen, "the sweep algorithm met %zu ties of %s that only the rule's "
-               "tie-break settles (sites in special position): use --algorithm incremental or "
-               "flip", pk.special, rule_name(&L->r));
-      return -2;
-    }
-    if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);
-    return rc;
-  }
+  if (o->algorithm == LOT_SWEEP) return lot_sweep_mesh(L, err, errlen);
   uint32_t kb, kc;
   if (lot_first(&L->m, &kb, &kc, err, errlen) != 0) return -2;
   return lot_insert_all(L, R, kb, kc, o->algorithm == LOT_INCREMENTAL);
@@ -824,6 +847,11 @@ size_t lot_get_hull(const lot *L, uint32_t *out) {
 
 const lot_stats *lot_get_stats(const lot *L) {
   return &L->st;
+}
+
+size_t lot_get_sweep_ties(const lot *L, int *restarted) {
+  if (restarted != NULL) *restarted = L->sweep_restarted;
+  return L->sweep_ties;
 }
 
 size_t lot_get_constrained(const lot *L, uint32_t *out) {

@@ -21,7 +21,9 @@
 **                (keyed by the circumscribing shape's rightmost point,
 **                compared exactly) make the triangulation directly, no
 **                flips (rule DT or an empty-shape rule ES:SHAPE; for a
-**                polygon, sites in special position are refused for now).
+**                polygon, ties of sites in special position are decided by
+**                a fixed rule and the rule's flips with its tie-break
+**                finish the job: lot_get_sweep_ties).
 **
 ** Every geometric decision is exact (geom_orient, geom_incircle).  Rules are
 ** decided through the rule API (rule.h): DT exactly, triangle-based b_f with
@@ -117,8 +119,7 @@ typedef struct lot lot;
 ** with a one-line message in err: fewer than three distinct points, all
 ** collinear, a coordinate outside the contract of geom.h (geom_coord_check,
 ** naming the point), too many points, out of memory, LOT_SWEEP with a rule
-** other than DT or ES:SHAPE, with a decision hook, or on sites in special
-** position for a polygon (ties only the rule's tie-break settles). */
+** other than DT or ES:SHAPE, or with a decision hook. */
 int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
               char *err, size_t errlen);
 
@@ -128,6 +129,14 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o,
 int lot_reflip(lot *L, const lot_options *o);
 
 const lot_stats *lot_get_stats(const lot *L);
+
+/* The sweep of a polygon rule (docs/lot.md, "Polygons"): the ties of sites
+** in special position it decided by its fixed order (0 for every other
+** run; the flips of lot_stats then made the tie-broken LOT), and in
+** *restarted (may be NULL) 1 when its mesh was no triangulation and the
+** circle's sweep (the Delaunay triangulation) was flipped instead.  Apart
+** from lot_stats, whose layout callers mirror. */
+size_t lot_get_sweep_ties(const lot *L, int *restarted);
 
 /* The constrained edges of the result: 2 input indices each, smaller
 ** first, sorted; out holds 2 * stats.constrained entries.  Returns the count. */
@@ -169,6 +178,21 @@ typedef struct lot_check_result {
 ** tolerance (DT: the exact empty-circle test).  0, or -1 when out of memory. */
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
               const rule *r, lot_check_result *out);
+
+/* The ties of DT and of the empty-shape rules against lot's tie-break. */
+typedef struct lot_tie_result {
+  size_t ties;              /* decided edges the rule calls a tie (EITHER; DT: cocircular) */
+  size_t not_tie_broken;    /* of those, the tie-break keeps the other diagonal: the
+                               triangulation is not the rule's one tie-broken LOT */
+  uint32_t tie_edge[2];     /* the first such edge, smaller index first */
+} lot_tie_result;
+
+/* lot_check, and for DT and ES:SHAPE every tie against the tie-break
+** (docs/lot.md, Ties: the diagonal kept is the one not incident to the
+** lexicographically greatest of the four sites) into *tie; for other
+** rules tie is all zero.  0, or -1 when out of memory. */
+int lot_check_ties(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                   const rule *r, lot_check_result *out, lot_tie_result *tie);
 
 /* lot_check for a constrained triangulation, from the triangle list and the
 ** input segments seg (2 indices each) alone: each segment must be a chain of

@@ -581,3 +581,99 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
     m->bad[u] = bad_u;
   }
 }
+
+/* ---- validity (the polygon sweep's special position, lot.c) ------------
+**
+** lot_mesh_valid decides whether the triangles and ghosts of m are a
+** triangulation of m's `distinct` points, from local exact tests:
+**   (a) every corner's neighbour link is an involution across the same
+**       edge, reversed (tn[tn[c]] == c, the edge's ends swapped);
+**   (b) every real triangle is strictly anticlockwise (geom_orient_valid);
+**   (c) the ghosts' edges, read as the real side's edges u -> w, give each
+**       boundary vertex one successor, and following them is one cycle
+**       through all of them;
+**   (d) that cycle turns left or goes straight on at every vertex (never
+**       back), and its direction passes the positive x direction exactly
+**       once: it is a convex polygon traversed once anticlockwise;
+**   (e) every distinct point is a vertex of a real triangle.
+** Why that suffices.  By (a) the interior edges cancel in the sum of the
+** real triangles' boundaries, which is therefore the cycle C of (c).  For
+** a point q on no edge, the number of real triangles holding q, each
+** counted +1 by (b), is the winding number of that sum about q, i.e. of C:
+** by (d) 1 inside the hull polygon C and 0 outside.  So the triangles'
+** interiors are disjoint and cover the polygon, whose corners are points,
+** so it is the convex hull.  A vertex p inside another triangle, or inside
+** an edge not its own, would have a wedge of its own triangles covered
+** twice (or lying outside C), so none is; with (e) the triangles are a
+** triangulation of the points.  (d) is exact: a direction's half-plane
+** class (angle in [0, pi) or [pi, 2 pi)) is read off comparisons of
+** coordinates, and with every turn in [0, pi) the angle crosses 2 pi once
+** per step from class 1 to class 0.  O(T) with one orientation per
+** triangle and per hull vertex. */
+
+/* The half of direction a -> b: 0 for angles in [0, pi), 1 in [pi, 2 pi). */
+static int lot_valid_half(geom_point a, geom_point b) {
+  return !(b.y > a.y || (b.y == a.y && b.x > a.x));
+}
+
+/* (a), (b), and (c)'s successors into nxt (LOT_NONE: not on the boundary),
+** the points used into used[]; the ghost count, or -1. */
+static long lot_valid_local(const lot_mesh *m, uint32_t *nxt, unsigned char *used) {
+  long ghosts = 0;
+  for (uint32_t t = 0; t < m->nt; t++) {
+    const uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
+    int g = (v[0] == LOT_GHOST) + (v[1] == LOT_GHOST) + (v[2] == LOT_GHOST);
+    for (uint32_t i = 0; i < 3; i++) {
+      uint32_t c = LOT_CORNER(t, i), d = m->tn[c];
+      if ((v[i] >= m->np && v[i] != LOT_GHOST) || d >= LOT_CORNER(m->nt, 0) || lot_slot(d) > 2 ||
+          m->tn[d] != c || m->tv[lot_next3(c)] != m->tv[lot_prev3(d)] ||
+          m->tv[lot_prev3(c)] != m->tv[lot_next3(d)])
+        return -1;
+    }
+    if (g > 1 || (g == 1 && v[2] != LOT_GHOST)) return -1;   /* the sweep's ghosts: (w, u, G) */
+    if (g == 1) {
+      if (nxt[v[1]] != LOT_NONE) return -1;
+      nxt[v[1]] = v[0];
+      ghosts++;
+      continue;
+    }
+    if (geom_orient_valid(m->p[v[0]], m->p[v[1]], m->p[v[2]]) <= 0) return -1;
+    used[v[0]] = used[v[1]] = used[v[2]] = 1;
+  }
+  return ghosts;
+}
+
+/* (c) and (d): the successors form one convex cycle of h vertices from s. */
+static int lot_valid_hull(const lot_mesh *m, const uint32_t *nxt, uint32_t s, long h) {
+  uint32_t a = s, b = nxt[s];
+  long steps = 0, wraps = 0;
+  do {
+    if (b == LOT_NONE || nxt[b] == LOT_NONE || nxt[b] == b || ++steps > h) return 0;
+    geom_point pa = m->p[a], pb = m->p[b], pc = m->p[nxt[b]];
+    int o = geom_orient_valid(pa, pb, pc);
+    if (o < 0 || (o == 0 && geom_ahead(pb, pc, pa))) return 0;
+    wraps += lot_valid_half(pa, pb) == 1 && lot_valid_half(pb, pc) == 0;
+    a = b;
+    b = nxt[b];
+  } while (a != s);
+  return steps == h && wraps == 1;
+}
+
+int lot_mesh_valid(const lot_mesh *m, uint32_t distinct) {
+  uint32_t *nxt = malloc(((size_t)m->np + 1) * sizeof *nxt);
+  unsigned char *used = calloc((size_t)m->np + 1, 1);
+  int ok = -1;
+  if (nxt == NULL || used == NULL) goto done;
+  for (uint32_t k = 0; k < m->np; k++) nxt[k] = LOT_NONE;
+  long h = lot_valid_local(m, nxt, used);
+  uint32_t s = 0, n = 0;
+  for (uint32_t k = 0; k < m->np; k++) {
+    n += used[k];
+    if (nxt[k] != LOT_NONE) s = k;
+  }
+  ok = h >= 3 && n == distinct && lot_valid_hull(m, nxt, s, h);
+done:
+  free(nxt);
+  free(used);
+  return ok;
+}

@@ -114,5 +114,9 @@ FLIPLAB_INTERNAL double lot_mesh_badness(const lot_mesh *m, uint32_t a, uint32_t
 FLIPLAB_INTERNAL lot_enc lot_mesh_enclose(const lot_mesh *m, uint32_t a, uint32_t b, uint32_t c);
 /* Triangle t's enclosure made exact (computed once, then cached). */
 FLIPLAB_INTERNAL void lot_mesh_exact(lot_mesh *m, uint32_t t);
+/* 1 when m's triangles and ghosts (ghost vertex last, as the sweep makes
+** them) are a triangulation of its `distinct` points, by exact local tests
+** (the argument is in mesh.c); 0 when not; -1 out of memory. */
+FLIPLAB_INTERNAL int lot_mesh_valid(const lot_mesh *m, uint32_t distinct);
 
 #endif

@@ -52,6 +52,12 @@
 #define SW_LEVELS 12        /* towers of at most 12 levels, p = 1/4: 4^12 = 1.7e7 */
 #define SW_NONE UINT32_MAX
 #define SW_HEAD 0u          /* the skip list's head node (no site) */
+/* A polygon sweep through ties it could not order (sites in special
+** position, sweep_polygon.c) has no proof behind it: should it make more
+** triangles than a triangulation has, or a hull that is no cycle, it stops
+** with this code (lot.c then starts again from the circle's sweep).  The
+** circle's and the ellipses' sweeps never return it. */
+#define SW_BROKEN (-3)
 
 typedef struct sw_node {
   geom_point pt;            /* its point (a copy: the search reads it without m->p) */
@@ -360,9 +366,11 @@ static double sw_centre_y(geom_point a, geom_point b, geom_point c) {
 }
 
 /* The circumshape event of node b (a, b, c consecutive): triangle a c b,
-** anticlockwise (a, b, c turn clockwise); 0, or -1 when out of memory. */
+** anticlockwise (a, b, c turn clockwise); 0, -1 when out of memory, -3
+** when the mesh is full (SW_BROKEN). */
 static int sw_circle(lot_sweep *S, uint32_t b) {
   lot_mesh *m = S->m;
+  if (m->nt >= m->cap) return SW_BROKEN;
   uint32_t e = sw_edge_new(S);
   if (e == SW_NONE) return -1;
   sw_node *nd = S->nd;
@@ -390,11 +398,18 @@ static int sw_ghosts(lot_sweep *S) {
   lot_mesh *m = S->m;
   uint32_t *first = malloc((size_t)m->np * sizeof *first), g0 = m->nt;
   if (first == NULL) return -1;
-  for (size_t e = 0; e < S->ne; e++) {
+  for (uint32_t k = 0; k < m->np; k++) first[k] = SW_NONE;
+  int rc = 0;
+  for (size_t e = 0; e < S->ne && rc == 0; e++) {
     uint32_t c0 = S->ec[2 * e], c1 = S->ec[2 * e + 1];
     if ((c0 == SW_NONE) == (c1 == SW_NONE)) continue;
-    uint32_t c = c0 != SW_NONE ? c0 : c1, g = m->nt++;
+    uint32_t c = c0 != SW_NONE ? c0 : c1, g = m->nt;
     uint32_t u = m->tv[lot_next3(c)], w = m->tv[lot_prev3(c)];
+    if (g >= m->cap || first[w] != SW_NONE) {   /* never in a valid sweep */
+      rc = SW_BROKEN;
+      break;
+    }
+    m->nt++;
     uint32_t *v = m->tv + LOT_CORNER((size_t)g, 0);
     v[0] = w;   /* the ghost (w, u, G): the outside left of w -> u */
     v[1] = u;
@@ -403,16 +418,20 @@ static int sw_ghosts(lot_sweep *S) {
     m->tn[LOT_CORNER(g, 2)] = c;
     first[w] = g;
   }
-  for (uint32_t g = g0; g < m->nt; g++) {   /* (w, u, G) meets (u, ., G) across u-G */
+  for (uint32_t g = g0; g < m->nt && rc == 0; g++) {   /* (w, u, G) meets (u, ., G) across u-G */
     uint32_t h = first[m->tv[LOT_CORNER(g, 1)]];
+    if (h == SW_NONE) {
+      rc = SW_BROKEN;
+      break;
+    }
     m->tn[LOT_CORNER(g, 0)] = LOT_CORNER(h, 1);
     m->tn[LOT_CORNER(h, 1)] = LOT_CORNER(g, 0);
   }
   free(first);
-  return 0;
+  return rc;
 }
 
-/* Every event in order: 0, or -1 when out of memory. */
+/* Every event in order: 0, -1 when out of memory, or SW_BROKEN. */
 static int sw_events(lot_sweep *S, size_t *duplicates) {
   const geom_point *p = S->m->p;
   uint32_t np = S->m->np, k = 0;
@@ -422,7 +441,8 @@ static int sw_events(lot_sweep *S, size_t *duplicates) {
     if (S->nh > 0 && (k == np || sw_before_site(S, &S->hp[0], p[k].x))) {
       uint32_t b = S->hp[0].node;
       sw_pop(S);
-      if (sw_circle(S, b) != 0) return -1;
+      int rc = sw_circle(S, b);
+      if (rc != 0) return rc;
     } else if (k > 0 && p[k].x == p[k - 1].x && p[k].y == p[k - 1].y) {
       ++*duplicates;   /* sorted: the first of equal points has the smallest index */
       k++;
@@ -465,7 +485,8 @@ int lot_sweep_run(lot_mesh *m, const lot_sweep_shape *s, size_t *duplicates) {
   if (sw_hints_init(&S) != 0 || sw_node_new(&S, SW_NONE) != SW_HEAD) goto done;
   S.nd[SW_HEAD].h = SW_LEVELS;
   for (int l = 0; l < SW_LEVELS; l++) S.nd[SW_HEAD].nx[l] = SW_NONE;
-  if (sw_events(&S, duplicates) != 0) goto done;
+  rc = sw_events(&S, duplicates);
+  if (rc != 0) goto done;
   rc = -2;
   if (m->nt == 0) goto done;
   rc = sw_ghosts(&S);

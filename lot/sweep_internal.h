@@ -74,7 +74,9 @@ FLIPLAB_INTERNAL void lot_sweep_polygon(lot_sweep_poly *P, const shape *k, size_
 ** index), with s: triangles and ghosts into m (allocated by
 ** lot_mesh_alloc, no cache).  Equal consecutive points are merged into
 ** the first (*duplicates counts them, m->inp takes the smaller index).
-** 0; -1 out of memory; -2 no triangle (all points equal or collinear). */
+** 0; -1 out of memory; -2 no triangle (all points equal or collinear); -3
+** the structure broke (more triangles than the mesh holds, a hull that is
+** no cycle): only a polygon's sweep after ties it counted in *ties. */
 FLIPLAB_INTERNAL int lot_sweep_run(lot_mesh *m, const lot_sweep_shape *s, size_t *duplicates);
 
 /* The primitives the sweep uses for a rule (lot/sweep_shape.c): s, whose
@@ -85,7 +87,7 @@ typedef struct lot_sweep_pick {
   lot_sweep_shape s;
   lot_sweep_conic q;
   lot_sweep_poly poly;
-  size_t special;           /* polygons: ties left to the tie-break (lot refuses the run) */
+  size_t special;           /* polygons: ties decided by the fixed rule (lot_sweep_mesh) */
   shape *k;
 } lot_sweep_pick;
 FLIPLAB_INTERNAL int lot_sweep_pick_rule(const rule *r, lot_sweep_pick *pk, char *err,

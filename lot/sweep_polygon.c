@@ -37,10 +37,11 @@
 ** rationals when the interval cannot decide.  What the rule's tie-break
 ** (K turned by an infinitesimal angle) would have to settle beyond the
 ** support points (equal keys of two events that share a boundary edge, a
-** zero "above" sign, an 'either' between two infinite events) is counted
-** in *special: lot then refuses the run (sites in special position are
-** for the incremental and flip algorithms, for now).  Equal keys of
-** events that share no edge are harmless: the events commute.
+** zero "above" sign, an 'either' between two infinite events) is decided
+** by a fixed rule (creation order, "not above") and counted in *special:
+** lot then checks the mesh and flips it to the tie-broken LOT (lot.c,
+** lot_sweep_mesh).  Equal keys of events that share no edge are harmless:
+** the events commute.
 */
 #include <gmp.h>
 #include <math.h>

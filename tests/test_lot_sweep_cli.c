@@ -2,8 +2,10 @@
 ** test_lot_sweep_cli.c: `fliplab lot --algorithm sweep` from the command
 ** line: the header and time lines, --check and --compare DT on every
 ** sampler, the same --out file as the incremental and flip algorithms
-** (unique Delaunay triangulation, and a grid's ties), and the refusals (a rule other than
-** DT, --order, an unknown algorithm naming sweep among the valid ones).
+** (unique Delaunay triangulation, and a grid's ties; a polygon rule on a
+** grid: its sweep: line and the checked ties), and the refusals (a rule
+** other than DT, --order, an unknown algorithm naming sweep among the valid
+** ones).
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -40,6 +42,17 @@ static void test_samplers(void **state) {
   }
 }
 
+/* Files a and b hold the same triangles, byte for byte (and some). */
+static void tsc_same_files(const char *a, const char *b) {
+  char *x = testutil_read_file(a), *y = testutil_read_file(b);
+  assert_non_null(x);
+  assert_non_null(y);
+  assert_true(strlen(x) > 1000);
+  assert_string_equal(x, y);
+  free(x);
+  free(y);
+}
+
 /* Byte for byte the incremental and flip algorithms' triangles: where the
 ** Delaunay triangulation is unique (normal) and on a grid, whose ties lot's
 ** tie-break settles the same way in all three. */
@@ -57,13 +70,36 @@ static void test_same_out(void **state) {
     snprintf(opt, sizeof opt, "%s --out %s", others[i % 2], b);
     assert_int_equal(tsc_run("lot --rule DT --random 5000 --sampler %s --seed 4 "
                              "--algorithm %s", samplers[i / 2], opt), 0);
-    char *x = testutil_read_file(a), *y = testutil_read_file(b);
-    assert_non_null(x);
-    assert_non_null(y);
-    assert_true(strlen(x) > 1000);
-    assert_string_equal(x, y);
-    free(x);
-    free(y);
+    tsc_same_files(a, b);
+  }
+  remove(a);
+  remove(b);
+}
+
+/* A polygon on a grid (sites in special position, once refused): the
+** sweep: line counts the ties, --check passes and counts the ties it
+** checked against the tie-break, and --out is the incremental and flip
+** algorithms' byte for byte. */
+static void test_polygon_grid(void **state) {
+  (void)state;
+  const char *dir = FLIPLAB_BUILD_DIR "/tests";
+  char a[512], b[512];
+  snprintf(a, sizeof a, "%s/sweep_cli_pa.csv", dir);
+  snprintf(b, sizeof b, "%s/sweep_cli_pb.csv", dir);
+  const char *rules[] = {"ES:square", "ES:diamond"}, *others[] = {"incremental", "flip"};
+  for (int i = 0; i < 4; i++) {
+    assert_int_equal(tsc_run("lot --rule %s --random 400 --sampler grid --algorithm sweep "
+                             "--check --out %s", rules[i / 2], a), 0);
+    assert_non_null(strstr(tsc_out, "\nsweep: "));
+    assert_non_null(strstr(tsc_out, " ties in special position (decided by a fixed order, "
+                                    "then the "));
+    assert_non_null(strstr(tsc_out, " ties, every one as the tie-break settles it\n"));
+    char opt[600];
+    snprintf(opt, sizeof opt, "%s --out %s", others[i % 2], b);
+    assert_int_equal(tsc_run("lot --rule %s --random 400 --sampler grid --algorithm %s",
+                             rules[i / 2], opt), 0);
+    assert_null(strstr(tsc_out, "\nsweep: "));
+    tsc_same_files(a, b);
   }
   remove(a);
   remove(b);
@@ -86,6 +122,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_samplers),
     cmocka_unit_test(test_same_out),
+    cmocka_unit_test(test_polygon_grid),
     cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

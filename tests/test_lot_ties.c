@@ -534,6 +534,71 @@ static void test_shuffled(void **state) {
   }
 }
 
+/* ---- lot_check's tie-break check -------------------------------------------- */
+
+/* Turn the first tied edge of t (a strictly convex quadrilateral on which
+** rule r answers EITHER) to its other diagonal; 1 when there was one, its
+** new diagonal in e[]. */
+static int tt_flip_tie(const geom_point *p, tt_tris *t, const rule *r, uint32_t e[2]) {
+  for (size_t i = 0; i < t->n; i++)
+    for (size_t j = 0; j < t->n; j++)
+      for (int x = 0; x < 3; x++)
+        for (int y = 0; y < 3; y++) {
+          uint32_t *t1 = t->tri + 3 * i, *t2 = t->tri + 3 * j;
+          uint32_t u = t1[x], v = t1[(x + 1) % 3], a = t1[(x + 2) % 3], d = t2[(y + 2) % 3];
+          if (i == j || t2[y] != v || t2[(y + 1) % 3] != u) continue;
+          const geom_point q[4] = {p[u], p[d], p[v], p[a]};
+          int convex = 1;
+          for (int k = 0; k < 4; k++) convex &= geom_orient(q[k], q[(k + 1) % 4], q[(k + 2) % 4]) > 0;
+          if (!convex || rule_eval(r, q, NULL, NULL) != RULE_EITHER) continue;
+          t1[0] = u; t1[1] = d; t1[2] = a;   /* u d v a anticlockwise: u d a and d v a */
+          t2[0] = d; t2[1] = v; t2[2] = a;
+          e[0] = a < d ? a : d;
+          e[1] = a < d ? d : a;
+          return 1;
+        }
+  return 0;
+}
+
+/* lot_check finds every LOT of DT and of the shape rules tie-broken (and
+** counts its ties), and catches one tied edge turned to the other
+** diagonal: still valid and locally optimal (a tie), but not the
+** tie-break's triangulation. */
+static void test_check_tiebreak(void **state) {
+  (void)state;
+  geom_point p[25];
+  tt_grid(5, 5, 0, 0, p);
+  for (int k = 0; k < TT_NLARGE; k++) {
+    rule r = tt_rule(tt_rules[k]);
+    tt_tris t = {0};
+    for (int run = 0; run < TT_RUNS; run++) {
+      assert_int_equal(tt_lot(p, 25, tt_rules[k], tt_run[run].a, tt_run[run].order,
+                              tt_run[run].seed, &t), 0);
+      lot_check_result c;
+      lot_tie_result tie;
+      assert_int_equal(lot_check_ties(p, 25, t.tri, t.n, &r, &c, &tie), 0);
+      assert_true(c.valid);
+      assert_int_equal(c.not_optimal, 0);
+      assert_int_equal(tie.not_tie_broken, 0);
+      uint32_t e[2];
+      if (run > 0 || !tt_flip_tie(p, &t, &r, e)) {
+        free(t.tri);
+        continue;
+      }
+      assert_true(tie.ties > 0);
+      assert_int_equal(lot_check_ties(p, 25, t.tri, t.n, &r, &c, &tie), 0);
+      assert_true(c.valid);
+      if (tie.not_tie_broken == 0) fail_msg("%s: a wrong tie not caught", tt_rules[k]);
+      if (c.not_optimal == 0) {   /* the tie alone is wrong: it is the one named */
+        assert_int_equal(tie.not_tie_broken, 1);
+        assert_int_equal(tie.tie_edge[0], e[0]);
+        assert_int_equal(tie.tie_edge[1], e[1]);
+      }
+      free(t.tri);
+    }
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_brute_structured),
@@ -541,6 +606,7 @@ int main(void) {
     cmocka_unit_test(test_samplers),
     cmocka_unit_test(test_collinear_duplicates),
     cmocka_unit_test(test_shuffled),
+    cmocka_unit_test(test_check_tiebreak),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
