@@ -61,6 +61,9 @@ int rule_parse(const char *name, rule *out, char *err, size_t errlen);
 int rule_shape_make(const char *name, rule *out, char *err, size_t errlen);
 /* 1 when r is an empty-shape rule (made by rule_shape_make). */
 int rule_is_shape(const rule *r);
+/* The shape of an empty-shape rule (it lives as long as the process), or
+** NULL for every other rule. */
+const struct shape *rule_shape(const rule *r);
 
 /* The one grammar of rule names: a triangle-based rule is MEASURE_JOINT,
 ** split at the last '_' (measure names may contain '-', '/' and '\'', a

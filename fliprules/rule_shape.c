@@ -70,3 +70,7 @@ int rule_is_shape(const rule *r) {
   const rule_quad *q = rule_quad_of(r);
   return q != NULL && q->fn == rule_shape_eval;
 }
+
+const shape *rule_shape(const rule *r) {
+  return rule_is_shape(r) ? ((const rule_shape_entry *)rule_quad_of(r)->ctx)->k : NULL;
+}

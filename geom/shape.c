@@ -466,8 +466,9 @@ static shape_choice shape_corner_decide(const shape *k, int c, const geom_point 
 
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
-static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], shape_trace *tr) {
-  int sup[3], t[3], quick = shape_quick_ready(k, p);
+static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
+                                         shape_trace *tr) {
+  int sup[3], t[3];
   if (!quick || shape_quick_supports(k, p, sup) != 0) {
     sup[0] = shape_support(k, p[0], p[1]);
     sup[1] = shape_support(k, p[1], p[2]);
@@ -510,5 +511,14 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
   for (int i = 0; i < 4; i++)
     if (!geom_point_finite(p[i])) return SHAPE_EITHER;
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  return shape_polygon_decide(k, p, tr);
+  return shape_polygon_decide(k, p, shape_quick_ready(k, p), tr);
+}
+
+/* Sites in the coordinate contract are finite and 0 or of magnitude at
+** least 1e-30 > 2^-100, all that shape_quick_ready checks of them. */
+shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom_point c,
+                                geom_point d) {
+  geom_point p[4] = {a, b, c, d};
+  if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
+  return shape_polygon_decide(k, p, k->quick != NULL && !shape_exact_only(), NULL);
 }

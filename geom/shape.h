@@ -60,6 +60,12 @@ typedef struct shape_trace {
 shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point c, geom_point d,
                           shape_trace *tr);
 
+/* shape_decide for sites known to obey the coordinate contract of geom.h
+** (every coordinate 0 or of magnitude in [1e-30, 1e30]: lot's validated
+** sites), without a trace: the same answer, without the checks. */
+shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom_point c,
+                                geom_point d);
+
 /* The vertex of polygon K extremal in the right-hand normal direction of
 ** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:
 ** the start vertex of an edge of the same direction as PQ. */

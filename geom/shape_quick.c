@@ -6,6 +6,7 @@
 ** filtered-exact path, so every answer is that path's answer.
 */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include "shape_internal.h"
 
@@ -61,6 +62,7 @@ typedef struct shape_quick {
   double *xv, *xt;       /* cross(e_i, e_j) and its twin, [i n + j] */
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
+  int start[8];          /* where the support scan starts, by direction class */
 } shape_quick;
 
 #define SHAPE_Q_U 0x1p-53
@@ -73,6 +75,27 @@ void shape_quick_free(shape *k) {
   free(k->quick->xv);
   free(k->quick);
   k->quick = NULL;
+}
+
+/* ---- where a support scan starts ------------------------------------------
+**
+** The support of a direction d turns with d, so a scan from the support of
+** the first direction of d's class meets it within the class's few edges.
+** The class, from exact comparisons of d's coordinates: the octant of the
+** plane, bit 2 for dx < 0, bit 1 for dy < 0, bit 0 for |dx| < |dy|.  Each
+** octant's first direction is given turned back a little, and the start is
+** only where the scan looks first (it goes on round the whole polygon), so
+** rounding here costs time, never an answer. */
+static int shape_q_scan(const shape_quick *q, int from, double dx, double dy);
+
+static void shape_q_starts(shape_quick *q) {
+  /* the first angle of each class, in eighths of a turn */
+  static const signed char first[8] = {0, 1, 7, 6, 3, 2, 4, 5};
+  for (int c = 0; c < 8; c++) {
+    double a = (first[c] * 0.25 - 0x1p-20) * 3.14159265358979323846;
+    int s = shape_q_scan(q, 0, cos(a), sin(a));
+    q->start[c] = s < 0 ? 0 : s;
+  }
 }
 
 int shape_quick_build(shape *k) {
@@ -98,6 +121,7 @@ int shape_quick_build(shape *k) {
       q->xv[i * n + j] = q->ex[i] * q->ey[j] - q->ey[i] * q->ex[j];
       q->xt[i * n + j] = fabs(q->ex[i] * q->ey[j]) + fabs(q->ey[i] * q->ex[j]);
     }
+  shape_q_starts(q);
   k->quick = q;
   return 0;
 }
@@ -128,16 +152,38 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 ** changes sign from + at s - 1 to - at s, found on the values and then
 ** certified at s - 1 and s; -1 when there is no such s or a sign there is
 ** not certain. */
-static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  int n = q->n, j = 0;
-  double prev = q->ex[n - 1] * dy - q->ey[n - 1] * dx;
-  for (; j < n; j++) {
-    double c = q->ex[j] * dy - q->ey[j] * dx;
-    if (prev > 0 && c < 0) break;
-    prev = c;
-  }
-  if (j == n) return -1;
+static int shape_q_scan(const shape_quick *q, int from, double dx, double dy) {
+  int n = q->n, j = from;
   int i = j > 0 ? j - 1 : n - 1;
+  double prev = q->ex[i] * dy - q->ey[i] * dx;
+  for (int step = 0; step < n; step++) {
+    double c = q->ex[j] * dy - q->ey[j] * dx;
+    if (prev > 0 && c < 0) return j;
+    prev = c;
+    j = j == n - 1 ? 0 : j + 1;
+  }
+  return -1;
+}
+
+/* For a shape of at most 32 edges all the signs at once, without a branch
+** per edge: bit j of pos is cross(e_j, d) > 0, and the change from + at
+** j - 1 to - at j is bit j of (pos turned by one) & ~pos; the lowest such
+** j, as the scan takes the first. */
+static int shape_q_scan_all(const shape_quick *q, double dx, double dy) {
+  int n = q->n;
+  uint32_t pos = 0;
+  for (int j = 0; j < n; j++) pos |= (uint32_t)(q->ex[j] * dy - q->ey[j] * dx > 0) << j;
+  uint32_t full = n == 32 ? 0xffffffffu : (1u << n) - 1;
+  uint32_t turned = (pos << 1 | pos >> (n - 1)) & full, change = turned & ~pos;
+  return change ? __builtin_ctz(change) : -1;
+}
+
+static int shape_q_support(const shape_quick *q, double dx, double dy) {
+  int j;
+  if (q->n <= 32) j = shape_q_scan_all(q, dx, dy);
+  else j = shape_q_scan(q, q->start[(dx < 0) << 2 | (dy < 0) << 1 | (fabs(dx) < fabs(dy))], dx, dy);
+  if (j < 0) return -1;
+  int i = j > 0 ? j - 1 : q->n - 1;
   return shape_q_cross(q, i, dx, dy) > 0 && shape_q_cross(q, j, dx, dy) < 0 ? j : -1;
 }
 
@@ -195,14 +241,38 @@ static void shape_q_rows(shape_q_tri *T) {
   T->d3 = q->m.sgn[b2 + (size_t)T->t[2]];
 }
 
+/* ---- which checks a contact triple needs ---------------------------------
+**
+** shape.c's contact test checks each point against both neighbours of its
+** contact edge.  Here only the neighbours inside the point's own range are
+** checked (the movable bits): the others follow.  Say A's contact edge t0
+** is the first of its range, t0 = s_CA, so its previous edge m = t0 - 1 is
+** the last of C's range, and C's contact t2 is m or before it there.  For
+** any X, n_m.X = cross(X, e_m), so A's slack on m is
+**   c_m - n_m.A = (c_m - n_m.C) + cross(e_m, A - C),
+** and cross(e_m, A - C) > 0 is the support s_CA itself (its + at s - 1).
+** c_m - n_m.C >= 0: when t2 = m, C is on that edge line (0); otherwise C
+** lies on the line of t2 on the inner side of edge t2 + 1 (a checked
+** neighbour: t2 + 1 <= m is in C's range), so on the ray of that line from
+** H's vertex t2 + 1 backwards; the vertex is in H, and going back along
+** e_t2 changes n_m.X by -cross(e_t2, e_m) < 0 (e_m turns from e_t2 by more
+** than 0 and less than pi: the directions of a range lie within the
+** triangle's exterior angle at its point), so the ray stays inside edge m.
+** The last edge of a range and the next point's range are the mirror
+** image (s_AB's - at s).  This is exact geometry under the perturbation
+** (every sign used is a perturbed sign: the certified supports and slacks
+** are), so the triple passing these checks passes shape.c's six; and a
+** range never holds another point's contact edge, so shape.c's settled
+** checks are all among those left out. */
+
 /* Test triple T->t: 1 when it is the contact triple, 0 with *move set to
 ** the first violation (point r beyond its edge's neighbour on side side,
-** bit 2 r + (side > 0)) among those in movable, or -1 (a sign uncertain,
-** no homothet with s > 0, or no violation in movable).  The two checks
-** shape.c settles without a determinant are skipped as there. */
+** bit 2 r + (side > 0)), or -1 (a sign uncertain, no homothet with s > 0).
+** Only the neighbours in movable (those in the point's range) are tested:
+** the others follow (above). */
 static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
   const shape_quick *q = T->q;
-  int n = q->n, *t = T->t, viol = 0;
+  int n = q->n, *t = T->t;
   shape_q_rows(T);
   if (T->d3 == 0) return -1;
   T->wb = shape_q_w(T, t[1], p[1], &T->wbt);
@@ -210,20 +280,17 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
   double v = -T->wb * q->xv[t[0] * n + t[2]] + T->wc * q->xv[t[0] * n + t[1]];
   double tw = T->wbt * q->xt[t[0] * n + t[2]] + T->wct * q->xt[t[0] * n + t[1]];
   if (shape_q_sign(v, tw, SHAPE_Q_BDET3W) != T->d3) return -1;
-  /* bit 2 r + (side > 0): the neighbouring point on that side, its edge */
-  static const signed char nb[6] = {2, 1, 0, 2, 1, 0};
   for (int bit = 0; bit < 6; bit++) {
+    if (!(movable >> bit & 1)) continue;
     int r = bit >> 1, m = bit & 1 ? (t[r] == n - 1 ? 0 : t[r] + 1) : (t[r] == 0 ? n - 1 : t[r] - 1);
-    if (m == t[nb[bit]]) continue;
     int s = shape_q_slack(T, m, p[r]);
-    if (s < 0 && (movable >> bit & 1)) {
+    if (s == 0) return -1;
+    if (s < 0) {
       *move = bit;
       return 0;
     }
-    if (s == 0) return -1;
-    viol |= s < 0;
   }
-  return viol ? -1 : 1;
+  return 1;
 }
 
 /* The contact triple into T: from the middles of the ranges, each failed
@@ -250,12 +317,25 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
   return -1;
 }
 
+/* D's slack on an edge of the arc from C's contact edge t2 to A's t0.  On
+** the two ends no determinant is needed: C is on edge line t2, so c_t2 -
+** n_t2.D = n_t2.(C - D) = cross(e_t2, D - C), and likewise cross(e_t0, D -
+** A) on t0 (n_m.X = cross(X, e_m)); the settled checks of shape.c's contact
+** test are the same identity, and both are certified as the supports are
+** (one rounded difference, count 5). */
+static int shape_q_dslack(const shape_q_tri *T, int m, const geom_point p[4]) {
+  if (m == T->t[2]) return shape_q_cross(T->q, m, p[3].x - p[2].x, p[3].y - p[2].y);
+  if (m == T->t[0]) return shape_q_cross(T->q, m, p[3].x - p[0].x, p[3].y - p[0].y);
+  return shape_q_slack(T, m, p[3]);
+}
+
 int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4], int t[3]) {
-  shape_q_tri T = {.q = k->quick, .ax = p[0].x, .ay = p[0].y};
+  shape_q_tri T;
+  T.q = k->quick, T.ax = p[0].x, T.ay = p[0].y;
   if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
   int n = T.q->n, ans = SHAPE_BD;
   for (int m = T.t[2];; m = m == n - 1 ? 0 : m + 1) {
-    int s = shape_q_slack(&T, m, p[3]);
+    int s = shape_q_dslack(&T, m, p);
     if (s == 0) return -1;
     if (s < 0) {
       ans = SHAPE_AC;

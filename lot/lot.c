@@ -75,7 +75,12 @@ struct lot {
   int sweep_restarted;  /* 1: its mesh was replaced by the circle's sweep */
 };
 
-typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
+/* How lot_examine decides: DT's incircle, a triangle-based rule (its
+** cache), an empty-shape rule's shape (straight to the shape's decision:
+** the sites are validated and its answer is the same for every rotation
+** of the quadrilateral, so rule_eval's checks and rotation are skipped),
+** another quadrilateral rule, or a decision hook. */
+typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_SHAPE, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
 
 typedef struct lot_entry {
   uint32_t c, u, v;     /* the edge opposite corner c, from u to v when pushed */
@@ -90,6 +95,7 @@ typedef struct lot_run {
   lot_stats *st;
   const lot_cons *cons; /* constrained edges, never flipped; NULL: none */
   lot_kind kind;
+  const shape *shape;   /* LOT_K_SHAPE: the rule's shape */
   int star_only;        /* DT insertion: only edges opposite the new point */
   int stopped;          /* cycle or budget: no more flips */
   int settle_ties;      /* an empty-shape rule: its EITHER goes to lot_tie_flips */
@@ -398,6 +404,8 @@ static int lot_examine(lot_run *R, uint32_t c) {
       int flip = m->enc ? lot_prefers_lazy(R, a, b, c0, d, t, u, &n1, &n2)
                         : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
       ch = flip ? RULE_AC : RULE_EITHER;
+    } else if (R->kind == LOT_K_SHAPE) {
+      ch = (rule_choice)shape_decide_valid(R->shape, pa, pb, pd, pc);
     } else if (R->kind == LOT_K_QUAD) {
       ch = rule_eval(R->r, q, NULL, NULL);
     } else {
@@ -501,11 +509,12 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   R->cons = L->constrained ? &L->cdt.cons : NULL;
   R->kind = o->decide ? LOT_K_HOOK
           : rule_is_triangle(r) ? LOT_K_TRI
-          : rule_is_delaunay(r) ? LOT_K_DT : LOT_K_QUAD;
+          : rule_is_delaunay(r) ? LOT_K_DT : rule_is_shape(r) ? LOT_K_SHAPE : LOT_K_QUAD;
+  R->shape = rule_shape(r);
   /* A decision hook, or a quadrilateral rule not known to be systematic
   ** (rule_quad_set_systematic), may cycle. */
   R->track = R->kind == LOT_K_HOOK || (R->kind == LOT_K_QUAD && !rule_is_systematic(r));
-  R->settle_ties = R->kind == LOT_K_QUAD && rule_is_shape(r);
+  R->settle_ties = R->kind == LOT_K_SHAPE;
   if (R->kind == LOT_K_TRI) R->any = (lot_enc){measure_floor(rule_measure(r)), INFINITY};
   /* Built-in measures only: their floors hold for every value they give
   ** (a user's formula or plugin promises its sign, but nothing checks it). */
