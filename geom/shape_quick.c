@@ -165,23 +165,28 @@ static int shape_q_scan(const shape_quick *q, int from, double dx, double dy) {
   return -1;
 }
 
-/* For a shape of at most 32 edges all the signs at once, without a branch
-** per edge: bit j of pos is cross(e_j, d) > 0, and the change from + at
-** j - 1 to - at j is bit j of (pos turned by one) & ~pos; the lowest such
-** j, as the scan takes the first. */
-static int shape_q_scan_all(const shape_quick *q, double dx, double dy) {
+/* For a shape of at most 32 edges, every certain sign at once and without
+** a branch per edge: bit j of pos (neg) is a certain + (-) of cross(e_j,
+** d), and support s is the bit of (pos turned by one) & neg, a certain +
+** at s - 1 and - at s.  Certain signs are exact, and the exact signs change
+** from + to - once, so there is at most one such bit; none: uncertain. */
+static int shape_q_support_all(const shape_quick *q, double dx, double dy) {
   int n = q->n;
-  uint32_t pos = 0;
-  for (int j = 0; j < n; j++) pos |= (uint32_t)(q->ex[j] * dy - q->ey[j] * dx > 0) << j;
+  uint32_t pos = 0, neg = 0;
+  for (int j = 0; j < n; j++) {
+    double a = q->ex[j] * dy, b = q->ey[j] * dx, v = a - b;
+    double bound = SHAPE_Q_BCROSS * (fabs(a) + fabs(b));
+    pos |= (uint32_t)(v > bound) << j;
+    neg |= (uint32_t)(-v > bound) << j;
+  }
   uint32_t full = n == 32 ? 0xffffffffu : (1u << n) - 1;
-  uint32_t turned = (pos << 1 | pos >> (n - 1)) & full, change = turned & ~pos;
+  uint32_t change = (pos << 1 | pos >> (n - 1)) & full & neg;
   return change ? __builtin_ctz(change) : -1;
 }
 
 static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  int j;
-  if (q->n <= 32) j = shape_q_scan_all(q, dx, dy);
-  else j = shape_q_scan(q, q->start[(dx < 0) << 2 | (dy < 0) << 1 | (fabs(dx) < fabs(dy))], dx, dy);
+  if (q->n <= 32) return shape_q_support_all(q, dx, dy);
+  int j = shape_q_scan(q, q->start[(dx < 0) << 2 | (dy < 0) << 1 | (fabs(dx) < fabs(dy))], dx, dy);
   if (j < 0) return -1;
   int i = j > 0 ? j - 1 : q->n - 1;
   return shape_q_cross(q, i, dx, dy) > 0 && shape_q_cross(q, j, dx, dy) < 0 ? j : -1;
