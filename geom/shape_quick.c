@@ -63,6 +63,7 @@ typedef struct shape_quick {
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
   int start[8];          /* where the support scan starts, by direction class */
+  double *gx, *gy;       /* edge i's outward normal over its support from the centroid */
 } shape_quick;
 
 #define SHAPE_Q_U 0x1p-53
@@ -103,18 +104,28 @@ int shape_quick_build(shape *k) {
   if (k->kind != SHAPE_POLYGON || shape_memo_flat(k, &m) != 0) return 0;
   int n = k->n;
   shape_quick *q = calloc(1, sizeof *q);
-  double *e = malloc(2 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
+  double *e = malloc(4 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
   if (q == NULL || e == NULL || x == NULL) {
     free(q);
     free(e);
     free(x);
     return -1;
   }
-  *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .xv = x, .xt = x + n * n, .m = m,
+  *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .gx = e + 2 * n, .gy = e + 3 * n,
+                     .xv = x, .xt = x + n * n, .m = m,
                      .bdet4 = (2.0 * (m.kmax + 9) + 2) * SHAPE_Q_U};
+  double cx = 0, cy = 0;
   for (int i = 0; i < n; i++) {
     q->ex[i] = k->v[(i + 1) % n].x - k->v[i].x;
     q->ey[i] = k->v[(i + 1) % n].y - k->v[i].y;
+    cx += k->v[i].x / n;
+    cy += k->v[i].y / n;
+  }
+  for (int i = 0; i < n; i++) {
+    /* the vertex average is inside K, so every support from it is > 0 */
+    double h = q->ey[i] * (k->v[i].x - cx) - q->ex[i] * (k->v[i].y - cy);
+    q->gx[i] = q->ey[i] / h;
+    q->gy[i] = -q->ex[i] / h;
   }
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
@@ -302,13 +313,34 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
 ** test moves the first violating point that can stay in its range one edge
 ** towards the edge it lies beyond; 0, or -1 (uncertain, stalled, too many
 ** steps). */
+/* Where the walk starts: on a circle, the point of contact faces away from
+** the centre, so in a range of two edges or more each point starts on the
+** edge whose outward normal, scaled by its support (the gauge of K), is
+** largest at P - O, O the circumcentre of ABC, the guessed centre of H.  A
+** guess only (the walk and the contact test decide): a degenerate O
+** (infinite or NaN) gives the first edge. */
+static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int start[3],
+                          const int len[3], int off[3]) {
+  double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
+  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d = 2 * (bx * cy - by * cx);
+  double ox = p[0].x + (b2 * cy - c2 * by) / d, oy = p[0].y + (c2 * bx - b2 * cx) / d;
+  int n = q->n;
+  for (int r = 0; r < 3; r++) {
+    off[r] = 0;
+    if (len[r] < 2) continue;
+    double dx = p[r].x - ox, dy = p[r].y - oy, best = -INFINITY;
+    for (int i = 0, m = start[r]; i < len[r]; i++, m = m == n - 1 ? 0 : m + 1) {
+      double g = q->gx[m] * dx + q->gy[m] * dy;
+      if (g > best) best = g, off[r] = i;
+    }
+  }
+}
+
 static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
                             const geom_point p[3]) {
   int n = T->q->n, start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3];
-  for (int r = 0; r < 3; r++) {
-    len[r] = shape_range(k, start[r], sup[r]);
-    off[r] = len[r] / 2;
-  }
+  for (int r = 0; r < 3; r++) len[r] = shape_range(k, start[r], sup[r]);
+  shape_q_guess(T->q, p, start, len, off);
   for (int step = 0; step < 2 * n; step++) {
     int movable = 0, move = 0;
     for (int r = 0; r < 3; r++) {
