@@ -322,11 +322,10 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
 static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int start[3],
                           const int len[3], int off[3]) {
   double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
-  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d = 2 * (bx * cy - by * cx);
-  double ox = p[0].x + (b2 * cy - c2 * by) / d, oy = p[0].y + (c2 * bx - b2 * cx) / d;
+  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d = 0.5 / (bx * cy - by * cx);
+  double ox = p[0].x + (b2 * cy - c2 * by) * d, oy = p[0].y + (c2 * bx - b2 * cx) * d;
   int n = q->n;
   for (int r = 0; r < 3; r++) {
-    off[r] = 0;
     if (len[r] < 2) continue;
     double dx = p[r].x - ox, dy = p[r].y - oy, best = -INFINITY;
     for (int i = 0, m = start[r]; i < len[r]; i++, m = m == n - 1 ? 0 : m + 1) {
@@ -338,9 +337,9 @@ static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int
 
 static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
                             const geom_point p[3]) {
-  int n = T->q->n, start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3];
+  int n = T->q->n, start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3] = {0, 0, 0};
   for (int r = 0; r < 3; r++) len[r] = shape_range(k, start[r], sup[r]);
-  shape_q_guess(T->q, p, start, len, off);
+  if (len[0] > 1 || len[1] > 1 || len[2] > 1) shape_q_guess(T->q, p, start, len, off);
   for (int step = 0; step < 2 * n; step++) {
     int movable = 0, move = 0;
     for (int r = 0; r < 3; r++) {
