@@ -316,18 +316,19 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
 /* Where the walk starts: on a circle, the point of contact faces away from
 ** the centre, so in a range of two edges or more each point starts on the
 ** edge whose outward normal, scaled by its support (the gauge of K), is
-** largest at P - O, O the circumcentre of ABC, the guessed centre of H.  A
-** guess only (the walk and the contact test decide): a degenerate O
-** (infinite or NaN) gives the first edge. */
+** largest at P - O, O the circumcentre of ABC, the guessed centre of H.
+** O = A + (u, v) / 2d with d = cross(B - A, C - A) > 0, so the largest of
+** g.(2d (P - A) - (u, v)) is the same edge, without a division.  A guess
+** only (the walk and the contact test decide). */
 static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int start[3],
                           const int len[3], int off[3]) {
   double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
-  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d = 0.5 / (bx * cy - by * cx);
-  double ox = p[0].x + (b2 * cy - c2 * by) * d, oy = p[0].y + (c2 * bx - b2 * cx) * d;
+  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d2 = 2 * (bx * cy - by * cx);
+  double u = b2 * cy - c2 * by, v = c2 * bx - b2 * cx;
   int n = q->n;
   for (int r = 0; r < 3; r++) {
     if (len[r] < 2) continue;
-    double dx = p[r].x - ox, dy = p[r].y - oy, best = -INFINITY;
+    double dx = d2 * (p[r].x - p[0].x) - u, dy = d2 * (p[r].y - p[0].y) - v, best = -INFINITY;
     for (int i = 0, m = start[r]; i < len[r]; i++, m = m == n - 1 ? 0 : m + 1) {
       double g = q->gx[m] * dx + q->gy[m] * dy;
       if (g > best) best = g, off[r] = i;
