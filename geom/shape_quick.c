@@ -329,10 +329,14 @@ static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int
   for (int r = 0; r < 3; r++) {
     if (len[r] < 2) continue;
     double dx = d2 * (p[r].x - p[0].x) - u, dy = d2 * (p[r].y - p[0].y) - v, best = -INFINITY;
+    int at = 0;
     for (int i = 0, m = start[r]; i < len[r]; i++, m = m == n - 1 ? 0 : m + 1) {
       double g = q->gx[m] * dx + q->gy[m] * dy;
-      if (g > best) best = g, off[r] = i;
+      int better = g > best;   /* selects, not branches: the outcome is a coin toss */
+      best = better ? g : best;
+      at = better ? i : at;
     }
+    off[r] = at;
   }
 }
 
