@@ -62,7 +62,6 @@ typedef struct shape_quick {
   double *xv, *xt;       /* cross(e_i, e_j) and its twin, [i n + j] */
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
-  int start[8];          /* where the support scan starts, by direction class */
   double *gx, *gy;       /* edge i's outward normal over its support from the centroid */
 } shape_quick;
 
@@ -78,30 +77,10 @@ void shape_quick_free(shape *k) {
   k->quick = NULL;
 }
 
-/* ---- where a support scan starts ------------------------------------------
-**
-** The support of a direction d turns with d, so a scan from the support of
-** the first direction of d's class meets it within the class's few edges.
-** The class, from exact comparisons of d's coordinates: the octant of the
-** plane, bit 2 for dx < 0, bit 1 for dy < 0, bit 0 for |dx| < |dy|.  Each
-** octant's first direction is given turned back a little, and the start is
-** only where the scan looks first (it goes on round the whole polygon), so
-** rounding here costs time, never an answer. */
-static int shape_q_scan(const shape_quick *q, int from, double dx, double dy);
-
-static void shape_q_starts(shape_quick *q) {
-  /* the first angle of each class, in eighths of a turn */
-  static const signed char first[8] = {0, 1, 7, 6, 3, 2, 4, 5};
-  for (int c = 0; c < 8; c++) {
-    double a = (first[c] * 0.25 - 0x1p-20) * 3.14159265358979323846;
-    int s = shape_q_scan(q, 0, cos(a), sin(a));
-    q->start[c] = s < 0 ? 0 : s;
-  }
-}
-
 int shape_quick_build(shape *k) {
   shape_memo_flat_view m;
-  if (k->kind != SHAPE_POLYGON || shape_memo_flat(k, &m) != 0) return 0;
+  /* (shape_q_support keeps one bit per edge in a 32-bit word) */
+  if (k->kind != SHAPE_POLYGON || k->n > 32 || shape_memo_flat(k, &m) != 0) return 0;
   int n = k->n;
   shape_quick *q = calloc(1, sizeof *q);
   double *e = malloc(4 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
@@ -132,7 +111,6 @@ int shape_quick_build(shape *k) {
       q->xv[i * n + j] = q->ex[i] * q->ey[j] - q->ey[i] * q->ex[j];
       q->xt[i * n + j] = fabs(q->ex[i] * q->ey[j]) + fabs(q->ey[i] * q->ex[j]);
     }
-  shape_q_starts(q);
   k->quick = q;
   return 0;
 }
@@ -160,28 +138,14 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 }
 
 /* support(P, Q) for (dx, dy) = Q - P: the s where cross(e_j, Q - P)
-** changes sign from + at s - 1 to - at s, found on the values and then
-** certified at s - 1 and s; -1 when there is no such s or a sign there is
-** not certain. */
-static int shape_q_scan(const shape_quick *q, int from, double dx, double dy) {
-  int n = q->n, j = from;
-  int i = j > 0 ? j - 1 : n - 1;
-  double prev = q->ex[i] * dy - q->ey[i] * dx;
-  for (int step = 0; step < n; step++) {
-    double c = q->ex[j] * dy - q->ey[j] * dx;
-    if (prev > 0 && c < 0) return j;
-    prev = c;
-    j = j == n - 1 ? 0 : j + 1;
-  }
-  return -1;
-}
-
-/* For a shape of at most 32 edges, every certain sign at once and without
-** a branch per edge: bit j of pos (neg) is a certain + (-) of cross(e_j,
+** changes sign from + at s - 1 to - at s, or -1 when a sign there is not
+** certain.  Only shapes of at most SHAPE_MEMO_MAX = 16 edges have a quick
+** table, so every sign fits one word, taken at once without a branch per
+** edge: bit j of pos (neg) is a certain + (-) of cross(e_j,
 ** d), and support s is the bit of (pos turned by one) & neg, a certain +
 ** at s - 1 and - at s.  Certain signs are exact, and the exact signs change
 ** from + to - once, so there is at most one such bit; none: uncertain. */
-static int shape_q_support_all(const shape_quick *q, double dx, double dy) {
+static int shape_q_support(const shape_quick *q, double dx, double dy) {
   int n = q->n;
   uint32_t pos = 0, neg = 0;
   for (int j = 0; j < n; j++) {
@@ -190,17 +154,9 @@ static int shape_q_support_all(const shape_quick *q, double dx, double dy) {
     pos |= (uint32_t)(v > bound) << j;
     neg |= (uint32_t)(-v > bound) << j;
   }
-  uint32_t full = n == 32 ? 0xffffffffu : (1u << n) - 1;
+  uint32_t full = (1u << n) - 1;
   uint32_t change = (pos << 1 | pos >> (n - 1)) & full & neg;
   return change ? __builtin_ctz(change) : -1;
-}
-
-static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  if (q->n <= 32) return shape_q_support_all(q, dx, dy);
-  int j = shape_q_scan(q, q->start[(dx < 0) << 2 | (dy < 0) << 1 | (fabs(dx) < fabs(dy))], dx, dy);
-  if (j < 0) return -1;
-  int i = j > 0 ? j - 1 : q->n - 1;
-  return shape_q_cross(q, i, dx, dy) > 0 && shape_q_cross(q, j, dx, dy) < 0 ? j : -1;
 }
 
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
