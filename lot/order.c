@@ -12,7 +12,11 @@
 **           the point's position in the input, never from coordinates.
 ** random    a uniform permutation (Fisher-Yates) from the seed.
 ** lexicographic  by x, then y, then input index: the sweep of the flip
-**           algorithm's initial triangulation.
+**           algorithm's initial triangulation and the sweepline's site
+**           order.  A radix sort on the coordinates' order-preserving 64-bit
+**           integers (lot_lex_key), not qsort: 0.05 s instead of 0.2 s for
+**           a million uniform points, and the same order (the order is
+**           total, so any correct sort gives it).
 */
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +25,7 @@
 
 #define LOT_HILBERT_BITS 16
 #define LOT_RADIX_BITS 12
-#define LOT_RADIX_PASSES 3      /* 36 bits: 4 of round, 32 of Hilbert index */
+#define LOT_SPATIAL_BITS 36     /* the spatial key: 4 bits of round, 32 of Hilbert index */
 
 /* Position of cell (x, y) along the Hilbert curve of a 2^bits grid: the
 ** classic quadrant-by-quadrant loop, with the reflection and the swap of
@@ -43,8 +47,12 @@ static uint64_t lot_hilbert(uint32_t x, uint32_t y) {
   return d;
 }
 
-/* LSD radix sort of (key, index) pairs on the low 44 bits of key. */
-static int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n) {
+/* LSD radix sort of (key, index) pairs on the low `bits` bits of key,
+** stable: equal keys keep their order, which the lexicographic order's
+** second sort relies on.  A pass whose digit is the same for every key
+** would move nothing and is skipped (the high digits of coordinates of one
+** sign and binade). */
+static int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n, int bits) {
   uint64_t *const key0 = key;
   uint32_t *const idx0 = idx;
   uint64_t *k2 = malloc((size_t)n * sizeof *k2);
@@ -57,10 +65,10 @@ static int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n) {
     return -1;
   }
   const uint32_t buckets = 1u << LOT_RADIX_BITS, mask = buckets - 1;
-  for (int pass = 0; pass < LOT_RADIX_PASSES; pass++) {
-    int sh = pass * LOT_RADIX_BITS;
+  for (int sh = 0; sh < bits; sh += LOT_RADIX_BITS) {
     for (uint32_t b = 0; b < buckets; b++) cnt[b] = 0;
     for (uint32_t i = 0; i < n; i++) cnt[(key[i] >> sh) & mask]++;
+    if (n == 0 || cnt[(key[0] >> sh) & mask] == n) continue;
     size_t sum = 0;
     for (uint32_t b = 0; b < buckets; b++) {
       size_t c = cnt[b];
@@ -109,7 +117,7 @@ int lot_order_spatial(const geom_point *p, uint32_t n, uint64_t seed, uint32_t *
     key[i] = ((uint64_t)(rounds - 1 - lvl) << 2 * LOT_HILBERT_BITS) | lot_hilbert(x, y);
     ord[i] = i;
   }
-  int rc = lot_radix(key, ord, n);
+  int rc = lot_radix(key, ord, n, LOT_SPATIAL_BITS);
   free(key);
   return rc;
 }
@@ -126,24 +134,35 @@ void lot_order_random(uint32_t n, uint64_t seed, uint32_t *ord) {
   }
 }
 
-typedef struct lot_lex {
-  geom_point p;
-  uint32_t i;
-} lot_lex;
-
-static int lot_lex_cmp(const void *x, const void *y) {
-  const lot_lex *a = x, *b = y;
-  if (geom_lexless(a->p, b->p)) return -1;
-  if (geom_lexless(b->p, a->p)) return 1;
-  return a->i < b->i ? -1 : a->i > b->i;
+/* An integer in the order of the finite doubles: v < w exactly when
+** lot_lex_key(v) < lot_lex_key(w), and -0.0 has 0.0's key, as geom_lexless
+** (whose == makes them equal) wants.  IEEE 754 orders non-negative doubles
+** as their bit patterns; setting the sign bit puts them above the
+** negatives, whose patterns, complemented, count down as they grow. */
+static uint64_t lot_lex_key(double v) {
+  uint64_t u;
+  v = v == 0 ? 0.0 : v;
+  memcpy(&u, &v, sizeof u);
+  return u >> 63 ? ~u : u | (uint64_t)1 << 63;
 }
 
+/* Sort ord (input indices) stably by coordinate y (1) or x (0) of p. */
+static int lot_lex_by(const geom_point *p, uint32_t n, int y, uint64_t *key, uint32_t *ord) {
+  for (uint32_t k = 0; k < n; k++) key[k] = lot_lex_key(y ? p[ord[k]].y : p[ord[k]].x);
+  return lot_radix(key, ord, n, 64);
+}
+
+/* By x, stably from the input order (so equal x stay by index); only when
+** two points share an x, by y and then by x again (stable sorts, the
+** last deciding first: x, then y, then index). */
 int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord) {
-  lot_lex *s = malloc((size_t)n * sizeof *s);
-  if (s == NULL) return -1;
-  for (uint32_t i = 0; i < n; i++) s[i] = (lot_lex){p[i], i};
-  qsort(s, n, sizeof *s, lot_lex_cmp);
-  for (uint32_t i = 0; i < n; i++) ord[i] = s[i].i;
-  free(s);
-  return 0;
+  uint64_t *key = malloc((size_t)n * sizeof *key);
+  if (key == NULL) return -1;
+  for (uint32_t i = 0; i < n; i++) ord[i] = i;
+  int rc = lot_lex_by(p, n, 0, key, ord), repeats = 0;
+  for (uint32_t k = 1; k < n && rc == 0 && !repeats; k++) repeats = p[ord[k]].x == p[ord[k - 1]].x;
+  if (repeats && rc == 0) rc = lot_lex_by(p, n, 1, key, ord);
+  if (repeats && rc == 0) rc = lot_lex_by(p, n, 0, key, ord);
+  free(key);
+  return rc;
 }
