@@ -650,7 +650,7 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
   if (o->nsegments || o->nholes) cli_lot_constraint_lines(o, st);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
-  if (ties > 0)   /* a polygon's sweep met sites in special position */
+  if (ties > 0 || restarted)   /* a polygon's sweep met sites in special position */
     printf("sweep: %zu ties in special position (%s, then the %llu flips above with the "
            "tie-break)\n", ties, restarted
            ? "the polygon sweep's result was no triangulation: the Delaunay sweep's"

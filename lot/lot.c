@@ -655,29 +655,32 @@ static void lot_use_rule(lot *L) {
   L->m.pts = tri ? measure_points(mi) : NULL;
 }
 
-/* The sweep's triangulation (lot_triangulate).  A polygon's sweep that
-** met ties of sites in special position (pk.special > 0: equal keys of
-** neighbouring events, a zero "above" sign, lot/sweep_polygon.c) has
-** decided them by a fixed rule (equal keys in creation order, a zero sign
-** as "not above"), and nothing proves that this gives a triangulation: its
-** mesh is checked (lot_mesh_valid, exact), and when it is none, or the
-** sweep's structure broke (-3), the circle's sweep makes the Delaunay
-** triangulation instead, which is valid on every input.  Either way the
-** pass after it (lot_settle_ties, Lawson's flips with the rule and its
-** tie-break) ends at the rule's one tie-broken LOT (docs/lot.md, Ties),
-** the triangles of the other algorithms.  0, -1 (memory), -2 (err). */
+/* The sweep's triangulation (lot_triangulate).  A polygon's sweep decides
+** the ties of sites in special position (equal keys of neighbouring
+** events, a zero "above" sign, lot/sweep_polygon.c) by a fixed rule (equal
+** keys in creation order, a zero sign as "not above") and counts those it
+** meets (pk.special), and nothing proves that this gives a triangulation.
+** So its mesh is checked (lot_mesh_valid, exact), every time: the count
+** depends on which comparisons the event heap happens to make, and may
+** miss a tie; when the mesh is none, or the sweep's structure broke (-3),
+** the circle's sweep makes the Delaunay triangulation instead, which is
+** valid on every input.  Either way the pass after it (lot_settle_ties,
+** Lawson's flips with the rule and its tie-break) ends at the rule's one
+** tie-broken LOT (docs/lot.md, Ties), the triangles of the other
+** algorithms.  0, -1 (memory), -2 (err). */
 static int lot_sweep_mesh(lot *L, char *err, size_t errlen) {
   lot_sweep_pick pk;
   if (lot_sweep_pick_rule(&L->r, &pk, err, errlen) != 0) return -2;
   int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
   lot_sweep_pick_free(&pk);
   L->sweep_ties = pk.special;
-  if (rc == 0 && pk.special > 0) {
+  int poly = pk.s.ties != NULL;
+  if (rc == 0 && poly) {
     int v = lot_mesh_valid(&L->m, L->m.np - (uint32_t)L->st.duplicates);
     if (v < 0) return -1;
     rc = v ? 0 : -3;
   }
-  if (rc == -2 && pk.special > 0) rc = -3;   /* no triangle after ties: the circle's says why */
+  if (rc == -2 && poly) rc = -3;   /* no triangle from a polygon's sweep: the circle's says why */
   if (rc == -3) {
     L->sweep_restarted = 1;
     rc = lot_sweep_run(&L->m, &lot_sweep_circle, &L->st.duplicates);
