@@ -18,9 +18,9 @@
 **   ox = nx / D, oy = ny / D,  D = 2 (b'x c'y - b'y c'x),
 **   nx = |b'|^2 c'y - |c'|^2 b'y,  ny = |c'|^2 b'x - |b'|^2 c'x,
 ** and the key is a.x + ox + sqrt(ox^2 + oy^2), evaluated here in
-** certified intervals (sweep_internal.h), bounded by lot_iv_bounds. */
-static void lot_circle_key_bounds(const void *ctx, const geom_point t[3], double *lo, double *hi) {
-  (void)ctx;
+** certified intervals (sweep_internal.h): the slow path of
+** lot_circle_key_bounds, for triangles near collinear. */
+static lot_iv lot_circle_key_iv(const geom_point t[3]) {
   lot_iv bx = lot_iv_diff(t[1].x, t[0].x), by = lot_iv_diff(t[1].y, t[0].y);
   lot_iv cx = lot_iv_diff(t[2].x, t[0].x), cy = lot_iv_diff(t[2].y, t[0].y);
   lot_iv bb = lot_iv_add(lot_iv_mul(bx, bx), lot_iv_mul(by, by));
@@ -32,7 +32,55 @@ static void lot_circle_key_bounds(const void *ctx, const geom_point t[3], double
   lot_iv ny = lot_iv_add(lot_iv_mul(cc, bx), lot_iv_neg(lot_iv_mul(bb, cx)));
   lot_iv ox = lot_iv_div(nx, d), oy = lot_iv_div(ny, d);
   lot_iv r = lot_iv_sqrt(lot_iv_add(lot_iv_mul(ox, ox), lot_iv_mul(oy, oy)));
-  lot_iv k = lot_iv_add(lot_iv_add((lot_iv){t[0].x, 0}, ox), r);
+  return lot_iv_add(lot_iv_add((lot_iv){t[0].x, 0}, ox), r);
+}
+
+/* The key with one error bound instead of an interval per operation.  An
+** event's triangle turns clockwise (D < 0), so with S = sqrt(nx^2 + ny^2)
+** the key is a.x + (S - nx) / |D|: one division and one square root.
+** Error bound (eps = 2^-53; within the coordinate contract nothing under-
+** or overflows, geom_orient_valid): each difference b'x ... is exact times
+** (1 + d), |d| <= eps.  D / 2 is the orientation determinant, whose error
+** is at most (3 + 16 eps) eps (|l| + |r|), l, r its products (Shewchuk's
+** bound, geom/predicates.h): |fl(D) - D| <= eD = 16 eps (|l| + |r|).
+** |b'|^2 carries (1 + eps)^4 - 1 < 4.01 eps, each product of nx one more
+** factor of a difference and one rounding, so u1 = fl(|b'|^2 c'y) = U1 (1
+** + th), |th| < 6.01 eps, and with the subtraction |fl(nx) - nx| <= 6.01
+** eps (|U1| + |U2|) + eps |fl(nx)| < 7.1 eps (|u1| + |u2|) <= eNx = 8 eps
+** (|u1| + |u2|), likewise ny.  S: by the triangle inequality
+** |sqrt(fl(nx)^2 + fl(ny)^2) - S| <= eNx + eNy, and the rounded sum of
+** squares and its rounded root add (1 + eps)^2 - 1 < 2.01 eps relatively:
+** |s - S| <= eNx + eNy + 3 eps s.  num = fl(s - nx): |num - NUM| <= eNum
+** = |s - S| + eNx + eps |num|.  With ad = |fl(D)| (= fl(r - l) doubled,
+** exactly) and rho = eD / ad <= 1/64 (else the interval path decides),
+** |D| >= ad (1 - rho), and |num / ad - NUM / |D|| = |(num - NUM) ad +
+** num (|D| - ad)| / (ad |D|) <= (eNum + |num| rho) / (ad (1 - rho)) <=
+** 1.02 eNum / ad + 1.03 rho |q| (1 / (1 - rho) <= 64/63, |num| / ad <=
+** (1 + eps) |q| for q = fl(num / ad)), plus eps |q| for q's rounding; the sum a.x + q adds eps |key|.  The bound is
+** computed in floating point from non-negative terms, a few dozen
+** roundings each shrinking it by a factor (1 - eps) at worst, which the
+** margins (8 for 7.1, 3 for 2.01, 1.02 for 1.016, 16 for 6) and
+** lot_iv_bounds's lot_iv_fix outweigh; lot_iv_bounds then rounds the
+** final bounds outwards. */
+static int lot_circle_key_fast(const geom_point t[3], lot_iv *k) {
+  double bx = t[1].x - t[0].x, by = t[1].y - t[0].y, cx = t[2].x - t[0].x, cy = t[2].y - t[0].y;
+  double l = bx * cy, r = by * cx, ad = 2 * (r - l), eD = 16 * GEOM_EPS * (fabs(l) + fabs(r));
+  if (!(ad > 64 * eD)) return 0;   /* D not certainly negative and far from 0 */
+  double bb = bx * bx + by * by, cc = cx * cx + cy * cy;
+  double u1 = bb * cy, u2 = cc * by, v1 = cc * bx, v2 = bb * cx;
+  double nx = u1 - u2, ny = v1 - v2, s = sqrt(nx * nx + ny * ny), num = s - nx;
+  double eNx = 8 * GEOM_EPS * (fabs(u1) + fabs(u2)), eNy = 8 * GEOM_EPS * (fabs(v1) + fabs(v2));
+  double eNum = 2 * eNx + eNy + 3 * GEOM_EPS * s + GEOM_EPS * fabs(num);
+  double q = num / ad, key = t[0].x + q;
+  double eQ = 1.02 * (eNum / ad) + (1.03 * (eD / ad) + GEOM_EPS) * fabs(q);
+  *k = (lot_iv){key, eQ + GEOM_EPS * fabs(key)};
+  return 1;
+}
+
+static void lot_circle_key_bounds(const void *ctx, const geom_point t[3], double *lo, double *hi) {
+  (void)ctx;
+  lot_iv k;
+  if (!lot_circle_key_fast(t, &k)) k = lot_circle_key_iv(t);
   lot_iv_bounds(k, lo, hi);
 }
 
