@@ -520,5 +520,5 @@ shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom
                                 geom_point d) {
   geom_point p[4] = {a, b, c, d};
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
-  return shape_polygon_decide(k, p, k->quick != NULL && !shape_exact_only(), NULL);
+  return shape_polygon_decide(k, p, shape_quick_on(k), NULL);
 }

@@ -111,6 +111,9 @@ FLIPLAB_INTERNAL void shape_quick_free(shape *k);
 ** magnitude at least 2^-100 (its underflow argument); else 0.  The three
 ** verbs below require it. */
 FLIPLAB_INTERNAL int shape_quick_ready(const shape *k, const geom_point p[4]);
+/* 1 when K has a quick table and the exact-only test mode is off: the
+** part of shape_quick_ready that does not look at the sites. */
+FLIPLAB_INTERNAL int shape_quick_on(const shape *k);
 /* The support vertices s_AB, s_BC, s_CA of p[0..2] into sup: 0 when every
 ** sign they rest on is certain (they are then shape_support's), else -1. */
 FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]);

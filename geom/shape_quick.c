@@ -115,8 +115,12 @@ int shape_quick_build(shape *k) {
   return 0;
 }
 
+int shape_quick_on(const shape *k) {
+  return k->quick != NULL && !shape_exact_only();
+}
+
 int shape_quick_ready(const shape *k, const geom_point p[4]) {
-  if (k->quick == NULL || shape_exact_only()) return 0;
+  if (!shape_quick_on(k)) return 0;
   int ok = 1;
   for (int r = 0; r < 4; r++) {
     double x = fabs(p[r].x), y = fabs(p[r].y);
@@ -149,10 +153,9 @@ static int shape_q_support(const shape_quick *q, double dx, double dy) {
   int n = q->n;
   uint32_t pos = 0, neg = 0;
   for (int j = 0; j < n; j++) {
-    double a = q->ex[j] * dy, b = q->ey[j] * dx, v = a - b;
-    double bound = SHAPE_Q_BCROSS * (fabs(a) + fabs(b));
-    pos |= (uint32_t)(v > bound) << j;
-    neg |= (uint32_t)(-v > bound) << j;
+    int c = shape_q_cross(q, j, dx, dy);
+    pos |= (uint32_t)(c > 0) << j;
+    neg |= (uint32_t)(c < 0) << j;
   }
   uint32_t full = (1u << n) - 1;
   uint32_t change = (pos << 1 | pos >> (n - 1)) & full & neg;

@@ -507,10 +507,10 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   R->r = r;
   R->st = &L->st;
   R->cons = L->constrained ? &L->cdt.cons : NULL;
+  R->shape = rule_shape(r);
   R->kind = o->decide ? LOT_K_HOOK
           : rule_is_triangle(r) ? LOT_K_TRI
-          : rule_is_delaunay(r) ? LOT_K_DT : rule_is_shape(r) ? LOT_K_SHAPE : LOT_K_QUAD;
-  R->shape = rule_shape(r);
+          : rule_is_delaunay(r) ? LOT_K_DT : R->shape ? LOT_K_SHAPE : LOT_K_QUAD;
   /* A decision hook, or a quadrilateral rule not known to be systematic
   ** (rule_quad_set_systematic), may cycle. */
   R->track = R->kind == LOT_K_HOOK || (R->kind == LOT_K_QUAD && !rule_is_systematic(r));
