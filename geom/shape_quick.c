@@ -56,6 +56,16 @@
 **   A's) with a negative slack, else BD when none is 0; the same edges in
 **   the same order, each certain, give the same answer. */
 
+/* The sign pattern of cross(e_j, d) for every d in one open octant: bit j
+** of pos (neg) when that sign is + (-) throughout, the other edges in var
+** (nvar of them), and sup the support when nvar = 0 (else -1). */
+typedef struct shape_q_oct {
+  uint32_t pos, neg;
+  int nvar, sup;
+  unsigned char var[32];  /* padded to the shape's vmax with edge 0 ... */
+  uint32_t bit[32];       /* ... whose bit here is 0 (else 1 << var[i]) */
+} shape_q_oct;
+
 typedef struct shape_quick {
   int n;
   double *ex, *ey;       /* edge i's direction fl(k_{i+1} - k_i) */
@@ -63,6 +73,8 @@ typedef struct shape_quick {
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
   double *gx, *gy;       /* edge i's outward normal over its support from the centroid */
+  shape_q_oct oct[8];    /* the signs fixed in each open octant (shape_q_octants) */
+  int vmax;              /* the most edges an octant leaves open */
 } shape_quick;
 
 #define SHAPE_Q_U 0x1p-53
@@ -75,6 +87,49 @@ void shape_quick_free(shape *k) {
   free(k->quick->xv);
   free(k->quick);
   k->quick = NULL;
+}
+
+/* The support where a sign pattern changes from + at s - 1 to - at s (the
+** bit of (pos turned by one) & neg, at most one: below), or -1. */
+static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
+  uint32_t full = (1u << n) - 1;
+  uint32_t change = (pos << 1 | pos >> (n - 1)) & full & neg;
+  return change ? __builtin_ctz(change) : -1;
+}
+
+/* ---- octant windows ------------------------------------------------------
+**
+** The open octant o = 4 (dx < 0) + 2 (dy < 0) + (|dy| > |dx|) is the open
+** cone spanned by its two boundary rays r1 = (sx, 0) or (0, sy) and r2 =
+** (sx, sy), s the signs: any d in it is a r1 + b r2 with a, b > 0 (a =
+** ||dx| - |dy||, b the smaller of |dx|, |dy|).  cross(e_j, d) is linear in
+** d, so when the exact cross(e_j, r1) and cross(e_j, r2) are both >= 0
+** (both <= 0), not both 0 (r1, r2 are independent and e_j != 0), it is > 0
+** (< 0) for every d of the octant: an exact sign, the perturbed one too,
+** known before d is.  Only the other edges, whose direction lies inside
+** the octant or its opposite, need a cross product; the square needs none
+** and a regular hexagon at most two.  d on a boundary ray (dx = 0, dy = 0
+** or |dx| = |dy|, exact comparisons) takes every edge. */
+static void shape_q_octants(const shape *k, shape_quick *q) {
+  for (int o = 0; o < 8; o++) {
+    double sx = o & 4 ? -1 : 1, sy = o & 2 ? -1 : 1;
+    geom_point r1 = o & 1 ? (geom_point){0, sy} : (geom_point){sx, 0}, r2 = {sx, sy};
+    shape_q_oct *w = &q->oct[o];
+    *w = (shape_q_oct){.sup = -1};
+    for (int j = 0; j < k->n; j++) {
+      shape_args g1 = {.K = k, .e = {j}, .p = {{0, 0}, r1}}, g2 = g1;
+      g2.p[1] = r2;
+      int c1 = shape_sign(SHAPE_PROG_CROSS, &g1), c2 = shape_sign(SHAPE_PROG_CROSS, &g2);
+      if (c1 >= 0 && c2 >= 0) w->pos |= 1u << j;
+      else if (c1 <= 0 && c2 <= 0) w->neg |= 1u << j;
+      else {
+        w->bit[w->nvar] = 1u << j;
+        w->var[w->nvar++] = (unsigned char)j;
+      }
+    }
+    if (w->nvar == 0) w->sup = shape_q_change(w->pos, w->neg, k->n);
+    q->vmax = w->nvar > q->vmax ? w->nvar : q->vmax;
+  }
 }
 
 int shape_quick_build(shape *k) {
@@ -111,6 +166,7 @@ int shape_quick_build(shape *k) {
       q->xv[i * n + j] = q->ex[i] * q->ey[j] - q->ey[i] * q->ex[j];
       q->xt[i * n + j] = fabs(q->ex[i] * q->ey[j]) + fabs(q->ey[i] * q->ex[j]);
     }
+  shape_q_octants(k, q);
   k->quick = q;
   return 0;
 }
@@ -144,22 +200,34 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 /* support(P, Q) for (dx, dy) = Q - P: the s where cross(e_j, Q - P)
 ** changes sign from + at s - 1 to - at s, or -1 when a sign there is not
 ** certain.  Only shapes of at most SHAPE_MEMO_MAX = 16 edges have a quick
-** table, so every sign fits one word, taken at once without a branch per
-** edge: bit j of pos (neg) is a certain + (-) of cross(e_j,
-** d), and support s is the bit of (pos turned by one) & neg, a certain +
-** at s - 1 and - at s.  Certain signs are exact, and the exact signs change
-** from + to - once, so there is at most one such bit; none: uncertain. */
+** table, so every sign fits one word: bit j of pos (neg) is a certain +
+** (-) of cross(e_j, d), the octant's fixed signs (shape_q_octants) and a
+** certified cross product for each edge it leaves open, and support s is
+** the bit of (pos turned by one) & neg, a certain + at s - 1 and - at s.
+** Certain signs are exact, and the exact signs change from + to - once, so
+** there is at most one such bit; none: uncertain. */
 static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  int n = q->n;
-  uint32_t pos = 0, neg = 0;
-  for (int j = 0; j < n; j++) {
-    int c = shape_q_cross(q, j, dx, dy);
-    pos |= (uint32_t)(c > 0) << j;
-    neg |= (uint32_t)(c < 0) << j;
+  double ax = fabs(dx), ay = fabs(dy);
+  if (dx == 0 || dy == 0 || ax == ay) {
+    uint32_t pos = 0, neg = 0;
+    for (int j = 0; j < q->n; j++) {
+      int c = shape_q_cross(q, j, dx, dy);
+      pos |= (uint32_t)(c > 0) << j;
+      neg |= (uint32_t)(c < 0) << j;
+    }
+    return shape_q_change(pos, neg, q->n);
   }
-  uint32_t full = (1u << n) - 1;
-  uint32_t change = (pos << 1 | pos >> (n - 1)) & full & neg;
-  return change ? __builtin_ctz(change) : -1;
+  const shape_q_oct *w = &q->oct[(dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
+  if (q->vmax == 0) return w->sup;
+  /* every octant takes vmax crosses, the padding masked off: the count
+  ** is the shape's, so the loop's branch is always predicted */
+  uint32_t pos = w->pos, neg = w->neg;
+  for (int i = 0; i < q->vmax; i++) {
+    int c = shape_q_cross(q, w->var[i], dx, dy);
+    pos |= -(uint32_t)(c > 0) & w->bit[i];
+    neg |= -(uint32_t)(c < 0) & w->bit[i];
+  }
+  return shape_q_change(pos, neg, q->n);
 }
 
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {

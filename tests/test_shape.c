@@ -766,10 +766,66 @@ static void test_quick_exact(void **state) {
   }
 }
 
+/* The octant windows (geom/shape_quick.c): each open octant fixes the
+** signs of the edges outside it, so the supports of directions on and next
+** to an octant's boundary rays (the axes and diagonals) and to each edge's
+** own direction, nudged by ulps, are where a wrong table would show; every
+** certain support must be shape_support's, and random directions must be
+** answered.  The last shapes have edges an ulp off a diagonal and an axis. */
+static void tquick_dir(const shape *k, geom_point d, long *answered) {
+  geom_point q[3] = {{0, 0}, d, {-d.y, d.x}};   /* supports of d, of (-d.y - d.x, d.x - d.y) and of -(-d.y, d.x) */
+  int sup[3];
+  if (shape_quick_supports(k, q, sup) != 0) return;
+  (*answered)++;
+  for (int r = 0; r < 3; r++)
+    if (sup[r] != shape_support(k, q[r], q[(r + 1) % 3]))
+      fail_msg("quick support %d of (%a,%a) -> (%a,%a): %d, exact %d", r, q[r].x, q[r].y,
+               q[(r + 1) % 3].x, q[(r + 1) % 3].y, sup[r], shape_support(k, q[r], q[(r + 1) % 3]));
+}
+
+static void test_quick_octants(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "diamond", "triangle", "hexagon", "octagon",
+                                      "ngon:7", "ngon:16", "poly:0 0;1 1.0000000000000002;0 3",
+                                      "poly:0 0;1 -0.0000000000000001;1 1;0 1"};
+  testutil_rng rng = {2028};
+  for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
+    shape *k = tshape_get(specs[si]);
+    long answered = 0, tried = 0;
+    for (int it = 0; it < 4000; it++, tried++) {
+      double a = testutil_uniform(&rng) * 2 - 1, b = testutil_uniform(&rng) * 2 - 1;
+      tquick_dir(k, (geom_point){a, b}, &answered);
+    }
+    assert_true(answered > tried * 99 / 100);
+    for (int sx = -1; sx <= 1; sx += 2)
+      for (int sy = -1; sy <= 1; sy += 2)
+        for (int nud = -3; nud <= 3; nud++) {
+          double one = 1;
+          for (int i = 0; i < (nud < 0 ? -nud : nud); i++) one = nextafter(one, nud < 0 ? 0 : 2);
+          double tiny = nud * 0x1p-60;
+          tquick_dir(k, (geom_point){sx * 1.0, sy * one}, &answered);    /* diagonals */
+          tquick_dir(k, (geom_point){sx * one, sy * 1.0}, &answered);
+          tquick_dir(k, (geom_point){sx * 1.0, tiny}, &answered);        /* axes */
+          tquick_dir(k, (geom_point){tiny, sy * 1.0}, &answered);
+        }
+    for (int j = 0; j < k->n; j++) {   /* each edge's direction, both ways, nudged */
+      geom_point a = k->v[j], b = k->v[(j + 1) % k->n];
+      for (int nud = -3; nud <= 3; nud++) {
+        geom_point d = {b.x - a.x, b.y - a.y};
+        for (int i = 0; i < (nud < 0 ? -nud : nud); i++) d.y = nextafter(d.y, nud < 0 ? -1e300 : 1e300);
+        tquick_dir(k, d, &answered);
+        tquick_dir(k, (geom_point){-d.x, -d.y}, &answered);
+      }
+    }
+    shape_free(k);
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_filter_exact),
     cmocka_unit_test(test_quick_exact),
+    cmocka_unit_test(test_quick_octants),
     cmocka_unit_test(test_rotations_random),
     cmocka_unit_test(test_rotations_grid),
     cmocka_unit_test(test_oracle),
