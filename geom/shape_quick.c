@@ -109,7 +109,9 @@ static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
 ** known before d is.  Only the other edges, whose direction lies inside
 ** the octant or its opposite, need a cross product; the square needs none
 ** and a regular hexagon at most two.  d on a boundary ray (dx = 0, dy = 0
-** or |dx| = |dy|, exact comparisons) takes every edge. */
+** or |dx| = |dy|) takes every edge.  The octant is read off the rounded
+** differences, and it is the exact d's: rounding is monotone and odd, so
+** fl(dx) has dx's sign and |fl(dx)| > |fl(dy)| implies |dx| > |dy|. */
 static void shape_q_octants(const shape *k, shape_quick *q) {
   for (int o = 0; o < 8; o++) {
     double sx = o & 4 ? -1 : 1, sy = o & 2 ? -1 : 1;
