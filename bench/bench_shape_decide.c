@@ -33,18 +33,20 @@ static rule_choice bench_record(const geom_point q[4], rule_choice cur, void *ct
 }
 
 /* Median ns per quadrilateral of R runs of shape_decide_valid (k) or of
-** the incircle test (k NULL); *sink keeps the answers alive. */
-static double bench_decide_ns(const bench_quads *c, const shape *k, int R, long *sink) {
+** the incircle test (k NULL); the sink keeps the answers alive. */
+static double bench_decide_ns(const bench_quads *c, const shape *k, int R) {
   double t[64];
+  volatile long sink = 0;
   for (int r = 0; r < R; r++) {
     double t0 = bench_wall();
     for (size_t i = 0; i < c->n; i++) {
       const geom_point *q = c->q + 4 * i;
-      *sink += k ? (long)shape_decide_valid(k, q[0], q[1], q[2], q[3])
+      sink += k ? (long)shape_decide_valid(k, q[0], q[1], q[2], q[3])
                  : geom_incircle_valid(q[0], q[1], q[3], q[2]);
     }
     t[r] = (bench_wall() - t0) / (double)c->n * 1e9;
   }
+  (void)sink;
   return bench_median(t, R);
 }
 
@@ -72,10 +74,8 @@ static int bench_one(const char *name, const geom_point *p, size_t n, int R) {
     return 1;
   }
   lot_free(L);
-  long sink = 0;
-  double es = bench_decide_ns(&c, c.k, R, &sink), dt = bench_decide_ns(&c, NULL, R, &sink);
+  double es = bench_decide_ns(&c, c.k, R), dt = bench_decide_ns(&c, NULL, R);
   printf("| %s | %zu | %.1f | %.1f | %.1f |\n", name, c.n, es, dt, es - dt);
-  if (sink == -1) printf("(sink)\n");   /* keeps the answers alive */
   free(c.q);
   return 0;
 }

@@ -73,7 +73,8 @@ typedef struct shape_quick {
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
   double *gx, *gy;       /* edge i's outward normal over its support from the centroid */
-  shape_q_oct oct[8];    /* the signs fixed in each open octant (shape_q_octants) */
+  shape_q_oct oct[9];    /* the signs fixed in each open octant (shape_q_octants); */
+                         /* 8: a boundary ray's, none fixed, every edge open */
   int vmax;              /* the most edges an octant leaves open */
 } shape_quick;
 
@@ -131,6 +132,12 @@ static void shape_q_octants(const shape *k, shape_quick *q) {
     }
     if (w->nvar == 0) w->sup = shape_q_change(w->pos, w->neg, k->n);
     q->vmax = w->nvar > q->vmax ? w->nvar : q->vmax;
+  }
+  shape_q_oct *all = &q->oct[8];
+  *all = (shape_q_oct){.nvar = k->n, .sup = -1};
+  for (int j = 0; j < k->n; j++) {
+    all->var[j] = (unsigned char)j;
+    all->bit[j] = 1u << j;
   }
 }
 
@@ -210,21 +217,14 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 ** there is at most one such bit; none: uncertain. */
 static int shape_q_support(const shape_quick *q, double dx, double dy) {
   double ax = fabs(dx), ay = fabs(dy);
-  if (dx == 0 || dy == 0 || ax == ay) {
-    uint32_t pos = 0, neg = 0;
-    for (int j = 0; j < q->n; j++) {
-      int c = shape_q_cross(q, j, dx, dy);
-      pos |= (uint32_t)(c > 0) << j;
-      neg |= (uint32_t)(c < 0) << j;
-    }
-    return shape_q_change(pos, neg, q->n);
-  }
-  const shape_q_oct *w = &q->oct[(dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
-  if (q->vmax == 0) return w->sup;
-  /* every octant takes vmax crosses, the padding masked off: the count
-  ** is the shape's, so the loop's branch is always predicted */
+  int ray = dx == 0 || dy == 0 || ax == ay;
+  const shape_q_oct *w = &q->oct[ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
+  /* an octant takes vmax crosses, the padding masked off: the count is
+  ** the shape's, so the loop's branch is predicted (a ray, rare, takes n) */
+  int open = ray ? q->n : q->vmax;
+  if (open == 0) return w->sup;
   uint32_t pos = w->pos, neg = w->neg;
-  for (int i = 0; i < q->vmax; i++) {
+  for (int i = 0; i < open; i++) {
     int c = shape_q_cross(q, w->var[i], dx, dy);
     pos |= -(uint32_t)(c > 0) & w->bit[i];
     neg |= -(uint32_t)(c < 0) & w->bit[i];

@@ -710,6 +710,13 @@ static void tquick_same(const shape *k, const geom_point q[4]) {
   }
 }
 
+/* x moved by k ulps, up for k > 0, down for k < 0. */
+static double tquick_ulps(double x, int k) {
+  for (; k > 0; k--) x = nextafter(x, 1e300);
+  for (; k < 0; k++) x = nextafter(x, -1e300);
+  return x;
+}
+
 /* Four sites on the homothet c + s k at boundary parameters u (edge floor(u),
 ** fraction u - floor(u), a corner when 0), sorted: anticlockwise; the last
 ** nudged by `nudge` ulps in x.  0 when they are not strictly convex. */
@@ -730,8 +737,7 @@ static int tquick_on_homothet(testutil_rng *rng, const shape *k, geom_point q[4]
     geom_point a = k->v[i], b = k->v[(i + 1) % k->n];
     q[r] = (geom_point){c + s * (a.x + f * (b.x - a.x)), c * 0.5 + s * (a.y + f * (b.y - a.y))};
   }
-  for (int i = 0; i < nudge; i++) q[3].x = nextafter(q[3].x, 1e300);
-  for (int i = 0; i > nudge; i--) q[3].x = nextafter(q[3].x, -1e300);
+  q[3].x = tquick_ulps(q[3].x, nudge);
   return tshape_convex(q);
 }
 
@@ -800,9 +806,7 @@ static void test_quick_octants(void **state) {
     for (int sx = -1; sx <= 1; sx += 2)
       for (int sy = -1; sy <= 1; sy += 2)
         for (int nud = -3; nud <= 3; nud++) {
-          double one = 1;
-          for (int i = 0; i < (nud < 0 ? -nud : nud); i++) one = nextafter(one, nud < 0 ? 0 : 2);
-          double tiny = nud * 0x1p-60;
+          double one = tquick_ulps(1, nud), tiny = nud * 0x1p-60;
           tquick_dir(k, (geom_point){sx * 1.0, sy * one}, &answered);    /* diagonals */
           tquick_dir(k, (geom_point){sx * one, sy * 1.0}, &answered);
           tquick_dir(k, (geom_point){sx * 1.0, tiny}, &answered);        /* axes */
@@ -811,8 +815,7 @@ static void test_quick_octants(void **state) {
     for (int j = 0; j < k->n; j++) {   /* each edge's direction, both ways, nudged */
       geom_point a = k->v[j], b = k->v[(j + 1) % k->n];
       for (int nud = -3; nud <= 3; nud++) {
-        geom_point d = {b.x - a.x, b.y - a.y};
-        for (int i = 0; i < (nud < 0 ? -nud : nud); i++) d.y = nextafter(d.y, nud < 0 ? -1e300 : 1e300);
+        geom_point d = {b.x - a.x, tquick_ulps(b.y - a.y, nud)};
         tquick_dir(k, d, &answered);
         tquick_dir(k, (geom_point){-d.x, -d.y}, &answered);
       }
