@@ -72,10 +72,12 @@ typedef struct shape_quick {
   double *xv, *xt;       /* cross(e_i, e_j) and its twin, [i n + j] */
   shape_memo_flat_view m;
   double bdet4;          /* (2 (kmax + 9) + 2) u */
-  double *gx, *gy;       /* edge i's outward normal over its support from the centroid */
+  double *gx, *gy;       /* edge i's outward normal over its support from the centroid, */
+                         /* twice over (i and i + n: a range is read without wrapping) */
   shape_q_oct oct[9];    /* the signs fixed in each open octant (shape_q_octants); */
                          /* 8: a boundary ray's, none fixed, every edge open */
   int vmax;              /* the most edges an octant leaves open */
+  unsigned char nb[2][32];   /* edge i's neighbours: [0] i - 1, [1] i + 1 (mod n) */
 } shape_quick;
 
 #define SHAPE_Q_U 0x1p-53
@@ -147,14 +149,14 @@ int shape_quick_build(shape *k) {
   if (k->kind != SHAPE_POLYGON || k->n > 32 || shape_memo_flat(k, &m) != 0) return 0;
   int n = k->n;
   shape_quick *q = calloc(1, sizeof *q);
-  double *e = malloc(4 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
+  double *e = malloc(6 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
   if (q == NULL || e == NULL || x == NULL) {
     free(q);
     free(e);
     free(x);
     return -1;
   }
-  *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .gx = e + 2 * n, .gy = e + 3 * n,
+  *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .gx = e + 2 * n, .gy = e + 4 * n,
                      .xv = x, .xt = x + n * n, .m = m,
                      .bdet4 = (2.0 * (m.kmax + 9) + 2) * SHAPE_Q_U};
   double cx = 0, cy = 0;
@@ -165,10 +167,14 @@ int shape_quick_build(shape *k) {
     cy += k->v[i].y / n;
   }
   for (int i = 0; i < n; i++) {
+    q->nb[0][i] = (unsigned char)(i == 0 ? n - 1 : i - 1);
+    q->nb[1][i] = (unsigned char)(i == n - 1 ? 0 : i + 1);
+  }
+  for (int i = 0; i < n; i++) {
     /* the vertex average is inside K, so every support from it is > 0 */
     double h = q->ey[i] * (k->v[i].x - cx) - q->ex[i] * (k->v[i].y - cy);
-    q->gx[i] = q->ey[i] / h;
-    q->gy[i] = -q->ex[i] / h;
+    q->gx[i] = q->gx[i + n] = q->ey[i] / h;
+    q->gy[i] = q->gy[i + n] = -q->ex[i] / h;
   }
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
@@ -217,7 +223,7 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 ** there is at most one such bit; none: uncertain. */
 static int shape_q_support(const shape_quick *q, double dx, double dy) {
   double ax = fabs(dx), ay = fabs(dy);
-  int ray = dx == 0 || dy == 0 || ax == ay;
+  int ray = (dx == 0) | (dy == 0) | (ax == ay);   /* rare: no branches for it */
   const shape_q_oct *w = &q->oct[ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
   /* an octant takes vmax crosses, the padding masked off: the count is
   ** the shape's, so the loop's branch is predicted (a ray, rare, takes n) */
@@ -325,10 +331,9 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
   double v = -T->wb * q->xv[t[0] * n + t[2]] + T->wc * q->xv[t[0] * n + t[1]];
   double tw = T->wbt * q->xt[t[0] * n + t[2]] + T->wct * q->xt[t[0] * n + t[1]];
   if (shape_q_sign(v, tw, SHAPE_Q_BDET3W) != T->d3) return -1;
-  for (int bit = 0; bit < 6; bit++) {
-    if (!(movable >> bit & 1)) continue;
-    int r = bit >> 1, m = bit & 1 ? (t[r] == n - 1 ? 0 : t[r] + 1) : (t[r] == 0 ? n - 1 : t[r] - 1);
-    int s = shape_q_slack(T, m, p[r]);
+  for (; movable != 0; movable &= movable - 1) {
+    int bit = __builtin_ctz((unsigned)movable), r = bit >> 1;
+    int s = shape_q_slack(T, q->nb[bit & 1][t[r]], p[r]);
     if (s == 0) return -1;
     if (s < 0) {
       *move = bit;
@@ -354,13 +359,13 @@ static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int
   double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
   double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, d2 = 2 * (bx * cy - by * cx);
   double u = b2 * cy - c2 * by, v = c2 * bx - b2 * cx;
-  int n = q->n;
   for (int r = 0; r < 3; r++) {
     if (len[r] < 2) continue;
     double dx = d2 * (p[r].x - p[0].x) - u, dy = d2 * (p[r].y - p[0].y) - v, best = -INFINITY;
     int at = 0;
-    for (int i = 0, m = start[r]; i < len[r]; i++, m = m == n - 1 ? 0 : m + 1) {
-      double g = q->gx[m] * dx + q->gy[m] * dy;
+    const double *gx = q->gx + start[r], *gy = q->gy + start[r];
+    for (int i = 0; i < len[r]; i++) {
+      double g = gx[i] * dx + gy[i] * dy;
       int better = g > best;   /* selects, not branches: the outcome is a coin toss */
       best = better ? g : best;
       at = better ? i : at;
@@ -374,15 +379,20 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
   int n = T->q->n, start[3] = {sup[2], sup[0], sup[1]}, len[3], off[3] = {0, 0, 0};
   for (int r = 0; r < 3; r++) len[r] = shape_range(k, start[r], sup[r]);
   if (len[0] > 1 || len[1] > 1 || len[2] > 1) shape_q_guess(T->q, p, start, len, off);
+  int movable = 0;
+  for (int r = 0; r < 3; r++) {
+    T->t[r] = start[r] + off[r] < n ? start[r] + off[r] : start[r] + off[r] - n;
+    movable |= (off[r] > 0) << 2 * r | (off[r] + 1 < len[r]) << (2 * r + 1);
+  }
   for (int step = 0; step < 2 * n; step++) {
-    int movable = 0, move = 0;
-    for (int r = 0; r < 3; r++) {
-      T->t[r] = start[r] + off[r] < n ? start[r] + off[r] : start[r] + off[r] - n;
-      movable |= (off[r] > 0) << 2 * r | (off[r] + 1 < len[r]) << (2 * r + 1);
-    }
-    int ok = shape_q_contact(T, p, movable, &move);
+    int move = 0, ok = shape_q_contact(T, p, movable, &move);
     if (ok != 0) return ok > 0 ? 0 : -1;
-    off[move / 2] += move % 2 ? 1 : -1;
+    /* only the moved point's edge and its two bits change */
+    int r = move >> 1, up = move & 1;
+    off[r] += up ? 1 : -1;
+    T->t[r] = T->q->nb[up][T->t[r]];
+    movable &= ~(3 << 2 * r);
+    movable |= (off[r] > 0) << 2 * r | (off[r] + 1 < len[r]) << (2 * r + 1);
   }
   return -1;
 }
@@ -403,8 +413,8 @@ int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4]
   shape_q_tri T;
   T.q = k->quick, T.ax = p[0].x, T.ay = p[0].y;
   if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
-  int n = T.q->n, ans = SHAPE_BD;
-  for (int m = T.t[2];; m = m == n - 1 ? 0 : m + 1) {
+  int ans = SHAPE_BD;
+  for (int m = T.t[2];; m = T.q->nb[1][m]) {
     int s = shape_q_dslack(&T, m, p);
     if (s == 0) return -1;
     if (s < 0) {
