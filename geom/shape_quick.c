@@ -58,12 +58,17 @@
 
 /* The sign pattern of cross(e_j, d) for every d in one open octant: bit j
 ** of pos (neg) when that sign is + (-) throughout, the other edges in var
-** (nvar of them), and sup the support when nvar = 0 (else -1). */
+** (nvar of them), and sup the support when nvar = 0 (else -1).  Entry i's
+** certain sign c of cross(e_var[i], d) sets the bits of plus[i] in pos (c
+** > 0) or neg (c < 0) and those of minus[i] the other way: minus[i] holds
+** an edge whose rounded direction is exactly -e_var[i], whose computed
+** cross product is then exactly -c's, with the same twin, so its own
+** certain sign (centrally symmetric shapes: one cross for both). */
 typedef struct shape_q_oct {
   uint32_t pos, neg;
   int nvar, sup;
   unsigned char var[32];  /* padded to the shape's vmax with edge 0 ... */
-  uint32_t bit[32];       /* ... whose bit here is 0 (else 1 << var[i]) */
+  uint32_t plus[32], minus[32];   /* ... whose masks here are 0 */
 } shape_q_oct;
 
 typedef struct shape_quick {
@@ -100,6 +105,18 @@ static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
   return change ? __builtin_ctz(change) : -1;
 }
 
+/* Leave edge j open in w: its own entry, or the minus side of an entry
+** whose edge is its exact opposite. */
+static void shape_q_open(const shape_quick *q, shape_q_oct *w, int j) {
+  for (int i = 0; i < w->nvar; i++)
+    if (w->minus[i] == 0 && q->ex[w->var[i]] == -q->ex[j] && q->ey[w->var[i]] == -q->ey[j]) {
+      w->minus[i] = 1u << j;
+      return;
+    }
+  w->plus[w->nvar] = 1u << j;
+  w->var[w->nvar++] = (unsigned char)j;
+}
+
 /* ---- octant windows ------------------------------------------------------
 **
 ** The open octant o = 4 (dx < 0) + 2 (dy < 0) + (|dy| > |dx|) is the open
@@ -111,10 +128,11 @@ static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
 ** (< 0) for every d of the octant: an exact sign, the perturbed one too,
 ** known before d is.  Only the other edges, whose direction lies inside
 ** the octant or its opposite, need a cross product; the square needs none
-** and a regular hexagon at most two.  d on a boundary ray (dx = 0, dy = 0
-** or |dx| = |dy|) takes every edge.  The octant is read off the rounded
-** differences, and it is the exact d's: rounding is monotone and odd, so
-** fl(dx) has dx's sign and |fl(dx)| > |fl(dy)| implies |dx| > |dy|. */
+** and a regular hexagon one (two edges, one the other's opposite).  d on a
+** boundary ray (dx = 0, dy = 0 or |dx| = |dy|) takes every edge.  The
+** octant is read off the rounded differences, and it is the exact d's:
+** rounding is monotone and odd, so fl(dx) has dx's sign and |fl(dx)| >
+** |fl(dy)| implies |dx| > |dy|. */
 static void shape_q_octants(const shape *k, shape_quick *q) {
   for (int o = 0; o < 8; o++) {
     double sx = o & 4 ? -1 : 1, sy = o & 2 ? -1 : 1;
@@ -127,20 +145,14 @@ static void shape_q_octants(const shape *k, shape_quick *q) {
       int c1 = shape_sign(SHAPE_PROG_CROSS, &g1), c2 = shape_sign(SHAPE_PROG_CROSS, &g2);
       if (c1 >= 0 && c2 >= 0) w->pos |= 1u << j;
       else if (c1 <= 0 && c2 <= 0) w->neg |= 1u << j;
-      else {
-        w->bit[w->nvar] = 1u << j;
-        w->var[w->nvar++] = (unsigned char)j;
-      }
+      else shape_q_open(q, w, j);
     }
     if (w->nvar == 0) w->sup = shape_q_change(w->pos, w->neg, k->n);
     q->vmax = w->nvar > q->vmax ? w->nvar : q->vmax;
   }
   shape_q_oct *all = &q->oct[8];
-  *all = (shape_q_oct){.nvar = k->n, .sup = -1};
-  for (int j = 0; j < k->n; j++) {
-    all->var[j] = (unsigned char)j;
-    all->bit[j] = 1u << j;
-  }
+  *all = (shape_q_oct){.sup = -1};
+  for (int j = 0; j < k->n; j++) shape_q_open(q, all, j);
 }
 
 int shape_quick_build(shape *k) {
@@ -226,14 +238,15 @@ static int shape_q_support(const shape_quick *q, double dx, double dy) {
   int ray = (dx == 0) | (dy == 0) | (ax == ay);   /* rare: no branches for it */
   const shape_q_oct *w = &q->oct[ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
   /* an octant takes vmax crosses, the padding masked off: the count is
-  ** the shape's, so the loop's branch is predicted (a ray, rare, takes n) */
-  int open = ray ? q->n : q->vmax;
+  ** the shape's, so the loop's branch is predicted (a ray, rare, takes every edge) */
+  int open = ray ? w->nvar : q->vmax;
   if (open == 0) return w->sup;
   uint32_t pos = w->pos, neg = w->neg;
   for (int i = 0; i < open; i++) {
     int c = shape_q_cross(q, w->var[i], dx, dy);
-    pos |= -(uint32_t)(c > 0) & w->bit[i];
-    neg |= -(uint32_t)(c < 0) & w->bit[i];
+    uint32_t gt = -(uint32_t)(c > 0), lt = -(uint32_t)(c < 0);
+    pos |= (gt & w->plus[i]) | (lt & w->minus[i]);
+    neg |= (lt & w->plus[i]) | (gt & w->minus[i]);
   }
   return shape_q_change(pos, neg, q->n);
 }

@@ -777,9 +777,11 @@ static void test_quick_exact(void **state) {
 ** to an octant's boundary rays (the axes and diagonals) and to each edge's
 ** own direction, nudged by ulps, are where a wrong table would show; every
 ** certain support must be shape_support's, and random directions must be
-** answered.  The last shapes have edges an ulp off a diagonal and an axis. */
-static void tquick_dir(const shape *k, geom_point d, long *answered) {
-  geom_point q[3] = {{0, 0}, d, {-d.y, d.x}};   /* supports of d, of (-d.y - d.x, d.x - d.y) and of -(-d.y, d.x) */
+** answered.  The last shapes have edges an ulp off a diagonal and an axis,
+** and two edges whose rounded directions are exact opposites, (2, 1) and
+** fl(-2 - 2^-59, -1), though the edges are not (one cross product answers
+** for both: the directions between the two are probed from the points). */
+static void tquick_points(const shape *k, const geom_point q[3], long *answered) {
   int sup[3];
   if (shape_quick_supports(k, q, sup) != 0) return;
   (*answered)++;
@@ -789,11 +791,29 @@ static void tquick_dir(const shape *k, geom_point d, long *answered) {
                q[(r + 1) % 3].x, q[(r + 1) % 3].y, sup[r], shape_support(k, q[r], q[(r + 1) % 3]));
 }
 
+static void tquick_dir(const shape *k, geom_point d, long *answered) {
+  geom_point q[3] = {{0, 0}, d, {-d.y, d.x}};   /* supports of d, of (-d.y - d.x, d.x - d.y) and of -(-d.y, d.x) */
+  tquick_points(k, q, answered);
+}
+
+static void tquick_opposite(const shape *k, long *answered) {
+  /* Q - P = (2 + nud 2^-61, 1), on both sides of and between the two
+  ** exact directions, and reversed directions nudged by ulps */
+  for (int nud = -4; nud <= 4; nud++)
+    for (int way = -1; way <= 1; way += 2) {
+      geom_point q[3] = {{-nud * 0x1p-61, 0}, {2, 1}, {-1, 3}};
+      if (way < 0) q[0] = (geom_point){2 + 4 * nud * 0x1p-52, 1}, q[1] = (geom_point){0, 0};
+      tquick_points(k, q, answered);
+    }
+}
+
+
 static void test_quick_octants(void **state) {
   (void)state;
   static const char *const specs[] = {"square", "diamond", "triangle", "hexagon", "octagon",
                                       "ngon:7", "ngon:16", "poly:0 0;1 1.0000000000000002;0 3",
-                                      "poly:0 0;1 -0.0000000000000001;1 1;0 1"};
+                                      "poly:0 0;1 -0.0000000000000001;1 1;0 1",
+                                      "poly:0 0;2 1;2 3;1.7347234759768071e-18 3;-2 2"};
   testutil_rng rng = {2028};
   for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
     shape *k = tshape_get(specs[si]);
@@ -820,6 +840,7 @@ static void test_quick_octants(void **state) {
         tquick_dir(k, (geom_point){-d.x, -d.y}, &answered);
       }
     }
+    tquick_opposite(k, &answered);
     shape_free(k);
   }
 }
