@@ -58,17 +58,22 @@
 
 /* The sign pattern of cross(e_j, d) for every d in one open octant: bit j
 ** of pos (neg) when that sign is + (-) throughout, the other edges in var
-** (nvar of them), and sup the support when nvar = 0 (else -1).  Entry i's
-** certain sign c of cross(e_var[i], d) sets the bits of plus[i] in pos (c
-** > 0) or neg (c < 0) and those of minus[i] the other way: minus[i] holds
-** an edge whose rounded direction is exactly -e_var[i], whose computed
-** cross product is then exactly -c's, with the same twin, so its own
-** certain sign (centrally symmetric shapes: one cross for both). */
+** (nvar of them).  Entry i's certain sign c of cross(e_var[i], d) sets the
+** bits of plus[i] in pos (c > 0) or neg (c < 0) and those of minus[i] the
+** other way: minus[i] holds an edge whose rounded direction is exactly
+** -e_var[i], whose computed cross product is then exactly -c's, with the
+** same twin, so its own certain sign (centrally symmetric shapes: one
+** cross for both).  When the octants leave at most SHAPE_Q_TAB open entries
+** (vmax), tab holds the support for every pattern of their signs (-1, 0 or
+** 1 each, uncertain 0 too: the base-3 number of the signs plus one, entry
+** 0 first), worked out once by the same masks. */
+#define SHAPE_Q_TAB 3
 typedef struct shape_q_oct {
   uint32_t pos, neg;
-  int nvar, sup;
+  int nvar;
   unsigned char var[32];  /* padded to the shape's vmax with edge 0 ... */
   uint32_t plus[32], minus[32];   /* ... whose masks here are 0 */
+  signed char tab[27];    /* 3^SHAPE_Q_TAB */
 } shape_q_oct;
 
 typedef struct shape_quick {
@@ -105,6 +110,24 @@ static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
   return change ? __builtin_ctz(change) : -1;
 }
 
+/* Entry i's certain sign c (0: not certain) into the sign words. */
+static inline void shape_q_apply(const shape_q_oct *w, int i, int c, uint32_t *pos, uint32_t *neg) {
+  uint32_t gt = -(uint32_t)(c > 0), lt = -(uint32_t)(c < 0);
+  *pos |= (gt & w->plus[i]) | (lt & w->minus[i]);
+  *neg |= (lt & w->plus[i]) | (gt & w->minus[i]);
+}
+
+/* w's support for every sign pattern of its first vmax entries. */
+static void shape_q_table(shape_q_oct *w, int vmax, int n) {
+  int count = 1;
+  for (int i = 0; i < vmax; i++) count *= 3;
+  for (int idx = 0; idx < count; idx++) {
+    uint32_t pos = w->pos, neg = w->neg;
+    for (int i = vmax - 1, rest = idx; i >= 0; i--, rest /= 3) shape_q_apply(w, i, rest % 3 - 1, &pos, &neg);
+    w->tab[idx] = (signed char)shape_q_change(pos, neg, n);
+  }
+}
+
 /* Leave edge j open in w: its own entry, or the minus side of an entry
 ** whose edge is its exact opposite. */
 static void shape_q_open(const shape_quick *q, shape_q_oct *w, int j) {
@@ -138,7 +161,7 @@ static void shape_q_octants(const shape *k, shape_quick *q) {
     double sx = o & 4 ? -1 : 1, sy = o & 2 ? -1 : 1;
     geom_point r1 = o & 1 ? (geom_point){0, sy} : (geom_point){sx, 0}, r2 = {sx, sy};
     shape_q_oct *w = &q->oct[o];
-    *w = (shape_q_oct){.sup = -1};
+    *w = (shape_q_oct){.nvar = 0};
     for (int j = 0; j < k->n; j++) {
       shape_args g1 = {.K = k, .e = {j}, .p = {{0, 0}, r1}}, g2 = g1;
       g2.p[1] = r2;
@@ -147,11 +170,11 @@ static void shape_q_octants(const shape *k, shape_quick *q) {
       else if (c1 <= 0 && c2 <= 0) w->neg |= 1u << j;
       else shape_q_open(q, w, j);
     }
-    if (w->nvar == 0) w->sup = shape_q_change(w->pos, w->neg, k->n);
     q->vmax = w->nvar > q->vmax ? w->nvar : q->vmax;
   }
+  for (int o = 0; o < 8 && q->vmax <= SHAPE_Q_TAB; o++) shape_q_table(&q->oct[o], q->vmax, k->n);
   shape_q_oct *all = &q->oct[8];
-  *all = (shape_q_oct){.sup = -1};
+  *all = (shape_q_oct){.nvar = 0};
   for (int j = 0; j < k->n; j++) shape_q_open(q, all, j);
 }
 
@@ -237,17 +260,18 @@ static int shape_q_support(const shape_quick *q, double dx, double dy) {
   double ax = fabs(dx), ay = fabs(dy);
   int ray = (dx == 0) | (dy == 0) | (ax == ay);   /* rare: no branches for it */
   const shape_q_oct *w = &q->oct[ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
-  /* an octant takes vmax crosses, the padding masked off: the count is
-  ** the shape's, so the loop's branch is predicted (a ray, rare, takes every edge) */
-  int open = ray ? w->nvar : q->vmax;
-  if (open == 0) return w->sup;
-  uint32_t pos = w->pos, neg = w->neg;
-  for (int i = 0; i < open; i++) {
-    int c = shape_q_cross(q, w->var[i], dx, dy);
-    uint32_t gt = -(uint32_t)(c > 0), lt = -(uint32_t)(c < 0);
-    pos |= (gt & w->plus[i]) | (lt & w->minus[i]);
-    neg |= (lt & w->plus[i]) | (gt & w->minus[i]);
+  /* an octant takes vmax crosses, the padding's ignored: the count is the
+  ** shape's, so the loop's branch is predicted (a ray, rare, takes every
+  ** edge); with few, the signs index the octant's table */
+  if (!ray && q->vmax == 0) return w->tab[0];
+  if (!ray && q->vmax <= SHAPE_Q_TAB) {
+    int idx = 0;
+    for (int i = 0; i < q->vmax; i++) idx = 3 * idx + 1 + shape_q_cross(q, w->var[i], dx, dy);
+    return w->tab[idx];
   }
+  int open = ray ? w->nvar : q->vmax;
+  uint32_t pos = w->pos, neg = w->neg;
+  for (int i = 0; i < open; i++) shape_q_apply(w, i, shape_q_cross(q, w->var[i], dx, dy), &pos, &neg);
   return shape_q_change(pos, neg, q->n);
 }
 
