@@ -31,6 +31,28 @@ FLIPLAB_INTERNAL int report_csv_write_run(FILE *f, const report_row *rows, int n
 #define REPORT_CENSUS_MAX_ROWS (MEASURE_MAX * JOINT_COUNT + RULE_QUAD_MAX)
 FLIPLAB_INTERNAL const char *const report_census_header[REPORT_CENSUS_NCOLS];
 
+/* ---- files of two-field rows (reports/csv_pairs.c) ---- */
+
+/* A file of rows "a,b" with an optional header line naming the two
+** columns (head), one row parsed by row into size bytes (at most 16);
+** what names the rows in messages ("points").  row returns 0, or -1 with
+** its one-line message in r->err.  The reader's own messages name the file
+** and line: a wrong field count, no rows, memory. */
+typedef struct report_pairs report_pairs;
+struct report_pairs {
+  const char *path, *what, *head[2];
+  size_t size;
+  int (*row)(const report_pairs *r, char **f, const size_t *len, unsigned long long line,
+             void *out);
+  const void *ctx;      /* the row parser's */
+  char *err;
+  size_t errlen;
+};
+/* 0 with the rows in *rows and their 1-based lines in *lines (when lines
+** is not NULL; free both), or -1 (nothing to free). */
+FLIPLAB_INTERNAL int report_pairs_read(const report_pairs *r, void **rows, uint64_t **lines,
+                                       size_t *n);
+
 /* ---- the counts table of both CSV kinds (reports/counts.c) ---- */
 
 /* An integer column: CSV column col (-1: not a column of its own but a
