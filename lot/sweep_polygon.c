@@ -314,23 +314,35 @@ static void lot_poly_centre_q(lot_pq *Q, mpq_ptr p[2], mpq_ptr q[2], mpq_ptr *hx
   mpq_mul(*hy, *hy, t);
 }
 
+/* Event ev's corner in rationals from Q: its sides u, v, delta = cross(u,
+** v), the centre (hx, hy) of its hyperbola through the mapped sites, and
+** the apex's x (the centre mapped back, plus the first site's x). */
+static void lot_poly_apex_q(lot_pq *Q, const lot_sweep_poly *P, const lot_poly_ev *ev,
+                            mpq_ptr u[2], mpq_ptr v[2], mpq_ptr *hx, mpq_ptr *hy,
+                            mpq_ptr *delta, mpq_ptr x) {
+  mpq_ptr b[2], c[2], d;
+  lot_poly_sides_q(Q, P, ev->corner, u, v);
+  lot_poly_map_q(Q, u, v, ev->p[1], ev->p[0], b);
+  lot_poly_map_q(Q, u, v, ev->p[2], ev->p[0], c);
+  lot_poly_centre_q(Q, b, c, hx, hy, &d);
+  mpq_div(*hx, *hx, d);
+  mpq_div(*hy, *hy, d);
+  *delta = lot_pq_cross(Q, u[0], v[1], u[1], v[0]);
+  mpq_ptr t = lot_pq_new(Q);
+  mpq_mul(x, u[0], *hx);
+  mpq_mul(t, v[0], *hy);
+  mpq_add(x, x, t);
+  mpq_div(x, x, *delta);
+  mpq_add(x, x, lot_pq_d(Q, ev->p[0].x));
+}
+
 /* The corner's key as q - sqrt(R), exactly. */
 static void lot_poly_corner_q(const lot_sweep_poly *P, const lot_poly_ev *ev, mpq_ptr q,
                               mpq_ptr R) {
   lot_pq Q = {.n = 0};
-  mpq_ptr u[2], v[2], b[2], c[2], hx, hy, d;
-  lot_poly_sides_q(&Q, P, ev->corner, u, v);
-  lot_poly_map_q(&Q, u, v, ev->p[1], ev->p[0], b);
-  lot_poly_map_q(&Q, u, v, ev->p[2], ev->p[0], c);
-  lot_poly_centre_q(&Q, b, c, &hx, &hy, &d);
-  mpq_div(hx, hx, d);
-  mpq_div(hy, hy, d);
-  mpq_ptr delta = lot_pq_cross(&Q, u[0], v[1], u[1], v[0]), t = lot_pq_new(&Q);
-  mpq_mul(q, u[0], hx);
-  mpq_mul(t, v[0], hy);
-  mpq_add(q, q, t);
-  mpq_div(q, q, delta);
-  mpq_add(q, q, lot_pq_d(&Q, ev->p[0].x));
+  mpq_ptr u[2], v[2], hx, hy, delta;
+  lot_poly_apex_q(&Q, P, ev, u, v, &hx, &hy, &delta, q);
+  mpq_ptr t = lot_pq_new(&Q);
   mpq_mul(R, u[0], v[0]);
   mpq_mul(R, R, hx);
   mpq_mul(R, R, hy);
@@ -356,19 +368,8 @@ static void lot_poly_corner_q(const lot_sweep_poly *P, const lot_poly_ev *ev, mp
 static void lot_poly_inf_q(const lot_sweep_poly *P, const lot_poly_ev *ev, mpq_ptr a2r,
                            mpq_ptr apex, int *level) {
   lot_pq Q = {.n = 0};
-  mpq_ptr u[2], v[2], b[2], c[2], hx, hy, d;
-  lot_poly_sides_q(&Q, P, ev->corner, u, v);
-  lot_poly_map_q(&Q, u, v, ev->p[1], ev->p[0], b);
-  lot_poly_map_q(&Q, u, v, ev->p[2], ev->p[0], c);
-  lot_poly_centre_q(&Q, b, c, &hx, &hy, &d);
-  mpq_div(hx, hx, d);
-  mpq_div(hy, hy, d);
-  mpq_ptr delta = lot_pq_cross(&Q, u[0], v[1], u[1], v[0]), t = lot_pq_new(&Q);
-  mpq_mul(apex, u[0], hx);
-  mpq_mul(t, v[0], hy);
-  mpq_add(apex, apex, t);
-  mpq_div(apex, apex, delta);
-  mpq_add(apex, apex, lot_pq_d(&Q, ev->p[0].x));
+  mpq_ptr u[2], v[2], hx, hy, delta;
+  lot_poly_apex_q(&Q, P, ev, u, v, &hx, &hy, &delta, apex);
   geom_point kc = P->k->v[ev->corner], kj = P->k->v[P->right];
   *level = kc.x == kj.x;
   mpq_ptr al = *level ? lot_pq_diff(&Q, kc.y, kj.y) : lot_pq_diff(&Q, kj.x, kc.x);
