@@ -10,13 +10,11 @@
 //                                  (medians) and the number of faces.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <utility>
 #include <vector>
+#include "cgal_timing.hpp"
 extern "C" {
 #include "sampler.h"
 }
@@ -44,23 +42,7 @@ int main(int argc, char **argv) {
   for (const geom_point &q : gp) pts.emplace_back(q.x, q.y);
   std::vector<std::pair<std::size_t, std::size_t>> idx;
   for (size_t k = 0; k < nseg; k++) idx.emplace_back(seg[2 * k], seg[2 * k + 1]);
-  std::vector<double> t, c;
-  size_t faces = 0;
-  for (int k = 0; k < runs; k++) {
-    timespec c0, c1;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
-    auto t0 = std::chrono::steady_clock::now();
-    CDT cdt;
+  return bench_cgal_time<CDT>(runs, [&](CDT &cdt) {
     cdt.insert_constraints(pts.begin(), pts.end(), idx.begin(), idx.end());
-    auto t1 = std::chrono::steady_clock::now();
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
-    t.push_back(std::chrono::duration<double>(t1 - t0).count());
-    c.push_back((double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec));
-    faces = cdt.number_of_faces();
-  }
-  std::sort(t.begin(), t.end());
-  std::sort(c.begin(), c.end());
-  std::printf("cgal_seconds %.6f\ncgal_cpu_seconds %.6f\ncgal_faces %zu\n", t[t.size() / 2],
-              c[c.size() / 2], faces);
-  return 0;
+  });
 }
