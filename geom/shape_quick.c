@@ -84,6 +84,7 @@ typedef struct shape_quick {
   double bdet4;          /* (2 (kmax + 9) + 2) u */
   double *gx, *gy;       /* edge i's outward normal over its support from the centroid, */
                          /* twice over (i and i + n: a range is read without wrapping) */
+  double *dgx, *dgy;     /* g_{i+1} - g_i (i + 1 mod n: a range of two edges) */
   shape_q_oct oct[9];    /* the signs fixed in each open octant (shape_q_octants); */
                          /* 8: a boundary ray's, none fixed, every edge open */
   int vmax;              /* the most edges an octant leaves open */
@@ -184,7 +185,7 @@ int shape_quick_build(shape *k) {
   if (k->kind != SHAPE_POLYGON || k->n > 32 || shape_memo_flat(k, &m) != 0) return 0;
   int n = k->n;
   shape_quick *q = calloc(1, sizeof *q);
-  double *e = malloc(6 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
+  double *e = malloc(8 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
   if (q == NULL || e == NULL || x == NULL) {
     free(q);
     free(e);
@@ -192,6 +193,7 @@ int shape_quick_build(shape *k) {
     return -1;
   }
   *q = (shape_quick){.n = n, .ex = e, .ey = e + n, .gx = e + 2 * n, .gy = e + 4 * n,
+                     .dgx = e + 6 * n, .dgy = e + 7 * n,
                      .xv = x, .xt = x + n * n, .m = m,
                      .bdet4 = (2.0 * (m.kmax + 9) + 2) * SHAPE_Q_U};
   double cx = 0, cy = 0;
@@ -210,6 +212,10 @@ int shape_quick_build(shape *k) {
     double h = q->ey[i] * (k->v[i].x - cx) - q->ex[i] * (k->v[i].y - cy);
     q->gx[i] = q->gx[i + n] = q->ey[i] / h;
     q->gy[i] = q->gy[i + n] = -q->ex[i] / h;
+  }
+  for (int i = 0; i < n; i++) {
+    q->dgx[i] = q->gx[i + 1] - q->gx[i];
+    q->dgy[i] = q->gy[i + 1] - q->gy[i];
   }
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
@@ -389,8 +395,9 @@ static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, i
 ** edge whose outward normal, scaled by its support (the gauge of K), is
 ** largest at P - O, O the circumcentre of ABC, the guessed centre of H.
 ** O = A + (u, v) / 2d with d = cross(B - A, C - A) > 0, so the largest of
-** g.(2d (P - A) - (u, v)) is the same edge, without a division.  A guess
-** only (the walk and the contact test decide). */
+** g.(2d (P - A) - (u, v)) is the same edge, without a division; of two
+** edges, the sign of (g_{i+1} - g_i).(...) chooses.  A guess only (the
+** walk and the contact test decide). */
 static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int start[3],
                           const int len[3], int off[3]) {
   double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
@@ -399,6 +406,10 @@ static void shape_q_guess(const shape_quick *q, const geom_point p[3], const int
   for (int r = 0; r < 3; r++) {
     if (len[r] < 2) continue;
     double dx = d2 * (p[r].x - p[0].x) - u, dy = d2 * (p[r].y - p[0].y) - v, best = -INFINITY;
+    if (len[r] == 2) {
+      off[r] = q->dgx[start[r]] * dx + q->dgy[start[r]] * dy > 0;
+      continue;
+    }
     int at = 0;
     const double *gx = q->gx + start[r], *gy = q->gy + start[r];
     for (int i = 0; i < len[r]; i++) {
