@@ -112,7 +112,8 @@ static int shape_q_change(uint32_t pos, uint32_t neg, int n) {
 }
 
 /* Entry i's certain sign c (0: not certain) into the sign words. */
-static inline void shape_q_apply(const shape_q_oct *w, int i, int c, uint32_t *pos, uint32_t *neg) {
+static inline void shape_q_apply(const shape_q_oct *w, int i, int c, uint32_t *pos,
+                                 uint32_t *neg) {
   uint32_t gt = -(uint32_t)(c > 0), lt = -(uint32_t)(c < 0);
   *pos |= (gt & w->plus[i]) | (lt & w->minus[i]);
   *neg |= (lt & w->plus[i]) | (gt & w->minus[i]);
@@ -124,7 +125,8 @@ static void shape_q_table(shape_q_oct *w, int vmax, int n) {
   for (int i = 0; i < vmax; i++) count *= 3;
   for (int idx = 0; idx < count; idx++) {
     uint32_t pos = w->pos, neg = w->neg;
-    for (int i = vmax - 1, rest = idx; i >= 0; i--, rest /= 3) shape_q_apply(w, i, rest % 3 - 1, &pos, &neg);
+    for (int i = vmax - 1, rest = idx; i >= 0; i--, rest /= 3)
+      shape_q_apply(w, i, rest % 3 - 1, &pos, &neg);
     w->tab[idx] = (signed char)shape_q_change(pos, neg, n);
   }
 }
@@ -277,7 +279,8 @@ static int shape_q_support(const shape_quick *q, double dx, double dy) {
   }
   int open = ray ? w->nvar : q->vmax;
   uint32_t pos = w->pos, neg = w->neg;
-  for (int i = 0; i < open; i++) shape_q_apply(w, i, shape_q_cross(q, w->var[i], dx, dy), &pos, &neg);
+  for (int i = 0; i < open; i++)
+    shape_q_apply(w, i, shape_q_cross(q, w->var[i], dx, dy), &pos, &neg);
   return shape_q_change(pos, neg, q->n);
 }
 

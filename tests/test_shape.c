@@ -792,7 +792,8 @@ static void tquick_points(const shape *k, const geom_point q[3], long *answered)
 }
 
 static void tquick_dir(const shape *k, geom_point d, long *answered) {
-  geom_point q[3] = {{0, 0}, d, {-d.y, d.x}};   /* supports of d, of (-d.y - d.x, d.x - d.y) and of -(-d.y, d.x) */
+  /* supports of d, of (-d.y - d.x, d.x - d.y) and of -(-d.y, d.x) */
+  geom_point q[3] = {{0, 0}, d, {-d.y, d.x}};
   tquick_points(k, q, answered);
 }
 
