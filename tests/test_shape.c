@@ -808,7 +808,6 @@ static void tquick_opposite(const shape *k, long *answered) {
     }
 }
 
-
 static void test_quick_octants(void **state) {
   (void)state;
   static const char *const specs[] = {"square", "diamond", "triangle", "hexagon", "octagon",
