@@ -438,7 +438,7 @@ static void test_cdf_general_position(void **state) {
     if (i < TCDF_NSPECS) snprintf(spec, sizeof spec, "%s", tcdf_specs[i]);
     else tcdf_random_poly(&g, spec, sizeof spec);
     snprintf(name, sizeof name, "tcdf%zu", i);
-    tcdf_random_sets(spec, name, &g, 50, &tl);
+    tcdf_random_sets(spec, name, &g, testutil_reps(50), &tl);
     tcdf_report("random", i < TCDF_NSPECS ? spec : "polygon", &tl);
     assert_true(tl.dropped > 0);
     extra += tl.extra, shared += tl.shared_nonedge, hull += tl.hull_dropped;
@@ -465,7 +465,7 @@ static void test_cdf_grids(void **state) {
     tcdf_shape s;
     tcdf_shape_init(&s, c.k, 1, 1L << 24);
     tcdf_tally tl = {0};
-    for (int t = 0; t < 40; t++) {
+    for (int t = 0; t < testutil_reps(40); t++) {
       geom_point p[TCDF_MAXN];
       int n = 0, want = 5 + (int)(testutil_next(&g) % (TCDF_MAXN - 4)), side = t % 2 ? 4 : 5;
       unsigned char used[25] = {0};

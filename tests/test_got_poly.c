@@ -178,7 +178,7 @@ static void test_diagonals_twoopt(void **state) {
   (void)state;
   testutil_rng g = {4242};
   geom_point p[64];
-  for (int t = 0; t < 300; t++) {
+  for (int t = 0; t < testutil_reps(300); t++) {
     size_t n = 5 + (size_t)t % 20;
     tp_twoopt_polygon(&g, n, t % 2, p);
     tp_check_diagonals(p, n, 1);
@@ -353,7 +353,7 @@ static void test_brute_force_hand(void **state) {
   tp_check_all_rules(c, 6);
   testutil_rng g = {777};
   geom_point q[64];
-  for (int t = 0; t < 20; t++) {
+  for (int t = 0; t < testutil_reps(20); t++) {
     size_t n = tp_grid_polygon(&g, 5 + (size_t)t % 5, q);
     tp_check_all_rules(q, n);
   }

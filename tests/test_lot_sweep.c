@@ -95,7 +95,7 @@ static void test_samplers(void **state) {
   static const size_t ns[] = {3, 4, 5, 10, 57, 300, 5000};
   for (int k = 0; k < SAMPLER_POINTS_COUNT; k++)
     for (size_t i = 0; i < sizeof ns / sizeof *ns; i++)
-      for (uint64_t seed = 1; seed <= 3; seed++) {
+      for (uint64_t seed = 1; seed <= (uint64_t)testutil_reps(3); seed++) {
         geom_point *p = malloc(ns[i] * sizeof *p);
         assert_non_null(p);
         sampler_points((sampler_points_kind)k, seed, ns[i], p);

@@ -751,14 +751,14 @@ static void test_quick_exact(void **state) {
     shape *k = tshape_get(specs[si]);
     geom_point q[4];
     tquick_answers = tquick_tries = 0;
-    for (int it = 0; it < 400; it++) {
+    for (int it = 0; it < testutil_reps(400); it++) {
       testutil_convex_quad(&rng, q);
       tquick_same(k, q);
     }
     /* Random quadrilaterals are the quick path's case. */
     assert_true(tquick_answers > tquick_tries * 9 / 10);
     long a0 = tquick_answers, t0 = tquick_tries;
-    for (int it = 0; it < 400; it++) {
+    for (int it = 0; it < testutil_reps(400); it++) {
       if (tquick_on_homothet(&rng, k, q, it % 5 - 2)) tquick_same(k, q);
       if (tshape_grid_quad(&rng, 3 + it % 6, it % 2 ? 0x1p-90 : 0x1p90, 0, q)) tquick_same(k, q);
       if (tshape_edge_quad(&rng, k, q)) tquick_same(k, q);
@@ -845,11 +845,16 @@ static void test_quick_octants(void **state) {
   }
 }
 
-int main(void) {
-  const struct CMUnitTest tests[] = {
+/* Two groups, so that ctest runs them side by side (tests/CMakeLists.txt):
+** "quick" (the quick path against the exact one, the slowest) and "rest";
+** no argument runs both. */
+int main(int argc, char **argv) {
+  const struct CMUnitTest quick[] = {
     cmocka_unit_test(test_filter_exact),
     cmocka_unit_test(test_quick_exact),
     cmocka_unit_test(test_quick_octants),
+  };
+  const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),
     cmocka_unit_test(test_rotations_grid),
     cmocka_unit_test(test_oracle),
@@ -861,5 +866,13 @@ int main(void) {
     cmocka_unit_test(test_support),
     cmocka_unit_test(test_bad_specs),
   };
-  return cmocka_run_group_tests(tests, NULL, NULL);
+  const char *part = argc > 1 ? argv[1] : "";
+  if (*part != '\0' && strcmp(part, "quick") != 0 && strcmp(part, "rest") != 0) {
+    fprintf(stderr, "test_shape: unknown group '%s' (quick or rest)\n", part);
+    return 2;
+  }
+  int rc = 0;
+  if (strcmp(part, "rest") != 0) rc |= cmocka_run_group_tests_name("quick", quick, NULL, NULL);
+  if (strcmp(part, "quick") != 0) rc |= cmocka_run_group_tests_name("rest", rest, NULL, NULL);
+  return rc;
 }

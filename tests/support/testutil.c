@@ -164,6 +164,14 @@ static double testutil_infzero(const geom_tri *t, void *ctx) {
   return b == 0 ? INFINITY : b == 1 ? 0.0 : b == 2 ? 0x1p-1074 : t->R;
 }
 
+int testutil_reps(int n) {
+#ifdef FLIPLAB_TEST_SANITIZED
+  return n >= 4 ? n / 4 : n > 0 ? 1 : n;
+#else
+  return n;
+#endif
+}
+
 int testutil_extreme_measures(int ids[3]) {
   static const measure m[3] = {
     {"xwide", "xwide", "test: P scaled by 2^-900 .. 2^675", MEASURE_NONNEG, testutil_wide, NULL},

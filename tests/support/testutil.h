@@ -68,6 +68,12 @@ size_t testutil_count(const char *hay, const char *needle);
 /* A fresh path in the build tree for a test's files. */
 void testutil_tmppath(char *buf, size_t len, const char *name);
 
+/* How many times to repeat a sampled check: n in the optimised builds; a
+** quarter of n (at least 1) in the sanitizer build (FLIPLAB_TEST_SANITIZED),
+** which is there to find memory and undefined-behaviour errors on every
+** path, not to repeat the statistics the optimised builds check in full. */
+int testutil_reps(int n);
+
 /* Register (once) three user measures with extreme values, for the engines'
 ** exact fallbacks: "xwide" (>= 0) and "-xwide" (<= 0), magnitudes from
 ** 2^-900 to 2^900 (products and squares under- and overflow), and "xinf"
