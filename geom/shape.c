@@ -464,11 +464,35 @@ static shape_choice shape_corner_decide(const shape *k, int c, const geom_point 
   return s < 0 ? SHAPE_BD : s > 0 ? SHAPE_AC : SHAPE_EITHER;
 }
 
+/* What the hint knows (shape_hint), when it is set: the same answer as
+** finding it again, since the circumscribing shape of A, B, C depends on
+** them alone; -1 when the hint is empty or its quick test is uncertain. */
+static int shape_hint_decide(const shape *k, const geom_point p[4], int quick,
+                             const shape_hint *h) {
+  if (h == NULL || h->how == SHAPE_HINT_NONE) return -1;
+  if (h->how == SHAPE_HINT_CORNER) return (int)shape_corner_decide(k, h->e[0], p, quick, NULL);
+  const int t[3] = {h->e[0], h->e[1], h->e[2]};
+  return quick ? shape_quick_at(k, t, p) : -1;
+}
+
+static void shape_hint_set(shape_hint *h, int how, const int e[3], int n) {
+  if (h == NULL || n > 255) return;
+  *h = (shape_hint){.how = (unsigned char)how};
+  for (int r = 0; r < (how == SHAPE_HINT_CORNER ? 1 : 3); r++) h->e[r] = (unsigned char)e[r];
+}
+
+static shape_choice shape_corner_hinted(const shape *k, int c, const geom_point p[4], int quick,
+                                        shape_trace *tr, shape_hint *h) {
+  shape_hint_set(h, SHAPE_HINT_CORNER, (const int[3]){c, 0, 0}, k->n);
+  return shape_corner_decide(k, c, p, quick, tr);
+}
+
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
 static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
-                                         shape_trace *tr) {
-  int sup[3], t[3];
+                                         shape_trace *tr, shape_hint *h) {
+  int sup[3], t[3], hinted = shape_hint_decide(k, p, quick, h);
+  if (hinted >= 0) return (shape_choice)hinted;
   if (!quick || shape_quick_supports(k, p, sup) != 0) {
     sup[0] = shape_support(k, p[0], p[1]);
     sup[1] = shape_support(k, p[1], p[2]);
@@ -476,11 +500,12 @@ static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], 
   }
   /* All three cannot coincide: the three directions span the plane
   ** positively, and a corner's normal cone is narrower than pi. */
-  if (sup[0] == sup[1] || sup[0] == sup[2]) return shape_corner_decide(k, sup[0], p, quick, tr);
-  if (sup[1] == sup[2]) return shape_corner_decide(k, sup[1], p, quick, tr);
+  if (sup[0] == sup[1] || sup[0] == sup[2]) return shape_corner_hinted(k, sup[0], p, quick, tr, h);
+  if (sup[1] == sup[2]) return shape_corner_hinted(k, sup[1], p, quick, tr, h);
   int ans = quick ? shape_quick_homothet(k, sup, p, t) : -1;
   if (ans >= 0) {
     if (tr) memcpy(tr->contact, t, sizeof t);
+    shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
     return (shape_choice)ans;
   }
   int d3 = shape_contacts(k, sup, p, t);
@@ -489,6 +514,7 @@ static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], 
     return SHAPE_EITHER;
   }
   if (tr) memcpy(tr->contact, t, sizeof t);
+  shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
   return shape_homothet_decide(k, t, d3, p, tr);
 }
 
@@ -511,14 +537,19 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
   for (int i = 0; i < 4; i++)
     if (!geom_point_finite(p[i])) return SHAPE_EITHER;
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  return shape_polygon_decide(k, p, shape_quick_ready(k, p), tr);
+  return shape_polygon_decide(k, p, shape_quick_ready(k, p), tr, NULL);
 }
 
 /* Sites in the coordinate contract are finite and 0 or of magnitude at
 ** least 1e-30 > 2^-100, all that shape_quick_ready checks of them. */
 shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom_point c,
                                 geom_point d) {
+  return shape_decide_hinted(k, a, b, c, d, NULL);
+}
+
+shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
+                                 geom_point d, shape_hint *h) {
   geom_point p[4] = {a, b, c, d};
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
-  return shape_polygon_decide(k, p, shape_quick_on(k), NULL);
+  return shape_polygon_decide(k, p, shape_quick_on(k), NULL, h);
 }

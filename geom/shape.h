@@ -66,6 +66,21 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
 shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom_point c,
                                 geom_point d);
 
+/* What a decision learned of the circumscribing shape of its A, B, C (in
+** that order): the homothet's contact edges, or the corner whose rounding
+** shape it is.  Kept with a triangle (lot keeps one per mesh triangle), it
+** lets the next quadrilateral on the same A, B, C skip finding the shape
+** again; {0} is the empty hint.  Polygons of at most 255 vertices. */
+enum { SHAPE_HINT_NONE = 0, SHAPE_HINT_HOMOTHET = 1, SHAPE_HINT_CORNER = 2 };
+typedef struct shape_hint {
+  unsigned char how;    /* SHAPE_HINT_* */
+  unsigned char e[3];   /* HOMOTHET: the contact edges of A, B, C; CORNER: e[0] */
+} shape_hint;
+/* shape_decide_valid reading and filling *h: it must be empty or have been
+** filled by a call with the same K, A, B and C.  The same answer as
+** without it; h may be NULL. */
+shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
+                                 geom_point d, shape_hint *h);
 /* The vertex of polygon K extremal in the right-hand normal direction of
 ** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:
 ** the start vertex of an edge of the same direction as PQ. */

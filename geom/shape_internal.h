@@ -122,6 +122,9 @@ FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3],
 ** into t, or -1 when some sign is not certain (then nothing is known). */
 FLIPLAB_INTERNAL int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4],
                                           int t[3]);
+/* shape_quick_homothet's answer when t is already known to be the
+** contact triple of p[0..2] (no supports, no search), or -1. */
+FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_point p[4]);
 /* The certain sign of SHAPE_PROG_CORNER of corner c, p[0..2] about o = p[3]
 ** (shape.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);

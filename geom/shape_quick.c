@@ -460,22 +460,35 @@ static int shape_q_dslack(const shape_q_tri *T, int m, const geom_point p[4]) {
   return shape_q_slack(T, m, p[3]);
 }
 
+/* D against the homothet of contact triple T->t: shape.c's arc walk. */
+static int shape_q_dtest(const shape_q_tri *T, const geom_point p[4]) {
+  for (int m = T->t[2];; m = T->q->nb[1][m]) {
+    int s = shape_q_dslack(T, m, p);
+    if (s == 0) return -1;
+    if (s < 0) return SHAPE_AC;
+    if (m == T->t[0]) return SHAPE_BD;
+  }
+}
+
 int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4], int t[3]) {
   shape_q_tri T;
   T.q = k->quick, T.ax = p[0].x, T.ay = p[0].y;
   if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
-  int ans = SHAPE_BD;
-  for (int m = T.t[2];; m = T.q->nb[1][m]) {
-    int s = shape_q_dslack(&T, m, p);
-    if (s == 0) return -1;
-    if (s < 0) {
-      ans = SHAPE_AC;
-      break;
-    }
-    if (m == T.t[0]) break;
-  }
+  int ans = shape_q_dtest(&T, p);
   for (int r = 0; r < 3; r++) t[r] = T.t[r];
   return ans;
+}
+
+/* With t known to be the contact triple (a hint: shape_decide_hinted),
+** only the rows the slacks read are set up; the contact test is not
+** repeated, its sign of det3w having been certain when t was found. */
+int shape_quick_at(const shape *k, const int t[3], const geom_point p[4]) {
+  shape_q_tri T = {.q = k->quick, .t = {t[0], t[1], t[2]}, .ax = p[0].x, .ay = p[0].y};
+  shape_q_rows(&T);
+  if (T.d3 == 0) return -1;
+  T.wb = shape_q_w(&T, t[1], p[1], &T.wbt);
+  T.wc = shape_q_w(&T, t[2], p[2], &T.wct);
+  return shape_q_dtest(&T, p);
 }
 
 /* ---- the rounding shape ---------------------------------------------------

@@ -38,7 +38,7 @@ int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache) {
   m->cap = 2 * np + 4;
   m->p = malloc((size_t)np * sizeof *m->p);
   m->inp = malloc((size_t)np * sizeof *m->inp);
-  m->tv = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tv);
+  m->tv = calloc(LOT_CORNER((size_t)m->cap, 0), sizeof *m->tv);   /* slot 3: no hint */
   m->tn = malloc(LOT_CORNER((size_t)m->cap, 0) * sizeof *m->tn);
   m->walk = GEOM_STATE_LOT_WALK;
   if (!m->p || !m->inp || !m->tv || !m->tn || lot_cache_alloc(m, cache) != 0) {
@@ -103,6 +103,7 @@ void lot_mesh_set(lot_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c) {
   v[0] = a;
   v[1] = b;
   v[2] = c;
+  v[3] = 0;   /* no hint */
   if (m->bad || m->enc) lot_cache_set(m, t);
 }
 
@@ -504,6 +505,7 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     }
     uint32_t t = lot_tri_of(x);
     m->tv[x] = k;
+    m->tv[LOT_CORNER(t, 3)] = 0;
     if (m->bad || m->enc) lot_cache_set(m, t);
     (*cand)[nc++] = x;
     last = x;
@@ -573,6 +575,7 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
   uint32_t n_ca = m->tn[i1], n_bd = m->tn[j1];
   m->tv[i2] = d;
   m->tv[j2] = a;
+  m->tv[LOT_CORNER(t, 3)] = m->tv[LOT_CORNER(u, 3)] = 0;   /* no hints */
   lot_mesh_link(m, c, n_bd);
   lot_mesh_link(m, j0, n_ca);
   lot_mesh_link(m, i1, j1);

@@ -10,12 +10,15 @@
 ** left of u -> v (Shewchuk's ghost triangles): every triangle then has three
 ** neighbours, a point outside the hull is "in" the ghost triangles whose
 ** edges it sees, and inserting it replaces their ghost vertex by the point.
-** Why a stride of 4 (slot 3 unused): corner arithmetic is then shifts and
-** masks; with 3t + i every step of the walk and every examined edge paid
-** several divisions by 3, a tenth of the Delaunay triangulation's
-** instructions.  16 bytes of indices per corner slot pair, 2n - 2 triangles
-** (ghosts included) for n vertices: 64 bytes per point, plus 8 per triangle
-** for the badness cache of triangle-based rules, or 16 for its enclosures.
+** Why a stride of 4: corner arithmetic is then shifts and masks; with 3t +
+** i every step of the walk and every examined edge paid several divisions
+** by 3, a tenth of the Delaunay triangulation's instructions.  Slot 3 of
+** tv holds no vertex: an empty-shape rule keeps a triangle's hint there
+** (lot.c), on the cache line its vertices are read from; every write of a
+** triangle's vertices sets it to 0 (no hint), and tn's slot 3 is unused.
+** 16 bytes of indices per corner slot pair, 2n - 2 triangles (ghosts
+** included) for n vertices: 64 bytes per point, plus 8 per triangle for the
+** badness cache of triangle-based rules, or 16 for its enclosures.
 **
 ** The badness cache.  A triangle-based rule keeps each triangle's badness
 ** (bad[], exact, computed whenever a triangle is made).  The angle
@@ -51,7 +54,7 @@ typedef struct lot_mesh {
   geom_point *p;        /* vertex k's point (k in insertion order) */
   uint32_t *inp;        /* vertex k's input index (first occurrence after merging) */
   uint32_t np;          /* slots in p (input points, duplicates included) */
-  uint32_t *tv, *tn;    /* 4 per triangle (LOT_CORNER), the last unused */
+  uint32_t *tv, *tn;    /* 4 per triangle (LOT_CORNER): tv's last a hint, tn's unused */
   double *bad;          /* per-triangle badness (triangle-based rules) or NULL */
   lot_enc *enc;         /* per-triangle enclosures of it instead (LOT_CACHE_ENCLOSED) */
   uint32_t nt, cap;     /* triangles used, allocated */

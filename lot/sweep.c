@@ -430,6 +430,7 @@ static int sw_circle(lot_sweep *S, uint32_t b) {
   v[0] = nd[a].site;
   v[1] = nd[c].site;
   v[2] = nd[b].site;
+  v[3] = 0;   /* no hint (mesh.h) */
   sw_fill(S, nd[a].edge, nd[a].side, LOT_CORNER(t, 1));   /* edge b-a, opposite c */
   sw_fill(S, nd[b].edge, nd[b].side, LOT_CORNER(t, 0));   /* edge c-b, opposite a */
   sw_fill(S, e, 1, LOT_CORNER(t, 2));                     /* edge a-c, opposite b */
@@ -467,6 +468,7 @@ static int sw_ghosts(lot_sweep *S) {
     v[0] = w;   /* the ghost (w, u, G): the outside left of w -> u */
     v[1] = u;
     v[2] = LOT_GHOST;
+    v[3] = 0;
     m->tn[c] = LOT_CORNER(g, 2);
     m->tn[LOT_CORNER(g, 2)] = c;
     first[w] = g;

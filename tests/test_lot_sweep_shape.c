@@ -361,8 +361,51 @@ static void test_errors(void **state) {
   assert_null(strchr(err, '\n'));
 }
 
+/* A LOT reflipped with another rule gets that rule's own triangles: the
+** empty-shape rules keep hints in the mesh's triangles (lot.c), and the
+** first rule's must not answer for the second's decisions.  From every
+** rule's LOT of the same points to every other's (two hexagons, so that a
+** stale hint's edges would exist, other edge counts, and the square, which
+** keeps none), each result equal to the second rule's LOT built afresh. */
+static void test_reflip_hints(void **state) {
+  (void)state;
+  static const char *const names[] = {"ES:square", "ES:hexagon", "ES:poly:0 0;2 0;3 1;2 2;0 2;-1 1",
+                                      "ES:ngon:5", "ES:ngon:7"};
+  enum { N = 600, K = sizeof names / sizeof *names };
+  geom_point *p = malloc(N * sizeof *p);
+  assert_non_null(p);
+  sampler_points(SAMPLER_UNIFORM, 11, N, p);
+  tss_result fresh[K];
+  for (int j = 0; j < K; j++) fresh[j] = tss_build(names[j], p, N, LOT_INCREMENTAL);
+  for (int i = 0; i < K; i++)
+    for (int j = 0; j < K; j++) {
+      if (i == j) continue;
+      rule r1 = tss_rule(names[i]), r2 = tss_rule(names[j]);
+      lot_options o;
+      lot_options_init(&o, &r1);
+      lot *L;
+      char err[256];
+      if (lot_build(&L, p, N, &o, err, sizeof err) != 0) fail_msg("%s: %s", names[i], err);
+      lot_options_init(&o, &r2);
+      assert_int_equal(lot_reflip(L, &o), 0);
+      assert_true(lot_get_stats(L)->flips > 0);
+      size_t nt = lot_get_stats(L)->triangles;
+      uint32_t *tri = malloc(3 * nt * sizeof *tri);
+      assert_non_null(tri);
+      lot_get_triangles(L, tri);
+      if (nt != fresh[j].ntri || memcmp(tri, fresh[j].tri, 3 * nt * sizeof *tri) != 0)
+        fail_msg("%s reflipped with %s differs from %s built afresh", names[i], names[j],
+                 names[j]);
+      free(tri);
+      lot_free(L);
+    }
+  for (int j = 0; j < K; j++) free(fresh[j].tri);
+  free(p);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_reflip_hints),
     cmocka_unit_test(test_ellipse_samplers),
     cmocka_unit_test(test_ellipse_special),
     cmocka_unit_test(test_ellipse_adversarial),

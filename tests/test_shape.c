@@ -772,6 +772,51 @@ static void test_quick_exact(void **state) {
   }
 }
 
+/* A hint (shape_decide_hinted) answers as a fresh decision: one triangle
+** ABC, its hint kept, against many D (beyond CA, near its shape's boundary
+** and far from it), on random triangles and on triangles with sites on a
+** homothet's corners; both kinds of hint, homothet and rounding corner,
+** must occur, and the hinted call in the exact-only mode too. */
+static void test_hint(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "triangle", "hexagon", "ngon:7",
+                                      "poly:0.1 0.2;3.3 1.1;4 4.7;0.9 3.9;-0.7 1.3"};
+  testutil_rng rng = {2028};
+  long kinds[3] = {0, 0, 0}, asked = 0;
+  for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
+    shape *k = tshape_get(specs[si]);
+    for (int it = 0; it < testutil_reps(400); it++) {
+      geom_point q[4];
+      if (it % 2 ? !tquick_on_homothet(&rng, k, q, 0) : (testutil_convex_quad(&rng, q), 0))
+        continue;
+      shape_hint h = {0};
+      for (int j = 0; j < 12; j++) {
+        geom_point p[4] = {q[0], q[1], q[2], q[3]};
+        double w = j < 6 ? 0x1p-20 * (j + 1) : 0.2 * (j - 5);
+        if (j > 0)
+          p[3] = (geom_point){q[3].x + w * (testutil_uniform(&rng) - 0.5),
+                              q[3].y + w * (testutil_uniform(&rng) - 0.5)};
+        if (!tshape_convex(p)) continue;
+        int exact = j % 3 == 2;
+        shape_set_exact_only(exact);
+        shape_choice got = shape_decide_hinted(k, p[0], p[1], p[2], p[3], &h);
+        shape_set_exact_only(0);
+        shape_choice want = shape_decide(k, p[0], p[1], p[2], p[3], NULL);
+        if (got != want)
+          fail_msg("%s: hinted %d, fresh %d (hint %d, exact-only %d) on (%a,%a) (%a,%a) (%a,%a) "
+                   "(%a,%a)", specs[si], got, want, h.how, exact, p[0].x, p[0].y, p[1].x, p[1].y,
+                   p[2].x, p[2].y, p[3].x, p[3].y);
+        assert_true(h.how == SHAPE_HINT_HOMOTHET || h.how == SHAPE_HINT_CORNER);
+        kinds[h.how]++;
+        asked++;
+      }
+    }
+    shape_free(k);
+  }
+  printf("hint: %ld decisions, %ld with a homothet's hint, %ld with a corner's\n", asked,
+         kinds[SHAPE_HINT_HOMOTHET], kinds[SHAPE_HINT_CORNER]);
+  assert_true(kinds[SHAPE_HINT_HOMOTHET] > 0 && kinds[SHAPE_HINT_CORNER] > 0);
+}
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
 ** signs of the edges outside it, so the supports of directions on and next
 ** to an octant's boundary rays (the axes and diagonals) and to each edge's
@@ -853,6 +898,7 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_filter_exact),
     cmocka_unit_test(test_quick_exact),
     cmocka_unit_test(test_quick_octants),
+    cmocka_unit_test(test_hint),
   };
   const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),
