@@ -426,11 +426,7 @@ static int sw_circle(lot_sweep *S, uint32_t b) {
   if (e == SW_NONE) return -1;
   sw_node *nd = S->nd;
   uint32_t a = nd[b].pv[0], c = nd[b].nx[0], t = m->nt++;
-  uint32_t *v = m->tv + LOT_CORNER((size_t)t, 0);
-  v[0] = nd[a].site;
-  v[1] = nd[c].site;
-  v[2] = nd[b].site;
-  v[3] = 0;   /* no hint (mesh.h) */
+  lot_mesh_set(m, t, nd[a].site, nd[c].site, nd[b].site);
   sw_fill(S, nd[a].edge, nd[a].side, LOT_CORNER(t, 1));   /* edge b-a, opposite c */
   sw_fill(S, nd[b].edge, nd[b].side, LOT_CORNER(t, 0));   /* edge c-b, opposite a */
   sw_fill(S, e, 1, LOT_CORNER(t, 2));                     /* edge a-c, opposite b */
@@ -464,11 +460,7 @@ static int sw_ghosts(lot_sweep *S) {
       break;
     }
     m->nt++;
-    uint32_t *v = m->tv + LOT_CORNER((size_t)g, 0);
-    v[0] = w;   /* the ghost (w, u, G): the outside left of w -> u */
-    v[1] = u;
-    v[2] = LOT_GHOST;
-    v[3] = 0;
+    lot_mesh_set(m, g, w, u, LOT_GHOST);   /* the ghost (w, u, G): the outside left of w -> u */
     m->tn[c] = LOT_CORNER(g, 2);
     m->tn[LOT_CORNER(g, 2)] = c;
     first[w] = g;

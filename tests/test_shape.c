@@ -817,6 +817,7 @@ static void test_hint(void **state) {
          kinds[SHAPE_HINT_HOMOTHET], kinds[SHAPE_HINT_CORNER]);
   assert_true(kinds[SHAPE_HINT_HOMOTHET] > 0 && kinds[SHAPE_HINT_CORNER] > 0);
 }
+
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
 ** signs of the edges outside it, so the supports of directions on and next
 ** to an octant's boundary rays (the axes and diagonals) and to each edge's
