@@ -105,6 +105,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
+  k->linf = shape_square_is(k);
   if (shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
@@ -537,7 +538,8 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
   for (int i = 0; i < 4; i++)
     if (!geom_point_finite(p[i])) return SHAPE_EITHER;
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  return shape_polygon_decide(k, p, shape_quick_ready(k, p), tr, NULL);
+  int quick = shape_quick_ready(k, p), sq = quick && k->linf && !tr ? shape_square_decide(p) : -1;
+  return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, tr, NULL);
 }
 
 /* Sites in the coordinate contract are finite and 0 or of magnitude at
@@ -547,9 +549,14 @@ shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom
   return shape_decide_hinted(k, a, b, c, d, NULL);
 }
 
+int shape_wants_hints(const shape *k) {
+  return k->kind == SHAPE_POLYGON && k->n <= 255 && !k->linf;
+}
+
 shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
                                  geom_point d, shape_hint *h) {
   geom_point p[4] = {a, b, c, d};
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
-  return shape_polygon_decide(k, p, shape_quick_on(k), NULL, h);
+  int quick = shape_quick_on(k), sq = quick && k->linf ? shape_square_decide(p) : -1;
+  return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, NULL, h);
 }

@@ -31,6 +31,7 @@ typedef struct shape {
   unsigned char *half;    /* polygon, internal: 1 for the edges turned by [pi, 2 pi) from edge 0 */
   struct shape_memo *memo; /* polygon, internal: shape-only determinants (geom/shape_arith.c) */
   struct shape_quick *quick; /* polygon, internal: the quick decision's table (geom/shape_quick.c) */
+  int linf;               /* polygon, internal: 1 for an axis-parallel square (geom/shape_square.c) */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
 } shape;
 
@@ -78,9 +79,14 @@ typedef struct shape_hint {
 } shape_hint;
 /* shape_decide_valid reading and filling *h: it must be empty or have been
 ** filled by a call with the same K, A, B and C.  The same answer as
-** without it; h may be NULL. */
+** without it; h may be NULL.  A decision that needs no hint (the square's,
+** shape_wants_hints) may leave *h empty. */
 shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
                                  geom_point d, shape_hint *h);
+/* 1 when keeping hints saves K's decisions work: polygons of 3 to 255
+** vertices, but for an axis-parallel square, whose bounding-box decision
+** (geom/shape_square.c) needs none and leaves *h as it is; else 0. */
+int shape_wants_hints(const shape *k);
 /* The vertex of polygon K extremal in the right-hand normal direction of
 ** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:
 ** the start vertex of an edge of the same direction as PQ. */

@@ -129,4 +129,12 @@ FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_p
 ** (shape.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
 
+/* The empty-square rule (shape_square.c): 1 when polygon K is an
+** axis-parallel square (its rule is the L_inf one, whatever the size and
+** position), else 0; and for such a K the decision of the anticlockwise
+** quadrilateral p, SHAPE_AC or SHAPE_BD, or -1 when a comparison ties
+** (special position, or D on the square): shape_decide's answer. */
+FLIPLAB_INTERNAL int shape_square_is(const shape *k);
+FLIPLAB_INTERNAL int shape_square_decide(const geom_point p[4]);
+
 #endif

@@ -284,8 +284,25 @@ static int shape_q_support(const shape_quick *q, double dx, double dy) {
   return shape_q_change(pos, neg, q->n);
 }
 
+/* A shape whose octants leave at most one edge open (vmax <= 1: the
+** square, the diamond, the triangle, the regular hexagon and octagon): off
+** the boundary rays a support is one table read after at most one cross
+** product, shape_q_support's table path with its loop written out. */
+static inline int shape_q_support1(const shape_quick *q, double dx, double dy) {
+  double ax = fabs(dx), ay = fabs(dy);
+  if ((dx == 0) | (dy == 0) | (ax == ay)) return shape_q_support(q, dx, dy);
+  const shape_q_oct *w = &q->oct[(dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
+  return w->tab[q->vmax ? 1 + shape_q_cross(q, w->var[0], dx, dy) : 0];
+}
+
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
   const shape_quick *q = k->quick;
+  if (q->vmax <= 1) {
+    sup[0] = shape_q_support1(q, p[1].x - p[0].x, p[1].y - p[0].y);
+    sup[1] = shape_q_support1(q, p[2].x - p[1].x, p[2].y - p[1].y);
+    sup[2] = shape_q_support1(q, p[0].x - p[2].x, p[0].y - p[2].y);
+    return (sup[0] | sup[1] | sup[2]) < 0 ? -1 : 0;
+  }
   for (int r = 0; r < 3; r++) {
     geom_point a = p[r], b = p[r < 2 ? r + 1 : 0];
     sup[r] = shape_q_support(q, b.x - a.x, b.y - a.y);

@@ -361,27 +361,56 @@ static int lot_prefers_lazy(const lot_run *R, uint32_t a, uint32_t b, uint32_t c
 ** Triangle-based rules' ties (within tie_eps) and plugin rules' EITHER are
 ** left alone. */
 
-/* The empty-shape decision of a b d c0, asked of the far triangle (b, d,
-** c0) with a as D: the rotation b d c0 a, whose answer is the same with AC
-** and BD swapped (shape.h).  A mesh triangle is asked again as later points
-** arrive beside it (a fifth of the decisions of a uniform insertion), and
-** its hint, kept in its unused slot 3 (mesh.h: cleared whenever its
-** vertices change), then skips finding its shape.  The word: the hint's
-** edges in bits 0-23, how in 24-25, and 1 + the slot of d's corner cd in
-** 28-29 (the rotation the hint is for: b, d, c0 are the vertices before,
-** at and after cd). */
-static rule_choice lot_shape_choice(lot_run *R, uint32_t cd, geom_point pa, geom_point pb,
-                                    geom_point pd, geom_point pc) {
-  if (!R->hints) return (rule_choice)shape_decide_valid(R->shape, pa, pb, pd, pc);
-  uint32_t *w = &R->m->tv[LOT_CORNER(lot_tri_of(cd), 3)], tag = (lot_slot(cd) + 1) << 28;
-  shape_hint h = {0};
-  int kept = (*w & (3u << 28)) == tag;
-  if (kept)
-    h = (shape_hint){(unsigned char)(*w >> 24 & 3),
-                     {(unsigned char)*w, (unsigned char)(*w >> 8), (unsigned char)(*w >> 16)}};
-  shape_choice s = shape_decide_hinted(R->shape, pb, pd, pc, pa, &h);
-  if (!kept)
-    *w = tag | (uint32_t)h.how << 24 | (uint32_t)h.e[2] << 16 | (uint32_t)h.e[1] << 8 | h.e[0];
+/* The empty-shape decision of a b d c0 (a at corner c of t = (a, b, c0), d
+** at corner cd of the far triangle u = (d, c0, b)).  A triangle's
+** circumscribing shape depends on its three sites alone, so a decision
+** keeps what it found of it (its hint, shape.h) in the triangle's unused
+** slot 3 (mesh.h: cleared whenever its vertices change), by vertex slot:
+** bits 8 s .. 8 s + 7 the contact edge of the vertex in slot s (a corner
+** hint: its corner in bits 0-7), how in bits 24-25.  Any rotation of the
+** triangle reads it, rotated.  When u has one, the quadrilateral is asked
+** of u with a as D (the rotation b d c0 a, answers with AC and BD swapped:
+** shape.h), and only D's test is left.  Otherwise it is asked of t with d
+** as D (the rotation c0 a b d, the same answers as b d c0 a), and t keeps
+** what it found: t is new (a's insertion made it), so unlike u it has
+** its whole life ahead, and the later points that arrive beside it read
+** the hint (docs/emptyshape.md, "Hints", has the counts). */
+static uint32_t lot_hint_pack(uint32_t c, shape_hint h) {
+  uint32_t s[3] = {lot_slot(lot_prev3(c)), lot_slot(c), lot_slot(lot_next3(c))};
+  if (h.how == SHAPE_HINT_CORNER) return (uint32_t)h.how << 24 | h.e[0];
+  return (uint32_t)h.how << 24 | (uint32_t)h.e[0] << 8 * s[0] | (uint32_t)h.e[1] << 8 * s[1] |
+         (uint32_t)h.e[2] << 8 * s[2];
+}
+
+/* The hint of word w for the rotation (prev, at, next) of corner c. */
+static shape_hint lot_hint_unpack(uint32_t c, uint32_t w) {
+  shape_hint h = {.how = (unsigned char)(w >> 24 & 3)};
+  if (h.how == SHAPE_HINT_CORNER) {
+    h.e[0] = (unsigned char)w;
+    return h;
+  }
+  h.e[0] = (unsigned char)(w >> 8 * lot_slot(lot_prev3(c)));
+  h.e[1] = (unsigned char)(w >> 8 * lot_slot(c));
+  h.e[2] = (unsigned char)(w >> 8 * lot_slot(lot_next3(c)));
+  return h;
+}
+
+static rule_choice lot_shape_choice(lot_run *R, uint32_t c, uint32_t cd, geom_point pa,
+                                    geom_point pb, geom_point pd, geom_point pc) {
+  shape_choice s;
+  if (!R->hints) {
+    s = shape_decide_valid(R->shape, pb, pd, pc, pa);
+  } else {
+    uint32_t wu = R->m->tv[LOT_CORNER(lot_tri_of(cd), 3)];
+    if (wu >> 24 & 3) {
+      shape_hint h = lot_hint_unpack(cd, wu);
+      s = shape_decide_hinted(R->shape, pb, pd, pc, pa, &h);
+    } else {
+      shape_hint h = {0};
+      s = shape_decide_hinted(R->shape, pc, pa, pb, pd, &h);
+      R->m->tv[LOT_CORNER(lot_tri_of(c), 3)] = lot_hint_pack(c, h);
+    }
+  }
   return s == SHAPE_EITHER ? RULE_EITHER : s == SHAPE_BD ? RULE_AC : RULE_BD;
 }
 
@@ -430,7 +459,7 @@ static int lot_examine(lot_run *R, uint32_t c) {
                         : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_SHAPE) {
-      ch = lot_shape_choice(R, cd, pa, pb, pd, pc);
+      ch = lot_shape_choice(R, c, cd, pa, pb, pd, pc);
     } else if (R->kind == LOT_K_QUAD) {
       ch = rule_eval(R->r, q, NULL, NULL);
     } else {
@@ -551,14 +580,13 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
 }
 
-/* An empty-shape rule of a polygon of 5 to 255 edges keeps hints (for 3 or
-** 4 edges finding the shape costs little more than using a hint: ES:square
-** took 1% fewer instructions and was no faster).  A new mesh's triangles
-** start without (every write of their vertices clears slot 3); a mesh
-** reflipped (`forget`) may hold another rule's, which are cleared. */
+/* An empty-shape rule keeps hints where its shape wants them
+** (shape_wants_hints: polygons, but the axis-parallel square, which takes
+** 12% fewer instructions without them).  A new mesh's triangles start
+** without (every write of their vertices clears slot 3); a mesh reflipped
+** (`forget`) may hold another rule's, which are cleared. */
 static void lot_run_hints(lot_run *R, int forget) {
-  R->hints = R->kind == LOT_K_SHAPE && R->shape->kind == SHAPE_POLYGON && R->shape->n >= 5 &&
-             R->shape->n <= 255;
+  R->hints = R->kind == LOT_K_SHAPE && shape_wants_hints(R->shape);
   if (!R->hints || !forget) return;
   for (uint32_t t = 0; t < R->m->nt; t++) R->m->tv[LOT_CORNER((size_t)t, 3)] = 0;
 }

@@ -782,7 +782,7 @@ static void test_hint(void **state) {
   static const char *const specs[] = {"square", "triangle", "hexagon", "ngon:7",
                                       "poly:0.1 0.2;3.3 1.1;4 4.7;0.9 3.9;-0.7 1.3"};
   testutil_rng rng = {2028};
-  long kinds[3] = {0, 0, 0}, asked = 0;
+  long kinds[3] = {0, 0, 0}, asked = 0, rotated = 0;   /* kinds by how: none, homothet, corner */
   for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
     shape *k = tshape_get(specs[si]);
     for (int it = 0; it < testutil_reps(400); it++) {
@@ -806,16 +806,87 @@ static void test_hint(void **state) {
           fail_msg("%s: hinted %d, fresh %d (hint %d, exact-only %d) on (%a,%a) (%a,%a) (%a,%a) "
                    "(%a,%a)", specs[si], got, want, h.how, exact, p[0].x, p[0].y, p[1].x, p[1].y,
                    p[2].x, p[2].y, p[3].x, p[3].y);
-        assert_true(h.how == SHAPE_HINT_HOMOTHET || h.how == SHAPE_HINT_CORNER);
+        /* the square's bounding-box decisions need no hint */
+        assert_true(h.how == SHAPE_HINT_HOMOTHET || h.how == SHAPE_HINT_CORNER ||
+                    (h.how == SHAPE_HINT_NONE && !shape_wants_hints(k)));
         kinds[h.how]++;
         asked++;
+        /* lot reads a triangle's hint through any rotation: B C A, its
+        ** contact edges rotated, against D' beyond AB */
+        if (h.how != SHAPE_HINT_HOMOTHET) continue;
+        shape_hint hr = {SHAPE_HINT_HOMOTHET, {h.e[1], h.e[2], h.e[0]}};
+        geom_point r[4] = {p[1], p[2], p[0], {p[0].x + p[1].x - p[2].x, p[0].y + p[1].y - p[2].y}};
+        if (!tshape_convex(r)) continue;
+        got = shape_decide_hinted(k, r[0], r[1], r[2], r[3], &hr);
+        want = shape_decide(k, r[0], r[1], r[2], r[3], NULL);
+        if (got != want)
+          fail_msg("%s: rotated hint %d, fresh %d", specs[si], got, want);
+        rotated++;
       }
     }
     shape_free(k);
   }
-  printf("hint: %ld decisions, %ld with a homothet's hint, %ld with a corner's\n", asked,
-         kinds[SHAPE_HINT_HOMOTHET], kinds[SHAPE_HINT_CORNER]);
-  assert_true(kinds[SHAPE_HINT_HOMOTHET] > 0 && kinds[SHAPE_HINT_CORNER] > 0);
+  printf("hint: %ld decisions, %ld with a homothet's hint, %ld with a corner's, %ld rotated\n",
+         asked, kinds[SHAPE_HINT_HOMOTHET], kinds[SHAPE_HINT_CORNER], rotated);
+  assert_true(kinds[SHAPE_HINT_HOMOTHET] > 0 && kinds[SHAPE_HINT_CORNER] > 0 && rotated > 0);
+}
+
+/* The empty-square decision by bounding boxes (geom/shape_square.c)
+** against the purely exact run: on random quadrilaterals at scales 2^-60 to
+** 2^60 it must answer most of the time, and on grid points (sites with one
+** x or one y everywhere), on four sites of one square (exactly, at its
+** corners, or an ulp off) and through every rotation it must answer only
+** what the exact run answers.  Axis-parallel squares of any size and either
+** orientation take it; a rectangle an ulp from square does not. */
+static void tsquare_same(const shape *k, const geom_point q[4], long *asked, long *answered) {
+  for (int r = 0; r < 4; r++) {
+    geom_point p[4] = {q[r], q[(r + 1) % 4], q[(r + 2) % 4], q[(r + 3) % 4]};
+    shape_set_exact_only(1);
+    shape_choice want = shape_decide(k, p[0], p[1], p[2], p[3], NULL);
+    shape_set_exact_only(0);
+    int got = shape_square_decide(p);
+    shape_choice whole = shape_decide_valid(k, p[0], p[1], p[2], p[3]);
+    (*asked)++;
+    *answered += got >= 0;
+    if ((got >= 0 && got != (int)want) || whole != want)
+      fail_msg("square %d (whole %d) vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", got, whole,
+               want, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
+  }
+}
+
+static void test_square_exact(void **state) {
+  (void)state;
+  static const char *const squares[] = {"square", "poly:1 1;1.5 1;1.5 1.5;1 1.5",
+                                        "poly:3 -1;-2 -1;-2 4;3 4"};
+  static const char *const others[] = {"diamond", "hexagon", "poly:0 0;2 0;2 2.0000000000000004;0 2",
+                                       "poly:0 0;2 0;2 2;0 2.0000000000000004"};
+  for (size_t i = 0; i < sizeof others / sizeof others[0]; i++) {
+    shape *k = tshape_get(others[i]);
+    assert_int_equal(k->linf, 0);
+    shape_free(k);
+  }
+  testutil_rng rng = {2029};
+  for (size_t si = 0; si < sizeof squares / sizeof squares[0]; si++) {
+    shape *k = tshape_get(squares[si]);
+    assert_int_equal(k->linf, 1);
+    long asked = 0, answered = 0;
+    geom_point q[4];
+    for (int it = 0; it < testutil_reps(300); it++) {
+      testutil_convex_quad(&rng, q);
+      double scale = ldexp(1, 60 * (it % 3 - 1));
+      for (int r = 0; r < 4; r++) q[r] = (geom_point){q[r].x * scale, q[r].y * scale};
+      tsquare_same(k, q, &asked, &answered);
+    }
+    /* random sites: only staircases (a corner's rounding shape) are left */
+    assert_true(answered > asked / 2);
+    long grid = asked;
+    for (int it = 0; it < testutil_reps(300); it++)
+      if (tshape_grid_quad(&rng, 5, 1, 0, q)) tsquare_same(k, q, &asked, &answered);
+    for (int it = 0; it < testutil_reps(600); it++)
+      if (tquick_on_homothet(&rng, k, q, it % 3 - 1)) tsquare_same(k, q, &asked, &answered);
+    printf("square  %-30s %ld of %ld answered (%ld random)\n", squares[si], answered, asked, grid);
+    shape_free(k);
+  }
 }
 
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
@@ -900,6 +971,7 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_quick_exact),
     cmocka_unit_test(test_quick_octants),
     cmocka_unit_test(test_hint),
+    cmocka_unit_test(test_square_exact),
   };
   const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),

@@ -1,0 +1,113 @@
+/*
+** shape_square.c: the empty-square (L_inf) rule decided by bounding boxes.
+** For an axis-parallel square K the circumscribing homothet of a triangle
+** is read off the triangle's bounding box, and D's test is comparisons of
+** coordinates and of differences of coordinates: no product, no filter.
+** Where a comparison ties it gives up, and shape.c's quick and exact paths
+** decide (so every answer is theirs).
+*/
+#include <gmp.h>
+#include <math.h>
+#include "shape_internal.h"
+
+/* ---- why the bounding box gives the circumscribing square --------------
+**
+** Let A, B, C have x-extent W (max x - min x) and y-extent H, and say
+** W > H.  A homothet of the square containing the three has side at least
+** W; one with all three on its boundary has side exactly W when the two
+** x-extremes are on its left and right sides: then the third point Q must
+** touch the top or the bottom, so Q is the topmost or the bottommost of the
+** three, and the square is [xmin, xmax] x [yQ - W, yQ] (or [yQ, yQ + W]); it
+** holds the other two (their y is within H < W of yQ) and has the three on
+** its boundary, so it is THE circumscribing homothet (docs/emptyshape.md:
+** it is unique when it exists).  When Q's y is strictly between the others'
+** no homothet passes through the three (the triangle is a staircase, whose
+** circumscribing shape is a corner's rounding shape): left to shape.c.  A
+** side longer than W would need a third side touched on the x-slab's
+** behalf, impossible with one point per side and the x-extremes strictly
+** inside the slab's two sides.  Two of A, B, C with one x or one y (two
+** sites on a line parallel to a side), or W = H (a site on a corner's
+** cone), are special position, left to shape.c (its perturbation decides);
+** so below the three x and the three y are different.  H > W is the same
+** with x and y swapped.
+**
+** Exactness.  D is inside the open square when xmin < xD < xmax, yD < yQ and
+** yQ - yD < W (top case), and outside when one of them fails strictly.
+** Plain comparisons of doubles are exact.  A comparison of two rounded
+** differences, fl(a - b) < fl(c - d), implies a - b < c - d: rounding is
+** monotone, so a - b >= c - d would give fl(a - b) >= fl(c - d); equal
+** rounded values say nothing, and the comparison is a tie.  W > H is such a
+** comparison too.  No difference overflows inside the coordinate contract
+** (docs/scale.md).  So every strict outcome below is the exact one, the
+** perturbed one too (the perturbation only ever decides exact ties), and
+** each tie gives up. */
+
+/* The indices of the least and the greatest of three different values. */
+static inline void shape_sq_ends(const double v[3], int *lo, int *hi) {
+  *lo = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+  *hi = v[0] > v[1] ? (v[0] > v[2] ? 0 : 2) : (v[1] > v[2] ? 1 : 2);
+}
+
+/* The decision when the extent w of u (x, or y with the two swapped) is
+** the larger: SHAPE_BD (D strictly inside), SHAPE_AC (strictly outside),
+** or -1.  ulo, uhi, vlo, vhi: the indices of the extremes. */
+static inline int shape_sq_slab(const double u[4], const double v[4], double w, int ulo, int uhi,
+                                int vlo, int vhi) {
+  int q = 3 - ulo - uhi;
+  /* s: +1 when Q is on the top side, -1 on the bottom; the inside of the
+  ** square across the slab is s (vQ - vD) in (0, w) */
+  double s = q == vhi ? 1 : q == vlo ? -1 : 0;
+  if (s == 0) return -1;
+  double a = u[3] - u[ulo], b = u[uhi] - u[3], c = s * (v[q] - v[3]), d = w - c;
+  /* a, b, c: exact signs (differences of two doubles); d: w against the
+  ** rounded difference c, a tie when 0 */
+  if (a < 0 || b < 0 || c < 0 || d < 0) return SHAPE_AC;
+  if (a > 0 && b > 0 && c > 0 && d > 0) return SHAPE_BD;
+  return -1;
+}
+
+int shape_square_decide(const geom_point p[4]) {
+  double x[4] = {p[0].x, p[1].x, p[2].x, p[3].x}, y[4] = {p[0].y, p[1].y, p[2].y, p[3].y};
+  if (x[0] == x[1] || x[0] == x[2] || x[1] == x[2] || y[0] == y[1] || y[0] == y[2] ||
+      y[1] == y[2])
+    return -1;   /* two sites on a line parallel to a side: special position */
+  int xlo, xhi, ylo, yhi;
+  shape_sq_ends(x, &xlo, &xhi);
+  shape_sq_ends(y, &ylo, &yhi);
+  double w = x[xhi] - x[xlo], h = y[yhi] - y[ylo];
+  if (w > h) return shape_sq_slab(x, y, w, xlo, xhi, ylo, yhi);
+  if (h > w) return shape_sq_slab(y, x, h, ylo, yhi, xlo, xhi);
+  return -1;
+}
+
+/* 1 when |a - b| = |c - d| exactly (once per shape: GMP). */
+static int shape_sq_same_gap(double a, double b, double c, double d) {
+  mpq_t x, y, t;
+  mpq_inits(x, y, t, NULL);
+  mpq_set_d(x, a);
+  mpq_set_d(t, b);
+  mpq_sub(x, x, t);
+  mpq_abs(x, x);
+  mpq_set_d(y, c);
+  mpq_set_d(t, d);
+  mpq_sub(y, y, t);
+  mpq_abs(y, y);
+  int same = mpq_equal(x, y) != 0;
+  mpq_clears(x, y, t, NULL);
+  return same;
+}
+
+int shape_square_is(const shape *k) {
+  if (k->kind != SHAPE_POLYGON || k->n != 4) return 0;
+  const geom_point *v = k->v;
+  for (int i = 0; i < 4; i++) {
+    geom_point a = v[i], b = v[(i + 1) & 3];
+    if ((a.x == b.x) == (a.y == b.y)) return 0;   /* not axis-parallel */
+  }
+  /* a convex quadrilateral with axis-parallel sides is a rectangle: a
+  ** square when two adjacent sides are equally long, exactly */
+  int horizontal = v[0].y == v[1].y;
+  double s0a = horizontal ? v[1].x : v[1].y, s0b = horizontal ? v[0].x : v[0].y;
+  double s1a = horizontal ? v[2].y : v[2].x, s1b = horizontal ? v[1].y : v[1].x;
+  return shape_sq_same_gap(s0a, s0b, s1a, s1b);
+}
