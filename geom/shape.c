@@ -557,6 +557,11 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
                                  geom_point d, shape_hint *h) {
   geom_point p[4] = {a, b, c, d};
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
-  int quick = shape_quick_on(k), sq = quick && k->linf ? shape_square_decide(p) : -1;
+  int quick = shape_quick_on(k);
+  if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {   /* lot's commonest call */
+    int ans = shape_quick_at(k, (const int[3]){h->e[0], h->e[1], h->e[2]}, p);
+    if (ans >= 0) return (shape_choice)ans;
+  }
+  int sq = quick && k->linf ? shape_square_decide(p) : -1;
   return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, NULL, h);
 }

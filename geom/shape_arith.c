@@ -427,7 +427,7 @@ static int shape_filter_of(shape_prog p, const shape_args *g) {
   return 2;
 }
 
-static int shape_only_exact;   /* shape_set_exact_only */
+int shape_only_exact;   /* shape_set_exact_only (shape_internal.h) */
 
 /* ---- the fast paths (shape_internal.h) ------------------------------
 **
@@ -540,10 +540,6 @@ static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
 
 void shape_set_exact_only(int on) {
   shape_only_exact = on;
-}
-
-int shape_exact_only(void) {
-  return shape_only_exact;
 }
 
 int shape_sign(shape_prog p, const shape_args *g) {

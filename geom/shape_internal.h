@@ -49,7 +49,10 @@ FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
 /* Tests: 1 makes every sign skip the double run and take the exact one
 ** (so a decision can be compared with its purely exact twin); 0 restores. */
 FLIPLAB_INTERNAL void shape_set_exact_only(int on);
-FLIPLAB_INTERNAL int shape_exact_only(void);
+FLIPLAB_INTERNAL int shape_only_exact;   /* the mode (shape_arith.c); read inline: */
+static inline int shape_exact_only(void) {   /* every decision asks */
+  return shape_only_exact;
+}
 
 /* The fast paths of the hot predicates (shape_arith.c): the double run
 ** alone, returning its sign, or 2 when it cannot tell a non-zero sign (or
@@ -113,7 +116,9 @@ FLIPLAB_INTERNAL void shape_quick_free(shape *k);
 FLIPLAB_INTERNAL int shape_quick_ready(const shape *k, const geom_point p[4]);
 /* 1 when K has a quick table and the exact-only test mode is off: the
 ** part of shape_quick_ready that does not look at the sites. */
-FLIPLAB_INTERNAL int shape_quick_on(const shape *k);
+static inline int shape_quick_on(const shape *k) {
+  return k->quick != NULL && !shape_only_exact;
+}
 /* The support vertices s_AB, s_BC, s_CA of p[0..2] into sup: 0 when every
 ** sign they rest on is certain (they are then shape_support's), else -1. */
 FLIPLAB_INTERNAL int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]);

@@ -229,10 +229,6 @@ int shape_quick_build(shape *k) {
   return 0;
 }
 
-int shape_quick_on(const shape *k) {
-  return k->quick != NULL && !shape_exact_only();
-}
-
 int shape_quick_ready(const shape *k, const geom_point p[4]) {
   if (!shape_quick_on(k)) return 0;
   int ok = 1;
@@ -337,7 +333,7 @@ static inline double shape_q_w(const shape_q_tri *T, int j, geom_point p, double
 }
 
 /* The certain sign of P's slack c_m - n_m.P on edge m, or 0. */
-static inline int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
   double wpt, wp = shape_q_w(T, m, p, &wpt);
   double v = T->wb * T->m1[m] - T->wc * T->m2[m] + wp * T->m3;
   double tw = T->wbt * T->m1t[m] + T->wct * T->m2t[m] + wpt * T->m3t;
@@ -345,7 +341,7 @@ static inline int shape_q_slack(const shape_q_tri *T, int m, geom_point p) {
 }
 
 /* Triple T->t's determinants: det3h's sign (0: no triple) and the rows of M. */
-static void shape_q_rows(shape_q_tri *T) {
+static FLIPLAB_ALWAYS_INLINE void shape_q_rows(shape_q_tri *T) {
   const shape_quick *q = T->q;
   size_t n = (size_t)q->n, b1 = ((size_t)T->t[0] * n + (size_t)T->t[2]) * n;
   size_t b2 = ((size_t)T->t[0] * n + (size_t)T->t[1]) * n;
@@ -384,7 +380,7 @@ static void shape_q_rows(shape_q_tri *T) {
 ** bit 2 r + (side > 0)), or -1 (a sign uncertain, no homothet with s > 0).
 ** Only the neighbours in movable (those in the point's range) are tested:
 ** the others follow (above). */
-static int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
   const shape_quick *q = T->q;
   int n = q->n, *t = T->t;
   shape_q_rows(T);
@@ -471,14 +467,14 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
 ** A) on t0 (n_m.X = cross(X, e_m)); the settled checks of shape.c's contact
 ** test are the same identity, and both are certified as the supports are
 ** (one rounded difference, count 5). */
-static int shape_q_dslack(const shape_q_tri *T, int m, const geom_point p[4]) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_dslack(const shape_q_tri *T, int m, const geom_point p[4]) {
   if (m == T->t[2]) return shape_q_cross(T->q, m, p[3].x - p[2].x, p[3].y - p[2].y);
   if (m == T->t[0]) return shape_q_cross(T->q, m, p[3].x - p[0].x, p[3].y - p[0].y);
   return shape_q_slack(T, m, p[3]);
 }
 
 /* D against the homothet of contact triple T->t: shape.c's arc walk. */
-static int shape_q_dtest(const shape_q_tri *T, const geom_point p[4]) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_dtest(const shape_q_tri *T, const geom_point p[4]) {
   for (int m = T->t[2];; m = T->q->nb[1][m]) {
     int s = shape_q_dslack(T, m, p);
     if (s == 0) return -1;
