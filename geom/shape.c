@@ -106,6 +106,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
   }
   shape_halves(k);
   k->linf = shape_square_is(k);
+  k->hexa = shape_hex_is(k);
   if (shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
@@ -538,7 +539,8 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
   for (int i = 0; i < 4; i++)
     if (!geom_point_finite(p[i])) return SHAPE_EITHER;
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  int quick = shape_quick_ready(k, p), sq = quick && k->linf && !tr ? shape_square_decide(p) : -1;
+  int quick = shape_quick_ready(k, p), sq = -1;
+  if (quick && !tr) sq = k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, NULL) : -1;
   return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, tr, NULL);
 }
 
@@ -562,6 +564,6 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
     int ans = shape_quick_at(k, (const int[3]){h->e[0], h->e[1], h->e[2]}, p);
     if (ans >= 0) return (shape_choice)ans;
   }
-  int sq = quick && k->linf ? shape_square_decide(p) : -1;
+  int sq = !quick ? -1 : k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, h) : -1;
   return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, NULL, h);
 }

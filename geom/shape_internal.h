@@ -141,5 +141,14 @@ FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point 
 ** (special position, or D on the square): shape_decide's answer. */
 FLIPLAB_INTERNAL int shape_square_is(const shape *k);
 FLIPLAB_INTERNAL int shape_square_decide(const geom_point p[4]);
+/* The empty-hexagon rule of an affinely regular hexagon (shape_hex.c): 1
+** when polygon K is one (a centrally symmetric hexagon with e1 = e0 + e2,
+** every edge an exact difference of its vertices), its edges 0-2 then kept
+** in k->hex; else 0.  For such a K the decision of the anticlockwise
+** quadrilateral p, SHAPE_AC or SHAPE_BD, or -1 when a comparison is too
+** close to call: shape_decide's answer, and what it found of the shape in
+** *out (may be NULL) when it answers. */
+FLIPLAB_INTERNAL int shape_hex_is(shape *k);
+FLIPLAB_INTERNAL int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out);
 
 #endif

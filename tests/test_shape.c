@@ -889,6 +889,65 @@ static void test_square_exact(void **state) {
   }
 }
 
+/* The empty-hexagon decision in slab coordinates (geom/shape_hex.c)
+** against the purely exact run, as the square's above: affinely regular
+** hexagons (the named one, a sheared one with exact edges, either
+** orientation) take it and must answer most random quadrilaterals (corners'
+** rounding shapes included); on grids, four sites of one hexagon (exactly,
+** at its corners, or an ulp off) and every rotation it may only answer what
+** the exact run answers.  A centrally symmetric hexagon that is not
+** affinely regular, an octagon and a hexagon an ulp off do not take it. */
+static void thex_same(const shape *k, const geom_point q[4], long *asked, long *answered) {
+  for (int r = 0; r < 4; r++) {
+    geom_point p[4] = {q[r], q[(r + 1) % 4], q[(r + 2) % 4], q[(r + 3) % 4]};
+    if (!shape_quick_ready(k, p)) continue;
+    shape_set_exact_only(1);
+    shape_choice want = shape_decide(k, p[0], p[1], p[2], p[3], NULL);
+    shape_set_exact_only(0);
+    int got = shape_hex_decide(k, p, NULL);
+    shape_choice whole = shape_decide_valid(k, p[0], p[1], p[2], p[3]);
+    (*asked)++;
+    *answered += got >= 0;
+    if ((got >= 0 && got != (int)want) || whole != want)
+      fail_msg("hexagon %d (whole %d) vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", got, whole,
+               want, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
+  }
+}
+
+static void test_hex_exact(void **state) {
+  (void)state;
+  static const char *const hexes[] = {"hexagon", "poly:2 0;3 1;2 2;0 2;-1 1;0 0",
+                                      "poly:0 0;-1 1;0 2;2 2;3 1;2 0"};
+  static const char *const others[] = {"poly:2 0;3 2;1 3;-2 0;-3 -2;-1 -3", "octagon", "square",
+                                       "poly:2 0;3 1;2 2;0 2;-1 1;0 0.0000000000000002"};
+  for (size_t i = 0; i < sizeof others / sizeof others[0]; i++) {
+    shape *k = tshape_get(others[i]);
+    assert_int_equal(k->hexa, 0);
+    shape_free(k);
+  }
+  testutil_rng rng = {2030};
+  for (size_t si = 0; si < sizeof hexes / sizeof hexes[0]; si++) {
+    shape *k = tshape_get(hexes[si]);
+    assert_int_equal(k->hexa, 1);
+    long asked = 0, answered = 0;
+    geom_point q[4];
+    for (int it = 0; it < testutil_reps(600); it++) {
+      testutil_convex_quad(&rng, q);
+      double scale = ldexp(1, 60 * (it % 3 - 1));
+      for (int r = 0; r < 4; r++) q[r] = (geom_point){q[r].x * scale, q[r].y * scale};
+      thex_same(k, q, &asked, &answered);
+    }
+    assert_true(answered > asked * 9 / 10);
+    long random = asked;
+    for (int it = 0; it < testutil_reps(300); it++)
+      if (tshape_grid_quad(&rng, 5, 1, 0, q)) thex_same(k, q, &asked, &answered);
+    for (int it = 0; it < testutil_reps(900); it++)
+      if (tquick_on_homothet(&rng, k, q, it % 3 - 1)) thex_same(k, q, &asked, &answered);
+    printf("hexagon %-30s %ld of %ld answered (%ld random)\n", hexes[si], answered, asked, random);
+    shape_free(k);
+  }
+}
+
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
 ** signs of the edges outside it, so the supports of directions on and next
 ** to an octant's boundary rays (the axes and diagonals) and to each edge's
@@ -972,6 +1031,7 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_quick_octants),
     cmocka_unit_test(test_hint),
     cmocka_unit_test(test_square_exact),
+    cmocka_unit_test(test_hex_exact),
   };
   const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),
