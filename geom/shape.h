@@ -34,6 +34,7 @@ typedef struct shape {
   int linf;               /* polygon, internal: 1 for an axis-parallel square (geom/shape_square.c) */
   int hexa;               /* polygon, internal: 1 for an affinely regular hexagon (geom/shape_hex.c), */
   geom_point hex[3];      /* its edges 0, 1, 2 */
+  double hexmax;          /* their largest coordinate's magnitude */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
 } shape;
 

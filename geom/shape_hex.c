@@ -70,29 +70,27 @@ static inline int shape_hex_sign(const shape_hex_case *h, double x) {
   return (x > h->eps) - (x < -h->eps);
 }
 
-/* The values of p - A into v, the largest |dx e_y| + |dy e_x| returned. */
+/* The values of p - A into v; returned, the scale of their errors:
+** (|dx| + |dy|) emax >= |dx e_y| + |dy e_x| (emax: the edges' largest
+** coordinate magnitude). */
 static inline double shape_hex_values(const shape *k, geom_point a, geom_point p, double v[3]) {
-  double dx = p.x - a.x, dy = p.y - a.y, s = 0;
-  for (int i = 0; i < 3; i++) {
-    double x = dx * k->hex[i].y, y = dy * k->hex[i].x, m = fabs(x) + fabs(y);
-    v[i] = x - y;
-    s = m > s ? m : s;
-  }
-  return s;
+  double dx = p.x - a.x, dy = p.y - a.y;
+  for (int i = 0; i < 3; i++) v[i] = dx * k->hex[i].y - dy * k->hex[i].x;
+  return (fabs(dx) + fabs(dy)) * k->hexmax;
 }
 
 /* D's answer against the homothet t (times m) and r (times m), m > 0:
 ** SHAPE_BD, SHAPE_AC, or -1.  The bound now covers D's values too. */
 static inline int shape_hex_dtest(shape_hex_case *h, const double t[3], double r, double m) {
   h->eps = h->sd > h->eps ? h->sd : h->eps;
-  int in = 1;
+  int in = 1, out = 0;
   for (int i = 0; i < 3; i++) {
     double u = h->v[3][i] * m - t[i];
     int up = shape_hex_sign(h, r - u), down = shape_hex_sign(h, r + u);
-    if ((up < 0) | (down < 0)) return SHAPE_AC;
+    out |= (up < 0) | (down < 0);
     in &= (up > 0) & (down > 0);
   }
-  return in ? SHAPE_BD : -1;
+  return out ? SHAPE_AC : in ? SHAPE_BD : -1;
 }
 
 /* Case (1), touched sides c (bit i set: the lo side of slab i, else hi),
@@ -120,20 +118,19 @@ static int shape_hex_sides(shape_hex_case *h, int c) {
 static int shape_hex_wide(shape_hex_case *h, int i) {
   int q = 3 - h->ihi[i] - h->ilo[i];
   double r = h->w[i];   /* 2 r, and every t below doubled */
-  for (int j = 0; j < 3; j++) {
-    if (j == i) continue;
-    for (int s = -1; s <= 1; s += 2) {
-      if ((s > 0 ? h->ihi[j] : h->ilo[j]) != q) continue;
-      double t[3];
-      t[i] = h->hi[i] + h->lo[i];
-      t[j] = 2 * (s > 0 ? h->hi[j] : h->lo[j]) - s * r;
-      int o = 3 - i - j;   /* tb = ta + tc: slab 1 is the sum of 0 and 2 */
-      t[o] = o == 1 ? t[0] + t[2] : t[1] - t[2 - o];
-      if (shape_hex_sign(h, t[o] + r - 2 * h->hi[o]) > 0 &&
-          shape_hex_sign(h, 2 * h->lo[o] - t[o] + r) > 0) {
-        h->edge[h->ihi[i]] = i, h->edge[h->ilo[i]] = i + 3, h->edge[q] = s > 0 ? j : j + 3;
-        return shape_hex_dtest(h, t, r, 2);
-      }
+  for (int n = 1; n <= 2; n++) {
+    /* q on side s of the next slab j, if it is the extreme of one */
+    int j = i + n >= 3 ? i + n - 3 : i + n, s = (h->ihi[j] == q) - (h->ilo[j] == q);
+    if (s == 0) continue;
+    double t[3];
+    t[i] = h->hi[i] + h->lo[i];
+    t[j] = 2 * (s > 0 ? h->hi[j] : h->lo[j]) - s * r;
+    int o = 3 - i - j;   /* tb = ta + tc: slab 1 is the sum of 0 and 2 */
+    t[o] = o == 1 ? t[0] + t[2] : t[1] - t[2 - o];
+    if ((shape_hex_sign(h, t[o] + r - 2 * h->hi[o]) > 0) &
+        (shape_hex_sign(h, 2 * h->lo[o] - t[o] + r) > 0)) {
+      h->edge[h->ihi[i]] = i, h->edge[h->ilo[i]] = i + 3, h->edge[q] = s > 0 ? j : j + 3;
+      return shape_hex_dtest(h, t, r, 2);
     }
   }
   return -1;
@@ -174,8 +171,9 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
     double b = h.v[1][i], c = h.v[2][i];
     int sb = shape_hex_sign(&h, b), sc = shape_hex_sign(&h, c), sd = shape_hex_sign(&h, b - c);
     if ((sb == 0) | (sc == 0) | (sd == 0)) return -1;   /* two sites on a line parallel to a side */
-    h.ihi[i] = sb < 0 && sc < 0 ? 0 : sd > 0 ? 1 : 2;
-    h.ilo[i] = sb > 0 && sc > 0 ? 0 : sd < 0 ? 1 : 2;
+    int pb = sb > 0, pc = sc > 0, bc = sd > 0;   /* arithmetic, not branches: coin tosses */
+    h.ihi[i] = (bc & pb) | ((!bc) & pc) << 1;
+    h.ilo[i] = ((!bc) & (!pb)) | (bc & (!pc)) << 1;
     h.hi[i] = h.v[h.ihi[i]][i], h.lo[i] = h.v[h.ilo[i]][i];
     h.w[i] = h.hi[i] - h.lo[i];
     hb[i] = 1 << h.ihi[i], lb[i] = 1 << h.ilo[i];
@@ -187,7 +185,8 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
     return c == 2 ? -1 : c < 0 ? SHAPE_BD : SHAPE_AC;
   }
   /* any candidate certainly the shape is the shape: the first one wins */
-  int i = h.w[0] > h.w[1] ? (h.w[0] > h.w[2] ? 0 : 2) : (h.w[1] > h.w[2] ? 1 : 2);
+  int g01 = h.w[0] > h.w[1], g02 = h.w[0] > h.w[2], g12 = h.w[1] > h.w[2];
+  int i = !(g01 & g02) * (2 - ((!g01) & g12));
   if (shape_hex_sign(&h, h.w[i] - h.w[(i + 1) % 3]) > 0 &&
       shape_hex_sign(&h, h.w[i] - h.w[(i + 2) % 3]) > 0) {
     int ans = shape_hex_wide(&h, i);
@@ -231,6 +230,10 @@ int shape_hex_is(shape *k) {
   if (!shape_hex_exact_diff(e[1].x, e[0].x, &dx) || !shape_hex_exact_diff(e[1].y, e[0].y, &dy) ||
       dx != e[2].x || dy != e[2].y)
     return 0;
-  for (int i = 0; i < 3; i++) k->hex[i] = e[i];
+  k->hexmax = 0;
+  for (int i = 0; i < 3; i++) {
+    k->hex[i] = e[i];
+    k->hexmax = fmax(k->hexmax, fmax(fabs(e[i].x), fabs(e[i].y)));
+  }
   return 1;
 }
