@@ -538,6 +538,19 @@ static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
   return s;
 }
 
+int shape_exact_diff(double a, double b, double *d) {
+  mpq_t x, y;
+  mpq_inits(x, y, NULL);
+  mpq_set_d(x, a);
+  mpq_set_d(y, b);
+  mpq_sub(x, x, y);
+  *d = a - b;
+  mpq_set_d(y, *d);
+  int same = mpq_equal(x, y) != 0;
+  mpq_clears(x, y, NULL);
+  return same;
+}
+
 void shape_set_exact_only(int on) {
   shape_only_exact = on;
 }

@@ -2,13 +2,13 @@
 ** shape_hex.c: the empty-hexagon rule of an affinely regular hexagon (the
 ** `hexagon`, or any centrally symmetric hexagon whose middle edge is the
 ** sum of its neighbours) decided in its three slab coordinates, as the
-** square's is by bounding boxes (shape_square.c): a handful of sums and
-** comparisons instead of supports and a contact search.  Each comparison
-** is filtered by one bound per decision; where one is too close to call, or
-** the triangle's shape is a corner's rounding shape, it gives up and the
-** general path decides (so every answer is the general path's).
+** square's is by bounding boxes (shape_square.c): sums and comparisons of
+** nine values instead of supports and a contact search.  Each comparison is
+** filtered by one bound per decision; a corner's rounding shape goes to the
+** quick corner test (shape_quick.c); where a comparison is too close to
+** call it gives up and the general path decides, so every answer is the
+** general path's.
 */
-#include <gmp.h>
 #include <math.h>
 #include "shape_internal.h"
 
@@ -45,16 +45,18 @@
 ** Exactness.  A, B, C, D are taken relative to A: dx = fl(X - A), and each
 ** value fl(fl(dx e_y) - fl(dy e_x)) has error at most 3 u (|dx e_y| +
 ** |dy e_x|) (1 + 2 u) (three roundings on each path, the edge components
-** being exact: shape_hex_is checks), at most 4 u S, S the largest such sum
-** of magnitudes over the decision.  Every comparison below is the sign of an
-** integer combination of at most 12 values with coefficients of magnitude
-** at most 3 and total magnitude at most 24, evaluated in at most 12
-** roundings: its error is at most 24 (4 u S) + 12 u (24 S) (1 + u)^12 < 2^9
-** u S, each partial sum being at most 24 S in magnitude.  A sign is taken
-** only beyond 2^-40 S = 2^13 u S, far from that; nearer it gives up.  In the
-** coordinate contract (docs/scale.md) the products neither underflow (a
-** non-zero difference is at least 2^-152, an edge component at least
-** 2^-100) nor overflow. */
+** being exact: shape_hex_is checks), so at most 4 u S with S = (|dx| + |dy|)
+** emax over the points, emax the edges' largest coordinate (S as computed
+** is within two roundings of that).  Every comparison below is the sign of
+** an integer combination of the values with total coefficient magnitude at
+** most 12 (the widest: 2 r m - m W_i and r m - |d_i m - t_i m| of case (1),
+** m = 3), evaluated in at most 10 roundings of partial sums at most 12 S in
+** magnitude: its error is at most 12 (4 u S) + 10 u (12 S) (1 + u)^10 <
+** 2^8 u S.  A sign is taken only beyond 2^-40 S = 2^13 u S; nearer, it
+** gives up.  D's values join S for D's own comparisons.  In the coordinate
+** contract (docs/scale.md) no product underflows (a non-zero difference of
+** two coordinates is at least 2^-152, so a non-zero product at least
+** 2^-304) or overflows. */
 
 typedef struct shape_hex_case {
   double v[4][3];     /* the slab values of A (0), B, C, D, relative to A */
@@ -169,9 +171,9 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   int hb[3], lb[3];
   for (int i = 0; i < 3; i++) {
     double b = h.v[1][i], c = h.v[2][i];
-    int sb = shape_hex_sign(&h, b), sc = shape_hex_sign(&h, c), sd = shape_hex_sign(&h, b - c);
-    if ((sb == 0) | (sc == 0) | (sd == 0)) return -1;   /* two sites on a line parallel to a side */
-    int pb = sb > 0, pc = sc > 0, bc = sd > 0;   /* arithmetic, not branches: coin tosses */
+    int gb = shape_hex_sign(&h, b), gc = shape_hex_sign(&h, c), gd = shape_hex_sign(&h, b - c);
+    if ((gb == 0) | (gc == 0) | (gd == 0)) return -1;   /* two sites on a line parallel to a side */
+    int pb = gb > 0, pc = gc > 0, bc = gd > 0;   /* arithmetic, not branches: coin tosses */
     h.ihi[i] = (bc & pb) | ((!bc) & pc) << 1;
     h.ilo[i] = ((!bc) & (!pb)) | (bc & (!pc)) << 1;
     h.hi[i] = h.v[h.ihi[i]][i], h.lo[i] = h.v[h.ilo[i]][i];
@@ -201,33 +203,19 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   return -1;
 }
 
-/* 1 when a - b is a double, exactly; *d = a - b. */
-static int shape_hex_exact_diff(double a, double b, double *d) {
-  mpq_t x, y;
-  mpq_inits(x, y, NULL);
-  mpq_set_d(x, a);
-  mpq_set_d(y, b);
-  mpq_sub(x, x, y);
-  *d = a - b;
-  mpq_set_d(y, *d);
-  int same = mpq_equal(x, y) != 0;
-  mpq_clears(x, y, NULL);
-  return same;
-}
-
 int shape_hex_is(shape *k) {
   if (k->kind != SHAPE_POLYGON || k->n != 6) return 0;
   geom_point e[6];
   for (int i = 0; i < 6; i++) {
     geom_point a = k->v[i], b = k->v[(i + 1) % 6];
-    if (!shape_hex_exact_diff(b.x, a.x, &e[i].x) || !shape_hex_exact_diff(b.y, a.y, &e[i].y))
+    if (!shape_exact_diff(b.x, a.x, &e[i].x) || !shape_exact_diff(b.y, a.y, &e[i].y))
       return 0;
   }
   for (int i = 0; i < 3; i++)
     if (e[i + 3].x != -e[i].x || e[i + 3].y != -e[i].y) return 0;
   /* e1 = e0 + e2 exactly: e1 - e0 must be exact and equal e2 */
   double dx, dy;
-  if (!shape_hex_exact_diff(e[1].x, e[0].x, &dx) || !shape_hex_exact_diff(e[1].y, e[0].y, &dy) ||
+  if (!shape_exact_diff(e[1].x, e[0].x, &dx) || !shape_exact_diff(e[1].y, e[0].y, &dy) ||
       dx != e[2].x || dy != e[2].y)
     return 0;
   k->hexmax = 0;

@@ -134,6 +134,10 @@ FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_p
 ** (shape.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
 
+/* 1 when a - b is a double, exactly (GMP: for building a shape's tables);
+** *d = fl(a - b) either way. */
+FLIPLAB_INTERNAL int shape_exact_diff(double a, double b, double *d);
+
 /* The empty-square rule (shape_square.c): 1 when polygon K is an
 ** axis-parallel square (its rule is the L_inf one, whatever the size and
 ** position), else 0; and for such a K the decision of the anticlockwise

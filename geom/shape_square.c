@@ -6,7 +6,6 @@
 ** Where a comparison ties it gives up, and shape.c's quick and exact paths
 ** decide (so every answer is theirs).
 */
-#include <gmp.h>
 #include <math.h>
 #include "shape_internal.h"
 
@@ -80,23 +79,6 @@ int shape_square_decide(const geom_point p[4]) {
   return -1;
 }
 
-/* 1 when |a - b| = |c - d| exactly (once per shape: GMP). */
-static int shape_sq_same_gap(double a, double b, double c, double d) {
-  mpq_t x, y, t;
-  mpq_inits(x, y, t, NULL);
-  mpq_set_d(x, a);
-  mpq_set_d(t, b);
-  mpq_sub(x, x, t);
-  mpq_abs(x, x);
-  mpq_set_d(y, c);
-  mpq_set_d(t, d);
-  mpq_sub(y, y, t);
-  mpq_abs(y, y);
-  int same = mpq_equal(x, y) != 0;
-  mpq_clears(x, y, t, NULL);
-  return same;
-}
-
 int shape_square_is(const shape *k) {
   if (k->kind != SHAPE_POLYGON || k->n != 4) return 0;
   const geom_point *v = k->v;
@@ -105,9 +87,11 @@ int shape_square_is(const shape *k) {
     if ((a.x == b.x) == (a.y == b.y)) return 0;   /* not axis-parallel */
   }
   /* a convex quadrilateral with axis-parallel sides is a rectangle: a
-  ** square when two adjacent sides are equally long, exactly */
+  ** square when two adjacent sides are equally long, exactly (sides that
+  ** are no exact difference of doubles are not taken) */
   int horizontal = v[0].y == v[1].y;
   double s0a = horizontal ? v[1].x : v[1].y, s0b = horizontal ? v[0].x : v[0].y;
   double s1a = horizontal ? v[2].y : v[2].x, s1b = horizontal ? v[1].y : v[1].x;
-  return shape_sq_same_gap(s0a, s0b, s1a, s1b);
+  double d0, d1;
+  return shape_exact_diff(s0a, s0b, &d0) && shape_exact_diff(s1a, s1b, &d1) && fabs(d0) == fabs(d1);
 }
