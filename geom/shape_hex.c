@@ -129,8 +129,9 @@ static int shape_hex_wide(shape_hex_case *h, int i) {
     t[j] = 2 * (s > 0 ? h->hi[j] : h->lo[j]) - s * r;
     int o = 3 - i - j;   /* tb = ta + tc: slab 1 is the sum of 0 and 2 */
     t[o] = o == 1 ? t[0] + t[2] : t[1] - t[2 - o];
-    if ((shape_hex_sign(h, t[o] + r - 2 * h->hi[o]) > 0) &
-        (shape_hex_sign(h, 2 * h->lo[o] - t[o] + r) > 0)) {
+    int above = shape_hex_sign(h, t[o] + r - 2 * h->hi[o]) > 0;
+    int below = shape_hex_sign(h, 2 * h->lo[o] - t[o] + r) > 0;
+    if (above & below) {   /* both made: no branch between them */
       h->edge[h->ihi[i]] = i, h->edge[h->ilo[i]] = i + 3, h->edge[q] = s > 0 ? j : j + 3;
       return shape_hex_dtest(h, t, r, 2);
     }

@@ -831,121 +831,117 @@ static void test_hint(void **state) {
   assert_true(kinds[SHAPE_HINT_HOMOTHET] > 0 && kinds[SHAPE_HINT_CORNER] > 0 && rotated > 0);
 }
 
-/* The empty-square decision by bounding boxes (geom/shape_square.c)
-** against the purely exact run: on random quadrilaterals at scales 2^-60 to
-** 2^60 it must answer most of the time, and on grid points (sites with one
-** x or one y everywhere), on four sites of one square (exactly, at its
-** corners, or an ulp off) and through every rotation it must answer only
-** what the exact run answers.  Axis-parallel squares of any size and either
-** orientation take it; a rectangle an ulp from square does not. */
-static void tsquare_same(const shape *k, const geom_point q[4], long *asked, long *answered) {
-  for (int r = 0; r < 4; r++) {
-    geom_point p[4] = {q[r], q[(r + 1) % 4], q[(r + 2) % 4], q[(r + 3) % 4]};
-    shape_set_exact_only(1);
-    shape_choice want = shape_decide(k, p[0], p[1], p[2], p[3], NULL);
-    shape_set_exact_only(0);
-    int got = shape_square_decide(p);
-    shape_choice whole = shape_decide_valid(k, p[0], p[1], p[2], p[3]);
-    (*asked)++;
-    *answered += got >= 0;
-    if ((got >= 0 && got != (int)want) || whole != want)
-      fail_msg("square %d (whole %d) vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", got, whole,
-               want, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
-  }
+/* ---- the square's and the hexagon's own decisions ----------------------
+**
+** geom/shape_square.c (bounding boxes) and geom/shape_hex.c (slab
+** coordinates) answer only when every comparison is certain, and claim the
+** general path's answer.  Each is checked against the purely exact decision
+** on the shapes that take it: on random quadrilaterals at scales 2^-60 to
+** 2^60 it must answer at least the share given, and on grid points (sites
+** with one x or one y everywhere), on four sites of one homothet (exactly,
+** at its corners, or an ulp off) and through every rotation it may only
+** answer what the exact run answers; shapes near them must not take it. */
+
+typedef struct tfast {
+  const char *name;
+  int (*decide)(const shape *k, const geom_point p[4]);
+  int (*takes)(const shape *k);
+  const char *const *yes, *const *no;   /* NULL-terminated spec lists */
+  long share;                           /* random: answered > asked * share / 10 */
+} tfast;
+
+static int tfast_square(const shape *k, const geom_point p[4]) {
+  (void)k;
+  return shape_square_decide(p);
 }
 
-static void test_square_exact(void **state) {
-  (void)state;
-  static const char *const squares[] = {"square", "poly:1 1;1.5 1;1.5 1.5;1 1.5",
-                                        "poly:3 -1;-2 -1;-2 4;3 4"};
-  static const char *const others[] = {"diamond", "hexagon", "poly:0 0;2 0;2 2.0000000000000004;0 2",
-                                       "poly:0 0;2 0;2 2;0 2.0000000000000004"};
-  for (size_t i = 0; i < sizeof others / sizeof others[0]; i++) {
-    shape *k = tshape_get(others[i]);
-    assert_int_equal(k->linf, 0);
-    shape_free(k);
-  }
-  testutil_rng rng = {2029};
-  for (size_t si = 0; si < sizeof squares / sizeof squares[0]; si++) {
-    shape *k = tshape_get(squares[si]);
-    assert_int_equal(k->linf, 1);
-    long asked = 0, answered = 0;
-    geom_point q[4];
-    for (int it = 0; it < testutil_reps(300); it++) {
-      testutil_convex_quad(&rng, q);
-      double scale = ldexp(1, 60 * (it % 3 - 1));
-      for (int r = 0; r < 4; r++) q[r] = (geom_point){q[r].x * scale, q[r].y * scale};
-      tsquare_same(k, q, &asked, &answered);
-    }
-    /* random sites: only staircases (a corner's rounding shape) are left */
-    assert_true(answered > asked / 2);
-    long grid = asked;
-    for (int it = 0; it < testutil_reps(300); it++)
-      if (tshape_grid_quad(&rng, 5, 1, 0, q)) tsquare_same(k, q, &asked, &answered);
-    for (int it = 0; it < testutil_reps(600); it++)
-      if (tquick_on_homothet(&rng, k, q, it % 3 - 1)) tsquare_same(k, q, &asked, &answered);
-    printf("square  %-30s %ld of %ld answered (%ld random)\n", squares[si], answered, asked, grid);
-    shape_free(k);
-  }
+static int tfast_square_takes(const shape *k) {
+  return k->linf;
 }
 
-/* The empty-hexagon decision in slab coordinates (geom/shape_hex.c)
-** against the purely exact run, as the square's above: affinely regular
-** hexagons (the named one, a sheared one with exact edges, either
-** orientation) take it and must answer most random quadrilaterals (corners'
-** rounding shapes included); on grids, four sites of one hexagon (exactly,
-** at its corners, or an ulp off) and every rotation it may only answer what
-** the exact run answers.  A centrally symmetric hexagon that is not
-** affinely regular, an octagon and a hexagon an ulp off do not take it. */
-static void thex_same(const shape *k, const geom_point q[4], long *asked, long *answered) {
+static int tfast_hex(const shape *k, const geom_point p[4]) {
+  return shape_hex_decide(k, p, NULL);
+}
+
+static int tfast_hex_takes(const shape *k) {
+  return k->hexa;
+}
+
+static void tfast_same(const tfast *f, const shape *k, const geom_point q[4], long *asked,
+                       long *answered) {
   for (int r = 0; r < 4; r++) {
     geom_point p[4] = {q[r], q[(r + 1) % 4], q[(r + 2) % 4], q[(r + 3) % 4]};
     if (!shape_quick_ready(k, p)) continue;
     shape_set_exact_only(1);
     shape_choice want = shape_decide(k, p[0], p[1], p[2], p[3], NULL);
     shape_set_exact_only(0);
-    int got = shape_hex_decide(k, p, NULL);
+    int got = f->decide(k, p);
     shape_choice whole = shape_decide_valid(k, p[0], p[1], p[2], p[3]);
     (*asked)++;
     *answered += got >= 0;
     if ((got >= 0 && got != (int)want) || whole != want)
-      fail_msg("hexagon %d (whole %d) vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", got, whole,
-               want, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
+      fail_msg("%s %d (whole %d) vs exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", f->name, got,
+               whole, want, p[0].x, p[0].y, p[1].x, p[1].y, p[2].x, p[2].y, p[3].x, p[3].y);
   }
 }
 
-static void test_hex_exact(void **state) {
-  (void)state;
-  static const char *const hexes[] = {"hexagon", "poly:2 0;3 1;2 2;0 2;-1 1;0 0",
-                                      "poly:0 0;-1 1;0 2;2 2;3 1;2 0"};
-  static const char *const others[] = {"poly:2 0;3 2;1 3;-2 0;-3 -2;-1 -3", "octagon", "square",
-                                       "poly:2 0;3 1;2 2;0 2;-1 1;0 0.0000000000000002"};
-  for (size_t i = 0; i < sizeof others / sizeof others[0]; i++) {
-    shape *k = tshape_get(others[i]);
-    assert_int_equal(k->hexa, 0);
+static void tfast_check(const tfast *f, testutil_rng *rng) {
+  for (const char *const *spec = f->no; *spec != NULL; spec++) {
+    shape *k = tshape_get(*spec);
+    assert_int_equal(f->takes(k), 0);
     shape_free(k);
   }
-  testutil_rng rng = {2030};
-  for (size_t si = 0; si < sizeof hexes / sizeof hexes[0]; si++) {
-    shape *k = tshape_get(hexes[si]);
-    assert_int_equal(k->hexa, 1);
+  for (const char *const *spec = f->yes; *spec != NULL; spec++) {
+    shape *k = tshape_get(*spec);
+    assert_int_equal(f->takes(k), 1);
     long asked = 0, answered = 0;
     geom_point q[4];
     for (int it = 0; it < testutil_reps(600); it++) {
-      testutil_convex_quad(&rng, q);
+      testutil_convex_quad(rng, q);
       double scale = ldexp(1, 60 * (it % 3 - 1));
       for (int r = 0; r < 4; r++) q[r] = (geom_point){q[r].x * scale, q[r].y * scale};
-      thex_same(k, q, &asked, &answered);
+      tfast_same(f, k, q, &asked, &answered);
     }
-    assert_true(answered > asked * 9 / 10);
+    assert_true(answered > asked * f->share / 10);
     long random = asked;
     for (int it = 0; it < testutil_reps(300); it++)
-      if (tshape_grid_quad(&rng, 5, 1, 0, q)) thex_same(k, q, &asked, &answered);
+      if (tshape_grid_quad(rng, 5, 1, 0, q)) tfast_same(f, k, q, &asked, &answered);
     for (int it = 0; it < testutil_reps(900); it++)
-      if (tquick_on_homothet(&rng, k, q, it % 3 - 1)) thex_same(k, q, &asked, &answered);
-    printf("hexagon %-30s %ld of %ld answered (%ld random)\n", hexes[si], answered, asked, random);
+      if (tquick_on_homothet(rng, k, q, it % 3 - 1)) tfast_same(f, k, q, &asked, &answered);
+    printf("%-7s %-30s %ld of %ld answered (%ld random)\n", f->name, *spec, answered, asked,
+           random);
     shape_free(k);
   }
+}
+
+/* Squares of any size, either orientation; a rectangle an ulp from square
+** does not take it, nor a diamond.  Random quadrilaterals leave only
+** staircases (a corner's rounding shape) to the general path. */
+static const char *const tfast_squares[] = {"square", "poly:1 1;1.5 1;1.5 1.5;1 1.5",
+                                            "poly:3 -1;-2 -1;-2 4;3 4", NULL};
+static const char *const tfast_not_squares[] = {
+    "diamond", "hexagon", "poly:0 0;2 0;2 2.0000000000000004;0 2",
+    "poly:0 0;2 0;2 2;0 2.0000000000000004", NULL};
+static const tfast tfast_square_case = {"square", tfast_square, tfast_square_takes,
+                                        tfast_squares, tfast_not_squares, 5};
+
+/* Affinely regular hexagons (the named one, a sheared one with exact
+** edges, either orientation) answer nearly every random quadrilateral,
+** corners' rounding shapes included; a centrally symmetric hexagon that is
+** not affinely regular, the octagon, the square and a hexagon an ulp off do
+** not take it. */
+static const char *const tfast_hexes[] = {"hexagon", "poly:2 0;3 1;2 2;0 2;-1 1;0 0",
+                                          "poly:0 0;-1 1;0 2;2 2;3 1;2 0", NULL};
+static const char *const tfast_not_hexes[] = {
+    "poly:2 0;3 2;1 3;-2 0;-3 -2;-1 -3", "octagon", "square",
+    "poly:2 0;3 1;2 2;0 2;-1 1;0 0.0000000000000002", NULL};
+static const tfast tfast_hex_case = {"hexagon", tfast_hex, tfast_hex_takes, tfast_hexes,
+                                     tfast_not_hexes, 9};
+
+/* The state: the tfast to check. */
+static void test_fast_exact(void **state) {
+  testutil_rng rng = {2029};
+  tfast_check(*state, &rng);
 }
 
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
@@ -1030,8 +1026,8 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_quick_exact),
     cmocka_unit_test(test_quick_octants),
     cmocka_unit_test(test_hint),
-    cmocka_unit_test(test_square_exact),
-    cmocka_unit_test(test_hex_exact),
+    cmocka_unit_test_prestate(test_fast_exact, (void *)&tfast_square_case),
+    cmocka_unit_test_prestate(test_fast_exact, (void *)&tfast_hex_case),
   };
   const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),
