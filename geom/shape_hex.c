@@ -172,9 +172,9 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   int hb[3], lb[3];
   for (int i = 0; i < 3; i++) {
     double b = h.v[1][i], c = h.v[2][i];
-    int gb = shape_hex_sign(&h, b), gc = shape_hex_sign(&h, c), gd = shape_hex_sign(&h, b - c);
-    if ((gb == 0) | (gc == 0) | (gd == 0)) return -1;   /* two sites on a line parallel to a side */
-    int pb = gb > 0, pc = gc > 0, bc = gd > 0;   /* arithmetic, not branches: coin tosses */
+    /* a sign too close to call: two sites on a line parallel to a side */
+    if (!(fabs(b) > h.eps) | !(fabs(c) > h.eps) | !(fabs(b - c) > h.eps)) return -1;
+    int pb = b > 0, pc = c > 0, bc = b > c;   /* arithmetic, not branches: coin tosses */
     h.ihi[i] = (bc & pb) | ((!bc) & pc) << 1;
     h.ilo[i] = ((!bc) & (!pb)) | (bc & (!pc)) << 1;
     h.hi[i] = h.v[h.ihi[i]][i], h.lo[i] = h.v[h.ilo[i]][i];
