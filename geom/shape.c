@@ -532,6 +532,14 @@ static shape_choice shape_ellipse_decide(const shape *k, const geom_point p[4], 
   return s > 0 ? SHAPE_BD : s < 0 ? SHAPE_AC : SHAPE_EITHER;
 }
 
+/* The shapes with a decision of their own, tried before the general path:
+** the axis-parallel square's bounding boxes and the affinely regular
+** hexagon's slabs (their files have the arguments); the answer, or -1 for
+** the general path (and for every other shape). */
+static int shape_own_decide(const shape *k, const geom_point p[4], shape_hint *h) {
+  return k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, h) : -1;
+}
+
 shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point c, geom_point d,
                           shape_trace *tr) {
   geom_point p[4] = {a, b, c, d};
@@ -539,9 +547,8 @@ shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point
   for (int i = 0; i < 4; i++)
     if (!geom_point_finite(p[i])) return SHAPE_EITHER;
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  int quick = shape_quick_ready(k, p), sq = -1;
-  if (quick && !tr) sq = k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, NULL) : -1;
-  return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, tr, NULL);
+  int quick = shape_quick_ready(k, p), own = quick && !tr ? shape_own_decide(k, p, NULL) : -1;
+  return own >= 0 ? (shape_choice)own : shape_polygon_decide(k, p, quick, tr, NULL);
 }
 
 /* Sites in the coordinate contract are finite and 0 or of magnitude at
@@ -564,6 +571,6 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
     int ans = shape_quick_at(k, (const int[3]){h->e[0], h->e[1], h->e[2]}, p);
     if (ans >= 0) return (shape_choice)ans;
   }
-  int sq = !quick ? -1 : k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, h) : -1;
-  return sq >= 0 ? (shape_choice)sq : shape_polygon_decide(k, p, quick, NULL, h);
+  int own = quick ? shape_own_decide(k, p, h) : -1;
+  return own >= 0 ? (shape_choice)own : shape_polygon_decide(k, p, quick, NULL, h);
 }

@@ -31,8 +31,8 @@ typedef struct shape {
   unsigned char *half;    /* polygon, internal: 1 for the edges turned by [pi, 2 pi) from edge 0 */
   struct shape_memo *memo; /* polygon, internal: shape-only determinants (geom/shape_arith.c) */
   struct shape_quick *quick; /* polygon, internal: the quick decision's table (geom/shape_quick.c) */
-  int linf;               /* polygon, internal: 1 for an axis-parallel square (geom/shape_square.c) */
-  int hexa;               /* polygon, internal: 1 for an affinely regular hexagon (geom/shape_hex.c), */
+  int linf;               /* polygon, internal: 1 for an axis-parallel square (shape_square.c) */
+  int hexa;               /* polygon, internal: 1 for an affinely regular hexagon (shape_hex.c), */
   geom_point hex[3];      /* its edges 0, 1, 2 */
   double hexmax;          /* their largest coordinate's magnitude */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
@@ -81,9 +81,11 @@ typedef struct shape_hint {
   unsigned char e[3];   /* HOMOTHET: the contact edges of A, B, C; CORNER: e[0] */
 } shape_hint;
 /* shape_decide_valid reading and filling *h: it must be empty or have been
-** filled by a call with the same K, A, B and C.  The same answer as
-** without it; h may be NULL.  A decision that needs no hint (the square's,
-** shape_wants_hints) may leave *h empty. */
+** filled by a call with the same K, A, B and C, or with the same triangle
+** in another rotation and its edges rotated alike (B, C, A take e[1], e[2],
+** e[0]; a corner's hint stays).  The same answer as without it; h may be
+** NULL.  A decision that needs no hint (the square's, shape_wants_hints)
+** may leave *h empty. */
 shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
                                  geom_point d, shape_hint *h);
 /* 1 when keeping hints saves K's decisions work: polygons of 3 to 255

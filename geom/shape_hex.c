@@ -184,7 +184,8 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   int corner = shape_hex_corner(&h);
   if (corner >= 0) {
     int c = shape_quick_corner(k, corner, p);
-    if (c != 2 && out != NULL) *out = (shape_hint){SHAPE_HINT_CORNER, {(unsigned char)corner, 0, 0}};
+    if (c != 2 && out != NULL)
+      *out = (shape_hint){SHAPE_HINT_CORNER, {(unsigned char)corner, 0, 0}};
     return c == 2 ? -1 : c < 0 ? SHAPE_BD : SHAPE_AC;
   }
   /* any candidate certainly the shape is the shape: the first one wins */

@@ -380,7 +380,8 @@ static FLIPLAB_ALWAYS_INLINE void shape_q_rows(shape_q_tri *T) {
 ** bit 2 r + (side > 0)), or -1 (a sign uncertain, no homothet with s > 0).
 ** Only the neighbours in movable (those in the point's range) are tested:
 ** the others follow (above). */
-static FLIPLAB_ALWAYS_INLINE int shape_q_contact(shape_q_tri *T, const geom_point p[3], int movable, int *move) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_contact(shape_q_tri *T, const geom_point p[3],
+                                                  int movable, int *move) {
   const shape_quick *q = T->q;
   int n = q->n, *t = T->t;
   shape_q_rows(T);
@@ -467,7 +468,8 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
 ** A) on t0 (n_m.X = cross(X, e_m)); the settled checks of shape.c's contact
 ** test are the same identity, and both are certified as the supports are
 ** (one rounded difference, count 5). */
-static FLIPLAB_ALWAYS_INLINE int shape_q_dslack(const shape_q_tri *T, int m, const geom_point p[4]) {
+static FLIPLAB_ALWAYS_INLINE int shape_q_dslack(const shape_q_tri *T, int m,
+                                                 const geom_point p[4]) {
   if (m == T->t[2]) return shape_q_cross(T->q, m, p[3].x - p[2].x, p[3].y - p[2].y);
   if (m == T->t[0]) return shape_q_cross(T->q, m, p[3].x - p[0].x, p[3].y - p[0].y);
   return shape_q_slack(T, m, p[3]);
