@@ -466,15 +466,14 @@ static shape_choice shape_corner_decide(const shape *k, int c, const geom_point 
   return s < 0 ? SHAPE_BD : s > 0 ? SHAPE_AC : SHAPE_EITHER;
 }
 
-/* What the hint knows (shape_hint), when it is set: the same answer as
-** finding it again, since the circumscribing shape of A, B, C depends on
-** them alone; -1 when the hint is empty or its quick test is uncertain. */
+/* What a corner's hint knows: the same answer as finding the corner again,
+** since the circumscribing shape of A, B, C depends on them alone; -1 for
+** any other hint (a homothet's is tried in shape_decide_hinted, first, and
+** needs the quick path). */
 static int shape_hint_decide(const shape *k, const geom_point p[4], int quick,
                              const shape_hint *h) {
-  if (h == NULL || h->how == SHAPE_HINT_NONE) return -1;
-  if (h->how == SHAPE_HINT_CORNER) return (int)shape_corner_decide(k, h->e[0], p, quick, NULL);
-  const int t[3] = {h->e[0], h->e[1], h->e[2]};
-  return quick ? shape_quick_at(k, t, p) : -1;
+  if (h == NULL || h->how != SHAPE_HINT_CORNER) return -1;
+  return (int)shape_corner_decide(k, h->e[0], p, quick, NULL);
 }
 
 static void shape_hint_set(shape_hint *h, int how, const int e[3], int n) {
@@ -567,7 +566,9 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
   geom_point p[4] = {a, b, c, d};
   if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
   int quick = shape_quick_on(k);
-  if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {   /* lot's commonest call */
+  /* a homothet's hint: lot's commonest call (tried here only, as it needs the
+  ** quick path; when its test is uncertain the shape is found again) */
+  if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {
     int ans = shape_quick_at(k, (const int[3]){h->e[0], h->e[1], h->e[2]}, p);
     if (ans >= 0) return (shape_choice)ans;
   }

@@ -67,9 +67,9 @@ typedef struct shape_hex_case {
   int edge[3];        /* the shape found: the contact edges of A, B, C */
 } shape_hex_case;
 
-/* The certain sign of x, or 0. */
-static inline int shape_hex_sign(const shape_hex_case *h, double x) {
-  return (x > h->eps) - (x < -h->eps);
+/* The certain sign of x under the bound eps, or 0. */
+static inline int shape_hex_sign(double eps, double x) {
+  return (x > eps) - (x < -eps);
 }
 
 /* The values of p - A into v; returned, the scale of their errors:
@@ -82,13 +82,13 @@ static inline double shape_hex_values(const shape *k, geom_point a, geom_point p
 }
 
 /* D's answer against the homothet t (times m) and r (times m), m > 0:
-** SHAPE_BD, SHAPE_AC, or -1.  The bound now covers D's values too. */
-static inline int shape_hex_dtest(shape_hex_case *h, const double t[3], double r, double m) {
-  h->eps = h->sd > h->eps ? h->sd : h->eps;
+** SHAPE_BD, SHAPE_AC, or -1.  Its bound covers D's values too. */
+static inline int shape_hex_dtest(const shape_hex_case *h, const double t[3], double r, double m) {
+  double eps = h->sd > h->eps ? h->sd : h->eps;
   int in = 1, out = 0;
   for (int i = 0; i < 3; i++) {
     double u = h->v[3][i] * m - t[i];
-    int up = shape_hex_sign(h, r - u), down = shape_hex_sign(h, r + u);
+    int up = shape_hex_sign(eps, r - u), down = shape_hex_sign(eps, r + u);
     out |= (up < 0) | (down < 0);
     in &= (up > 0) & (down > 0);
   }
@@ -108,7 +108,7 @@ static int shape_hex_sides(shape_hex_case *h, int c) {
   double k = s[0] + s[2] - s[1], m = fabs(k);
   double r = (e[0] + e[2] - e[1]) * (k < 0 ? -1 : 1);   /* r m */
   for (int i = 0; i < 3; i++)
-    if (shape_hex_sign(h, 2 * r - m * h->w[i]) <= 0) return -1;
+    if (shape_hex_sign(h->eps, 2 * r - m * h->w[i]) <= 0) return -1;
   for (int i = 0; i < 3; i++) {
     t[i] = e[i] * m - s[i] * r;
     h->edge[c >> i & 1 ? h->ilo[i] : h->ihi[i]] = (c >> i & 1) * 3 + i;
@@ -129,8 +129,8 @@ static int shape_hex_wide(shape_hex_case *h, int i) {
     t[j] = 2 * (s > 0 ? h->hi[j] : h->lo[j]) - s * r;
     int o = 3 - i - j;   /* tb = ta + tc: slab 1 is the sum of 0 and 2 */
     t[o] = o == 1 ? t[0] + t[2] : t[1] - t[2 - o];
-    int above = shape_hex_sign(h, t[o] + r - 2 * h->hi[o]) > 0;
-    int below = shape_hex_sign(h, 2 * h->lo[o] - t[o] + r) > 0;
+    int above = shape_hex_sign(h->eps, t[o] + r - 2 * h->hi[o]) > 0;
+    int below = shape_hex_sign(h->eps, 2 * h->lo[o] - t[o] + r) > 0;
     if (above & below) {   /* both made: no branch between them */
       h->edge[h->ihi[i]] = i, h->edge[h->ilo[i]] = i + 3, h->edge[q] = s > 0 ? j : j + 3;
       return shape_hex_dtest(h, t, r, 2);
@@ -139,17 +139,13 @@ static int shape_hex_wide(shape_hex_case *h, int i) {
   return -1;
 }
 
-/* A point that is the extreme of no side: the triangle's shape is the
+/* When a point is the extreme of no side, the triangle's shape is the
 ** rounding shape of the vertex where the next point's run of sides starts
-** (docs/emptyshape.md: two supports coincide there); -1 when every point
-** has a side.  Side 0 1 2 3 4 5 is slab 0 1 2 hi, then slab 0 1 2 lo. */
+** (docs/emptyshape.md: two supports coincide there).  Side 0 1 2 3 4 5 is
+** slab 0 1 2 hi, then slab 0 1 2 lo. */
 static int shape_hex_corner(const shape_hex_case *h) {
-  int own[6], has = 0;
-  for (int i = 0; i < 3; i++) {
-    own[i] = h->ihi[i], own[i + 3] = h->ilo[i];
-    has |= 1 << h->ihi[i] | 1 << h->ilo[i];
-  }
-  if (has == 7) return -1;
+  int own[6];
+  for (int i = 0; i < 3; i++) own[i] = h->ihi[i], own[i + 3] = h->ilo[i];
   /* runs go A, B, C anticlockwise: from P's straight to P + 2's skips P + 1 */
   for (int j = 0; j < 6; j++)
     if (own[(j + 5) % 6] == (own[j] + 1) % 3) return j;
@@ -169,7 +165,7 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   double s = shape_hex_values(k, p[0], p[1], h.v[1]), sc = shape_hex_values(k, p[0], p[2], h.v[2]);
   h.eps = 0x1p-40 * (sc > s ? sc : s);
   h.sd = 0x1p-40 * shape_hex_values(k, p[0], p[3], h.v[3]);
-  int hb[3], lb[3];
+  int hb[3], lb[3], has = 0;   /* has: the points extreme on some side, by bit */
   for (int i = 0; i < 3; i++) {
     double b = h.v[1][i], c = h.v[2][i];
     /* a sign too close to call: two sites on a line parallel to a side */
@@ -180,10 +176,10 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
     h.hi[i] = h.v[h.ihi[i]][i], h.lo[i] = h.v[h.ilo[i]][i];
     h.w[i] = h.hi[i] - h.lo[i];
     hb[i] = 1 << h.ihi[i], lb[i] = 1 << h.ilo[i];
+    has |= hb[i] | lb[i];
   }
-  int corner = shape_hex_corner(&h);
-  if (corner >= 0) {
-    int c = shape_quick_corner(k, corner, p);
+  if (has != 7) {   /* a point extreme on no side: a corner's rounding shape */
+    int corner = shape_hex_corner(&h), c = corner < 0 ? 2 : shape_quick_corner(k, corner, p);
     if (c != 2 && out != NULL)
       *out = (shape_hint){SHAPE_HINT_CORNER, {(unsigned char)corner, 0, 0}};
     return c == 2 ? -1 : c < 0 ? SHAPE_BD : SHAPE_AC;
@@ -191,8 +187,8 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   /* any candidate certainly the shape is the shape: the first one wins */
   int g01 = h.w[0] > h.w[1], g02 = h.w[0] > h.w[2], g12 = h.w[1] > h.w[2];
   int i = !(g01 & g02) * (2 - ((!g01) & g12));
-  if (shape_hex_sign(&h, h.w[i] - h.w[(i + 1) % 3]) > 0 &&
-      shape_hex_sign(&h, h.w[i] - h.w[(i + 2) % 3]) > 0) {
+  if (shape_hex_sign(h.eps, h.w[i] - h.w[(i + 1) % 3]) > 0 &&
+      shape_hex_sign(h.eps, h.w[i] - h.w[(i + 2) % 3]) > 0) {
     int ans = shape_hex_wide(&h, i);
     if (ans >= 0) return shape_hex_found(&h, ans, out);
   }

@@ -259,52 +259,51 @@ static inline int shape_q_cross(const shape_quick *q, int j, double dx, double d
 ** certified cross product for each edge it leaves open, and support s is
 ** the bit of (pos turned by one) & neg, a certain + at s - 1 and - at s.
 ** Certain signs are exact, and the exact signs change from + to - once, so
-** there is at most one such bit; none: uncertain. */
-static int shape_q_support(const shape_quick *q, double dx, double dy) {
-  double ax = fabs(dx), ay = fabs(dy);
-  int ray = (dx == 0) | (dy == 0) | (ax == ay);   /* rare: no branches for it */
-  const shape_q_oct *w = &q->oct[ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
+** there is at most one such bit; none: uncertain.  o: the octant of
+** (dx, dy), 8 on a boundary ray (shape_q_octant). */
+static int shape_q_support_open(const shape_quick *q, int o, double dx, double dy) {
+  const shape_q_oct *w = &q->oct[o];
   /* an octant takes vmax crosses, the padding's ignored: the count is the
   ** shape's, so the loop's branch is predicted (a ray, rare, takes every
   ** edge); with few, the signs index the octant's table */
-  if (!ray && q->vmax == 0) return w->tab[0];   /* no loop set-up: 1.4% of ES:square's LOT */
-  if (!ray && q->vmax <= SHAPE_Q_TAB) {
+  if (o < 8 && q->vmax <= SHAPE_Q_TAB) {
     int idx = 0;
     for (int i = 0; i < q->vmax; i++) idx = 3 * idx + 1 + shape_q_cross(q, w->var[i], dx, dy);
     return w->tab[idx];
   }
-  int open = ray ? w->nvar : q->vmax;
+  int open = o == 8 ? w->nvar : q->vmax;
   uint32_t pos = w->pos, neg = w->neg;
   for (int i = 0; i < open; i++)
     shape_q_apply(w, i, shape_q_cross(q, w->var[i], dx, dy), &pos, &neg);
   return shape_q_change(pos, neg, q->n);
 }
 
-/* A shape whose octants leave at most one edge open (vmax <= 1: the
-** square, the diamond, the triangle, the regular hexagon and octagon): off
-** the boundary rays a support is one table read after at most one cross
-** product, shape_q_support's table path with its loop written out. */
-static inline int shape_q_support1(const shape_quick *q, double dx, double dy) {
+/* The open octant of (dx, dy), or 8 on a boundary ray (rare: no branches
+** for it). */
+static inline int shape_q_octant(double dx, double dy) {
   double ax = fabs(dx), ay = fabs(dy);
-  if ((dx == 0) | (dy == 0) | (ax == ay)) return shape_q_support(q, dx, dy);
-  const shape_q_oct *w = &q->oct[(dx < 0) << 2 | (dy < 0) << 1 | (ay > ax)];
+  int ray = (dx == 0) | (dy == 0) | (ax == ay);
+  return ray ? 8 : (dx < 0) << 2 | (dy < 0) << 1 | (ay > ax);
+}
+
+/* A shape whose octants leave at most one edge open (vmax <= 1: the
+** square, the diamond, the triangle, the regular hexagon and octagon) reads
+** an off-ray support from the table after at most one cross product,
+** written out here (its three supports are a sixth of an ES LOT); the rest
+** take shape_q_support_open. */
+static inline int shape_q_support(const shape_quick *q, double dx, double dy) {
+  int o = shape_q_octant(dx, dy);
+  if (o == 8 || q->vmax > 1) return shape_q_support_open(q, o, dx, dy);
+  const shape_q_oct *w = &q->oct[o];
   return w->tab[q->vmax ? 1 + shape_q_cross(q, w->var[0], dx, dy) : 0];
 }
 
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
   const shape_quick *q = k->quick;
-  if (q->vmax <= 1) {
-    sup[0] = shape_q_support1(q, p[1].x - p[0].x, p[1].y - p[0].y);
-    sup[1] = shape_q_support1(q, p[2].x - p[1].x, p[2].y - p[1].y);
-    sup[2] = shape_q_support1(q, p[0].x - p[2].x, p[0].y - p[2].y);
-    return (sup[0] | sup[1] | sup[2]) < 0 ? -1 : 0;
-  }
-  for (int r = 0; r < 3; r++) {
-    geom_point a = p[r], b = p[r < 2 ? r + 1 : 0];
-    sup[r] = shape_q_support(q, b.x - a.x, b.y - a.y);
-    if (sup[r] < 0) return -1;
-  }
-  return 0;
+  sup[0] = shape_q_support(q, p[1].x - p[0].x, p[1].y - p[0].y);
+  sup[1] = shape_q_support(q, p[2].x - p[1].x, p[2].y - p[1].y);
+  sup[2] = shape_q_support(q, p[0].x - p[2].x, p[0].y - p[2].y);
+  return (sup[0] | sup[1] | sup[2]) < 0 ? -1 : 0;
 }
 
 /* ---- the homothet ---------------------------------------------------------
