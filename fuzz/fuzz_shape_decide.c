@@ -5,7 +5,9 @@
 ** The first byte picks the shape and how the eight coordinates are read:
 ** as small integers (grids: sites in special position everywhere) or as raw
 ** doubles; a strictly convex quadrilateral (put anticlockwise) inside the
-** coordinate contract must get the same answer both ways.
+** coordinate contract must get the same answer both ways, and again when
+** asked with the hint its first hinted decision kept (the hexagon's known
+** contact triple, the quick path's, a corner's).
 */
 #include <math.h>
 #include "fuzz_support.h"
@@ -44,10 +46,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   shape_set_exact_only(1);
   shape_choice exact = shape_decide(k, q[0], q[1], q[2], q[3], NULL);
   shape_set_exact_only(0);
-  if (fast != exact) {
-    fprintf(stderr, "%s: fast %d, exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)\n",
-            fuzz_shapes[data[0] % FUZZ_NSHAPES], fast, exact, q[0].x, q[0].y, q[1].x, q[1].y,
-            q[2].x, q[2].y, q[3].x, q[3].y);
+  shape_hint h = {0};
+  shape_choice first = shape_decide_hinted(k, q[0], q[1], q[2], q[3], &h);
+  shape_choice again = shape_decide_hinted(k, q[0], q[1], q[2], q[3], &h);
+  if (fast != exact || first != exact || again != exact) {
+    fprintf(stderr, "%s: fast %d, hinted %d then %d, exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)\n",
+            fuzz_shapes[data[0] % FUZZ_NSHAPES], fast, first, again, exact, q[0].x, q[0].y,
+            q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y);
     abort();
   }
   return 0;

@@ -32,6 +32,7 @@ void shape_free(shape *k) {
   if (k == NULL) return;
   shape_quick_free(k);
   shape_memo_free(k);
+  shape_hex_free(k);
   free(k->v);
   free(k->half);
   free(k);
@@ -106,8 +107,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
   }
   shape_halves(k);
   k->linf = shape_square_is(k);
-  k->hexa = shape_hex_is(k);
-  if (shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
+  if (shape_hex_build(k) != 0 || shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
     return NULL;
@@ -569,7 +569,9 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
   /* a homothet's hint: lot's commonest call (tried here only, as it needs the
   ** quick path; when its test is uncertain the shape is found again) */
   if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {
-    int ans = shape_quick_at(k, (const int[3]){h->e[0], h->e[1], h->e[2]}, p);
+    const int t[3] = {h->e[0], h->e[1], h->e[2]};
+    int ans = k->hexa ? shape_hex_at(k, t, p) : -1;
+    if (ans < 0) ans = shape_quick_at(k, t, p);
     if (ans >= 0) return (shape_choice)ans;
   }
   int own = quick ? shape_own_decide(k, p, h) : -1;

@@ -32,9 +32,7 @@ typedef struct shape {
   struct shape_memo *memo; /* polygon, internal: shape-only determinants (geom/shape_arith.c) */
   struct shape_quick *quick; /* polygon, internal: the quick decision's table (geom/shape_quick.c) */
   int linf;               /* polygon, internal: 1 for an axis-parallel square (shape_square.c) */
-  int hexa;               /* polygon, internal: 1 for an affinely regular hexagon (shape_hex.c), */
-  geom_point hex[3];      /* its edges 0, 1, 2 */
-  double hexmax;          /* their largest coordinate's magnitude */
+  struct shape_hex *hexa; /* polygon, internal: an affinely regular hexagon's slabs (shape_hex.c) */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
 } shape;
 

@@ -145,14 +145,19 @@ FLIPLAB_INTERNAL int shape_exact_diff(double a, double b, double *d);
 ** (special position, or D on the square): shape_decide's answer. */
 FLIPLAB_INTERNAL int shape_square_is(const shape *k);
 FLIPLAB_INTERNAL int shape_square_decide(const geom_point p[4]);
-/* The empty-hexagon rule of an affinely regular hexagon (shape_hex.c): 1
-** when polygon K is one (a centrally symmetric hexagon with e1 = e0 + e2,
-** every edge an exact difference of its vertices), its edges 0-2 then kept
-** in k->hex; else 0.  For such a K the decision of the anticlockwise
+/* The empty-hexagon rule of an affinely regular hexagon (shape_hex.c): for
+** a polygon K that is one (a centrally symmetric hexagon with e1 = e0 + e2,
+** every edge an exact difference of its vertices) its slabs into k->hexa
+** (0, or -1 out of memory; k->hexa stays NULL for any other shape), freed
+** with the shape.  For such a K the decision of the anticlockwise
 ** quadrilateral p, SHAPE_AC or SHAPE_BD, or -1 when a comparison is too
 ** close to call: shape_decide's answer, and what it found of the shape in
-** *out (may be NULL) when it answers. */
-FLIPLAB_INTERNAL int shape_hex_is(shape *k);
+** *out (may be NULL) when it answers.  shape_hex_at: the same decision when
+** t holds the contact edges of p[0..2] (a hint), or -1 when D's test is too
+** close to call or t fits no homothet (then nothing is known). */
+FLIPLAB_INTERNAL int shape_hex_build(shape *k);
+FLIPLAB_INTERNAL void shape_hex_free(shape *k);
 FLIPLAB_INTERNAL int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out);
+FLIPLAB_INTERNAL int shape_hex_at(const shape *k, const int t[3], const geom_point p[4]);
 
 #endif

@@ -451,8 +451,6 @@ static int lot_examine(lot_run *R, uint32_t c) {
   } else {
     n1 = n2 = (lot_enc){0, 0};
     if (geom_orient_valid(pa, pb, pd) <= 0 || geom_orient_valid(pa, pd, pc) <= 0) return 0;
-    const geom_point q[4] = {pa, pb, pd, pc};
-    const lot_options *o = R->o;
     rule_choice ch;
     if (R->kind == LOT_K_TRI) {
       int flip = m->enc ? lot_prefers_lazy(R, a, b, c0, d, t, u, &n1, &n2)
@@ -460,10 +458,10 @@ static int lot_examine(lot_run *R, uint32_t c) {
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_SHAPE) {
       ch = lot_shape_choice(R, c, cd, pa, pb, pd, pc);
-    } else if (R->kind == LOT_K_QUAD) {
-      ch = rule_eval(R->r, q, NULL, NULL);
     } else {
-      ch = o->decide(q, RULE_BD, o->decide_ctx);
+      const geom_point q[4] = {pa, pb, pd, pc};
+      ch = R->kind == LOT_K_QUAD ? rule_eval(R->r, q, NULL, NULL)
+                                 : R->o->decide(q, RULE_BD, R->o->decide_ctx);
     }
     if (ch == RULE_EITHER && R->settle_ties) ch = lot_tie_flips(pa, pb, pc, pd) ? RULE_AC : RULE_BD;
     if (ch != RULE_AC) return 0;

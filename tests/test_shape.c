@@ -864,7 +864,7 @@ static int tfast_hex(const shape *k, const geom_point p[4]) {
 }
 
 static int tfast_hex_takes(const shape *k) {
-  return k->hexa;
+  return k->hexa != NULL;
 }
 
 static void tfast_same(const tfast *f, const shape *k, const geom_point q[4], long *asked,
@@ -938,10 +938,74 @@ static const char *const tfast_not_hexes[] = {
 static const tfast tfast_hex_case = {"hexagon", tfast_hex, tfast_hex_takes, tfast_hexes,
                                      tfast_not_hexes, 9};
 
+/* The hexagon's decision from a known contact triple (shape_hex_at, as
+** lot's hints ask it): the triple is the exact run's own, so wherever the
+** exact run finds a homothet the answer must be its; a rounding shape is
+** not asked (its hint is a corner's). */
+static int tfast_hex_at(const shape *k, const geom_point p[4]) {
+  shape_trace tr;
+  shape_set_exact_only(1);
+  shape_decide(k, p[0], p[1], p[2], p[3], &tr);
+  shape_set_exact_only(0);
+  return tr.rounding || tr.contact[0] < 0 ? -1 : shape_hex_at(k, tr.contact, p);
+}
+
+static const tfast tfast_hex_at_case = {"hex-at", tfast_hex_at, tfast_hex_takes, tfast_hexes,
+                                        tfast_not_hexes, 7};
+
 /* The state: the tfast to check. */
 static void test_fast_exact(void **state) {
   testutil_rng rng = {2029};
   tfast_check(*state, &rng);
+}
+
+/* shape_hex_at's equations, for each of the 216 contact triples: three
+** sites on the named sides of a random homothet c + s K and D inside it
+** (c + s l X, X in K, l <= 0.9) or outside (l >= 1.1).  Three different
+** sides fix the homothet (two parallel ones and a third, or one side of
+** each slab), so the answer must be given and be right; a side named twice
+** leaves a family of homothets, and the answer must be -1. */
+static void test_hex_at(void **state) {
+  (void)state;
+  static const char *const specs[] = {"hexagon", "poly:2 0;3 1;2 2;0 2;-1 1;0 0"};
+  testutil_rng rng = {2031};
+  for (size_t si = 0; si < sizeof specs / sizeof specs[0]; si++) {
+    shape *k = tshape_get(specs[si]);
+    long answered = 0, refused = 0;
+    for (int t = 0; t < 216; t++) {
+      int tt[3] = {t % 6, t / 6 % 6, t / 36};
+      int fixed = tt[0] != tt[1] && tt[1] != tt[2] && tt[0] != tt[2];
+      for (int it = 0; it < testutil_reps(20); it++) {
+        geom_point c = {testutil_uniform(&rng) * 8 - 4, testutil_uniform(&rng) * 8 - 4}, p[4];
+        double sc = 0.25 + testutil_uniform(&rng) * 4;
+        for (int j = 0; j < 3; j++) {
+          geom_point a = k->v[tt[j]], b = k->v[(tt[j] + 1) % 6];
+          double f = 0.05 + 0.9 * testutil_uniform(&rng);
+          p[j] = (geom_point){c.x + sc * (a.x + f * (b.x - a.x)), c.y + sc * (a.y + f * (b.y - a.y))};
+        }
+        /* D = c + s (o + l (Y - o)): Y on the boundary of K, o its centre */
+        int i0 = (int)(testutil_next(&rng) % 6), i1 = (i0 + 1) % 6, inside = it % 2;
+        double f = testutil_uniform(&rng), g = testutil_uniform(&rng);
+        double l = inside ? 0.9 * g : 1.1 + g;
+        geom_point o = {0, 0}, y = {k->v[i0].x + f * (k->v[i1].x - k->v[i0].x),
+                                    k->v[i0].y + f * (k->v[i1].y - k->v[i0].y)};
+        for (int j = 0; j < 6; j++) o = (geom_point){o.x + k->v[j].x / 6, o.y + k->v[j].y / 6};
+        p[3] = (geom_point){c.x + sc * (o.x + l * (y.x - o.x)), c.y + sc * (o.y + l * (y.y - o.y))};
+        int got = shape_hex_at(k, tt, p);
+        if (!fixed) {
+          if (got != -1) fail_msg("%s: triple %d %d %d answered %d", specs[si], tt[0], tt[1], tt[2], got);
+          refused++;
+          continue;
+        }
+        if (got != (inside ? SHAPE_BD : SHAPE_AC))
+          fail_msg("%s: triple %d %d %d, D %s: answered %d", specs[si], tt[0], tt[1], tt[2],
+                   inside ? "inside" : "outside", got);
+        answered++;
+      }
+    }
+    printf("hex-at  %-30s %ld answered, %ld refused\n", specs[si], answered, refused);
+    shape_free(k);
+  }
 }
 
 /* The octant windows (geom/shape_quick.c): each open octant fixes the
@@ -1028,6 +1092,8 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_hint),
     cmocka_unit_test_prestate(test_fast_exact, (void *)&tfast_square_case),
     cmocka_unit_test_prestate(test_fast_exact, (void *)&tfast_hex_case),
+    cmocka_unit_test_prestate(test_fast_exact, (void *)&tfast_hex_at_case),
+    cmocka_unit_test(test_hex_at),
   };
   const struct CMUnitTest rest[] = {
     cmocka_unit_test(test_rotations_random),
