@@ -131,12 +131,21 @@ static inline int shape_hex_dtest(const shape_hex_case *h, const double t[3], do
   return out ? SHAPE_AC : in ? SHAPE_BD : -1;
 }
 
+/* k = s_a + s_c - s_b by the sides c of case (1) (s_i = -1 for the lo side). */
+static const double shape_hex_k[8] = {1, -1, 3, 1, -1, -3, 1, -1};
+
+/* Case (1)'s radius for sides c (a guess only: not certain). */
+static inline double shape_hex_radius(const shape_hex_case *h, int c) {
+  double e0 = h->ext[c & 1][0], e1 = h->ext[c >> 1 & 1][1], e2 = h->ext[c >> 2 & 1][2];
+  return (e0 + e2 - e1) / shape_hex_k[c];
+}
+
 /* Case (1), touched sides c (bit i set: the lo side of slab i, else hi),
 ** whose points are known to be three: the answer, or -1 when this is not
-** certainly the shape.  k = s_a + s_c - s_b by c. */
+** certainly the shape. */
 static int shape_hex_sides(shape_hex_case *h, int c) {
-  static const double kc[8] = {1, -1, 3, 1, -1, -3, 1, -1}, sgn[2] = {1, -1};
-  double e[3], t[3], k = kc[c], m = fabs(k);
+  static const double sgn[2] = {1, -1};
+  double e[3], t[3], k = shape_hex_k[c], m = fabs(k);
   for (int i = 0; i < 3; i++) e[i] = h->ext[c >> i & 1][i];
   double r = (e[0] + e[2] - e[1]) * sgn[k < 0];   /* r m */
   double eps = h->eps, r2 = 2 * r;
@@ -217,10 +226,6 @@ static void shape_hex_plan_of(unsigned code, shape_hex_plan *pl) {
     if (pts == 7 && nc < 2) pl->cand[nc++] = (unsigned char)c;
   }
   if (nc < 2) pl->corner = 6;   /* never, by the count above */
-  if (pl->cand[0] == 2 || pl->cand[0] == 5) {   /* an alternate triple last */
-    unsigned char c = pl->cand[0];
-    pl->cand[0] = pl->cand[1], pl->cand[1] = c;
-  }
 }
 
 int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
@@ -251,24 +256,23 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   }
   h.sd = 0x1p-40 * shape_hex_values(k, p[0], p[3], h.v[3]);
   /* Any candidate certainly the shape is the shape, so the order of the
-  ** tries is a guess.  The least homothet holding A, B, C has radius
-  ** max(W_i / 2, (hi_0 + hi_2 - lo_1) / 3, (hi_1 - lo_0 - lo_2) / 3) (the
-  ** linear program of its centre: the last two are the alternate sides'
-  ** triples, c = 2 and 5); when an alternate triple's exceeds every half
-  ** width, the widest slab's homothets are too small and that triple is
-  ** the likely shape, else the widest slab's, else the other triple. */
+  ** tries is a guess.  A homothet holding A, B, C has r >= W_i / 2 in
+  ** every slab; the widest slab's (case (2), r = W_i / 2) is the least, so
+  ** when a case (1) triple's radius exceeds that it is the likely shape
+  ** (the larger of the two first), else the widest slab's.  (Of the least
+  ** homothet's linear program: its radius is max(W_i / 2, (hi_0 + hi_2 -
+  ** lo_1) / 3, (hi_1 - lo_0 - lo_2) / 3), the alternate triples c = 2, 5.) */
   int g01 = h.w[0] > h.w[1], g02 = h.w[0] > h.w[2], g12 = h.w[1] > h.w[2];
-  int i = !(g01 & g02) * (2 - ((!g01) & g12)), ans = -1, tried = -1;
+  int i = !(g01 & g02) * (2 - ((!g01) & g12)), ans = -1;
   static const int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
   int widest = (h.w[i] - h.w[next[i]] > eps) & (h.w[i] - h.w[prev[i]] > eps);
-  double a3 = h.ext[0][0] + h.ext[0][2] - h.ext[1][1], b3 = h.ext[0][1] - h.ext[1][0] - h.ext[1][2];
-  if ((2 * a3 > 3 * h.w[i]) | (2 * b3 > 3 * h.w[i])) {
-    int c = a3 >= b3 ? 2 : 5;
-    if (c == pl->cand[0] || c == pl->cand[1]) ans = shape_hex_sides(&h, tried = c);
-  }
+  double r[2] = {shape_hex_radius(&h, pl->cand[0]), shape_hex_radius(&h, pl->cand[1])};
+  int big = r[1] > r[0], first = pl->cand[big], second = pl->cand[!big];
+  int tried = 2 * r[big] > h.w[i];
+  if (tried) ans = shape_hex_sides(&h, first);
   if (ans < 0 && widest) ans = shape_hex_wide(&h, i);
-  for (int n = 0; n < 2 && ans < 0; n++)
-    if (pl->cand[n] != tried) ans = shape_hex_sides(&h, pl->cand[n]);
+  if (ans < 0 && !tried) ans = shape_hex_sides(&h, first);
+  if (ans < 0) ans = shape_hex_sides(&h, second);
   if (ans >= 0 && out != NULL)
     *out = (shape_hint){SHAPE_HINT_HOMOTHET, {(unsigned char)h.edge[0], (unsigned char)h.edge[1],
                                                (unsigned char)h.edge[2]}};

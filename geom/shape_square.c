@@ -41,41 +41,43 @@
 ** perturbed one too (the perturbation only ever decides exact ties), and
 ** each tie gives up. */
 
-/* The indices of the least and the greatest of three different values. */
-static inline void shape_sq_ends(const double v[3], int *lo, int *hi) {
-  *lo = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
-  *hi = v[0] > v[1] ? (v[0] > v[2] ? 0 : 2) : (v[1] > v[2] ? 1 : 2);
-}
+/* Which of A, B, C is where is a coin toss, so below the choices are
+** made by tables and flags, and a branch is taken on rare cases and on the
+** answer only.  The least and the greatest of three different values, by
+** (v0 < v1) | (v0 < v2) << 1 | (v1 < v2) << 2 (2 and 5 cannot occur). */
+static const unsigned char shape_sq_least[8] = {2, 2, 0, 0, 1, 0, 1, 0};
+static const unsigned char shape_sq_most[8] = {0, 1, 0, 1, 0, 0, 2, 2};
 
-/* The decision when the extent w of u (x, or y with the two swapped) is
-** the larger: SHAPE_BD (D strictly inside), SHAPE_AC (strictly outside),
-** or -1.  ulo, uhi, vlo, vhi: the indices of the extremes. */
-static inline int shape_sq_slab(const double u[4], const double v[4], double w, int ulo, int uhi,
-                                int vlo, int vhi) {
-  int q = 3 - ulo - uhi;
-  /* s: +1 when Q is on the top side, -1 on the bottom; the inside of the
-  ** square across the slab is s (vQ - vD) in (0, w) */
-  double s = q == vhi ? 1 : q == vlo ? -1 : 0;
-  if (s == 0) return -1;
-  double a = u[3] - u[ulo], b = u[uhi] - u[3], c = s * (v[q] - v[3]), d = w - c;
-  /* a, b, c: exact signs (differences of two doubles); d: w against the
-  ** rounded difference c, a tie when 0 */
-  if (a < 0 || b < 0 || c < 0 || d < 0) return SHAPE_AC;
-  if (a > 0 && b > 0 && c > 0 && d > 0) return SHAPE_BD;
-  return -1;
+static inline int shape_sq_order(const double v[4]) {
+  return (v[0] < v[1]) | (v[0] < v[2]) << 1 | (v[1] < v[2]) << 2;
 }
 
 int shape_square_decide(const geom_point p[4]) {
-  double x[4] = {p[0].x, p[1].x, p[2].x, p[3].x}, y[4] = {p[0].y, p[1].y, p[2].y, p[3].y};
-  if (x[0] == x[1] || x[0] == x[2] || x[1] == x[2] || y[0] == y[1] || y[0] == y[2] ||
-      y[1] == y[2])
+  /* xy[0]: the x, xy[1]: the y (selected by index: a select would be a branch) */
+  double xy[2][4] = {{p[0].x, p[1].x, p[2].x, p[3].x}, {p[0].y, p[1].y, p[2].y, p[3].y}};
+  const double *x = xy[0], *y = xy[1];
+  if ((x[0] == x[1]) | (x[0] == x[2]) | (x[1] == x[2]) | (y[0] == y[1]) | (y[0] == y[2]) |
+      (y[1] == y[2]))
     return -1;   /* two sites on a line parallel to a side: special position */
-  int xlo, xhi, ylo, yhi;
-  shape_sq_ends(x, &xlo, &xhi);
-  shape_sq_ends(y, &ylo, &yhi);
-  double w = x[xhi] - x[xlo], h = y[yhi] - y[ylo];
-  if (w > h) return shape_sq_slab(x, y, w, xlo, xhi, ylo, yhi);
-  if (h > w) return shape_sq_slab(y, x, h, ylo, yhi, xlo, xhi);
+  int o[2] = {shape_sq_order(x), shape_sq_order(y)};
+  double ext[2] = {x[shape_sq_most[o[0]]] - x[shape_sq_least[o[0]]],
+                   y[shape_sq_most[o[1]]] - y[shape_sq_least[o[1]]]};
+  if (ext[0] == ext[1]) return -1;   /* a site on a corner's cone */
+  /* u: the coordinate of the larger extent (its slab holds two of the
+  ** three on its sides), v the other */
+  int iu = ext[1] > ext[0], iv = !iu;
+  const double *u = xy[iu], *v = xy[iv];
+  int ulo = shape_sq_least[o[iu]], uhi = shape_sq_most[o[iu]], q = 3 - ulo - uhi;
+  /* s: +1 when Q is on the top side, -1 on the bottom, 0 when Q's v is
+  ** between the others' (a staircase: a corner's rounding shape) */
+  int s = (q == shape_sq_most[o[iv]]) - (q == shape_sq_least[o[iv]]);
+  if (s == 0) return -1;
+  /* the inside of the square across the slab is s (vQ - vD) in (0, e):
+  ** a, b, c exact signs (differences of two doubles); d: the extent
+  ** against the rounded difference c, a tie when 0 */
+  double a = u[3] - u[ulo], b = u[uhi] - u[3], c = s * (v[q] - v[3]), d = ext[iu] - c;
+  if ((a < 0) | (b < 0) | (c < 0) | (d < 0)) return SHAPE_AC;
+  if ((a > 0) & (b > 0) & (c > 0) & (d > 0)) return SHAPE_BD;
   return -1;
 }
 
