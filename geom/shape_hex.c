@@ -160,9 +160,9 @@ static int shape_hex_sides(shape_hex_case *h, int c) {
 
 /* Case (2) with slab i the widest (certainly): the answer, or -1.  Both of
 ** the middle point's options are evaluated, then the first that holds the
-** three is taken.  Slab o's t from tb = ta + tc: t_o = t_f + g t_s. */
+** three is taken.  Slab o's t from tb = ta + tc: t_o = t_f[o] + g t_fs[o]. */
 static int shape_hex_wide(shape_hex_case *h, int i) {
-  static const int first[3] = {1, 0, 1}, second[3] = {2, 2, 0};
+  static const int f[3] = {1, 0, 1}, fs[3] = {2, 2, 0};
   static const double g[3] = {-1, 1, -1}, sgn[2] = {1, -1};
   double r = h->w[i], eps = h->eps, t[2][3];   /* 2 r, and every t doubled */
   int ok[2];
@@ -171,7 +171,7 @@ static int shape_hex_wide(shape_hex_case *h, int i) {
     double *u = t[n];
     u[i] = h->ext[0][i] + h->ext[1][i];
     u[j] = 2 * h->ext[lo][j] - sgn[lo] * r;
-    u[o] = u[first[o]] + g[o] * u[second[o]];
+    u[o] = u[f[o]] + g[o] * u[fs[o]];
     ok[n] = (opt & 1) & (u[o] + r - 2 * h->ext[0][o] > eps) & (2 * h->ext[1][o] - u[o] + r > eps);
   }
   if (!(ok[0] | ok[1])) return -1;
@@ -228,6 +228,30 @@ static void shape_hex_plan_of(unsigned code, shape_hex_plan *pl) {
   if (nc < 2) pl->corner = 6;   /* never, by the count above */
 }
 
+/* The circumscribing homothet of A, B, C and D's answer against it, or -1.
+** Any candidate certainly the shape is the shape, so the order of the tries
+** is a guess.  A homothet holding A, B, C has r >= W_i / 2 in every slab;
+** the widest slab's (case (2), r = W_i / 2) is the least, so when a case
+** (1) triple's radius exceeds that it is the likely shape (the larger of
+** the two first), else the widest slab's.  (The least homothet's linear
+** program gives its radius as max(W_i / 2, (hi_0 + hi_2 - lo_1) / 3,
+** (hi_1 - lo_0 - lo_2) / 3), the alternate triples c = 2 and 5.) */
+static int shape_hex_search(shape_hex_case *h) {
+  static const int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
+  const double *w = h->w;
+  int g01 = w[0] > w[1], g02 = w[0] > w[2], g12 = w[1] > w[2];
+  int i = !(g01 & g02) * (2 - ((!g01) & g12)), ans = -1;
+  int widest = (w[i] - w[next[i]] > h->eps) & (w[i] - w[prev[i]] > h->eps);
+  const unsigned char *cand = h->pl->cand;
+  double r[2] = {shape_hex_radius(h, cand[0]), shape_hex_radius(h, cand[1])};
+  int big = r[1] > r[0], first = cand[big], second = cand[!big], tried = 2 * r[big] > w[i];
+  if (tried) ans = shape_hex_sides(h, first);
+  if (ans < 0 && widest) ans = shape_hex_wide(h, i);
+  if (ans < 0 && !tried) ans = shape_hex_sides(h, first);
+  if (ans < 0) ans = shape_hex_sides(h, second);
+  return ans;
+}
+
 int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
   shape_hex_case h;
   for (int i = 0; i < 3; i++) h.v[0][i] = 0;
@@ -255,24 +279,7 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
     h.w[i] = h.ext[0][i] - h.ext[1][i];
   }
   h.sd = 0x1p-40 * shape_hex_values(k, p[0], p[3], h.v[3]);
-  /* Any candidate certainly the shape is the shape, so the order of the
-  ** tries is a guess.  A homothet holding A, B, C has r >= W_i / 2 in
-  ** every slab; the widest slab's (case (2), r = W_i / 2) is the least, so
-  ** when a case (1) triple's radius exceeds that it is the likely shape
-  ** (the larger of the two first), else the widest slab's.  (Of the least
-  ** homothet's linear program: its radius is max(W_i / 2, (hi_0 + hi_2 -
-  ** lo_1) / 3, (hi_1 - lo_0 - lo_2) / 3), the alternate triples c = 2, 5.) */
-  int g01 = h.w[0] > h.w[1], g02 = h.w[0] > h.w[2], g12 = h.w[1] > h.w[2];
-  int i = !(g01 & g02) * (2 - ((!g01) & g12)), ans = -1;
-  static const int next[3] = {1, 2, 0}, prev[3] = {2, 0, 1};
-  int widest = (h.w[i] - h.w[next[i]] > eps) & (h.w[i] - h.w[prev[i]] > eps);
-  double r[2] = {shape_hex_radius(&h, pl->cand[0]), shape_hex_radius(&h, pl->cand[1])};
-  int big = r[1] > r[0], first = pl->cand[big], second = pl->cand[!big];
-  int tried = 2 * r[big] > h.w[i];
-  if (tried) ans = shape_hex_sides(&h, first);
-  if (ans < 0 && widest) ans = shape_hex_wide(&h, i);
-  if (ans < 0 && !tried) ans = shape_hex_sides(&h, first);
-  if (ans < 0) ans = shape_hex_sides(&h, second);
+  int ans = shape_hex_search(&h);
   if (ans >= 0 && out != NULL)
     *out = (shape_hint){SHAPE_HINT_HOMOTHET, {(unsigned char)h.edge[0], (unsigned char)h.edge[1],
                                                (unsigned char)h.edge[2]}};
