@@ -47,6 +47,7 @@ static const char *const tf_cmds[] = {
   "rule R_inf --samples 40 --quads 40",
   "--define 'q = a*b' table34 --measures q --samples 5 --format csv",
   "--define 'q = a*b' got --rule q_1 --random 6",
+  "lot --rule ES:hexagon --random 30 --out %1$s/out.csv --cdf %1$s/cdf.csv",
 };
 
 static int tf_setup(void **state) {
