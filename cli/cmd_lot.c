@@ -187,15 +187,15 @@ static int cli_lot_parse(int argc, char **argv, cli_lot_args *a, lot_options *o)
 static int cli_lot_rules(const cli_lot_args *a, rule **r) {
   rule one;
   char err[512];
-  int n = 1;
+  int n = 1, list = strchr(a->rule, ',') != NULL;
   /* one parse of a name without a comma: cli_parse_rule says why, with
   ** hints (parsing it twice made a failure the first parse met, such as
   ** running out of memory, pass unsaid when the second did not) */
-  if (strchr(a->rule, ',') == NULL ? cli_parse_rule(CMD, a->rule, &one) == 0
-                                   : rule_parse(a->rule, &one, err, sizeof err) == 0) {
+  if (list ? rule_parse(a->rule, &one, err, sizeof err) == 0
+           : cli_parse_rule(CMD, a->rule, &one) == 0) {
     if ((*r = malloc(sizeof **r)) == NULL) return cli_error(CMD, "out of memory"), -1;
     **r = one;
-  } else if (strchr(a->rule, ',') == NULL || (n = cli_rule_list_new(CMD, a->rule, r)) < 0) {
+  } else if (!list || (n = cli_rule_list_new(CMD, a->rule, r)) < 0) {
     return -1;
   }
   const char *one_only = a->out ? "--out" : a->cdf ? "--cdf" : a->shade ? "--shade" : NULL;

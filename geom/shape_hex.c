@@ -102,11 +102,6 @@ typedef struct shape_hex_case {
 /* Branches are few below: which point is where is a coin toss, so choices
 ** are made by tables and flags, and a branch is taken on outcomes only. */
 
-/* The certain sign of x under the bound eps, or 0. */
-static inline int shape_hex_sign(double eps, double x) {
-  return (x > eps) - (x < -eps);
-}
-
 /* The values of p - A into v; returned, the scale of their errors:
 ** (|dx| + |dy|) emax >= |dx e_y| + |dy e_x| (emax: the edges' largest
 ** coordinate magnitude). */
@@ -117,18 +112,19 @@ static inline double shape_hex_values(const shape *k, geom_point a, geom_point p
   return (fabs(dx) + fabs(dy)) * x->emax;
 }
 
-/* D's answer against the homothet t (times m) and r (times m), m > 0:
-** SHAPE_BD, SHAPE_AC, or -1.  Its bound covers D's values too. */
-static inline int shape_hex_dtest(const shape_hex_case *h, const double t[3], double r, double m) {
-  double eps = h->sd + h->eps;
+/* D's answer against the homothet t (times m) and r (times m), m > 0, from
+** D's values d: SHAPE_BD, SHAPE_AC, or -1 when a comparison is within eps
+** (whose scale must cover D's values too). */
+static inline int shape_hex_dtest(const double d[3], const double t[3], double r, double m,
+                                  double eps) {
   int in = 1, out = 0;
   for (int i = 0; i < 3; i++) {
-    double u = h->v[3][i] * m - t[i];
-    int up = shape_hex_sign(eps, r - u), down = shape_hex_sign(eps, r + u);
-    out |= (up < 0) | (down < 0);
-    in &= (up > 0) & (down > 0);
+    double u = d[i] * m - t[i], above = r - u, below = r + u;
+    out |= (above < -eps) | (below < -eps);
+    in &= (above > eps) & (below > eps);
   }
-  return out ? SHAPE_AC : in ? SHAPE_BD : -1;
+  /* in and out exclude each other: BD (1), AC (0) or -1, with no branch */
+  return in - !(in | out);
 }
 
 /* k = s_a + s_c - s_b by the sides c of case (1) (s_i = -1 for the lo side). */
@@ -155,7 +151,7 @@ static int shape_hex_sides(shape_hex_case *h, int c) {
     t[i] = e[i] * m - sgn[lo] * r;
     h->edge[h->pl->at[lo][i]] = lo * 3 + i;
   }
-  return shape_hex_dtest(h, t, r, m);
+  return shape_hex_dtest(h->v[3], t, r, m, h->sd + h->eps);
 }
 
 /* Case (2) with slab i the widest (certainly): the answer, or -1.  Both of
@@ -178,7 +174,7 @@ static int shape_hex_wide(shape_hex_case *h, int i) {
   int n = !ok[0], opt = h->pl->wide[i][n], j = opt >> 2, lo = opt >> 1 & 1;
   int top = h->pl->at[0][i], bottom = h->pl->at[1][i];
   h->edge[top] = i, h->edge[bottom] = i + 3, h->edge[3 - top - bottom] = j + 3 * lo;
-  return shape_hex_dtest(h, t[n], r, 2);
+  return shape_hex_dtest(h->v[3], t[n], r, 2, h->sd + h->eps);
 }
 
 /* The plan of a code (slab i's code in bits 3i .. 3i + 2: (b > 0) |
@@ -344,20 +340,13 @@ int shape_hex_at(const shape *k, const int t[3], const geom_point p[4]) {
   if (q->m == 0) return -1;
   const geom_point *e = x->e;
   double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, cx = p[2].x - p[0].x, cy = p[2].y - p[0].y;
-  double dx = p[3].x - p[0].x, dy = p[3].y - p[0].y;
   double vb = bx * e[q->sb].y - by * e[q->sb].x, vc = cx * e[q->sc].y - cy * e[q->sc].x;
-  double s = (fabs(bx) + fabs(by)) + (fabs(cx) + fabs(cy)) + (fabs(dx) + fabs(dy));   /* >= the max */
-  double eps = 0x1p-40 * (s * x->emax), m = q->m;
+  /* the bound's scale: the sum of B's, C's and D's terms (at least the max) */
+  double d[3], sd = shape_hex_values(k, p[0], p[3], d);
+  double eps = 0x1p-40 * (((fabs(bx) + fabs(by)) + (fabs(cx) + fabs(cy))) * x->emax + sd);
   double t0 = q->t0[0] * vb + q->t0[1] * vc, t2 = q->t2[0] * vb + q->t2[1] * vc;
-  double r = q->r[0] * vb + q->r[1] * vc, t1 = t0 + t2;
-  double u0 = m * (dx * e[0].y - dy * e[0].x) - t0;
-  double u1 = m * (dx * e[1].y - dy * e[1].x) - t1;
-  double u2 = m * (dx * e[2].y - dy * e[2].x) - t2;
-  double a0 = r - u0, a1 = r - u1, a2 = r - u2, b0 = r + u0, b1 = r + u1, b2 = r + u2;
-  if ((a0 < -eps) | (a1 < -eps) | (a2 < -eps) | (b0 < -eps) | (b1 < -eps) | (b2 < -eps))
-    return SHAPE_AC;
-  if ((a0 > eps) & (a1 > eps) & (a2 > eps) & (b0 > eps) & (b1 > eps) & (b2 > eps)) return SHAPE_BD;
-  return -1;
+  const double h[3] = {t0, t0 + t2, t2};
+  return shape_hex_dtest(d, h, q->r[0] * vb + q->r[1] * vc, q->m, eps);
 }
 
 int shape_hex_build(shape *k) {

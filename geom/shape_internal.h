@@ -117,7 +117,7 @@ FLIPLAB_INTERNAL int shape_quick_ready(const shape *k, const geom_point p[4]);
 /* 1 when K has a quick table and the exact-only test mode is off: the
 ** part of shape_quick_ready that does not look at the sites. */
 static inline int shape_quick_on(const shape *k) {
-  return k->quick != NULL && !shape_only_exact;
+  return k->quick != NULL && !shape_exact_only();
 }
 /* The support vertices s_AB, s_BC, s_CA of p[0..2] into sup: 0 when every
 ** sign they rest on is certain (they are then shape_support's), else -1. */
