@@ -135,17 +135,23 @@ class SamplerRng(ctypes.Structure):
 
 
 def _find():
+    """The library to load: FLIPLAB_LIBRARY, the library of a cmake --install
+    (_install.py), the library shipped inside this package (pip install:
+    setup.py copies it here as SONAME), else the dynamic linker's search."""
     env = os.environ.get("FLIPLAB_LIBRARY")
     if env:
         return env
+    here = os.path.dirname(os.path.abspath(__file__))
     try:
         from . import _install
-        here = os.path.dirname(os.path.abspath(__file__))
         path = os.path.normpath(os.path.join(here, _install.LIBDIR, SONAME))
         if os.path.exists(path):
             return path
     except ImportError:
         pass
+    path = os.path.join(here, SONAME)
+    if os.path.exists(path):
+        return path
     return SONAME
 
 
