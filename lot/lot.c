@@ -803,9 +803,10 @@ static int lot_flip_phase(lot *L, lot_run *R, const lot_options *o, double t0, d
 /* 1 with the message when the constraints removed every triangle. */
 static int lot_none_left(const lot *L, const lot_options *o, char *err, size_t errlen) {
   if (!L->constrained || L->st.triangles > 0) return 0;
-  snprintf(err, errlen, "no triangle is left: the %s every triangle (--keep-hull keeps the "
-           "convex hull's)", o->nholes > 0 ? "holes and segments remove"
-                                           : "segments bound no region and the outside takes");
+  /* No flag named: the Python package shows the same words (keep_hull=True). */
+  snprintf(err, errlen, "no triangle is left: the %s every triangle (keeping the hull keeps "
+           "the convex hull's)", o->nholes > 0 ? "holes and segments remove"
+                                               : "segments bound no region and the outside takes");
   return 1;
 }
 
@@ -1004,4 +1005,95 @@ void lot_free(lot *L) {
   lot_mesh_free(&L->m);
   lot_cdt_free(&L->cdt);
   free(L);
+}
+
+/* ---- neighbours from the mesh (lot_get_neighbors) ---- */
+
+/* Insertion sort of a few 4-word records (v0, v1, v2, mesh triangle) by
+** their first three words: a bucket of lot_rank_triangles. */
+static void lot_rec_insertion(uint32_t *r, size_t k) {
+  for (size_t i = 1; i < k; i++) {
+    uint32_t x[4] = {r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]};
+    size_t j = i;
+    for (; j > 0 && lot_tri_cmp(r + 4 * (j - 1), x) > 0; j--)
+      for (int c = 0; c < 4; c++) r[4 * j + c] = r[4 * (j - 1) + c];
+    for (int c = 0; c < 4; c++) r[4 * j + c] = x[c];
+  }
+}
+
+static int lot_rec_cmp(const void *x, const void *y) {
+  return lot_tri_cmp(x, y);
+}
+
+/* Triangle t's vertices as lot_get_triangles writes them (input indices,
+** the smallest first) into v; returns the slot of the mesh corner that
+** became v[0]. */
+static int lot_tri_rotated(const lot_mesh *m, uint32_t t, uint32_t v[3]) {
+  uint32_t w[3];
+  for (int i = 0; i < 3; i++) w[i] = m->inp[m->tv[LOT_CORNER(t, i)]];
+  int s = w[0] < w[1] ? (w[0] < w[2] ? 0 : 2) : (w[1] < w[2] ? 1 : 2);
+  for (int i = 0; i < 3; i++) v[i] = w[(s + i) % 3];
+  return s;
+}
+
+/* The rows of lot_get_triangles as records rec[4i..4i+3] = (v0, v1, v2, mesh
+** triangle), in its order, found by the same sort (a counting sort on v0
+** into rec, then each bucket by insertion, or qsort when large); rot[t] =
+** the mesh corner slot that became v0.  One pass over the mesh reads its
+** vertices (into tmp, in mesh order); the others read arrays in order.
+** O(n + T) time for bounded degree.  0, or -1 when out of memory. */
+static int lot_rows(const lot *L, uint32_t *rec, uint8_t *rot) {
+  const lot_mesh *m = &L->m;
+  size_t n = L->st.n, w = 0;
+  size_t *start = calloc(n + 1, sizeof *start);
+  uint32_t *tmp = malloc((L->st.triangles ? 4 * L->st.triangles : 1) * sizeof *tmp);
+  if (start == NULL || tmp == NULL) {
+    free(start);
+    free(tmp);
+    return -1;
+  }
+  for (uint32_t t = 0; t < m->nt; t++) {
+    if (lot_is_ghost(m, t) || lot_cdt_gone(&L->cdt, t)) continue;
+    rot[t] = (uint8_t)lot_tri_rotated(m, t, tmp + 4 * w);
+    tmp[4 * w + 3] = t;
+    start[tmp[4 * w++] + 1]++;
+  }
+  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
+  for (size_t j = 0; j < w; j++)
+    memcpy(rec + 4 * start[tmp[4 * j]]++, tmp + 4 * j, 4 * sizeof *tmp);
+  for (size_t v = 0, b = 0; v < n; b = start[v++]) {   /* bucket v is [b, start[v]) */
+    size_t k = start[v] - b;
+    if (k > 32) qsort(rec + 4 * b, k, 4 * sizeof *rec, lot_rec_cmp);
+    else lot_rec_insertion(rec + 4 * b, k);
+  }
+  free(start);
+  free(tmp);
+  return 0;
+}
+
+/* Row i is mesh triangle t = rec[4i + 3]; its vertex k is mesh corner
+** (rot[t] + k) % 3, and the triangle across the edge opposite it is the
+** one of the twin corner tn[], whose row is rank[] (-1 for a ghost or a
+** removed triangle).  Scratch: 36 bytes per triangle, 8 per point. */
+int lot_get_neighbors(const lot *L, int32_t *nb) {
+  const lot_mesh *m = &L->m;
+  size_t w = L->st.triangles, nt = m->nt ? m->nt : 1;
+  uint32_t *rec = malloc((w ? 4 * w : 1) * sizeof *rec);
+  int32_t *rank = malloc(nt * sizeof *rank);
+  uint8_t *rot = malloc(nt);
+  int rc = rec != NULL && rank != NULL && rot != NULL ? lot_rows(L, rec, rot) : -1;
+  if (rc == 0) {
+    for (uint32_t t = 0; t < m->nt; t++) rank[t] = -1;
+    for (size_t i = 0; i < w; i++) rank[rec[4 * i + 3]] = (int32_t)i;
+    for (uint32_t t = 0; t < m->nt; t++) {   /* mesh order: tn is read in order */
+      if (rank[t] < 0) continue;
+      int32_t *row = nb + 3 * (size_t)rank[t];
+      for (uint32_t k = 0; k < 3; k++)
+        row[k] = rank[lot_tri_of(m->tn[LOT_CORNER(t, (rot[t] + k) % 3)])];
+    }
+  }
+  free(rec);
+  free(rank);
+  free(rot);
+  return rc;
 }

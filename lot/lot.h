@@ -146,6 +146,16 @@ size_t lot_get_constrained(const lot *L, uint32_t *out);
 ** smallest index, sorted; tri must hold 3 * stats.triangles entries. */
 void lot_get_triangles(const lot *L, uint32_t *tri);
 
+/* The neighbours of lot_get_triangles' rows, read off the mesh's adjacency
+** (lot_neighbors' convention, scipy.spatial.Delaunay.neighbors'): nb[3t + k]
+** is the row across the edge of row t opposite its vertex k, -1 on the
+** boundary (the hull, a hole, a removed region); nb holds 3 *
+** stats.triangles entries.  The rows' order is found again by the same
+** counting sort, carrying each mesh triangle along: O(n + T) time for
+** bounded degree, 16 bytes per triangle and 8 per point of scratch, no
+** search for twin edges.  0, or -1 when out of memory. */
+int lot_get_neighbors(const lot *L, int32_t *nb);
+
 
 /* The convex hull's boundary vertices (collinear ones included),
 ** anticlockwise, as input indices; out holds stats.hull entries. */
@@ -211,6 +221,28 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
 ** across edge u -> v is the one with edge v -> u.  O(ntri) time and
 ** memory.  0, or -1 when out of memory. */
 int lot_neighbors(const uint32_t *tri, size_t ntri, size_t n, int32_t *nb);
+
+/* ---- point location (lot/locate.c) ---- */
+
+#define LOT_LOCATE_CONVEX 1   /* the triangles cover their convex hull */
+#define LOT_LOCATE_SCAN 2     /* no walk: every query scans the triangles */
+
+/* For each query q[i], out[i] = the index of a triangle of tri (anticlockwise,
+** indices below n, nb its neighbours in lot_neighbors' convention) holding
+** q[i], closed, decided exactly (geom_orient), or -1: scipy's find_simplex.
+** On an edge the smaller of its two triangles, on a vertex the smallest
+** triangle with that vertex, so the answer is the same whatever the walk;
+** a non-finite query gets -1.  Queries walk in a spatial order from the
+** last one's triangle (the remembering stochastic walk); LOT_LOCATE_CONVEX
+** says a walk that leaves through the boundary proves the point outside,
+** else such a point is checked by a scan of every triangle.  Cost:
+** O(nq) for the order, a walk of expected O(sqrt(ntri)) steps for an
+** isolated query and far fewer for queries close to each other, at most
+** O(ntri) per query (a walk is given up for the scan after ntri steps),
+** and O(n + ntri) once for the first query on a vertex.  nb may be NULL
+** with LOT_LOCATE_SCAN.  0, or -1 when out of memory. */
+int lot_locate(const geom_point *p, size_t n, const uint32_t *tri, const int32_t *nb,
+               size_t ntri, int flags, const geom_point *q, size_t nq, int32_t *out);
 
 /* Each triangle's badness for the rule: measure_eval on the triangle of p
 ** (NaN for DT and quadrilateral rules). */
