@@ -61,7 +61,7 @@ void census_plan_free(census_plan *pl) {
 }
 
 int census_threads(int threads, uint64_t count, uint64_t chunk) {
-  if (threads <= 0) threads = omp_get_max_threads();
+  threads = geom_threads_clamp(threads, omp_get_max_threads());
   uint64_t nchunks = (count + chunk - 1) / chunk;
   if ((uint64_t)threads > nchunks) threads = nchunks > 0 ? (int)nchunks : 1;
   return threads;

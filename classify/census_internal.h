@@ -68,7 +68,8 @@ typedef struct census_loop {
 } census_loop;
 FLIPLAB_INTERNAL int census_loop_run(const census_loop *l);
 
-/* The thread count for `threads` (<= 0: all cores): never more threads than
+/* The thread count for `threads` (0, or any invalid count: all cores,
+** geom_threads_clamp): never more threads than
 ** chunks of work, and at least one. */
 FLIPLAB_INTERNAL int census_threads(int threads, uint64_t count, uint64_t chunk);
 

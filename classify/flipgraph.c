@@ -375,7 +375,9 @@ static void flipgraph_tally_sum(const flipgraph_counts *all, int threads, int nr
 
 int flipgraph_tally_run(const rule *rules, int nrules, const flipgraph_run *run,
                         flipgraph_counts *out) {
-  if (run->first + run->count < run->first || (nrules > 0 && out == NULL)) return -1;
+  if (run->first + run->count < run->first || (nrules > 0 && out == NULL) ||
+      geom_threads_check(run->threads, NULL, 0) != 0)
+    return -1;
   flipgraph_plan *pl = flipgraph_plan_new(rules, nrules, run->tie_eps);
   if (pl == NULL) return -1;
   int threads = flipgraph_tally_threads(run->threads, run->count);

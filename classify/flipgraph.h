@@ -64,7 +64,8 @@ size_t flipgraph_classify_n(geom_point *v, size_t m, const rule *rules, int nrul
 
 /* Classify pentagons first .. first+count-1 of the sampler stream `seed`
 ** (sampler_pentagon) under every rule and add the outcomes to out[0..nrules-1].
-** threads <= 0 means all cores.  Counts do not depend on the thread count.
+** threads: 0 for all cores, or 1 .. GEOM_MAX_THREADS (any other count is
+** refused: -1).  Counts do not depend on the thread count.
 ** progress (may be NULL) is called now and then from one thread. */
 int flipgraph_tally(const rule *rules, int nrules, uint64_t seed, uint64_t first,
                     uint64_t count, double tie_eps, int threads,
@@ -86,7 +87,7 @@ typedef void (*flipgraph_sample_fn)(void *ctx, int thread, uint64_t index,
 typedef struct flipgraph_run {
   uint64_t seed, first, count;
   double tie_eps;
-  int threads;                        /* <= 0: all cores */
+  int threads;                        /* 0: all cores; 1 .. GEOM_MAX_THREADS */
   census_progress_fn progress;        /* may be NULL */
   void *progress_ctx;
   flipgraph_sample_fn each;           /* may be NULL */
@@ -103,7 +104,8 @@ int flipgraph_tally_threads(int threads, uint64_t count);
 /* ---- additions (helper "table") ---------------------------------------- */
 
 /* flipgraph_tally returns 0, or -1 (out untouched) when a rule is invalid
-** (see flipgraph_plan_new), count would run past 2^64, or memory runs out.
+** (see flipgraph_plan_new), the thread count is outside 0 .. GEOM_MAX_THREADS,
+** count would run past 2^64, or memory runs out.
 ** With threads != 1 the rules' measure and quadrilateral functions are
 ** called from several threads at once: they must be reentrant. */
 

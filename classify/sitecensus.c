@@ -771,7 +771,9 @@ int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t 
                     size_t memory, siteflip_counts *out, census_progress_fn progress,
                     void *ctx, int *over, char *err, size_t errlen) {
   if (over != NULL) *over = 0;
-  if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0) return -1;
+  if (siteflip_census_args(sampler, n, first, count, err, errlen) != 0 ||
+      geom_threads_check(threads, err, errlen) != 0)
+    return -1;
   siteflip_cplan pl;
   int rc = siteflip_cplan_make(&pl, rules, nrules, tie_eps);
   if (rc != 0) {

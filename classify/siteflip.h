@@ -150,8 +150,9 @@ typedef struct siteflip_counts {
 
 /* Census of samples first .. first+count-1 of sampler `sampler` (a
 ** sampler_sites_kind) with n sites, seed `seed`, under every rule, added to
-** out[0..nrules-1].  threads <= 0: all cores.  memory: the budget of each
-** set's flip graph (0: SITEFLIP_MEMORY_DEFAULT; each thread holds one).
+** out[0..nrules-1].  threads: 0 for all cores, or 1 .. GEOM_MAX_THREADS
+** (another count: -1 with geom_threads_check's message).  memory: the
+** budget of each set's flip graph (0: SITEFLIP_MEMORY_DEFAULT; each thread holds one).
 ** 0, or -1 with err (a set over the budget: its index, and *over = 1 when
 ** over is not NULL). */
 int siteflip_census(const rule *rules, int nrules, int sampler, int n, uint64_t seed,

@@ -104,7 +104,7 @@ struct cli_option {
    .off = CLI_AT(T, F, const char *), .ext = EXT}
 
 /* The rows every command shares. */
-#define CLI_MAX_THREADS 1024
+#define CLI_MAX_THREADS GEOM_MAX_THREADS
 #define CLI_OPT_SEED(H, T, F) CLI_OPT_U64("--seed", "S", H, T, F, 0, UINT64_MAX, 1)
 #define CLI_OPT_THREADS(H, T, F) \
   {.name = "--threads", .arg = "T", .dflt = "all cores", .help = H, .kind = CLI_U64, \

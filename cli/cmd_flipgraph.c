@@ -95,7 +95,7 @@ static int cli_flipgraph_svg(const char *path, const siteflip_graph *g, const ru
   }
   FILE *f = cli_open_out(CMD, path);
   if (f == NULL) return 2;
-  char cap[512];
+  char cap[RULE_NAME_MAX + 256];
   snprintf(cap, sizeof cap, "rule %s: %d triangulations, %d sink%s, %d source%s%s%s", r->name,
            g->nnodes, res->nsinks, res->nsinks == 1 ? "" : "s", res->nsources,
            res->nsources == 1 ? "" : "s", res->ties ? ", ties" : "",

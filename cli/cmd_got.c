@@ -271,7 +271,7 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
   if (a->svg) {
     FILE *f = cli_open_out(CMD, a->svg);
     if (f == NULL) return 2;
-    char title[300];
+    char title[RULE_NAME_MAX + 256];
     snprintf(title, sizeof title, "GOT(%s), n = %zu, total %s%s%s", r->name, res->n, tot,
              a->shade ? "; shaded by triangle badness" : "",
              a->compare >= 0 ? "; dashed red: Delaunay diagonals not in the GOT" : "");

@@ -203,6 +203,10 @@ static int cli_lot_rules(const cli_lot_args *a, rule **r) {
     cli_error(CMD, "%s takes one rule, not a list of %d (--rule '%s')", one_only, n, a->rule);
   else if (a->cdf && strncmp(rule_name(&(*r)[0]), "ES:", 3) != 0)
     cli_error(CMD, "--cdf needs an empty-shape rule (--rule ES:SHAPE), not '%s'", a->rule);
+  else if (a->cdf && (a->segments || a->holes || a->poly))
+    cli_error(CMD, "--cdf takes an unconstrained run: the convex-distance Delaunay graph "
+              "of a run with %s is not defined here (docs/emptyshape.md)",
+              a->poly ? "--poly" : a->segments ? "--segments" : "--holes");
   else
     return n;
   free(*r);
@@ -592,7 +596,7 @@ static int cli_lot_svg(const cli_lot_args *a, const geom_point *p, size_t n,
                        const lot_cdf *g, int constrained) {
   FILE *f = cli_open_out(CMD, a->svg);
   if (f == NULL) return 2;
-  char cap[2][160], title[200];
+  char cap[2][RULE_NAME_MAX + 160], title[200];
   int len = snprintf(cap[0], sizeof cap[0], "LOT(%s): %zu triangles", r->name, t->ntri);
   if (g && len > 0 && (size_t)len < sizeof cap[0])
     snprintf(cap[0] + len, sizeof cap[0] - (size_t)len, "; CDF graph (bold): %zu triangles, "

@@ -159,7 +159,7 @@ static int cli_rule_pentagons(const rule *rules, int nrules, const cli_rule_opts
 static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadcheck *out) {
   rule dt = rule_delaunay();
   uint64_t dis = 0, ties = 0, coc = 0, first = UINT64_MAX;
-  int threads = o->threads ? (int)o->threads : omp_get_max_threads();
+  int threads = geom_threads_clamp((int)o->threads, omp_get_max_threads());
 #pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) \
     reduction(+ : dis, ties, coc) reduction(min : first)
   for (uint64_t i = 0; i < o->quads; i++) {
@@ -284,7 +284,7 @@ static int cli_rule_svg(const char *path, const rule *r, const cli_rule_opts *o,
                         const flipgraph_pentagon *p, const flipgraph *g) {
   FILE *f = cli_open_out("rule", path);
   if (f == NULL) return 2;
-  char cap[1024];
+  char cap[RULE_NAME_MAX + 512];
   snprintf(cap, sizeof cap,
            "rule %s: type %s, pentagon #%llu of seed %llu (tie_eps %g)\n"
            "v0 = (%.17g, %.17g)   v1 = (%.17g, %.17g)\n"

@@ -124,8 +124,24 @@ static int cli_closest_rule(const char *s, char *buf, size_t len) {
   return 1;
 }
 
-int cli_parse_rule(const char *cmd, const char *name, rule *out) {
-  char err[4096], near[160];
+/* name[0 .. len-1] without the blanks around it into buf (cap bytes): 0,
+** or -1 when nothing is left or it does not fit. */
+static int cli_rule_trim(const char *name, size_t len, char *buf, size_t cap) {
+  while (len > 0 && (*name == ' ' || *name == '\t')) name++, len--;
+  while (len > 0 && (name[len - 1] == ' ' || name[len - 1] == '\t')) len--;
+  if (len == 0 || len >= cap) return -1;
+  memcpy(buf, name, len);
+  buf[len] = '\0';
+  return 0;
+}
+
+/* One rule name, blanks around it ignored as in a list (so that --rule
+** 'ES:square ' and --rules 'ES:square ,DT' agree). */
+int cli_parse_rule(const char *cmd, const char *given, rule *out) {
+  char err[4096], near[160], name[RULE_NAME_MAX];
+  if (cli_rule_trim(given, strlen(given), name, sizeof name) != 0)
+    return cli_error(cmd, "empty or too long rule name '%.60s' (at most %d characters)", given,
+                     RULE_NAME_MAX - 1);
   if (rule_parse(name, out, err, sizeof err) == 0) return 0;
   if (cli_closest_rule(name, near, sizeof near) && strcmp(near, name) != 0) {
     rule tmp;
@@ -153,14 +169,10 @@ int cli_parse_rule_list(const char *cmd, const char *list, rule *out, int *n, in
   for (;;) {
     const char *comma = strchr(p, ',');
     size_t len = comma ? (size_t)(comma - p) : strlen(p);
-    while (len > 0 && (*p == ' ' || *p == '\t')) p++, len--;
-    while (len > 0 && (p[len - 1] == ' ' || p[len - 1] == '\t')) len--;
-    char name[128];
-    if (len == 0 || len >= sizeof name)
-      return cli_error(cmd, "empty or too long rule name in '%s'", list);
+    char name[RULE_NAME_MAX];
+    if (cli_rule_trim(p, len, name, sizeof name) != 0)
+      return cli_error(cmd, "empty or too long rule name in '%.200s'", list);
     if (*n >= cap) return cli_error(cmd, "at most %d rules", cap);
-    memcpy(name, p, len);
-    name[len] = '\0';
     if (cli_parse_rule(cmd, name, &out[*n]) != 0) return 2;
     (*n)++;
     if (comma == NULL) return 0;

@@ -103,7 +103,7 @@ static int cli_sites_witness(const rule *r, const cli_site_spec *s, int64_t idx,
       g->nnodes <= REPORT_SITEFLIP_SVG_MAX) {
     snprintf(path, sizeof path, "%s.svg", base);
     if ((f = cli_open_out("rule", path)) != NULL) {
-      char cap[256];
+      char cap[RULE_NAME_MAX + 128];
       snprintf(cap, sizeof cap, "rule %s: %d triangulations, %d sinks (set #%lld)", r->name,
                g->nnodes, res.nsinks, (long long)idx);
       report_siteflip_svg(f, g, dec, cap);

@@ -37,6 +37,11 @@ typedef struct rule_quad {
 /* A rule is read through the verbs below (rule_is_triangle, rule_measure,
 ** rule_decide, rule_total_key, rule_gap...), never field by field: what a
 ** rule means lives here.  The tie tolerance is part of the rule. */
+/* A rule's name has at most RULE_NAME_MAX - 1 bytes: room for an
+** empty-shape rule's polygon of two dozen vertices written at full
+** precision ("ES:poly:0.80901699437494745 0.58778525229247314;..."). */
+#define RULE_NAME_MAX 1024
+
 typedef struct rule {
   rule_kind kind;
   int measure;          /* RULE_TRIANGLE: registry id */
@@ -44,7 +49,7 @@ typedef struct rule {
   int sign;             /* RULE_TRIANGLE: the measure's sign (measure.h), kept for the hot paths */
   int quad;             /* RULE_QUAD: quadrilateral-rule registry id */
   double tie_eps;       /* relative tie tolerance (docs/rules.md) */
-  char name[80];        /* canonical name, e.g. "-alpha_inf", "DT" */
+  char name[RULE_NAME_MAX];   /* canonical name, e.g. "-alpha_inf", "DT" */
 } rule;
 
 #define RULE_DEFAULT_TIE_EPS 1e-12

@@ -13,7 +13,7 @@
 /* The registry keeps pointers: each rule's name, description and shape
 ** live as long as the process (a handful per run). */
 typedef struct rule_shape_entry {
-  char name[80];
+  char name[RULE_NAME_MAX];
   char desc[128];
   shape *k;
 } rule_shape_entry;

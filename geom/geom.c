@@ -3,6 +3,7 @@
 ** (The triangle's fields are computed in geom_tri_internal.h.)
 */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "geom.h"
@@ -185,6 +186,19 @@ geom_coorderr geom_coord_check(double x) {
   double m = fabs(x);
   if (m != 0 && (m < GEOM_COORD_MIN || m > GEOM_COORD_MAX)) return GEOM_COORD_OUT_OF_RANGE;
   return GEOM_COORD_OK;
+}
+
+int geom_threads_check(long long threads, char *err, size_t errlen) {
+  if (threads >= 0 && threads <= GEOM_MAX_THREADS) return 0;
+  if (err != NULL && errlen > 0)
+    snprintf(err, errlen, "threads: expected 0 (all cores) or 1 .. %d, got %lld",
+             GEOM_MAX_THREADS, threads);
+  return -1;
+}
+
+int geom_threads_clamp(int threads, int all) {
+  int t = threads > 0 && threads <= GEOM_MAX_THREADS ? threads : all;
+  return t < 1 ? 1 : t > GEOM_MAX_THREADS ? GEOM_MAX_THREADS : t;
 }
 
 size_t geom_coord_check_n(const double *x, size_t n) {

@@ -155,8 +155,11 @@ typedef enum geom_numerr {
   GEOM_NUM_NO_MEMORY       /* a very long number could not be copied */
 } geom_numerr;
 
-/* A real in strtod syntax (leading blanks allowed) filling the whole span:
-** GEOM_NUM_OK and *out set, or why not.  Unlike strtod, a value that
+/* A real in strtod syntax filling the whole span, with no blank before or
+** after it (as geom_count_parse: the CSV layer has already dropped the
+** unquoted blanks around a field, so a blank left is inside quotes, and
+** " 0" and "0 " are read alike, as no number): GEOM_NUM_OK and *out set,
+** or why not.  Unlike strtod, a value that
 ** overflows, underflows to 0 or is subnormal is an error, not a number. */
 geom_numerr geom_number_parse(const char *s, size_t len, double *out);
 /* The longest prefix of the span that strtod reads as a number: *used is
@@ -183,6 +186,19 @@ geom_coorderr geom_coord_parse_n(const char *s, size_t len, double *out);
 /* "is not a number", "is not finite", "is out of range (coordinates must be
 ** 0 or of magnitude between 1e-30 and 1e30)". */
 const char *geom_coorderr_str(geom_coorderr e);
+
+/* Thread counts.  Every entry point of the library that takes a thread
+** count takes 0 for all cores or 1 .. GEOM_MAX_THREADS (the program's
+** --threads range): an OpenMP team of 10^5 threads overflows the runtime's
+** stacks, and a negative count is a caller's mistake, not a request.
+** geom_threads_check: 0, or -1 with "threads: expected 0 (all cores) or 1
+** .. 1024, got T".  geom_threads_clamp: the count to run with, threads
+** itself when valid and non-zero, else all (the caller's "all cores", e.g.
+** omp_get_max_threads()), always within 1 .. GEOM_MAX_THREADS: a guard for
+** the entry points without an error channel. */
+#define GEOM_MAX_THREADS 1024
+int geom_threads_check(long long threads, char *err, size_t errlen);
+int geom_threads_clamp(int threads, int all);
 
 /* Twice the area of triangle p q r, |orientation determinant|, with a
 ** relative error below 2^-40 (geom.c explains how). */

@@ -50,7 +50,8 @@ geom_numerr geom_number_scan(const char *s, size_t len, double *out, size_t *use
 geom_numerr geom_number_parse(const char *s, size_t len, double *out) {
   size_t used = 0;
   double x = 0;
-  if (s == NULL) return GEOM_NUM_NOT_NUMBER;
+  if (s == NULL || (len > 0 && (s[0] == ' ' || (s[0] >= '\t' && s[0] <= '\r'))))
+    return GEOM_NUM_NOT_NUMBER;   /* strtod would skip it: no blank before a number */
   geom_numerr e = geom_number_scan(s, len, &x, &used);
   if (used != len) return GEOM_NUM_NOT_NUMBER;   /* something after it, a NUL byte */
   if (e == GEOM_NUM_OK) *out = x;

@@ -52,7 +52,7 @@ typedef struct got_triangle {
 } got_triangle;
 
 typedef struct got_options {
-  int threads;          /* <= 0: OpenMP's default */
+  int threads;          /* 0: all cores; else 1 .. GEOM_MAX_THREADS (others refused) */
   double tie_eps;       /* relative tie tolerance, default RULE_DEFAULT_TIE_EPS */
 } got_options;
 

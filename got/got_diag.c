@@ -276,7 +276,7 @@ static void got_sweep_vertex(got_sweep *s, size_t i, unsigned char *row) {
 int got_valid_diagonals(const geom_point *p, size_t n, unsigned char *V, int threads) {
   memset(V, 0, n * n);
   int fail = 0;
-  if (threads <= 0) threads = 1;
+  threads = geom_threads_clamp(threads, 1);
 #pragma omp parallel num_threads(threads) reduction(| : fail)
   {
     got_sweep s = {0};

@@ -470,7 +470,8 @@ int got_solve_ex(const geom_point *p, size_t n, const rule *r, const got_options
                  int force_mask, got_result *out, char *err, size_t errlen) {
   memset(out, 0, sizeof *out);
   if (got_solve_check(n, r, err, errlen) != 0) return -1;
-  int threads = opt && opt->threads > 0 ? opt->threads : omp_get_max_threads();
+  if (opt != NULL && geom_threads_check(opt->threads, err, errlen) != 0) return -1;
+  int threads = geom_threads_clamp(opt ? opt->threads : 0, omp_get_max_threads());
   double t0 = omp_get_wtime();
   got_dp dp = {0};
   unsigned char *V = NULL;

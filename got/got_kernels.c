@@ -322,7 +322,7 @@ got_pairs *got_pairs_new(const geom_point *p, size_t n, int measure, int threads
     pd->x[i] = p[i].x;
     pd->y[i] = p[i].y;
   }
-  if (threads <= 0) threads = 1;
+  threads = geom_threads_clamp(threads, 1);
   /* One row per iteration; the lower triangle mirrors the upper one
   ** (lengths exactly, directions by a pi shift), so every value is
   ** computed once and the tables are identical whatever the threads. */

@@ -371,7 +371,7 @@ static void sw_fill(lot_sweep *S, uint32_t edge, uint8_t side, uint32_t c) {
   }
 }
 
-/* The site event of vertex k: 0, or -1 when out of memory. */
+/* The site event of vertex k: 0, -1 when out of memory, or SW_BROKEN. */
 static int sw_site(lot_sweep *S, uint32_t k) {
   geom_point X = S->m->p[k];
   uint32_t b = sw_find(S, X), x = sw_node_new(S, k);
@@ -387,7 +387,9 @@ static int sw_site(lot_sweep *S, uint32_t k) {
   if (S->nd[b].pt.x == X.x) {
     /* b lies on the sweepline too: it is the top of the first column of
     ** sites (every breakpoint of a site on the sweepline is at its height),
-    ** and X goes above it, once. */
+    ** and X goes above it, once.  A b with a successor would mean that a
+    ** shape's "above" test broke that invariant: stop, never corrupt. */
+    if (S->nd[b].nx[0] != SW_NONE) return SW_BROKEN;
     S->nd[b].edge = e;
     S->nd[b].side = 0;
     sw_link_after(S, b, x);
@@ -492,8 +494,9 @@ static int sw_events(lot_sweep *S, size_t *duplicates) {
     } else if (k > 0 && p[k].x == p[k - 1].x && p[k].y == p[k - 1].y) {
       ++*duplicates;   /* sorted: the first of equal points has the smallest index */
       k++;
-    } else if (sw_site(S, k++) != 0) {
-      return -1;
+    } else {
+      int rc = sw_site(S, k++);
+      if (rc != 0) return rc;
     }
   }
 }

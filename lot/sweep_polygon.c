@@ -513,10 +513,23 @@ static int lot_poly_top(const lot_sweep_poly *P, const geom_point p[3], int ix) 
   return s > 0;
 }
 
+/* X against the breakpoint of A, B.  A site S of A, B on the sweepline is
+** the contact point itself: the shape through A and B lies left of the
+** sweepline and touches it in one point (K turned by the tie-break has one
+** rightmost point), which must be S.  Sites come in (x, y) order and equal
+** ones are merged, so S.y < X.y: X is above.  That is special position all
+** the same, counted (the events of sites on one vertical line may tie).
+** Without this case the contact test met a tie, whose fixed answer "not
+** above" located X at a site on its own sweepline that is no top of the
+** first column, which the site event cannot split. */
 static int lot_poly_above(const void *ctx, geom_point A, geom_point B, geom_point X) {
   const lot_sweep_poly *P = ctx;
   int oab = geom_orient_valid(A, B, X);
   if (A.x == B.x && oab == 0) return 2 * X.y > A.y + B.y;   /* a column on the sweepline */
+  if (A.x == X.x || B.x == X.x) {   /* a site on the sweepline: see above */
+    ++*P->special;
+    return 1;
+  }
   if (A.x != B.x && oab >= 0) return A.x < B.x;             /* X west of A -> B, or on it */
   const geom_point ccw[3] = {A, oab < 0 ? X : B, oab < 0 ? B : X};
   return lot_poly_top(P, ccw, oab < 0 ? 1 : 2);

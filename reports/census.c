@@ -84,10 +84,11 @@ static const char *const report_census_cols[9] = {
   "rule", "one sink %", "sink=DT %", "2+ sinks %", "no sink %", "tie %",
   "mean sinks", "max sinks", "mean worst gap"};
 
-/* The cells of one row, as strings. */
-static void report_census_cells(const report_census_row *w, char cell[9][100]) {
+/* The cells of one row, as strings (the rule's whole name fits). */
+#define REPORT_CELL RULE_NAME_MAX
+static void report_census_cells(const report_census_row *w, char cell[9][REPORT_CELL]) {
   const siteflip_counts *c = &w->c;
-  snprintf(cell[0], 100, "%s", w->rule);
+  snprintf(cell[0], REPORT_CELL, "%s", w->rule);
   report_census_pct(cell[1], 100, c->one_sink, c->samples);
   report_census_pct(cell[2], 100, c->sink_dt, c->samples);
   report_census_pct(cell[3], 100, c->multi_sink, c->samples);
@@ -130,7 +131,7 @@ static int report_census_table(FILE *f, const report_census_meta *m,
   report_census_title(f, m, &rows[0], md);
   int width[9];
   for (int k = 0; k < 9; k++) width[k] = (int)strlen(report_census_cols[k]);
-  char cell[9][100];
+  char cell[9][REPORT_CELL];
   for (int r = 0; r < nrows; r++) {
     report_census_cells(&rows[r], cell);
     for (int k = 0; k < 9; k++)

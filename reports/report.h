@@ -30,7 +30,7 @@
 typedef struct report_row {
   char measure[64];
   char joint[JOINT_NAME_MAX];
-  char rule[96];
+  char rule[RULE_NAME_MAX];
   flipgraph_counts c;
 } report_row;
 
@@ -199,7 +199,7 @@ int report_siteflip_svg(FILE *f, const siteflip_graph *g, const rule_choice *dec
 typedef struct report_census_row {
   char measure[64];
   char joint[JOINT_NAME_MAX];
-  char rule[96];
+  char rule[RULE_NAME_MAX];
   int sites;
   char sampler[16];
   siteflip_counts c;

@@ -37,6 +37,42 @@ static void test_cdf_cli_refused(void **state) {
   }
 }
 
+/* --cdf on a constrained run (--segments, --holes, --poly): refused in one
+** line naming the option, no file.  (It was accepted, and listed the
+** triangles a segment forced in as if an empty homothet circumscribed them.) */
+static void test_cdf_cli_constrained(void **state) {
+  (void)state;
+  char path[512], pts[512], seg[512], hol[512], poly[512];
+  testutil_tmppath(path, sizeof path, "cdf_constrained.csv");
+  testutil_tmppath(pts, sizeof pts, "cdf_constrained_pts.csv");
+  testutil_tmppath(seg, sizeof seg, "cdf_constrained_seg.csv");
+  testutil_tmppath(hol, sizeof hol, "cdf_constrained_hol.csv");
+  testutil_tmppath(poly, sizeof poly, "cdf_constrained.poly");
+  testutil_write_file(pts, "0,0\n4,0\n4,4\n0,4\n1,2\n3,2\n");
+  testutil_write_file(seg, "4,5\n");
+  testutil_write_file(hol, "2,3.9\n");
+  testutil_write_file(poly, "4 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n4 0\n1 1 2\n2 2 3\n3 3 4\n"
+                            "4 4 1\n0\n");
+  const char *how[3][2] = {{"--segments", seg}, {"--holes", hol}, {"--poly", poly}};
+  for (int i = 0; i < 3; i++) {
+    unlink(path);
+    int rc = i < 2 ? testutil_runf(tcc_out, sizeof tcc_out, tcc_err, sizeof tcc_err,
+                                   "lot --rule ES:square --points %s %s %s --cdf %s", pts,
+                                   how[i][0], how[i][1], path)
+                   : testutil_runf(tcc_out, sizeof tcc_out, tcc_err, sizeof tcc_err,
+                                   "lot --rule ES:square --poly %s --cdf %s", poly, path);
+    assert_int_equal(rc, 2);
+    assert_true(testutil_one_line(tcc_err));
+    assert_non_null(strstr(tcc_err, "--cdf takes an unconstrained run"));
+    assert_non_null(strstr(tcc_err, how[i][0]));
+    assert_int_equal(access(path, F_OK), -1);
+  }
+  unlink(pts);
+  unlink(seg);
+  unlink(hol);
+  unlink(poly);
+}
+
 /* stdout without its time: lines. */
 static void tcc_drop_time(char *s) {
   char *w = s;
@@ -114,6 +150,7 @@ static void test_cdf_cli_ellipse(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
       cmocka_unit_test(test_cdf_cli_refused),
+      cmocka_unit_test(test_cdf_cli_constrained),
       cmocka_unit_test(test_cdf_cli_square),
       cmocka_unit_test(test_cdf_cli_ellipse),
   };

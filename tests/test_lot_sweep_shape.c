@@ -45,6 +45,10 @@ typedef struct tss_result {
 static size_t tss_runs, tss_tied, tss_restarts;
 static uint64_t tss_repairs;
 static const char *tss_input = "";
+/* Set while inputs run whose ties the sweep's count may miss (lot.c,
+** lot_sweep_mesh: two sites on a line parallel to a side of K): the
+** repair flips are then not asserted to be none. */
+static int tss_uncounted;
 
 static rule tss_rule(const char *name) {
   rule r;
@@ -74,7 +78,7 @@ static tss_result tss_build(const char *name, const geom_point *p, size_t n, lot
   tss_result res = {malloc(3 * (st->triangles + 1) * sizeof *res.tri), st->triangles};
   assert_non_null(res.tri);
   lot_get_triangles(L, res.tri);
-  if (a == LOT_SWEEP && ties == 0) assert_int_equal(st->flips, 0);
+  if (a == LOT_SWEEP && ties == 0 && !tss_uncounted) assert_int_equal(st->flips, 0);
   assert_int_equal(st->status, LOT_CONVERGED);
   lot_free(L);
   return res;
@@ -229,6 +233,47 @@ static void test_polygon_special(void **state) {
   lot_free(L);
   for (size_t e = 0; e < sizeof tss_polygons / sizeof *tss_polygons; e++)
     tss_agree(tss_polygons[e], p, 100, 1);
+}
+
+/* Do p[0 .. n-1] span a triangle (three sites not on one line)? */
+static int tss_has_triangle(const geom_point *p, size_t n) {
+  for (size_t i = 1; i < n; i++)
+    for (size_t j = i + 1; j < n; j++)
+      if (geom_orient_exact(p[0], p[i], p[j]) != 0 || geom_orient_exact(p[1], p[i], p[j]) != 0)
+        return 1;
+  return 0;
+}
+
+/* Sites on the sweepline that are no top of the first column (found from
+** outside: the sweep of ES:square wrote through a missing edge record on
+** (0,0), (10,6), (10,4), (30,20), and on 10 of 1,500 random sets of 4-9
+** integer points).  A site on the sweepline is its own contact point: the
+** polygons' "above" test answers so before any contact test, whose tie
+** located (10,6) at (10,4) while (10,4) had a successor.  Here: that set,
+** then small integer sets, most with several sites on one vertical line,
+** under the square, two axis-parallel rectangles, the diamond and a
+** triangle, each against the incremental algorithm. */
+static void test_sweepline_sites(void **state) {
+  (void)state;
+  static const char *const rules[] = {"ES:square", "ES:poly:0,0;3,0;3,1;0,1",
+                                      "ES:poly:0 0;1 0;1 2;0 2", "ES:diamond", "ES:triangle"};
+  const geom_point first[4] = {{0, 0}, {10, 6}, {10, 4}, {30, 20}};
+  for (size_t r = 0; r < sizeof rules / sizeof *rules; r++) tss_agree(rules[r], first, 4, 1);
+  uint64_t s = 0x5eedu;
+  static const int range[4] = {3, 5, 10, 30};
+  int sets = testutil_reps(1500);
+  tss_uncounted = 1;
+  for (int k = 0; k < sets; k++) {
+    geom_point p[9];
+    size_t n = 4 + geom_splitmix64(&s) % 6;
+    int R = range[geom_splitmix64(&s) % 4];
+    for (size_t i = 0; i < n; i++)
+      p[i] = (geom_point){(double)(geom_splitmix64(&s) % (uint64_t)(R + 1)),
+                          (double)(geom_splitmix64(&s) % (uint64_t)(R + 1))};
+    if (!tss_has_triangle(p, n)) continue;
+    for (size_t r = 0; r < sizeof rules / sizeof *rules; r++) tss_agree(rules[r], p, n, 1);
+  }
+  tss_uncounted = 0;
 }
 
 /* lot_mesh_valid on a first triangle and its ghosts (mesh.c's own
@@ -418,6 +463,7 @@ int main(void) {
     cmocka_unit_test(test_clouds),
     cmocka_unit_test(test_homothets),
     cmocka_unit_test(test_errors),
+    cmocka_unit_test(test_sweepline_sites),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

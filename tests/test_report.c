@@ -375,11 +375,11 @@ static void test_scatter(void **state) {
   assert_int_equal(testutil_count(s, "fill-opacity=\"0.8\""), 5);
   for (int i = 0; i < n; i++) {
     if (i == 3 || i == 7) continue;
-    char key[128];
+    char key[RULE_NAME_MAX + 16];
     snprintf(key, sizeof key, "%s: type I", rows[i].rule);
     assert_non_null(strstr(s, key));
   }
-  char key[128];
+  char key[RULE_NAME_MAX + 16];
   snprintf(key, sizeof key, ">%s: type I", rows[3].rule);
   assert_null(strstr(s, key));
   snprintf(key, sizeof key, "\n%s: type I", rows[3].rule);

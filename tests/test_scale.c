@@ -355,7 +355,7 @@ static void test_coord_parse(void **state) {
   (void)state;
   static const struct { const char *s; geom_coorderr e; } cases[] = {
     {"0", GEOM_COORD_OK}, {"-0", GEOM_COORD_OK}, {"1e-30", GEOM_COORD_OK},
-    {"-1e30", GEOM_COORD_OK}, {" 2.5", GEOM_COORD_OK}, {"0x1p-99", GEOM_COORD_OK},
+    {"-1e30", GEOM_COORD_OK}, {" 2.5", GEOM_COORD_NOT_NUMBER}, {"0x1p-99", GEOM_COORD_OK},
     {"1e-400", GEOM_COORD_OUT_OF_RANGE}, {"1e400", GEOM_COORD_OUT_OF_RANGE},
     {"-1e400", GEOM_COORD_OUT_OF_RANGE}, {"4.9e-324", GEOM_COORD_OUT_OF_RANGE},
     {"1e-170", GEOM_COORD_OUT_OF_RANGE}, {"9.99e-31", GEOM_COORD_OUT_OF_RANGE}, {"1e-31", GEOM_COORD_OUT_OF_RANGE}, {"2e30", GEOM_COORD_OUT_OF_RANGE},
