@@ -20,6 +20,7 @@ from ._flipgraph import FlipGraph, flipgraph
 from ._pymeasure import measure, quantities
 from ._classify import classify, verdicts, wilson
 from ._cdf import Cdf, cdf
+from ._scipy import from_shapely, lot_polygon
 
 __version__ = "0.1.0"
 library_path = _lib.path
@@ -28,4 +29,5 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "load_plugin", "measures", "quad_rules", "rules", "ALGORITHMS", "ORDERS", "Check",
            "CheckError", "Triangulation", "check", "lot", "read_poly", "samplers",
            "library_path", "Counts", "census", "table34", "Got", "got", "FlipGraph", "flipgraph",
-           "measure", "quantities", "classify", "verdicts", "wilson", "Cdf", "cdf"]
+           "measure", "quantities", "classify", "verdicts", "wilson", "Cdf", "cdf",
+           "from_shapely", "lot_polygon"]

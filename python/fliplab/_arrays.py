@@ -1,7 +1,9 @@
 """_arrays.py: numpy arrays in and out of the C library: validation of
 point arrays against the coordinate contract of geom.h (with the C
-library's own wording), pointers into arrays for ctypes."""
+library's own wording), pointers into arrays for ctypes, and strings for
+C (cstr)."""
 import ctypes
+import os
 import numpy as np
 
 from . import _lib
@@ -16,11 +18,46 @@ def points_ptr(a):
     return a.ctypes.data_as(_lib.Point_p)
 
 
-def as_coords(a, what, shape):
+def cstr(s, what, path=False):
+    """s as the bytes of a NUL-terminated C string.  C stops reading at the
+    first NUL, so "P_1\\x00junk" would silently be taken as "P_1": a str
+    with a NUL inside is a ValueError, anything but a str a TypeError.
+    path=True also takes bytes and os.PathLike (os.fsencode)."""
+    if path and isinstance(s, (str, bytes, os.PathLike)):
+        b = os.fsencode(s)
+    elif isinstance(s, str):
+        b = s.encode()
+    else:
+        raise TypeError("%s: expected a str, got %r" % (what, s))
+    if b"\0" in b:
+        raise ValueError("%s: %r contains a NUL character (C would read only the text "
+                         "before it)" % (what, s))
+    return b
+
+
+def refuse_masked(a, what):
+    """numpy masked arrays are refused rather than read with their masked
+    values, which np.asarray keeps (scipy.spatial.Delaunay refuses them too)."""
+    if isinstance(a, np.ma.MaskedArray):
+        raise ValueError("%s: masked arrays are not supported (scipy refuses them too); use "
+                         ".filled() or .compressed()" % what)
+
+
+def frozen(a):
+    """a, made read-only (a result's stored array: mutating it would
+    silently disagree with what was computed from it); returns a."""
+    a.flags.writeable = False
+    return a
+
+
+def as_coords(a, what, shape, own=False):
     """a as a C-contiguous float64 array of the given shape (None: any
     length in that axis, -1 in shape), refusing what is not real numbers.
     Integers are converted exactly when below 2^53; booleans, complex
-    numbers, strings and objects are refused."""
+    numbers, strings, objects and masked arrays are refused.  own=True: a
+    copy even when a already is such an array (a result keeps it, and the
+    caller may change a afterwards)."""
+    refuse_masked(a, what)
     arr = np.asarray(a)
     if arr.dtype.kind not in "fiu":
         raise ValueError("%s: expected an array of real numbers, got dtype %s" % (what, arr.dtype))
@@ -32,6 +69,8 @@ def as_coords(a, what, shape):
         raise ValueError("%s: expected an array of shape %s, got shape %s"
                          % (what, want.replace("m", "n", 1) if len(shape) == 2 else want,
                             arr.shape))
+    if own:
+        return np.array(arr, dtype=np.float64, order="C", copy=True)
     return np.ascontiguousarray(arr, dtype=np.float64)
 
 
@@ -57,7 +96,9 @@ def as_indices(a, what, cols, n):
     """a as a C-contiguous uint32 array of shape (m, cols) of indices into n
     points (triangles, segments).  Integer arrays, and float arrays holding
     whole numbers only (np.loadtxt's), are accepted; NaN, fractions, indices
-    outside [0, n) and other dtypes raise ValueError naming the first bad row."""
+    outside [0, n) and other dtypes raise ValueError naming the first bad row;
+    masked arrays are refused."""
+    refuse_masked(a, what)
     arr = np.asarray(a)
     if arr.ndim != 2 or arr.shape[1] != cols or arr.dtype.kind not in "iuf":
         raise ValueError("%s: expected an integer array of shape (m, %d), got %s of shape %s"

@@ -8,7 +8,8 @@ import numpy as np
 
 from . import _lib
 from ._lot import _u64
-from ._rules import Rule, as_rule, _raise_user_errors
+from ._arrays import cstr
+from ._rules import Rule, as_rule, tie_eps_arg, _raise_user_errors
 from ._samplers import SITE_SETS, PENTAGON_SAMPLERS, _name
 
 lib = _lib.lib
@@ -97,7 +98,7 @@ def _rules(rules, measures):
     else:
         ids = []
         for m in ([measures] if isinstance(measures, str) else measures):
-            i = lib.measure_find(m.encode())
+            i = lib.measure_find(cstr(m, "measures"))
             if i < 0:
                 raise ValueError("unknown measure '%s'" % m)
             ids.append(i)
@@ -141,10 +142,7 @@ def _shard(samples, shard):
 
 
 def _tie_eps(v):
-    v = 1e-12 if v is None else float(v)
-    if not (v >= 0 and np.isfinite(v)):
-        raise ValueError("tie_eps: expected a finite value >= 0, got %r" % (v,))
-    return v
+    return tie_eps_arg(v, _lib.RULE_DEFAULT_TIE_EPS)
 
 
 def table34(samples=5000, seed=1, rules=None, measures=None, tie_eps=None, threads=0,
@@ -170,6 +168,7 @@ def table34(samples=5000, seed=1, rules=None, measures=None, tie_eps=None, threa
         run.sampler = lib.sampler_pentagons_find(sampler.encode()).contents.draw
     if count > 0 and lib.flipgraph_tally_run(_c_rules(rs, eps), len(rs), ctypes.byref(run),
                                              counts) != 0:
+        _raise_user_errors()
         raise MemoryError("table34: out of memory")
     _raise_user_errors()
     out = np.zeros(len(rs), dtype=TABLE34_DTYPE)
@@ -203,6 +202,7 @@ def census(sites=6, samples=1000, sampler="convex", seed=1, rules=None, measures
             _c_rules(rs, eps), len(rs), k, int(sites), seed, first, count, eps, int(threads),
             0 if memory is None else int(memory), counts, _progress(progress), None,
             ctypes.byref(over), e, _lib.ERRLEN) != 0:
+        _raise_user_errors()
         msg = _lib.text(e)
         raise (ValueError if over.value else MemoryError)(msg)
     _raise_user_errors()

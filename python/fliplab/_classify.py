@@ -65,6 +65,7 @@ def classify(pentagons, rules="DT", tie_eps=None, threads=0):
     k = lib.flipgraph_classify_n(points_ptr(v), m, _c_rules(rs, eps), nr, eps, int(threads), g,
                                  ctypes.byref(err), ctypes.byref(bad))
     if k < m:
+        _raise_user_errors()
         raise ValueError("pentagon %d, vertex %d: %s"
                          % (k, bad.value, lib.geom_polyerr_str(err.value).decode()))
     _raise_user_errors()

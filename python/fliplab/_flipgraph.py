@@ -4,8 +4,8 @@ import ctypes
 import numpy as np
 
 from . import _lib
-from ._arrays import as_coords, points_ptr
-from ._rules import as_rule, _raise_user_errors
+from ._arrays import as_coords, frozen, points_ptr
+from ._rules import as_rule, tie_eps_arg, _raise_user_errors
 
 lib = _lib.lib
 SITEFLIP_MAX_SITES = 16
@@ -131,7 +131,8 @@ def flipgraph(sites, rule, tie_eps=None):
     all on a line; convex or not) and its flip graph directed by the rule,
     as `fliplab flipgraph --sites FILE --rule R`."""
     r = as_rule(rule)
-    p = as_coords(sites, "sites", (-1, 2))
+    eps = tie_eps_arg(tie_eps, r.tie_eps)
+    p = frozen(as_coords(sites, "sites", (-1, 2), own=True))   # kept as .points
     e = _lib.errbuf()
     g = lib.siteflip_build(points_ptr(p), len(p), e, _lib.ERRLEN)
     if not g:
@@ -142,10 +143,12 @@ def flipgraph(sites, rule, tie_eps=None):
         dec = (ctypes.c_int * max(G.nquads, 1))()
         sinks = (ctypes.c_int * max(G.nnodes, 1))()
         res = SiteflipResult()
-        eps = r.tie_eps if tie_eps is None else float(tie_eps)
         if lib.siteflip_direct(g, ctypes.byref(r._c), eps, dec, sinks, ctypes.byref(res)) != 0:
+            _raise_user_errors()
             raise MemoryError("flipgraph: out of memory")
         _raise_user_errors()
-        return FlipGraph(g, list(dec), list(sinks), res, r, p)
+        out = FlipGraph(g, list(dec), list(sinks), res, r, p)
+        _raise_user_errors()        # the nodes' keys call the measure too
+        return out
     finally:
         lib.siteflip_free(g)

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import _lib
 from ._arrays import as_coords, points_ptr
-from ._rules import as_rule, _raise_user_errors
+from ._rules import as_rule, tie_eps_arg, _raise_user_errors
 
 lib = _lib.lib
 
@@ -108,6 +108,7 @@ def got(polygon, rule, threads=0, tie_eps=None):
     r = as_rule(rule)
     if not r.is_triangle:
         raise ValueError("got needs a triangle-based rule (MEASURE_JOINT), not %s" % r.name)
+    eps = tie_eps_arg(tie_eps, r.tie_eps)
     p = as_coords(polygon, "polygon", (-1, 2))
     n = len(p)
     q = p.copy()
@@ -120,9 +121,10 @@ def got(polygon, rule, threads=0, tie_eps=None):
     if lib.got_check_memory(n, r._c.measure, e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
     res = GotResult()
-    opt = GotOptions(int(threads), r.tie_eps if tie_eps is None else float(tie_eps))
+    opt = GotOptions(int(threads), eps)
     if lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), ctypes.byref(opt),
                      ctypes.byref(res), e, _lib.ERRLEN) != 0:
+        _raise_user_errors()        # a Python measure's own error comes first
         msg = _lib.text(e)
         raise (MemoryError if "out of memory" in msg else ValueError)(msg)
     try:

@@ -5,8 +5,8 @@ import os
 import warnings
 import numpy as np
 
-from . import _lib
-from ._arrays import as_coords, as_indices, points_ptr, ptr
+from . import _lib, _scipy
+from ._arrays import as_coords, as_indices, cstr, frozen, points_ptr, ptr
 from ._rules import as_rule, _raise_user_errors
 
 lib = _lib.lib
@@ -104,7 +104,8 @@ def check(points, triangles, rule, segments=None, missing_ok=0):
 
 
 class Triangulation:
-    """The result of lot(): a LOT of the input points.
+    """The result of lot(): a LOT of the input points.  Its arrays are
+    read-only copies: changing the caller's input afterwards changes nothing.
 
     points     (n, 2) float64, the input (duplicates included)
     triangles  (m, 3) int32, indices into points, anticlockwise, each
@@ -124,13 +125,18 @@ class Triangulation:
     flips, status ("converged", "cycle", "budget exhausted"), stats (a dict
     of lot_stats: counts, cycle quadrilaterals, seconds), rule, algorithm,
     order, seed.
-    neighbors and badness are computed on first use."""
+    badness is computed on first use; neighbors comes with lot()'s result
+    (lot_get_neighbors, from the mesh), else on first use (lot_neighbors).
+
+    Like scipy.spatial.Delaunay (docs/python.md, "Where it differs from
+    scipy"): simplices, find_simplex(xi), convex_hull, edges,
+    vertex_neighbor_vertices; and to_matplotlib(), to_shapely()."""
 
     def __init__(self, points, triangles, hull, stats, rule, algorithm, order, seed):
         self.points = points
         self.triangles = triangles
         self.hull = hull
-        self.constrained = np.empty((0, 2), dtype=np.int32)
+        self.constrained = frozen(np.empty((0, 2), dtype=np.int32))
         self.segments = None
         self.holes = None
         self.rule = rule
@@ -142,17 +148,59 @@ class Triangulation:
         self.status = stats["status"]
         self._neighbors = None
         self._badness = None
+        self._derived = {}      # convex_hull, edges, vertex_neighbor_vertices (_scipy)
 
     @property
     def neighbors(self):
         if self._neighbors is None:
             nb = np.empty(self.triangles.shape, dtype=np.int32)
-            t = self.triangles.view(np.uint32)
+            t = np.ascontiguousarray(self.triangles, dtype=np.int32).view(np.uint32)
             if lib.lot_neighbors(ptr(t, ctypes.c_uint32), len(t), len(self.points),
                                  ptr(nb, ctypes.c_int32)) != 0:
                 raise MemoryError("lot neighbors: out of memory")
-            self._neighbors = nb
+            self._neighbors = frozen(nb)
         return self._neighbors
+
+    def find_simplex(self, xi, bruteforce=False, tol=None):
+        """scipy.spatial.Delaunay.find_simplex, exact: for each point of xi
+        (an array whose last axis is x, y) the index of a triangle holding
+        it, -1 outside (and for NaN or infinite points); on an edge the
+        smaller of its two triangles, on a vertex the smallest triangle
+        with it.  lot_locate: walks in a spatial order; bruteforce=True
+        scans every triangle instead (the same answers).  tol: the test is
+        exact, so only None (or 0) is taken."""
+        return _scipy.find_simplex(self, xi, bruteforce, tol)
+
+    @property
+    def convex_hull(self):
+        """(h, 2) int32: the boundary edges (neighbors == -1), built as
+        scipy.spatial.Delaunay.convex_hull is: row t's vertices without
+        vertex k, in order, by triangle then k.  Without removed triangles
+        these are the convex hull's edges (collinear points included);
+        with holes or a removed outside, the region's boundary."""
+        return _scipy.cached(self, "convex_hull", _scipy.convex_hull)
+
+    @property
+    def edges(self):
+        """(e, 2) int32: every edge once, smaller index first, sorted."""
+        return _scipy.cached(self, "edges", _scipy.edges)
+
+    @property
+    def vertex_neighbor_vertices(self):
+        """(indptr, indices) as scipy.spatial.Delaunay's: the vertices joined
+        to vertex k are indices[indptr[k]:indptr[k+1]], ascending (empty for
+        a duplicate point or one in no kept triangle)."""
+        return _scipy.cached(self, "vertex_neighbor_vertices",
+                             _scipy.vertex_neighbor_vertices)
+
+    def to_matplotlib(self):
+        """matplotlib.tri.Triangulation(x, y, triangles), its neighbours given
+        from ours in matplotlib's convention (docs/python.md)."""
+        return _scipy.to_matplotlib(self)
+
+    def to_shapely(self):
+        """A list of shapely Polygons, one per triangle (row order)."""
+        return _scipy.to_shapely(self)
 
     @property
     def simplices(self):
@@ -167,7 +215,7 @@ class Triangulation:
             lib.lot_get_badness(points_ptr(self.points), ptr(t, ctypes.c_uint32), len(t),
                                 ctypes.byref(self.rule._c), ptr(b, ctypes.c_double))
             _raise_user_errors()
-            self._badness = b
+            self._badness = frozen(b)
         return self._badness
 
     def total(self):
@@ -210,7 +258,7 @@ def _constraints(o, n, segments, holes, keep_hull):
     """segments, holes and keep_hull into the options o, validated as the
     program's readers do (the arrays returned must outlive the call)."""
     s = None if segments is None else as_indices(segments, "segments", 2, n)
-    h = None if holes is None else as_coords(holes, "holes", (-1, 2))
+    h = None if holes is None else frozen(as_coords(holes, "holes", (-1, 2), own=True))
     if keep_hull and s is None and h is None:
         raise ValueError("keep_hull applies to constrained runs (segments, holes)")
     if s is not None:
@@ -245,7 +293,7 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
     odr = _choice(order, ORDERS, "order")
     if odr != 0 and alg != 0:
         raise ValueError("order applies to algorithm 'incremental' only")
-    p = as_coords(points, "points", (-1, 2))
+    p = frozen(as_coords(points, "points", (-1, 2), own=True))
     n = len(p)
     o = _lib.LotOptionsRoom()
     lib.lot_options_init(ctypes.byref(o), ctypes.byref(r._c))
@@ -260,27 +308,44 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
         raise MemoryError(_lib.text(e))
     L = ctypes.c_void_p()
     if lib.lot_build(ctypes.byref(L), points_ptr(p), n, ctypes.byref(o), e, _lib.ERRLEN) != 0:
-        msg = _lib.text(e)
-        raise (MemoryError if "out of memory" in msg else ValueError)(msg)
+        _raise_user_errors()        # a Python measure's own error comes first
+        raise _build_error(_lib.text(e))
     try:
         _raise_user_errors()
-        st = lib.lot_get_stats(L).contents
-        stats = _stats(st)
-        tri = np.empty((st.triangles, 3), dtype=np.int32)
-        lib.lot_get_triangles(L, ptr(tri, ctypes.c_uint32))
-        hull = np.empty(st.hull, dtype=np.int32)
-        lib.lot_get_hull(L, ptr(hull, ctypes.c_uint32))
-        con = np.empty((st.constrained, 2), dtype=np.int32)
-        lib.lot_get_constrained(L, ptr(con, ctypes.c_uint32))
+        res = _result(L, p, r, algorithm, order, int(seed))
     finally:
         lib.lot_free(L)
-    res = Triangulation(p, tri, hull, stats, r, algorithm, order, int(seed))
-    res.constrained, res.holes = con, hol
-    res.segments = None if seg is None else seg.astype(np.int32)
+    res.holes = hol
+    res.segments = None if seg is None else frozen(seg.astype(np.int32))
     if check:
         c = res.check()
         if not c:
             raise CheckError("check: FAILED: %s" % c.failure())
+    return res
+
+
+def _build_error(msg):
+    """lot_build's message as the exception to raise (its words name no
+    flag of the program, so they read the same here)."""
+    return (MemoryError if "out of memory" in msg else ValueError)(msg)
+
+
+def _result(L, p, r, algorithm, order, seed):
+    """The Triangulation of a built lot L (still alive): triangles, hull,
+    constrained edges and neighbours read off it, all read-only."""
+    st = lib.lot_get_stats(L).contents
+    stats = _stats(st)
+    tri = np.empty((st.triangles, 3), dtype=np.int32)
+    lib.lot_get_triangles(L, ptr(tri, ctypes.c_uint32))
+    hull = np.empty(st.hull, dtype=np.int32)
+    lib.lot_get_hull(L, ptr(hull, ctypes.c_uint32))
+    con = np.empty((st.constrained, 2), dtype=np.int32)
+    lib.lot_get_constrained(L, ptr(con, ctypes.c_uint32))
+    nb = np.empty((st.triangles, 3), dtype=np.int32)
+    if lib.lot_get_neighbors(L, ptr(nb, ctypes.c_int32)) != 0:
+        raise MemoryError("lot neighbors: out of memory")
+    res = Triangulation(p, frozen(tri), frozen(hull), stats, r, algorithm, order, seed)
+    res.constrained, res._neighbors = frozen(con), frozen(nb)
     return res
 
 
@@ -300,7 +365,8 @@ def read_poly(path):
     markers) is ignored with a warning, as the program's note."""
     pf = _lib.ReportPoly()
     e = _lib.errbuf()
-    if lib.report_poly_read(os.fsencode(path), ctypes.byref(pf), e, _lib.ERRLEN) != 0:
+    if lib.report_poly_read(cstr(path, "path", path=True), ctypes.byref(pf), e,
+                            _lib.ERRLEN) != 0:
         msg = _lib.text(e)
         raise (MemoryError if "out of memory" in msg else ValueError)(msg)
     try:

@@ -16,12 +16,13 @@ one through a ctypes callback (correct, about a microsecond per call
 slower than a formula).  Values are checked as a plugin's are
 (formula_check_value): NaN or a value outside the declared sign is an
 error after the call.  An exception raised by fn is re-raised after the
-call."""
+call, and so is a result of the wrong length (one value per triangle, in
+badness() as in the callback: _values), as the ValueError badness() gives."""
 import ctypes
 import numpy as np
 
 from . import _lib
-from ._arrays import as_coords, check_contract, points_ptr
+from ._arrays import as_coords, check_contract, cstr, points_ptr
 
 lib = _lib.lib
 
@@ -72,25 +73,35 @@ def _as_dict(rec):
     return {n: rec[n] for n in VARS}
 
 
+def _values(out, m, name):
+    """fn's result as m float64 values; another length is a ValueError (a
+    scalar counts as one value), the same from badness() and from the C
+    algorithms' callback."""
+    v = np.asarray(out, dtype=np.float64).reshape(-1)
+    if v.shape != (m,):
+        raise ValueError("measure %s returned %d values for %d triangles" % (name, v.size, m))
+    return v
+
+
 def measure(name, fn, sign="any", desc="a Python measure"):
     """Register fn (arrays of triangle quantities -> array of badness; small
     is good) as the measure NAME; sign ">= 0", "<= 0" or "any" (the joints'
     sign convention, docs/joints.md).  Returns NAME."""
     if sign not in _SIGN:
         raise ValueError("sign: expected '>= 0', '<= 0' or 'any', got %r" % (sign,))
+    bname, bdesc = cstr(name, "measure"), cstr(desc, "desc")
     e = _lib.errbuf()
-    if lib.measure_check_name(b"measure", name.encode(), e, _lib.ERRLEN) != 0:
+    if lib.measure_check_name(b"measure", bname, e, _lib.ERRLEN) != 0:
         raise ValueError(_lib.text(e))
-    if lib.measure_find(name.encode()) >= 0:
+    if lib.measure_find(bname) >= 0:
         raise ValueError("measure '%s' is already defined" % name)
     s = _SIGN[sign]
-    bname = name.encode()
 
     def one(tp, ctx):
         t = tp.contents
         try:
             q = {n: np.array([getattr(t, n)]) for n in VARS}
-            v = float(np.asarray(fn(q), dtype=np.float64).reshape(-1)[0])
+            v = float(_values(fn(q), 1, name)[0])
         except BaseException as ex:          # noqa: B902 - kept, re-raised after the call
             if not _pending:
                 _pending.append(ex)
@@ -98,7 +109,7 @@ def measure(name, fn, sign="any", desc="a Python measure"):
         return lib.formula_check_value(bname, tp, v, s, 1)
 
     cb = MeasureFn(one)
-    nbuf, dbuf = ctypes.create_string_buffer(bname), ctypes.create_string_buffer(desc.encode())
+    nbuf, dbuf = ctypes.create_string_buffer(bname), ctypes.create_string_buffer(bdesc)
     m = _lib.Measure(name=ctypes.cast(nbuf, ctypes.c_char_p),
                      symbol=ctypes.cast(nbuf, ctypes.c_char_p),
                      desc=ctypes.cast(dbuf, ctypes.c_char_p), sign=s,
@@ -112,6 +123,9 @@ def measure(name, fn, sign="any", desc="a Python measure"):
 
 
 def raise_pending():
+    """Raise the first exception a callback kept during the last C call (fn's
+    own, or _values' ValueError), clearing it; called by every path into C
+    that may call Python measures (_rules._raise_user_errors)."""
     if _pending:
         ex = _pending.pop()
         _pending.clear()
@@ -122,10 +136,7 @@ def badness_python(mid, triangles):
     """badness() of a Python measure: fn once on the whole array."""
     fn, s, _ = _registry[mid]
     q = quantities(triangles)
-    v = np.asarray(fn(_as_dict(q)), dtype=np.float64).reshape(-1)
-    if v.shape != (len(q),):
-        raise ValueError("measure %s returned %d values for %d triangles"
-                         % (lib.measure_get(mid).contents.name.decode(), v.size, len(q)))
+    v = _values(fn(_as_dict(q)), len(q), lib.measure_get(mid).contents.name.decode())
     bad = np.isnan(v) | ((s > 0) & (v < 0)) | ((s < 0) & (v > 0))
     if bad.any():
         i = int(np.argmax(bad))

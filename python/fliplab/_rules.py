@@ -5,12 +5,25 @@ import ctypes
 import numpy as np
 
 from . import _lib
-from ._arrays import as_coords, check_contract, points_ptr, ptr
+from ._arrays import as_coords, check_contract, cstr, points_ptr, ptr
 
 lib = _lib.lib
 
 AC, BD, EITHER, UNDECIDED = 0, 1, 2, -1
 _SIGNS = {-1: "<= 0", 0: "any", 1: ">= 0"}
+
+
+def tie_eps_arg(v, default=None):
+    """A tie tolerance: a finite real number >= 0 as a float (None: default).
+    Strings, booleans and anything else raise ValueError naming the keyword,
+    never a bare TypeError from a comparison."""
+    if v is None:
+        return default
+    ok = isinstance(v, (int, float, np.integer, np.floating)) and \
+        not isinstance(v, (bool, np.bool_))
+    if not (ok and np.isfinite(v) and v >= 0):
+        raise ValueError("tie_eps: expected a finite number >= 0, got %r" % (v,))
+    return float(v)
 
 
 def _raise_user_errors():
@@ -41,12 +54,10 @@ class Rule:
                 raise TypeError("rule: expected a rule name (str), got %r" % (name,))
             self._c = _lib.Rule()
             e = _lib.errbuf()
-            if lib.rule_parse(name.encode(), ctypes.byref(self._c), e, _lib.ERRLEN) != 0:
+            if lib.rule_parse(cstr(name, "rule"), ctypes.byref(self._c), e, _lib.ERRLEN) != 0:
                 raise ValueError(_lib.text(e))
         if tie_eps is not None:
-            if not (tie_eps >= 0 and np.isfinite(tie_eps)):
-                raise ValueError("tie_eps: expected a finite value >= 0, got %r" % (tie_eps,))
-            self._c.tie_eps = float(tie_eps)
+            self._c.tie_eps = tie_eps_arg(tie_eps)
 
     @property
     def name(self):
@@ -146,7 +157,7 @@ def define(definition):
     may be given once per process (a second one of the same name is refused,
     as a second --define would be); ValueError with the C message."""
     e = _lib.errbuf()
-    mid = lib.formula_define(definition.encode(), e, _lib.ERRLEN)
+    mid = lib.formula_define(cstr(definition, "define"), e, _lib.ERRLEN)
     if mid < 0:
         raise ValueError(_lib.text(e))
     return lib.measure_get(mid).contents.name.decode()
@@ -156,7 +167,7 @@ def load_plugin(path):
     """Load a plugin (fliplab/plugin.h), as the program's --plugin FILE.so:
     its measures and quadrilateral rules become usable by name."""
     e = _lib.errbuf()
-    if lib.plugin_load(str(path).encode(), e, _lib.ERRLEN) != 0:
+    if lib.plugin_load(cstr(path, "plugin", path=True), e, _lib.ERRLEN) != 0:
         raise ValueError(_lib.text(e))
 
 
@@ -167,7 +178,7 @@ def _measure_id(m):
         return m._c.measure
     if not isinstance(m, str):
         raise TypeError("measure: expected a measure name or a Rule, got %r" % (m,))
-    mid = lib.measure_find(m.encode())
+    mid = lib.measure_find(cstr(m, "measure"))
     if mid < 0:
         # A rule name MEASURE_JOINT: its measure.
         try:
