@@ -33,7 +33,7 @@ double bench_load(void);
 void bench_sibling(const char *argv0, const char *name, const char *args, double *wall,
                    double *cpu);
 
-/* A polygon sampler of pentagon/sampler.h (sampler_vector, sampler_star...). */
+/* A polygon sampler of samplers/sampler.h (sampler_vector, sampler_star...). */
 typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
 /* n vertices from fn with seed 1 (malloc'd); exits with a message naming
 ** prog if the sampler or the allocation fails. */

@@ -134,7 +134,7 @@ double siteflip_node_key(const siteflip_graph *g, const rule *r, int u);
 
 /* ---- census ---------------------------------------------------------- */
 
-/* Samplers of sites (pentagon/sampler.h, sampler_sites). */
+/* Samplers of sites (samplers/sampler.h, sampler_sites). */
 typedef struct siteflip_counts {
   uint64_t samples;
   uint64_t tie, no_sink, one_sink, multi_sink, sink_dt;

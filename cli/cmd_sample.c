@@ -5,7 +5,7 @@
 ** for bit.  Pentagon i of seed S is the one table34 classifies as sample i.
 **
 ** With --sampler holes|segments|grid it writes one random planar
-** straight-line graph instead (pentagon/pslg.c), as a Triangle .poly file:
+** straight-line graph instead (samplers/pslg.c), as a Triangle .poly file:
 ** a polygon with holes, non-crossing segments on a point set, or a rotated
 ** grid with segments along its lines, the inputs of constrained
 ** triangulations.

@@ -243,7 +243,7 @@ const char *geom_polyerr_str(geom_polyerr e);
 
 /* A planar straight-line graph: points, segments between them (pairs of
 ** 0-based point indices) and hole points, the input of a constrained
-** triangulation.  Made by the samplers (pentagon/), read and written as
+** triangulation.  Made by the samplers (samplers/), read and written as
 ** Triangle's .poly files (reports/poly.c); every array malloc'ed. */
 typedef struct geom_pslg {
   geom_point *pts;

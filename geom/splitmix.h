@@ -1,7 +1,7 @@
 /*
 ** splitmix.h: splitmix64 (Steele, Lea and Flood), the one small seeded
 ** generator of fliplab, and the one way a point uniform in the unit disc is
-** drawn.  Used to seed the samplers' streams (pentagon/), to draw the sample
+** drawn.  Used to seed the samplers' streams (samplers/), to draw the sample
 ** triangles a formula's sign is inferred from (badness/), and by the tests.
 ** Header-only: both are a handful of integer operations on hot paths.
 ** Below them, the registry of every random stream fliplab draws from.
@@ -46,7 +46,7 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 ** which values are taken.  The values are part of the output contract:
 ** changing one changes every sample drawn from it (tests/golden.sh).
 **
-** Streams of sampler_seed(g, seed, stream) (pentagon/sampler.h), with the
+** Streams of sampler_seed(g, seed, stream) (samplers/sampler.h), with the
 ** user's --seed:
 **   GEOM_STREAM_SAMPLE(i)   sample i of a census or table: pentagon i of
 **                           every pentagon sampler (table34, rule,

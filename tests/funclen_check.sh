@@ -9,7 +9,7 @@ set -u
 src=$1
 max=${2:-60}
 cd "$src" || exit 2
-files=$(ls geom/*.[ch] badness/*.[ch] joints/*.[ch] pentagon/*.[ch] fliprules/*.[ch] \
+files=$(ls geom/*.[ch] badness/*.[ch] joints/*.[ch] samplers/*.[ch] fliprules/*.[ch] \
   lot/*.[ch] classify/*.[ch] got/*.[ch] reports/*.[ch] cli/*.[ch] plugins/*.c fuzz/*.c 2>/dev/null)
 out=$(awk -v max="$max" '
 FNR == 1 { infn = 0; sig = "" }

@@ -1,6 +1,6 @@
 /*
 ** test_polygon_sampler.c: the large-n convex polygon samplers of
-** pentagon/polygon.c (vector method, thesis 6.4; points on a circle).
+** samplers/polygon.c (vector method, thesis 6.4; points on a circle).
 **
 ** - every sample is strictly convex and anticlockwise (exact check), for
 **   n from 3 to 20000; n < 3 is refused;

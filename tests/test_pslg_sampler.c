@@ -1,6 +1,6 @@
 /*
 ** test_pslg_sampler.c: the planar straight-line graph samplers
-** (pentagon/pslg.c).  The oracle is a brute-force exact test over every
+** (samplers/pslg.c).  The oracle is a brute-force exact test over every
 ** pair of segments: two segments may meet only in an end point of one of
 ** them (a point of the graph), never cross or overlap.  Polygons with
 ** holes: every ring simple, every hole vertex strictly inside the outer

@@ -27,7 +27,7 @@ double testutil_uniform(testutil_rng *g) {
   return geom_unit53(testutil_next(g));
 }
 
-/* One sampler for every random quadrilateral: pentagon/'s, on a stream
+/* One sampler for every random quadrilateral: samplers/'s, on a stream
 ** chosen by this generator. */
 void testutil_convex_quad(testutil_rng *g, geom_point q[4]) {
   sampler_quad(testutil_next(g), 0, q);

@@ -65,7 +65,7 @@ void sampler_quad(uint64_t seed, uint64_t index, geom_point q[4]);
 #define SAMPLER_HULL_MAX 17   /* the census's 16 sites (SITEFLIP_MAX_SITES) */
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v);
 
-/* Site sets for the census (pentagon/sites.c).  SAMPLER_SITES_CONVEX is
+/* Site sets for the census (samplers/sites.c).  SAMPLER_SITES_CONVEX is
 ** sampler_convex; the others draw n independent points (uniform in the unit
 ** disc, uniform in the square [-1, 1)^2, standard normal), redrawing the
 ** whole set from the same stream in the (measure-zero) event of two equal
@@ -87,14 +87,14 @@ int sampler_vector(sampler_rng *g, size_t n, geom_point *out);
 int sampler_circle(sampler_rng *g, size_t n, geom_point *out);
 
 /* Simple (generally non-convex) n-gons, anticlockwise, checked exactly
-** (pentagon/simplepoly.c): star-shaped from sorted random angles and radii,
+** (samplers/simplepoly.c): star-shaped from sorted random angles and radii,
 ** or x-monotone from random points split by the line through the extreme
 ** two.  0 on success, SAMPLER_ENOMEM when memory ran out, -1 when 100
 ** draws all failed the check. */
 int sampler_star(sampler_rng *g, size_t n, geom_point *out);
 int sampler_monotone(sampler_rng *g, size_t n, geom_point *out);
 
-/* Point sets for triangulations (pentagon/points.c), by name:
+/* Point sets for triangulations (samplers/points.c), by name:
 **   uniform   the unit square [0, 1)^2
 **   normal    standard normal coordinates
 **   disc      the unit disc
@@ -116,7 +116,7 @@ extern const char sampler_points_names[];
 
 void sampler_points(sampler_points_kind k, uint64_t seed, size_t n, geom_point *out);
 
-/* ---- planar straight-line graphs (pentagon/pslg.c, docs/sampling.md) ----
+/* ---- planar straight-line graphs (samplers/pslg.c, docs/sampling.md) ----
 ** Inputs of constrained triangulations.  In each, two segments meet only at
 ** points of the graph (an end point of one of them), decided exactly. */
 
