@@ -55,7 +55,17 @@ def _array(p, n, k):
 
 def cdf(t):
     """The CDF Delaunay graph of a Triangulation made by lot() with an
-    empty-shape rule ES:SHAPE, extracted as `lot --cdf` does."""
+    empty-shape rule ES:SHAPE, extracted as `lot --cdf` does.  A
+    triangulation made with segments or holes is refused, as `lot --cdf`
+    refuses a constrained run: its forced triangles have no empty shape."""
+    from ._lot import Triangulation
+    if not isinstance(t, Triangulation):
+        raise TypeError("cdf: expected a fliplab.Triangulation (from fliplab.lot), got %s"
+                        % type(t).__name__)
+    if t.segments is not None or t.holes is not None:
+        raise ValueError("cdf: the triangulation was made with segments or holes; the "
+                         "convex-distance Delaunay graph of a constrained run is not defined "
+                         "here (docs/emptyshape.md)")
     name = t.rule.name
     if not name.startswith("ES:"):
         raise ValueError("cdf needs an empty-shape rule (ES:SHAPE), not '%s'" % name)

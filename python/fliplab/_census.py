@@ -162,8 +162,8 @@ def table34(samples=5000, seed=1, rules=None, measures=None, tie_eps=None, threa
     _name(sampler, PENTAGON_SAMPLERS, "pentagon sampler")
     counts = (FlipgraphCounts * len(rs))()
     cb = _progress(progress)
-    run = FlipgraphRun(seed=seed, first=first, count=count, tie_eps=eps, threads=int(threads),
-                       progress=cb)
+    run = FlipgraphRun(seed=seed, first=first, count=count, tie_eps=eps,
+                       threads=_lib.threads_arg(threads), progress=cb)
     if sampler != "iteration":
         run.sampler = lib.sampler_pentagons_find(sampler.encode()).contents.draw
     if count > 0 and lib.flipgraph_tally_run(_c_rules(rs, eps), len(rs), ctypes.byref(run),
@@ -199,7 +199,8 @@ def census(sites=6, samples=1000, sampler="convex", seed=1, rules=None, measures
     over = ctypes.c_int(0)
     e = _lib.errbuf()
     if count > 0 and lib.siteflip_census(
-            _c_rules(rs, eps), len(rs), k, int(sites), seed, first, count, eps, int(threads),
+            _c_rules(rs, eps), len(rs), k, int(sites), seed, first, count, eps,
+            _lib.threads_arg(threads),
             0 if memory is None else int(memory), counts, _progress(progress), None,
             ctypes.byref(over), e, _lib.ERRLEN) != 0:
         _raise_user_errors()

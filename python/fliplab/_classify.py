@@ -62,7 +62,8 @@ def classify(pentagons, rules="DT", tie_eps=None, threads=0):
     m, nr = len(v), len(rs)
     g = (Flipgraph * max(1, m * nr))()
     err, bad = ctypes.c_int(0), ctypes.c_size_t(0)
-    k = lib.flipgraph_classify_n(points_ptr(v), m, _c_rules(rs, eps), nr, eps, int(threads), g,
+    k = lib.flipgraph_classify_n(points_ptr(v), m, _c_rules(rs, eps), nr, eps,
+                                 _lib.threads_arg(threads), g,
                                  ctypes.byref(err), ctypes.byref(bad))
     if k < m:
         _raise_user_errors()

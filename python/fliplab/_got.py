@@ -121,7 +121,7 @@ def got(polygon, rule, threads=0, tie_eps=None):
     if lib.got_check_memory(n, r._c.measure, e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
     res = GotResult()
-    opt = GotOptions(int(threads), eps)
+    opt = GotOptions(_lib.threads_arg(threads), eps)
     if lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), ctypes.byref(opt),
                      ctypes.byref(res), e, _lib.ERRLEN) != 0:
         _raise_user_errors()        # a Python measure's own error comes first

@@ -20,6 +20,8 @@ library built from other headers fails at import instead of reading garbage.
 import ctypes
 import os
 
+import numpy as np
+
 SONAME = "libfliplab.so.0.1"
 
 c_double_p = ctypes.POINTER(ctypes.c_double)
@@ -39,7 +41,7 @@ class Rule(ctypes.Structure):
     """rule (fliprules/rule.h)."""
     _fields_ = [("kind", ctypes.c_int), ("measure", ctypes.c_int), ("joint", ctypes.c_int),
                 ("sign", ctypes.c_int), ("quad", ctypes.c_int), ("tie_eps", ctypes.c_double),
-                ("name", ctypes.c_char * 80)]
+                ("name", ctypes.c_char * 1024)]   # RULE_NAME_MAX
 
 
 Rule_p = ctypes.POINTER(Rule)
@@ -125,12 +127,12 @@ PentagonFn = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_uint64, ctypes.c_uint64, Po
 
 
 class SamplerPentagons(ctypes.Structure):
-    """sampler_pentagons (pentagon/sampler.h)."""
+    """sampler_pentagons (samplers/sampler.h)."""
     _fields_ = [("name", ctypes.c_char_p), ("draw", PentagonFn)]
 
 
 class SamplerRng(ctypes.Structure):
-    """sampler_rng (pentagon/sampler.h)."""
+    """sampler_rng (samplers/sampler.h)."""
     _fields_ = [("s", ctypes.c_uint64 * 4)]
 
 
@@ -198,6 +200,7 @@ _PROTOS = {
     "geom_coord_check": (_int, [ctypes.c_double]),
     "geom_coorderr_str": (_char_p, [_int]),
     "geom_coord_check_n": (_size, [c_double_p, _size]),
+    "geom_threads_check": (_int, [ctypes.c_longlong, _char_p, _size]),
     "lot_options_init": (None, [ctypes.POINTER(LotOptionsRoom), Rule_p]),
     "lot_default_max_flips": (_u64, [_size]),
     "lot_build": (_int, [ctypes.POINTER(_void_p), Point_p, _size,
@@ -246,6 +249,20 @@ def errbuf():
     return ctypes.create_string_buffer(ERRLEN)
 
 
+MAX_THREADS = 1024   # GEOM_MAX_THREADS (geom/geom.h), checked at import
+
+
+def threads_arg(v):
+    """A thread count as every entry point of the library takes it: 0 (all
+    cores) or 1 .. MAX_THREADS, as an int; anything else raises ValueError
+    in the library's words (geom_threads_check)."""
+    ok = isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+    if not ok or not 0 <= int(v) <= MAX_THREADS:
+        raise ValueError("threads: expected 0 (all cores) or 1 .. %d, got %r"
+                         % (MAX_THREADS, v))
+    return int(v)
+
+
 def text(b):
     """A C message (bytes) as str."""
     return b.value.decode("utf-8", "replace") if hasattr(b, "value") else b.decode()
@@ -264,6 +281,9 @@ def _check_layout():
             bool(oo.segments), oo.nsegments, bool(oo.holes), oo.nholes, oo.keep_hull) != \
             (b"P_1", 0, 0, 1, 0, RULE_DEFAULT_TIE_EPS, None, False, 0, False, 0, 0):
         raise ImportError("fliplab: python/fliplab/_lib.py's LotOptions does not match lot.h")
+    if lib.geom_threads_check(MAX_THREADS, None, 0) != 0 or \
+            lib.geom_threads_check(MAX_THREADS + 1, None, 0) == 0:
+        raise ImportError("fliplab: python/fliplab/_lib.py's MAX_THREADS does not match geom.h")
 
 
 _check_layout()

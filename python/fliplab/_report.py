@@ -27,7 +27,7 @@ FORMATS = {"text": 0, "md": 1, "csv": 2}
 class ReportRow(ctypes.Structure):
     """report_row (reports/report.h)."""
     _fields_ = [("measure", ctypes.c_char * 64), ("joint", ctypes.c_char * JOINT_NAME_MAX),
-                ("rule", ctypes.c_char * 96), ("c", FlipgraphCounts)]
+                ("rule", ctypes.c_char * 1024), ("c", FlipgraphCounts)]
 
 
 class ReportRun(ctypes.Structure):
@@ -51,7 +51,7 @@ class ReportMeta(ctypes.Structure):
 class ReportCensusRow(ctypes.Structure):
     """report_census_row (reports/report.h)."""
     _fields_ = [("measure", ctypes.c_char * 64), ("joint", ctypes.c_char * JOINT_NAME_MAX),
-                ("rule", ctypes.c_char * 96), ("sites", ctypes.c_int),
+                ("rule", ctypes.c_char * 1024), ("sites", ctypes.c_int),
                 ("sampler", ctypes.c_char * 16), ("c", SiteflipCounts)]
 
 

@@ -1,4 +1,4 @@
-"""_samplers.py: the random polygons and point sets of pentagon/sampler.h as
+"""_samplers.py: the random polygons and point sets of samplers/sampler.h as
 numpy arrays, with the streams of the program (the same seed gives the same
 coordinates, bit for bit)."""
 import ctypes
