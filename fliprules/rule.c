@@ -21,11 +21,30 @@ static rule_choice rule_dt(const geom_point q[4], void *ctx) {
   return rule_delaunay_eval(q[0], q[1], q[2], q[3]);
 }
 
+/* WDT with per-site weights w (rule_eval_weighted): AC when D's lifted
+** point (x^2 + y^2 - w) lies strictly above the plane through A's, B's and
+** C's, BD when strictly below, EITHER on it (exactly, geom_power). */
+rule_choice rule_power_eval(geom_point a, geom_point b, geom_point c, geom_point d,
+                            const double w[4]) {
+  int s = geom_power(a, b, c, d, w);
+  return s < 0 ? RULE_AC : s > 0 ? RULE_BD : RULE_EITHER;
+}
+
+/* WDT where no weights reach it (every weight 0): the power test of equal
+** weights is the incircle test, so DT's answer, exactly. */
+static rule_choice rule_wdt(const geom_point q[4], void *ctx) {
+  (void)ctx;
+  return rule_delaunay_eval(q[0], q[1], q[2], q[3]);
+}
+
 static rule_quad rule_quads[RULE_QUAD_MAX] = {
   [RULE_DT] = {"DT", "Delaunay: the empty-circle diagonal (exact incircle test)", rule_dt, NULL},
+  [RULE_WDT] = {"WDT", "weighted Delaunay (regular triangulation): the power test of "
+                       "per-site weights (exact; without weights, DT)", rule_wdt, NULL},
 };
-static int rule_nquads = 1;
-static unsigned char rule_quad_systematic[RULE_QUAD_MAX] = {[RULE_DT] = 1};
+#define RULE_BUILTIN_QUADS 2   /* DT, WDT: what rule_quad_unregister_user keeps */
+static int rule_nquads = RULE_BUILTIN_QUADS;
+static unsigned char rule_quad_systematic[RULE_QUAD_MAX] = {[RULE_DT] = 1, [RULE_WDT] = 1};
 
 int rule_quad_register(const rule_quad *q) {
   if (rule_nquads >= RULE_QUAD_MAX || q->name == NULL || q->fn == NULL) return -1;
@@ -49,7 +68,7 @@ const rule_quad *rule_quad_get(int id) {
 }
 
 void rule_quad_unregister_user(void) {
-  rule_nquads = 1;
+  rule_nquads = RULE_BUILTIN_QUADS;
 }
 
 /* ---- naming ------------------------------------------------------------ */
@@ -215,6 +234,14 @@ rule_choice rule_eval(const rule *r, const geom_point q[4], double *ac, double *
   geom_tri_make(&abd, q[0], q[1], q[3]);
   geom_tri_make(&bcd, q[1], q[2], q[3]);
   return rule_eval_tris(r, &abc, &acd, &abd, &bcd, ac, bd);
+}
+
+rule_choice rule_eval_weighted(const rule *r, const geom_point q[4], const double w[4],
+                               double *ac, double *bd) {
+  if (w == NULL || !rule_wants_weights(r)) return rule_eval(r, q, ac, bd);
+  if (ac) *ac = NAN;
+  if (bd) *bd = NAN;
+  return rule_power_eval(q[0], q[1], q[2], q[3], w);   /* exact: no canonical rotation */
 }
 
 void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *out,

@@ -55,19 +55,21 @@ typedef struct rule {
 #define RULE_DEFAULT_TIE_EPS 1e-12
 #define RULE_QUAD_MAX 32
 #define RULE_DT 0       /* quadrilateral-rule registry id of DT */
+#define RULE_WDT 1      /* ... and of WDT, the weighted Delaunay rule */
 
 /* Build rules.  rule_parse accepts "DT", a registered quadrilateral rule's
 ** name, or MEASURE_JOINT ("R_inf", "-c_-inf", "-r2/A_0").  On failure it
 ** returns -1 and writes a one-line message (naming the valid choices) to err. */
 int rule_parse(const char *name, rule *out, char *err, size_t errlen);
-/* An empty-shape rule "ES:SPEC" (SPEC a shape spec of geom/shape.h,
+/* An empty-shape rule "ES:SPEC" (SPEC a shape spec of shapes/shape.h,
 ** docs/emptyshape.md), registered as a quadrilateral rule on first use;
 ** rule_parse calls it for every name starting "ES:" not yet registered. */
 int rule_shape_make(const char *name, rule *out, char *err, size_t errlen);
 /* 1 when r is an empty-shape rule (made by rule_shape_make). */
 int rule_is_shape(const rule *r);
-/* The shape of an empty-shape rule (it lives as long as the process), or
-** NULL for every other rule. */
+/* The shape of an empty-shape rule, parsed once when the rule is made and
+** owned by it (it lives as long as the process: never free it), or NULL
+** for every other rule: the one way to a rule's shape. */
 const struct shape *rule_shape(const rule *r);
 
 /* The one grammar of rule names: a triangle-based rule is MEASURE_JOINT,
@@ -127,6 +129,18 @@ rule_choice rule_eval_badness(const rule *r, double b_abc, double b_acd, double 
 void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *out,
                      double *ac, double *bd);
 
+/* Per-site weights reaching a rule.  WDT, the weighted Delaunay rule of a
+** regular triangulation (docs/rules.md), reads a weight per site: w[i] is
+** q[i]'s, and the rule keeps the diagonal of the lower convex hull of the
+** sites lifted to (x, y, x^2 + y^2 - w) (rule_power_eval, exact).  Every
+** other rule ignores weights; WDT without them (w == NULL, or an engine
+** that has none: classify, census, flipgraph) reads every weight as 0,
+** where it is DT exactly.  rule_wants_weights: 1 for WDT. */
+rule_choice rule_eval_weighted(const rule *r, const geom_point q[4], const double w[4],
+                               double *ac, double *bd);
+rule_choice rule_power_eval(geom_point a, geom_point b, geom_point c, geom_point d,
+                            const double w[4]);
+
 /* DT on ABCD directly: exact, so no canonical rotation is needed. */
 rule_choice rule_delaunay_eval(geom_point a, geom_point b, geom_point c, geom_point d);
 
@@ -141,6 +155,9 @@ int rule_list_triangle(const int *measures, int nmeasures, rule *out, int cap);
 static inline int rule_is_triangle(const rule *r) { return r->kind == RULE_TRIANGLE; }
 static inline int rule_is_delaunay(const rule *r) {
   return r->kind == RULE_QUAD && r->quad == RULE_DT;
+}
+static inline int rule_wants_weights(const rule *r) {
+  return r->kind == RULE_QUAD && r->quad == RULE_WDT;
 }
 /* DT, or a quadrilateral rule registered as systematic (rule_quad). */
 int rule_is_systematic(const rule *r);

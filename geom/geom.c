@@ -188,6 +188,19 @@ geom_coorderr geom_coord_check(double x) {
   return GEOM_COORD_OK;
 }
 
+geom_coorderr geom_weight_check(double w) {
+  if (isnan(w) || isinf(w)) return GEOM_COORD_NOT_FINITE;
+  double m = fabs(w);
+  if (m != 0 && (m < GEOM_WEIGHT_MIN || m > GEOM_WEIGHT_MAX)) return GEOM_COORD_OUT_OF_RANGE;
+  return GEOM_COORD_OK;
+}
+
+const char *geom_weighterr_str(geom_coorderr e) {
+  return e == GEOM_COORD_OUT_OF_RANGE
+             ? "is out of range (weights must be 0 or of magnitude between 1e-60 and 1e60)"
+             : geom_coorderr_str(e);
+}
+
 int geom_threads_check(long long threads, char *err, size_t errlen) {
   if (threads >= 0 && threads <= GEOM_MAX_THREADS) return 0;
   if (err != NULL && errlen > 0)

@@ -135,6 +135,16 @@ int geom_point_finite(geom_point p);
 #define GEOM_COORD_MAX 1e30
 #define GEOM_COORD_MIN 1e-30
 
+/* The weight contract (per-site weights of the weighted Delaunay rule, a
+** squared length): every weight is 0 or of magnitude in [1e-60, 1e60],
+** the squares of the coordinate range.  Then every non-zero difference of
+** two weights is at least 2^-252 and every term of the power test's error
+** bound (geom_power, predicates.c) a normal double: the filter's relative
+** bound holds.  geom_weight_check: GEOM_COORD_OK, NOT_FINITE or
+** OUT_OF_RANGE (geom_weighterr_str words the last for weights). */
+#define GEOM_WEIGHT_MAX 1e60
+#define GEOM_WEIGHT_MIN 1e-60
+
 typedef enum geom_coorderr {
   GEOM_COORD_OK = 0,
   GEOM_COORD_NOT_NUMBER,   /* empty, or not entirely a decimal/hex number */
@@ -199,6 +209,11 @@ const char *geom_coorderr_str(geom_coorderr e);
 #define GEOM_MAX_THREADS 1024
 int geom_threads_check(long long threads, char *err, size_t errlen);
 int geom_threads_clamp(int threads, int all);
+
+geom_coorderr geom_weight_check(double w);
+/* "is out of range (weights must be 0 or of magnitude between 1e-60 and
+** 1e60)", or geom_coorderr_str's words for the other errors. */
+const char *geom_weighterr_str(geom_coorderr e);
 
 /* Twice the area of triangle p q r, |orientation determinant|, with a
 ** relative error below 2^-40 (geom.c explains how). */

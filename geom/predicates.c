@@ -203,13 +203,16 @@ GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r)
   return t;
 }
 
-/* The incircle determinant of a, b, c, d translated so that d is the origin:
-**   | adx ady adx^2+ady^2 |
-**   | bdx bdy bdx^2+bdy^2 |
-**   | cdx cdy cdx^2+cdy^2 |   (positive when d is inside circle abc, abc anticlockwise) */
-GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  if (!geom_finite4(a, b, c, d)) return 0;
+/* The lifted determinant of a, b, c, d translated so that d is the origin:
+**   | adx ady adx^2+ady^2-(wa-wd) |
+**   | bdx bdy bdx^2+bdy^2-(wb-wd) |
+**   | cdx cdy cdx^2+cdy^2-(wc-wd) |
+** (positive when d's lifted point lies below the plane of the others', abc
+** anticlockwise), exactly; w == NULL: all weights 0, the incircle
+** determinant.  The one GMP form behind geom_incircle_exact and
+** geom_power_exact. */
+static int geom_lifted_sign_q(geom_point a, geom_point b, geom_point c, geom_point d,
+                              const double w[4]) {
   geom_point pt[3] = {a, b, c};
   mpq_t x[3], y[3], lift[3], t, u, det;
   mpq_inits(t, u, det, NULL);
@@ -220,6 +223,12 @@ GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom
     mpq_mul(lift[i], x[i], x[i]);
     mpq_mul(t, y[i], y[i]);
     mpq_add(lift[i], lift[i], t);
+    if (w != NULL) {
+      mpq_set_d(t, w[i]);
+      mpq_set_d(u, w[3]);
+      mpq_sub(t, t, u);
+      mpq_sub(lift[i], lift[i], t);
+    }
   }
   mpq_set_ui(det, 0, 1);
   for (int i = 0; i < 3; i++) {
@@ -234,6 +243,65 @@ GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom
   for (int i = 0; i < 3; i++) mpq_clears(x[i], y[i], lift[i], NULL);
   mpq_clears(t, u, det, NULL);
   return s;
+}
+
+GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  if (!geom_finite4(a, b, c, d)) return 0;
+  return geom_lifted_sign_q(a, b, c, d, NULL);
+}
+
+GEOM_COLD int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_point d,
+                               const double w[4]) {
+  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
+  if (!geom_finite4(a, b, c, d) || !isfinite(w[0]) || !isfinite(w[1]) || !isfinite(w[2]) ||
+      !isfinite(w[3]))
+    return 0;
+  return geom_lifted_sign_q(a, b, c, d, w);
+}
+
+/* The power test's filter.  With d the origin, X_i, Y_i the coordinate
+** differences, W_i = w_i - w_d and L_i = X_i^2 + Y_i^2 - W_i, the
+** determinant is sum_i L_i (X_j Y_k - X_k Y_j) over the cyclic (i, j, k).
+** In floating point each difference carries a relative error eps; the sum
+** of squares s_i = fl(fl(x^2) + fl(y^2)) is off by at most 4.01 eps S_i
+** (S_i = X_i^2 + Y_i^2, a sum of non-negative terms), and l_i = fl(s_i -
+** fl(W_i)) by at most 5.1 eps Lam_i, Lam_i = S_i + |W_i|.  The 2 x 2 minor
+** m_i = fl(fl(x_j y_k) - fl(x_k y_j)) is off by at most 4.02 eps M_i, M_i =
+** |x_j y_k| + |x_k y_j|; so each product l_i m_i by 10.2 eps Lam_i M_i (with
+** its own rounding), and the two additions add 2 eps of the sum.  So
+** |fl(det) - det| <= 12.2 eps P + O(eps^2) P, P = sum_i Lam_i M_i, and the
+** filter uses 16 eps P, which also covers the rounding of P itself (five
+** operations, a factor (1 + eps)^5 at worst).  The bound is relative: as
+** for the incircle test, differences below 2^-200 (and weight differences
+** below 2^-200) go to the exact path, so no term underflows (the coordinate
+** contract and the weight contract of geom.h keep every term of P at
+** least 2^-800 otherwise), and overflow makes the comparisons fail. */
+int geom_power(geom_point a, geom_point b, geom_point c, geom_point d, const double w[4]) {
+  const geom_point p[3] = {a, b, c};
+  double x[3], y[3], l[3], lam[3], m[3], mm[3];
+  int tiny = 0;
+  for (int i = 0; i < 3; i++) {
+    x[i] = p[i].x - d.x;
+    y[i] = p[i].y - d.y;
+    double wi = w[i] - w[3], s = x[i] * x[i] + y[i] * y[i];
+    l[i] = s - wi;
+    lam[i] = s + fabs(wi);
+    tiny |= geom_filter_tiny(x[i]) | geom_filter_tiny(y[i]) | geom_filter_tiny(wi);
+  }
+  for (int i = 0; i < 3; i++) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    double u = x[j] * y[k], v = x[k] * y[j];
+    m[i] = u - v;
+    mm[i] = fabs(u) + fabs(v);
+  }
+  double det = l[0] * m[0] + l[1] * m[1] + l[2] * m[2];
+  double bound = 16.0 * GEOM_EPS * (lam[0] * mm[0] + lam[1] * mm[1] + lam[2] * mm[2]);
+  if (!tiny) {
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  return geom_power_exact(a, b, c, d, w);
 }
 
 /* The filter of geom_incircle is inline in predicates.h; the function above

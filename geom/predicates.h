@@ -150,6 +150,17 @@ static inline int geom_incircle_valid(geom_point a, geom_point b, geom_point c, 
   return geom_incircle_filtered(a, b, c, d, 0);
 }
 
+/* The power test of weighted points (the regular triangulation's
+** incircle test): the sign of the lifted determinant of a, b, c, d with
+** weights w[0..3], each point lifted to x^2 + y^2 - w.  For anticlockwise
+** a, b, c: +1 when d's lifted point lies strictly below the plane through
+** the others' (d has negative power against the orthogonal circle of a,
+** b, c: the edge between them is not regular), -1 strictly above, 0 on it.
+** All weights equal: geom_incircle's answer.  Exact for finite inputs
+** (filter, then GMP; predicates.c has the bound). */
+int geom_power(geom_point a, geom_point b, geom_point c, geom_point d, const double w[4]);
+int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_point d, const double w[4]);
+
 /* Counts of predicate calls that needed the exact fallback (diagnostics). */
 unsigned long geom_exact_calls(void);
 

@@ -55,15 +55,21 @@ static int lot_tie_wrong(const geom_point *p, uint32_t u, uint32_t v, uint32_t a
 
 /* The interior edge u -> v of triangle (u, v, a), v -> u of (v, u, d).
 ** DT and the empty-shape rules have lot's tie-break: their ties (the four
-** sites on one circle, one shape) are counted and checked against it. */
-static void lot_check_edge(const geom_point *p, uint32_t u, uint32_t v, uint32_t a,
-                           uint32_t d, const rule *r, lot_check_result *out,
+** sites on one circle, one shape) are counted and checked against it.
+** With weights w (WDT) every edge must be regular, convex or not. */
+static void lot_check_edge(const geom_point *p, const double *w, uint32_t u, uint32_t v,
+                           uint32_t a, uint32_t d, const rule *r, lot_check_result *out,
                            lot_tie_result *tr) {
   const geom_point q[4] = {p[u], p[d], p[v], p[a]};   /* anticlockwise; diagonal q0 q2 */
   int convex = lot_strictly_convex(q);
   out->decided += convex;
   int bad, tie;
-  if (rule_is_delaunay(r)) {
+  if (w != NULL && rule_wants_weights(r)) {
+    const double ww[4] = {w[u], w[v], w[a], w[d]};
+    int in = geom_power(p[u], p[v], p[a], p[d], ww);
+    bad = in > 0;   /* d's lifted point below the plane of u, v, a */
+    tie = 0;
+  } else if (rule_is_delaunay(r)) {
     int in = geom_incircle(p[u], p[v], p[a], p[d]);
     bad = in > 0;   /* d strictly inside circle uva */
     tie = convex && in == 0;
@@ -89,8 +95,8 @@ static int lot_u64_cmp(const void *x, const void *y);
 /* The structure and local optimality of tri; the edges in skip (sorted
 ** lot_ukey keys: constrained) are interior but not decided.  Sets
 ** out->valid for the structure alone; *vertices: the points used. */
-static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-                         const rule *r, const uint64_t *skip, size_t nskip,
+static int lot_check_run(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
+                         size_t ntri, const rule *r, const uint64_t *skip, size_t nskip,
                          lot_check_result *out, lot_tie_result *tie, size_t *vertices) {
   lot_dedge *e = malloc(3 * ntri * sizeof *e);
   unsigned char *used = calloc(n ? n : 1, 1);
@@ -126,7 +132,7 @@ static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, siz
       else {
         out->interior_edges++;
         if (skip == NULL || bsearch(&e[i].key, skip, nskip, sizeof *skip, lot_u64_cmp) == NULL)
-          lot_check_edge(p, u, v, a, d, r, out, tie);
+          lot_check_edge(p, w, u, v, a, d, r, out, tie);
       }
     }
     i = j;
@@ -139,19 +145,32 @@ static int lot_check_run(const geom_point *p, size_t n, const uint32_t *tri, siz
   return 0;
 }
 
-int lot_check_ties(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-                   const rule *r, lot_check_result *out, lot_tie_result *tie) {
+/* An unconstrained check, with weights w or none: structure, Euler's count
+** over the vertices used, every interior edge. */
+static int lot_check_all(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
+                         size_t ntri, const rule *r, lot_check_result *out,
+                         lot_tie_result *tie) {
   *out = (lot_check_result){0};
   if (tie != NULL) *tie = (lot_tie_result){0};
   size_t vertices;
-  if (lot_check_run(p, n, tri, ntri, r, NULL, 0, out, tie, &vertices) != 0) return -1;
+  if (lot_check_run(p, w, n, tri, ntri, r, NULL, 0, out, tie, &vertices) != 0) return -1;
   if (out->valid && ntri + out->boundary_edges + 2 != 2 * vertices) out->valid = 0;
   return 0;
+}
+
+int lot_check_ties(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                   const rule *r, lot_check_result *out, lot_tie_result *tie) {
+  return lot_check_all(p, NULL, n, tri, ntri, r, out, tie);
 }
 
 int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
               const rule *r, lot_check_result *out) {
   return lot_check_ties(p, n, tri, ntri, r, out, NULL);
+}
+
+int lot_check_weighted(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
+                       size_t ntri, const rule *r, lot_check_result *out) {
+  return lot_check_all(p, w, n, tri, ntri, r, out, NULL);
 }
 
 static int lot_u64_cmp(const void *x, const void *y) {
@@ -326,7 +345,7 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
     if (!ok && out->segments_missing++ == 0) out->missing_segment = k;
   }
   if (nk > 0) qsort(keys, nk, sizeof *keys, lot_u64_cmp);
-  if (lot_check_run(p, n, tri, ntri, r, keys, nk, out, NULL, &vertices) != 0) goto done;
+  if (lot_check_run(p, NULL, n, tri, ntri, r, keys, nk, out, NULL, &vertices) != 0) goto done;
   long rhs = out->valid ? lot_euler_rhs(tri, ntri, n, d, 3 * ntri) : 0;
   if (rhs == LONG_MIN) goto done;
   long edges = (long)(out->interior_edges + out->boundary_edges);

@@ -57,6 +57,7 @@
 #include "mesh.h"
 #include "cdt.h"
 #include "order.h"
+#include "weighted.h"
 #include "sweep_internal.h"
 #include "measure.h"
 #include "splitmix.h"
@@ -73,14 +74,18 @@ struct lot {
   int constrained;
   size_t sweep_ties;    /* a polygon's sweep: ties decided by its fixed order */
   int sweep_restarted;  /* 1: its mesh was replaced by the circle's sweep */
+  uint32_t *redundant;  /* WDT: input indices of the sites left out (sorted) */
 };
 
 /* How lot_examine decides: DT's incircle, a triangle-based rule (its
 ** cache), an empty-shape rule's shape (straight to the shape's decision:
 ** the sites are validated and its answer is the same for every rotation
 ** of the quadrilateral, so rule_eval's checks and rotation are skipped),
-** another quadrilateral rule, or a decision hook. */
-typedef enum lot_kind { LOT_K_DT, LOT_K_TRI, LOT_K_SHAPE, LOT_K_QUAD, LOT_K_HOOK } lot_kind;
+** another quadrilateral rule, WDT's power test with the run's weights, or
+** a decision hook. */
+typedef enum lot_kind {
+  LOT_K_DT, LOT_K_TRI, LOT_K_SHAPE, LOT_K_QUAD, LOT_K_POWER, LOT_K_HOOK
+} lot_kind;
 
 typedef struct lot_entry {
   uint32_t c, u, v;     /* the edge opposite corner c, from u to v when pushed */
@@ -96,6 +101,7 @@ typedef struct lot_run {
   const lot_cons *cons; /* constrained edges, never flipped; NULL: none */
   lot_kind kind;
   const shape *shape;   /* LOT_K_SHAPE: the rule's shape */
+  const double *w;      /* LOT_K_POWER: the weights, by input index (m->inp) */
   int hints;            /* 1: its decisions keep hints in the triangles (lot_run_hints) */
   int star_only;        /* DT insertion: only edges opposite the new point */
   int stopped;          /* cycle or budget: no more flips */
@@ -458,6 +464,11 @@ static int lot_examine(lot_run *R, uint32_t c) {
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_SHAPE) {
       ch = lot_shape_choice(R, c, cd, pa, pb, pd, pc);
+    } else if (R->kind == LOT_K_POWER) {
+      const uint32_t *in = m->inp;
+      const double w[4] = {R->w[in[a]], R->w[in[b]], R->w[in[c0]], R->w[in[d]]};
+      int s = geom_power(pa, pb, pc, pd, w);   /* d's lifted point below plane a b c0 */
+      ch = s > 0 || (s == 0 && lot_tie_flips(pa, pb, pc, pd)) ? RULE_AC : RULE_BD;
     } else {
       const geom_point q[4] = {pa, pb, pd, pc};
       ch = R->kind == LOT_K_QUAD ? rule_eval(R->r, q, NULL, NULL)
@@ -531,7 +542,7 @@ static int lot_flip_all(lot_run *R) {
 ** before the scan goes on, so every edge is examined after its last
 ** change, by the scan or from the queue, and the result is a LOT with the
 ** tie-break: the one triangulation, whatever the order of the flips.  An
-** empty-shape sweep (same table of primitives, lot/sweep_internal.h)
+** empty-shape sweep (same table of primitives, shapes/shape_sweep_internal.h)
 ** goes through the same pass; after a polygon's ties in special position
 ** (lot_sweep_mesh) edges that are no tie flip too, as any flip pass
 ** would: the examination is the full rule's. */
@@ -560,9 +571,13 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
   R->st = &L->st;
   R->cons = L->constrained ? &L->cdt.cons : NULL;
   R->shape = rule_shape(r);
+  R->w = o->weights;
+  /* WDT without weights is DT exactly: DT's path. */
   R->kind = o->decide ? LOT_K_HOOK
           : rule_is_triangle(r) ? LOT_K_TRI
-          : rule_is_delaunay(r) ? LOT_K_DT : R->shape ? LOT_K_SHAPE : LOT_K_QUAD;
+          : rule_wants_weights(r) && o->weights ? LOT_K_POWER
+          : rule_is_delaunay(r) || rule_wants_weights(r) ? LOT_K_DT
+          : R->shape ? LOT_K_SHAPE : LOT_K_QUAD;
   /* A decision hook, or a quadrilateral rule not known to be systematic
   ** (rule_quad_set_systematic), may cycle. */
   R->track = R->kind == LOT_K_HOOK || (R->kind == LOT_K_QUAD && !rule_is_systematic(r));
@@ -598,6 +613,29 @@ static void lot_run_free(lot_run *R) {
 
 /* ---- building ---------------------------------------------------------- */
 
+/* Weights: WDT's alone, with the incremental or flip algorithm, no
+** constraints, every one within the weight contract (geom.h). */
+static int lot_validate_weights(size_t n, const lot_options *o, char *err, size_t errlen) {
+  const char *no = !rule_wants_weights(&o->r) ? "weights apply to the weighted Delaunay rule WDT"
+                 : o->algorithm == LOT_SWEEP ? "the sweep takes no weights (WDT: use the "
+                                               "incremental or flip algorithm)"
+                 : o->nsegments > 0 || o->nholes > 0 ? "weights take no segments or holes"
+                 : o->decide ? "weights take no decision hook" : NULL;
+  if (no != NULL) {
+    snprintf(err, errlen, "%s%s%s", no, rule_wants_weights(&o->r) ? "" : ", not ",
+             rule_wants_weights(&o->r) ? "" : rule_name(&o->r));
+    return -1;
+  }
+  for (size_t i = 0; i < n; i++) {
+    geom_coorderr e = geom_weight_check(o->weights[i]);
+    if (e != GEOM_COORD_OK) {
+      snprintf(err, errlen, "point %zu: weight %g %s", i, o->weights[i], geom_weighterr_str(e));
+      return -1;
+    }
+  }
+  return 0;
+}
+
 static int lot_validate(const geom_point *p, size_t n, const lot_options *o, char *err,
                         size_t errlen) {
   if (o->algorithm == LOT_SWEEP) {
@@ -608,7 +646,6 @@ static int lot_validate(const geom_point *p, size_t n, const lot_options *o, cha
       return -1;
     }
     if (lot_sweep_pick_rule(&o->r, &pk, err, errlen) != 0) return -1;
-    lot_sweep_pick_free(&pk);
   }
   if ((o->nsegments > 0 && o->segments == NULL) || (o->nholes > 0 && o->holes == NULL)) {
     snprintf(err, errlen, "constraints: a count without its array");
@@ -627,7 +664,7 @@ static int lot_validate(const geom_point *p, size_t n, const lot_options *o, cha
       return -1;
     }
   }
-  return 0;
+  return o->weights != NULL ? lot_validate_weights(n, o, err, errlen) : 0;
 }
 
 /* The insertion order: ord[k] = input index of the k-th point. */
@@ -720,7 +757,7 @@ static void lot_use_rule(lot *L) {
 
 /* The sweep's triangulation (lot_triangulate).  A polygon's sweep decides
 ** the ties of sites in special position (equal keys of neighbouring
-** events, a zero "above" sign, lot/sweep_polygon.c) by a fixed rule (equal
+** events, a zero "above" sign, shapes/shape_sweep_polygon.c) by a fixed rule (equal
 ** keys in creation order, a zero sign as "not above") and counts those it
 ** meets (pk.special), and nothing proves that this gives a triangulation.
 ** So its mesh is checked (lot_mesh_valid, exact), every time: the count
@@ -735,7 +772,6 @@ static int lot_sweep_mesh(lot *L, char *err, size_t errlen) {
   lot_sweep_pick pk;
   if (lot_sweep_pick_rule(&L->r, &pk, err, errlen) != 0) return -2;
   int rc = lot_sweep_run(&L->m, &pk.s, &L->st.duplicates);
-  lot_sweep_pick_free(&pk);
   L->sweep_ties = pk.special;
   int poly = pk.s.ties != NULL;
   if (rc == 0 && poly) {
@@ -746,7 +782,7 @@ static int lot_sweep_mesh(lot *L, char *err, size_t errlen) {
   if (rc == -2 && poly) rc = -3;   /* no triangle from a polygon's sweep: the circle's says why */
   if (rc == -3) {
     L->sweep_restarted = 1;
-    rc = lot_sweep_run(&L->m, &lot_sweep_circle, &L->st.duplicates);
+    rc = lot_sweep_run(&L->m, &shape_sweep_circle, &L->st.duplicates);
   }
   if (rc == -2) lot_degenerate(L->m.np, L->st.duplicates + 1 == L->m.np, err, errlen);
   if (rc == -3) snprintf(err, errlen, "internal error: the circle's sweep broke");
@@ -810,8 +846,9 @@ static int lot_none_left(const lot *L, const lot_options *o, char *err, size_t e
   return 1;
 }
 
-int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
-              size_t errlen) {
+/* One triangulation of all of p (lot_build without weights' rounds). */
+static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_options *o,
+                          char *err, size_t errlen) {
   *out = NULL;
   if (n < 3) {
     snprintf(err, errlen, "%zu point%s: a triangulation needs at least three non-collinear "
@@ -829,7 +866,10 @@ int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, ch
   L->st.n = n;
   L->constrained = o->nsegments > 0 || o->nholes > 0;
   lot_run_init(&R, L, o);
-  R.star_only = rule_is_systematic(&L->r) && !o->decide && o->algorithm == LOT_INCREMENTAL;
+  /* Not for weights: a new site can hide old ones, whose edges are not
+  ** in its star (lot_weighted.c). */
+  R.star_only = rule_is_systematic(&L->r) && !o->decide && o->algorithm == LOT_INCREMENTAL &&
+                R.kind != LOT_K_POWER;
   lot_run_hints(&R, 0);
   double t0 = lot_now();
   if (lot_make_order(p, (uint32_t)n, o, ord) != 0) goto oom_run;
@@ -869,6 +909,122 @@ oom:
   lot_free(L);
   snprintf(err, errlen, "out of memory for %zu points", n);
   return -1;
+}
+
+/* ---- the weighted rule's rounds (weighted.c has the argument) ---------- */
+
+/* What happens to each site of a weighted run (keep[]). */
+enum { LOT_W_HIDDEN = 0, LOT_W_KEPT = 1, LOT_W_DUPLICATE = 2 };
+
+/* Exact duplicates: all but the heaviest of each group (the first of the
+** heaviest), which alone can have a non-empty power cell, are marked
+** LOT_W_DUPLICATE; how many, or -1 out of memory.  O(n log n). */
+static long lot_weighted_dedupe(const geom_point *p, const double *w, uint32_t n,
+                                unsigned char *keep, uint32_t *ord) {
+  if (lot_order_lexicographic(p, n, ord) != 0) return -1;   /* x, y, then index */
+  long dropped = 0;
+  for (uint32_t i = 0, j; i < n; i = j) {
+    uint32_t best = ord[i];
+    for (j = i + 1; j < n && p[ord[j]].x == p[ord[i]].x && p[ord[j]].y == p[ord[i]].y; j++) {
+      uint32_t drop = w[ord[j]] > w[best] ? best : ord[j];
+      best = drop == best ? ord[j] : best;
+      keep[drop] = LOT_W_DUPLICATE;
+      dropped++;
+    }
+  }
+  return dropped;
+}
+
+/* The sites kept, in input order: their points, weights and input indices. */
+static uint32_t lot_weighted_subset(const geom_point *p, const double *w, uint32_t n,
+                                    const unsigned char *keep, geom_point *q, double *wq,
+                                    uint32_t *map) {
+  uint32_t m = 0;
+  for (uint32_t i = 0; i < n; i++)
+    if (keep[i] == LOT_W_KEPT) {
+      q[m] = p[i];
+      wq[m] = w[i];
+      map[m++] = i;
+    }
+  return m;
+}
+
+/* The final round's lot speaks of the whole input: input indices, the
+** sites left out, the counts of every round. */
+static int lot_weighted_finish(lot *L, const unsigned char *keep, const uint32_t *map, size_t n,
+                               long dups, uint64_t flips, size_t rounds) {
+  for (uint32_t v = 0; v < L->m.np; v++) L->m.inp[v] = map[L->m.inp[v]];
+  size_t out = 0;
+  for (size_t i = 0; i < n; i++) out += keep[i] == LOT_W_HIDDEN;
+  L->redundant = malloc((out > 0 ? out : 1) * sizeof *L->redundant);
+  if (L->redundant == NULL) return -1;
+  out = 0;
+  for (size_t i = 0; i < n; i++)
+    if (keep[i] == LOT_W_HIDDEN) L->redundant[out++] = (uint32_t)i;
+  L->st.n = n;
+  L->st.duplicates = (size_t)dups;
+  L->st.distinct = n - (size_t)dups;
+  L->st.redundant = out;
+  L->st.flips = flips;
+  L->st.rounds = rounds;
+  return 0;
+}
+
+/* WDT with weights: triangulate the sites kept, drop those a concave edge
+** certifies redundant, again until none is: the regular triangulation.
+** Cost: a LOT per round; a round drops at least one site, and random
+** weights need two or three rounds. */
+static int lot_build_weighted(lot **out, const geom_point *p, size_t n, const lot_options *o,
+                              char *err, size_t errlen) {
+  if (lot_validate(p, n, o, err, errlen) != 0) return -1;
+  unsigned char *keep = malloc(n), *mark = NULL;
+  uint32_t *map = malloc(n * sizeof *map);
+  geom_point *q = malloc(n * sizeof *q);
+  double *wq = malloc(n * sizeof *wq);
+  lot *L = NULL;
+  long dups = keep && map && q && wq ? (memset(keep, LOT_W_KEPT, n), 0) : -1;
+  if (dups == 0) dups = lot_weighted_dedupe(p, o->weights, (uint32_t)n, keep, map);
+  uint64_t flips = 0;
+  size_t rounds = 0;
+  int rc = dups < 0 ? -2 : 0;
+  while (rc == 0) {
+    uint32_t m = lot_weighted_subset(p, o->weights, (uint32_t)n, keep, q, wq, map);
+    lot_options oo = *o;
+    oo.weights = wq;
+    if ((rc = lot_build_once(&L, q, m, &oo, err, errlen)) != 0) break;
+    flips += L->st.flips;
+    rounds++;
+    if (L->st.status != LOT_CONVERGED) break;   /* unfinished: no LOT to read */
+    free(mark);
+    if ((mark = calloc(m, 1)) == NULL) rc = -2;
+    else if (lot_weighted_hidden(&L->m, wq, mark) == 0) break;
+    for (uint32_t k = 0; rc == 0 && k < m; k++)
+      if (mark[k]) keep[map[k]] = LOT_W_HIDDEN;
+    lot_free(L);
+    L = NULL;
+  }
+  if (rc == 0 && lot_weighted_finish(L, keep, map, n, dups, flips, rounds) != 0) rc = -2;
+  if (rc == -2) snprintf(err, errlen, "out of memory for %zu points", n);
+  if (rc != 0) lot_free(L);
+  *out = rc == 0 ? L : NULL;
+  free(keep);
+  free(mark);
+  free(map);
+  free(q);
+  free(wq);
+  return rc == 0 ? 0 : -1;
+}
+
+int lot_build(lot **out, const geom_point *p, size_t n, const lot_options *o, char *err,
+              size_t errlen) {
+  if (o->weights != NULL && n >= 3) return lot_build_weighted(out, p, n, o, err, errlen);
+  return lot_build_once(out, p, n, o, err, errlen);
+}
+
+size_t lot_get_redundant(const lot *L, uint32_t *out) {
+  if (L->redundant != NULL && L->st.redundant > 0)
+    memcpy(out, L->redundant, L->st.redundant * sizeof *out);
+  return L->st.redundant;
 }
 
 int lot_reflip(lot *L, const lot_options *o) {
@@ -1002,6 +1158,7 @@ void lot_get_triangles(const lot *L, uint32_t *tri) {
 
 void lot_free(lot *L) {
   if (L == NULL) return;
+  free(L->redundant);
   lot_mesh_free(&L->m);
   lot_cdt_free(&L->cdt);
   free(L);

@@ -77,6 +77,11 @@ typedef struct lot_options {
   size_t nholes;
   int keep_hull;             /* 1: keep the triangles outside the outermost segment-bounded
                                 region (0: removed, as Triangle's -p) */
+  /* Per-site weights of the weighted Delaunay rule WDT (rule.h; docs/lot.md
+  ** "Weighted Delaunay"): weights[i] is point i's, within the weight
+  ** contract of geom.h.  NULL: none (WDT is then DT).  Only WDT takes them,
+  ** with the incremental or flip algorithm and no segments or holes. */
+  const double *weights;
 } lot_options;
 
 /* Defaults: incremental, spatial order, seed 1, RULE_DEFAULT_TIE_EPS. */
@@ -111,6 +116,9 @@ typedef struct lot_stats {
   size_t segments_removed;  /* input segments with a piece in no kept triangle */
   size_t holes;             /* hole points */
   size_t removed;           /* triangles removed (holes, and the outside) */
+  /* weighted runs */
+  size_t redundant;         /* distinct sites left out: their power cells are empty */
+  size_t rounds;            /* triangulations made (1 + the rounds that found sites to drop) */
 } lot_stats;
 
 typedef struct lot lot;
@@ -134,13 +142,19 @@ const lot_stats *lot_get_stats(const lot *L);
 ** in special position it decided by its fixed order (0 for every other
 ** run; the flips of lot_stats then made the tie-broken LOT), and in
 ** *restarted (may be NULL) 1 when its mesh was no triangulation and the
-** circle's sweep (the Delaunay triangulation) was flipped instead.  Apart
-** from lot_stats, whose layout callers mirror. */
+** circle's sweep (the Delaunay triangulation) was flipped instead. */
 size_t lot_get_sweep_ties(const lot *L, int *restarted);
 
 /* The constrained edges of the result: 2 input indices each, smaller
 ** first, sorted; out holds 2 * stats.constrained entries.  Returns the count. */
 size_t lot_get_constrained(const lot *L, uint32_t *out);
+
+/* A weighted run (WDT with weights): the input indices of the redundant
+** sites, those no regular triangulation keeps (lot_stats.redundant of
+** them, ascending; an exact duplicate of a heavier site is no such site:
+** lot_stats.duplicates counts it).  The triangulation is the regular
+** triangulation of the other sites.  Returns the count. */
+size_t lot_get_redundant(const lot *L, uint32_t *out);
 
 /* The triangles, 3 input indices each, anticlockwise, each starting at its
 ** smallest index, sorted; tri must hold 3 * stats.triangles entries. */
@@ -209,6 +223,14 @@ int lot_check_ties(const geom_point *p, size_t n, const uint32_t *tri, size_t nt
 ** triangle edges through the points on it, else it counts as missing; those
 ** edges are not decided; every other interior edge is checked as lot_check
 ** does, and valid asks Euler's relation with holes.  0, or -1 (memory). */
+/* lot_check for the weighted rule with per-site weights w (by input
+** index): every interior edge must be regular, the lifted surface convex
+** across it (geom_power <= 0 from its triangles), whether or not its
+** quadrilateral is convex: the triangulation is then the regular one of
+** the sites it uses.  Any other rule: lot_check. */
+int lot_check_weighted(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
+                       size_t ntri, const rule *r, lot_check_result *out);
+
 int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
                           const uint32_t *seg, size_t nseg, const rule *r,
                           lot_check_result *out);
@@ -286,5 +308,63 @@ int lot_cdf_nonedge(const shape *k, geom_point a, geom_point b, geom_point c);
 int lot_cdf_extract(const geom_point *p, const uint32_t *tri, size_t ntri, const shape *k,
                     lot_cdf *out);
 void lot_cdf_free(lot_cdf *c);
+
+/* ---- options, statistics and checks through verbs (lot/lot_options.c,
+** lot/lot_fields.c) ----
+** For callers that do not compile against this header, such as a binding
+** through a foreign-function interface (python/fliplab: docs/python.md,
+** "How the package talks to the library"): lot_options made, set and
+** checked by verbs, lot_stats and lot_check_result read by the names of
+** their fields, so no such caller restates a layout.  A field added to one
+** of these structures gets its setter here, or its row in lot_fields.c's
+** table (python/tests/test_layout.py finds a field without one). */
+
+/* lot_options_init's defaults for r, on the heap; NULL when out of memory.
+** Free with lot_options_free. */
+lot_options *lot_options_new(const rule *r);
+void lot_options_free(lot_options *o);
+
+/* Set one option.  The arrays are the caller's and must outlive
+** lot_build (segments: 2 input indices each; holes: hole points).  The
+** int setters return 0, or -1 leaving o unchanged for a value outside the
+** type (an algorithm or order that is no enumerator; a tie tolerance that
+** is not a finite number >= 0).  lot_options_set_weights(o, w) joins them
+** with the per-site weights. */
+int lot_options_set_algorithm(lot_options *o, int algorithm);
+int lot_options_set_order(lot_options *o, int order);
+void lot_options_set_seed(lot_options *o, uint64_t seed);
+void lot_options_set_max_flips(lot_options *o, uint64_t max_flips);
+int lot_options_set_tie_eps(lot_options *o, double tie_eps);
+void lot_options_set_segments(lot_options *o, const uint32_t *segments, size_t nsegments);
+void lot_options_set_holes(lot_options *o, const geom_point *holes, size_t nholes);
+void lot_options_set_keep_hull(lot_options *o, int keep_hull);
+
+/* Whether the options make sense together, before lot_build: 0, or -1
+** with a one-line message naming the options by their fields (no flag of
+** the program): an algorithm, order or tie tolerance out of range, an
+** order other than spatial with an algorithm other than incremental
+** (which orders the points itself), keep_hull without a segments or holes
+** array (an empty one counts, as an empty file does in the program).
+** lot_build does not ask it: an order left set for another algorithm is
+** ignored there, as tests and benchmarks rely on. */
+int lot_options_check(const lot_options *o, char *err, size_t errlen);
+
+/* lot_stats by name: lot_stats_field(i) is the name of its i-th field in
+** declaration order (NULL past the last); lot_stats_get_u64 reads element
+** i of a count (size_t, uint64_t, the status as its lot_status value;
+** cycle_quad's elements are 4 q + corner), lot_stats_get_double a time.
+** 0, or -1 for a name that is no field of that type, or i outside it. */
+const char *lot_stats_field(size_t i);
+int lot_stats_get_u64(const lot_stats *s, const char *name, size_t i, uint64_t *out);
+int lot_stats_get_double(const lot_stats *s, const char *name, double *out);
+
+/* A lot_check_result on the heap for lot_check and lot_check_constrained
+** (zero; NULL when out of memory), and its fields by name as
+** lot_stats' (bad_edge's elements are its two ends; valid 0 or 1). */
+lot_check_result *lot_check_result_new(void);
+void lot_check_result_free(lot_check_result *c);
+const char *lot_check_result_field(size_t i);
+int lot_check_result_get_u64(const lot_check_result *c, const char *name, size_t i,
+                             uint64_t *out);
 
 #endif

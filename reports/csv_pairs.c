@@ -1,6 +1,6 @@
 /*
 ** csv_pairs.c: the reader of files of two-field rows (points "x,y",
-** segments "i,j"), through libcsv (report_csv_file): the optional header,
+** segments "i,j") and of one-field rows (weights "w"), through libcsv (report_csv_file): the optional header,
 ** the field count, the growing arrays of rows and their lines, and the
 ** messages about them.  What a row means is its caller's (csv_points.c,
 ** csv_segments.c).
@@ -34,16 +34,25 @@ static int report_pairs_grow(report_pairs_run *u) {
   return 0;
 }
 
+/* The columns as a reader names them: "x,y", or "w". */
+static const char *report_pairs_cols(const report_pairs *r, char *buf, size_t len) {
+  if (r->fields == 1) return r->head[0];
+  snprintf(buf, len, "%s,%s", r->head[0], r->head[1]);
+  return buf;
+}
+
 static int report_pairs_record(char **f, const size_t *len, int nf, uint64_t line, void *data) {
   report_pairs_run *u = data;
   const report_pairs *r = u->r;
   unsigned long long ln = (unsigned long long)line;
-  if (u->records++ == 0 && nf == 2 && strcmp(f[0], r->head[0]) == 0 &&
-      strcmp(f[1], r->head[1]) == 0)
+  int want = r->fields == 1 ? 1 : 2;
+  if (u->records++ == 0 && nf == want && strcmp(f[0], r->head[0]) == 0 &&
+      (want == 1 || strcmp(f[1], r->head[1]) == 0))
     return 0;   /* header */
-  if (nf != 2) {
-    snprintf(r->err, r->errlen, "%s line %llu: expected 2 fields %s,%s, got %d", r->path, ln,
-             r->head[0], r->head[1], nf);
+  if (nf != want) {
+    char cols[64];
+    snprintf(r->err, r->errlen, "%s line %llu: expected %d field%s %s, got %d", r->path, ln,
+             want, want == 1 ? "" : "s", report_pairs_cols(r, cols, sizeof cols), nf);
     return -1;
   }
   unsigned char row[16];   /* r->size bytes, at most 16 (report_internal.h) */
@@ -60,8 +69,9 @@ int report_pairs_read(const report_pairs *r, void **rows, uint64_t **lines, size
   report_pairs_run u = {.r = r};
   int rc = report_csv_file(r->path, report_pairs_record, &u, r->err, r->errlen);
   if (rc == 0 && u.n == 0) {
-    snprintf(r->err, r->errlen, "%s: no %s (expected rows %s,%s)", r->path, r->what, r->head[0],
-             r->head[1]);
+    char cols[64];
+    snprintf(r->err, r->errlen, "%s: no %s (expected rows %s)", r->path, r->what,
+             report_pairs_cols(r, cols, sizeof cols));
     rc = -1;
   }
   if (rc != 0) {

@@ -82,15 +82,6 @@ int report_table_text(FILE *f, const report_meta *m, const report_row *rows,
                       int nrows, int maxcols);
 int report_table_md(FILE *f, const report_meta *m, const report_row *rows, int nrows);
 
-/* The 95% Wilson score interval's half-width for k successes in n, in
-** percentage points; 0 when n == 0.  And its maximum over k for this n. */
-double report_wilson_halfwidth(uint64_t k, uint64_t n);
-double report_wilson_max(uint64_t n);
-
-/* The 95% Wilson score interval [lo, hi] of k successes in n, in percent,
-** clipped to [0, 100]; [0, 100] when n == 0. */
-void report_wilson(uint64_t k, uint64_t n, double *lo, double *hi);
-
 /* Number of type-IV counts among triangle rules (rows with a measure):
 ** theorem 1 says it must be 0. */
 uint64_t report_type_iv(const report_row *rows, int nrows);
@@ -266,6 +257,17 @@ int report_points_read(const char *path, geom_point **out, uint64_t **lines, siz
 ** *lines), -1 on error.  Crossings and overlaps are lot_build's to judge. */
 int report_segments_read(const char *path, size_t npoints, uint32_t **seg, uint64_t **lines,
                          size_t *nseg, char *err, size_t errlen);
+
+/* ---- weight files (reports/csv_weights.c) ---- */
+
+/* Read per-site weights from CSV (path "-": standard input): one row "w"
+** per row of the points file (npoints of them), an optional header line
+** "w".  Errors are one line naming the file and line: a wrong field count,
+** a weight that is not a number or outside the weight contract of geom.h
+** (geom_weight_check), or, naming the file, a count other than npoints.
+** 0 with *w (free it), or -1. */
+int report_weights_read(const char *path, size_t npoints, double **w, char *err,
+                        size_t errlen);
 
 /* ---- Triangle's .poly files (reports/poly.c) ---- */
 

@@ -33,14 +33,16 @@ FLIPLAB_INTERNAL const char *const report_census_header[REPORT_CENSUS_NCOLS];
 
 /* ---- files of two-field rows (reports/csv_pairs.c) ---- */
 
-/* A file of rows "a,b" with an optional header line naming the two
-** columns (head), one row parsed by row into size bytes (at most 16);
+/* A file of rows "a,b" (or "a" when fields is 1; 0 means 2) with an
+** optional header line naming the columns (head), one row parsed by row
+** into size bytes (at most 16);
 ** what names the rows in messages ("points").  row returns 0, or -1 with
 ** its one-line message in r->err.  The reader's own messages name the file
 ** and line: a wrong field count, no rows, memory. */
 typedef struct report_pairs report_pairs;
 struct report_pairs {
   const char *path, *what, *head[2];
+  int fields;           /* 1 or 2 (0: 2) */
   size_t size;
   int (*row)(const report_pairs *r, char **f, const size_t *len, unsigned long long line,
              void *out);
