@@ -34,6 +34,12 @@ static int report_pairs_grow(report_pairs_run *u) {
   return 0;
 }
 
+void report_pairs_shown(const char *f, size_t len, char out[41]) {
+  size_t k = 0;
+  for (; k < len && k < 40; k++) out[k] = (unsigned char)f[k] < 0x20 || f[k] == 0x7f ? '?' : f[k];
+  out[k] = '\0';
+}
+
 /* The columns as a reader names them: "x,y", or "w". */
 static const char *report_pairs_cols(const report_pairs *r, char *buf, size_t len) {
   if (r->fields == 1) return r->head[0];

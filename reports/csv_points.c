@@ -19,8 +19,10 @@ static int report_points_row(const report_pairs *r, char **f, const size_t *len,
   for (int q = 0; q < 2; q++) {
     geom_coorderr ce = geom_coord_parse_n(f[q], len[q], &xy[q]);   /* the coordinate contract */
     if (ce != GEOM_COORD_OK) {
-      snprintf(r->err, r->errlen, "%s line %llu: %s '%.40s' %s", r->path, ln, q ? "y" : "x",
-               f[q], geom_coorderr_str(ce));
+      char shown[41];
+      report_pairs_shown(f[q], len[q], shown);
+      snprintf(r->err, r->errlen, "%s line %llu: %s '%s' %s", r->path, ln, q ? "y" : "x",
+               shown, geom_coorderr_str(ce));
       return -1;
     }
   }

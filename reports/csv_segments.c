@@ -13,14 +13,6 @@
 #include <string.h>
 #include "report_internal.h"
 
-/* At most 40 bytes of a field for a message, control bytes (a quoted
-** field may hold line breaks) shown as '?', so the message stays one line. */
-static void report_segments_shown(const char *f, size_t len, char out[41]) {
-  size_t k = 0;
-  for (; k < len && k < 40; k++) out[k] = (unsigned char)f[k] < 0x20 || f[k] == 0x7f ? '?' : f[k];
-  out[k] = '\0';
-}
-
 /* Field q of a record as a point index: digits only, below npoints. */
 static int report_segments_index(const report_pairs *r, const char *f, size_t len, int q,
                                  unsigned long long ln, uint32_t *out) {
@@ -30,7 +22,7 @@ static int report_segments_index(const report_pairs *r, const char *f, size_t le
   if (geom_count_parse(f, len, &v) != 0) {
     int neg = len > 1 && f[0] == '-' && geom_count_parse(f + 1, len - 1, &v) == 0;
     char shown[41];
-    report_segments_shown(f, len, shown);
+    report_pairs_shown(f, len, shown);
     snprintf(r->err, r->errlen, "%s line %llu: %s '%s' is %s", r->path, ln, name, shown,
              neg ? "negative (point indices are 0-based rows of the points file)"
                  : "not a non-negative integer");

@@ -17,7 +17,9 @@ static int report_weights_row(const report_pairs *r, char **f, const size_t *len
                   : ne == GEOM_NUM_NOT_FINITE ? GEOM_COORD_NOT_FINITE
                   : ne == GEOM_NUM_OUT_OF_RANGE ? GEOM_COORD_OUT_OF_RANGE : GEOM_COORD_NOT_NUMBER;
   if (e != GEOM_COORD_OK) {
-    snprintf(r->err, r->errlen, "%s line %llu: weight '%.40s' %s", r->path, ln, f[0],
+    char shown[41];
+    report_pairs_shown(f[0], len[0], shown);
+    snprintf(r->err, r->errlen, "%s line %llu: weight '%s' %s", r->path, ln, shown,
              geom_weighterr_str(e));
     return -1;
   }

@@ -50,6 +50,9 @@ struct report_pairs {
   char *err;
   size_t errlen;
 };
+/* At most 40 bytes of a field for a message, control bytes (a quoted
+** field may hold line breaks) shown as '?', so the message stays one line. */
+FLIPLAB_INTERNAL void report_pairs_shown(const char *f, size_t len, char out[41]);
 /* 0 with the rows in *rows and their 1-based lines in *lines (when lines
 ** is not NULL; free both), or -1 (nothing to free). */
 FLIPLAB_INTERNAL int report_pairs_read(const report_pairs *r, void **rows, uint64_t **lines,
