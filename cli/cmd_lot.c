@@ -16,12 +16,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
-#include "got.h"
 #include "lot.h"
 #include "measure.h"
 #include "report.h"
 #include "sampler.h"
 #include "shape.h"
+#include "study.h"
 
 #define CMD "lot"
 #define CLI_LOT_MAX_N 1000000000000ull   /* parse bound; memory decides the real one */
@@ -383,194 +383,51 @@ static int cli_lot_compare_dt(const geom_point *p, size_t n, const lot_options *
   return 0;
 }
 
-/* LOT's total (key) against GOT's: equal when the keys are within the sum
-** of their certified error bounds (got_cert_err_of), i.e. floating point
-** cannot tell them apart; without a bound, within the rule's tie tolerance,
-** which the line says. */
-static int cli_lot_got_equal(const rule *r, const got_result *res, double key, double *rel,
-                             int *certified) {
-  double bound = res->cert_err + got_cert_err_of(res, key);
-  *rel = rule_gap(r, key, res->key);
-  *certified = isfinite(bound);
-  return key == res->key ||
-         (*certified ? fabs(key - res->key) <= bound : *rel <= rule_tie_eps(r));
+/* --compare GOT in convex position: the totals and their relation. */
+static void cli_lot_got_line(const rule *r, const study_gotcheck *c) {
+  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, ", c->lot_text,
+         c->got_text, c->equal ? "equal" : "NOT equal", c->rel);
+  if (c->certified) printf("GOT computed to within rounding)\n");
+  else printf("%s the tie tolerance %g; no certified bound: %s)\n", c->equal ? "within" : "beyond",
+              rule_tie_eps(r), c->uncertified);
 }
 
-static void cli_lot_got_verdict(const rule *r, const got_result *res, double key) {
-  char lt[64], gt[64];
-  got_format_total(res, key, lt, sizeof lt);
-  got_format_total(res, res->key, gt, sizeof gt);
-  double rel;
-  int certified, equal = cli_lot_got_equal(r, res, key, &rel, &certified);
-  printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g, ", lt, gt,
-         equal ? "equal" : "NOT equal", rel);
-  if (certified) printf("GOT computed to within rounding)\n");
-  else printf("%s the tie tolerance %g; no certified bound: %s)\n", equal ? "within" : "beyond",
-              rule_tie_eps(r), res->cert_why ? res->cert_why
-                                             : "no forward error bound for the LOT's total");
-}
-
-/* The rules whose GOT is the Delaunay triangulation of a polygon in general
-** position (theorem 3 and appendix A, strictly monotone joints; tests/
-** test_got.c), so the CDT of a simple polygon: their constrained LOT is the
-** GOT itself, triangle for triangle. */
-static const char *const cli_lot_got_is_cdt[] = {"R_1", "R_2", "R_0", "R_-1", "-r_1", "abc_1",
-                                                 "-r/R_1", "-r2/A_0"};
-
-static int cli_lot_got_cdt_rule(const rule *r) {
-  for (size_t k = 0; k < sizeof cli_lot_got_is_cdt / sizeof *cli_lot_got_is_cdt; k++)
-    if (strcmp(rule_name(r), cli_lot_got_is_cdt[k]) == 0) return 1;
-  return 0;
-}
-
-/* The segments as one closed ring through all n points: ring[] the points
-** in ring order from point 0 (nb: 2 n scratch).  0, or a one-line refusal. */
-static int cli_lot_ring(const geom_pslg *in, uint32_t *ring, uint32_t *nb) {
-  size_t n = in->npts;
-  const char *need = "--compare GOT needs a simple polygon: segments forming one closed ring "
-                     "through every point";
-  if (in->nholes) return cli_error(CMD, "%s, no holes (%zu given)", need, in->nholes);
-  if (in->nseg != n) return cli_error(CMD, "%s (%zu segments, %zu points)", need, in->nseg, n);
-  memset(ring, 0, n * sizeof *ring);   /* the degrees, first */
-  for (size_t k = 0; k < 2 * n; k++) {
-    uint32_t v = in->seg[k], w = in->seg[k ^ 1];
-    if (ring[v] == 2) return cli_error(CMD, "%s (point %u is on more than 2 segments)", need, v);
-    nb[2 * v + ring[v]++] = w;
-  }
-  for (size_t v = 0; v < n; v++)
-    if (ring[v] != 2) return cli_error(CMD, "%s (point %zu is on %u segment)", need, v, ring[v]);
-  ring[0] = 0;
-  ring[1] = nb[0];
-  for (size_t i = 2; i < n; i++) {
-    uint32_t cur = ring[i - 1], prev = ring[i - 2];
-    ring[i] = nb[2 * cur] == prev ? nb[2 * cur + 1] : nb[2 * cur];
-    if (ring[i] == 0) return cli_error(CMD, "%s (they form more than one ring)", need);
-  }
-  return 0;
-}
-
-/* The GOT of the ring's polygon (anticlockwise; map[v]: its vertex v's
-** input point), its triangles as input indices in *gt (n - 2 of them). */
-static int cli_lot_ring_got(const geom_point *p, const geom_pslg *in, const rule *r,
-                            const cli_lot_args *a, size_t ntri, got_result *res, uint32_t *gt) {
-  size_t n = in->npts, b1, b2;
-  uint32_t *ring = malloc(n * sizeof *ring), *map = malloc(2 * n * sizeof *map);
-  geom_point *poly = malloc(n * sizeof *poly);
-  char err[512];
-  int rev = 0, rc = ring && map && poly ? cli_lot_ring(in, ring, map) : cli_error(CMD, "out of memory");
-  if (rc == 0 && ntri + 2 != n)
-    rc = cli_error(CMD, "--compare GOT: the LOT has %zu triangles, a triangulation of the "
-                   "polygon %zu (is --keep-hull keeping the outside?)", ntri, n - 2);
-  for (size_t i = 0; rc == 0 && i < n; i++) poly[i] = p[ring[i]];
-  geom_polyerr pe = rc == 0 ? geom_simple_polygon_check(poly, n, &b1, &b2, &rev) : GEOM_OK;
-  if (rc == 0 && pe != GEOM_OK)
-    rc = cli_error(CMD, "--compare GOT: the ring of segments is not a simple polygon: %s",
-                   geom_polyerr_str(pe));
-  for (size_t v = 0; rc == 0 && v < n; v++) map[v] = ring[rev ? (n - v) % n : v];
-  if (rc == 0 && got_check_memory(n, rule_measure(r), err, sizeof err) != 0)
-    rc = cli_error(CMD, "--compare GOT: %s", err);
-  got_options go = {(int)a->threads, rule_tie_eps(r)};
-  if (rc == 0 && got_solve(poly, n, r, &go, res, err, sizeof err) != 0)
-    rc = cli_error(CMD, "%s", err);
-  for (size_t t = 0; rc == 0 && t < res->ntri; t++) {
-    gt[3 * t] = map[res->tri[t].i];
-    gt[3 * t + 1] = map[res->tri[t].k];
-    gt[3 * t + 2] = map[res->tri[t].j];
-  }
-  free(ring);
-  free(map);
-  free(poly);
-  return rc;
-}
-
-/* The relation a constrained LOT of a simple polygon has with its GOT:
-** total >= GOT's (the GOT is the least), and for the rules of
-** cli_lot_got_is_cdt the same triangles.  0 when it holds. */
-static int cli_lot_ring_verdict(const rule *r, const got_result *res, double key,
-                                const lot_diff *df) {
-  char lt[64], gt[64];
-  got_format_total(res, key, lt, sizeof lt);
-  got_format_total(res, res->key, gt, sizeof gt);
-  double rel;
-  int certified, equal = cli_lot_got_equal(r, res, key, &rel, &certified);
-  int below = !equal && key < res->key, same = df->triangles_common == df->triangles_a &&
-                                               df->triangles_a == df->triangles_b;
-  int cdt = cli_lot_got_cdt_rule(r), bad = below || (cdt && !same && !equal);
+/* --compare GOT of a constrained run: the totals, the shared triangles and
+** the relation theory demands (study_gotcheck's failed: a total below the
+** GOT's, or a CDT rule's other triangles with another total). */
+static void cli_lot_ring_line(const study_gotcheck *c) {
   printf("compare GOT: LOT total %s, GOT total %s: %s (relative difference %.3g%s); "
-         "%zu of %zu triangles shared%s\n", lt, gt,
-         below ? "LOT < GOT: FAILED (no triangulation is below the GOT)"
-               : equal ? "LOT = GOT" : "LOT > GOT, as it may be",
-         rel, certified ? ", GOT computed to within rounding" : ", within the tie tolerance",
-         df->triangles_common, df->triangles_b,
-         !cdt ? "" : same ? "; the rule's GOT is the CDT: equal triangles, as it must be"
-                   : equal ? "; equal totals, other triangles (a tie)"
-                           : "; the rule's GOT is the CDT: FAILED, the triangles differ");
-  return bad;
+         "%zu of %zu triangles shared%s\n", c->lot_text, c->got_text,
+         c->below ? "LOT < GOT: FAILED (no triangulation is below the GOT)"
+                  : c->equal ? "LOT = GOT" : "LOT > GOT, as it may be",
+         c->rel, c->certified ? ", GOT computed to within rounding" : ", within the tie tolerance",
+         c->diff.triangles_common, c->diff.triangles_b,
+         !c->got_is_cdt ? ""
+         : c->same      ? "; the rule's GOT is the CDT: equal triangles, as it must be"
+         : c->equal     ? "; equal totals, other triangles (a tie)"
+                        : "; the rule's GOT is the CDT: FAILED, the triangles differ");
 }
 
-/* --compare GOT of a constrained run: the segments must form one simple
-** polygon without holes, whose triangles the LOT must be (no --keep-hull
-** outside). */
-static int cli_lot_compare_ring(const geom_point *p, const geom_pslg *in, const rule *r,
-                                const cli_lot_tri *t, const cli_lot_args *a, int *failed) {
-  size_t n = in->npts;
-  if (!rule_is_triangle(r))
-    return cli_error(CMD, "--compare GOT needs a triangle-based rule (MEASURE_JOINT)");
-  uint32_t *gt = malloc(3 * n * sizeof *gt);
-  got_result res;
-  memset(&res, 0, sizeof res);
-  lot_diff df;
-  int rc = gt ? cli_lot_ring_got(p, in, r, a, t->ntri, &res, gt) : cli_error(CMD, "out of memory");
-  if (rc == 0 && lot_compare(t->tri, t->ntri, gt, res.ntri, &df) != 0)
-    rc = cli_error(CMD, "out of memory");
-  if (rc == 0 && cli_lot_ring_verdict(r, &res, rule_total_key(r, t->bad, t->ntri), &df))
-    *failed = 1;
-  got_result_free(&res);
-  free(gt);
-  return rc;
-}
-
-/* --compare GOT: convex position only. */
-static int cli_lot_compare_got(const geom_point *p, const lot *L, const rule *r,
-                               const double *bad, size_t ntri, const cli_lot_args *a) {
+/* --compare GOT: the LOT against the GOT of its polygon (study_lot_got: the
+** hull of points in convex position, or the ring of a constrained run's
+** segments); *failed when a constrained run breaks the relation. */
+static int cli_lot_compare_got(const geom_pslg *in, const lot *L, const rule *r,
+                               const cli_lot_tri *t, const cli_lot_args *a, int *failed) {
   const lot_stats *st = lot_get_stats(L);
-  if (!rule_is_triangle(r))
-    return cli_error(CMD, "--compare GOT needs a triangle-based rule (MEASURE_JOINT)");
-  size_t h = st->hull;
-  uint32_t *hull = malloc(h * sizeof *hull);
-  geom_point *poly = malloc(h * sizeof *poly);
-  int rc = 0;
+  uint32_t *hull = malloc((st->hull + 1) * sizeof *hull);
+  study_gotcheck c;
   char err[512];
-  size_t bad_v;
-  int rev;
-  got_result res;
-  memset(&res, 0, sizeof res);
-  if (hull == NULL || poly == NULL) {
-    rc = cli_error(CMD, "out of memory");
-    goto done;
-  }
+  if (hull == NULL) return cli_error(CMD, "out of memory");
   lot_get_hull(L, hull);
-  for (size_t i = 0; i < h; i++) poly[i] = p[hull[i]];
-  if (h != st->distinct || geom_polygon_check(poly, h, &bad_v, &rev) != GEOM_OK) {
-    rc = cli_error(CMD, "--compare GOT needs points in strictly convex position (%zu of %zu "
-                   "distinct points are hull corners)", h, st->distinct);
-    goto done;
-  }
-  if (got_check_memory(h, rule_measure(r), err, sizeof err) != 0) {
-    rc = cli_error(CMD, "--compare GOT: %s", err);
-    goto done;
-  }
-  got_options go = {(int)a->threads, rule_tie_eps(r)};
-  if (got_solve(poly, h, r, &go, &res, err, sizeof err) != 0) {
-    rc = cli_error(CMD, "%s", err);
-    goto done;
-  }
-  cli_lot_got_verdict(r, &res, rule_total_key(r, bad, ntri));
-done:
-  got_result_free(&res);
+  int rc = study_lot_got(in, hull, st->hull, t->tri, t->ntri, r, (int)a->threads, &c, err,
+                         sizeof err);
   free(hull);
-  free(poly);
-  return rc;
+  if (rc != 0) return cli_error(CMD, "%s", err);
+  if (c.ring) cli_lot_ring_line(&c);
+  else cli_lot_got_line(r, &c);
+  if (c.ring && c.failed) *failed = 1;
+  study_gotcheck_free(&c);
+  return 0;
 }
 
 /* --cdf: the convex-distance Delaunay graph of the shape of --rule ES:SHAPE,
@@ -736,8 +593,7 @@ static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rul
   cli_lot_summary(r, desc, &o, L, a->tie_eps);
   if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, st) != 0) *failed = 1;
   if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
-  else if (a->compare == 1 && constrained) rc = cli_lot_compare_ring(p, in, r, t, a, failed);
-  else if (a->compare == 1) rc = cli_lot_compare_got(p, L, r, t->bad, t->ntri, a);
+  else if (a->compare == 1) rc = cli_lot_compare_got(in, L, r, t, a, failed);
   if (rc == 0 && single) rc = cli_lot_write(a, p, n, t, dt, ndt, r, constrained);
   lot_free(L);
   free(dt);

@@ -6,17 +6,12 @@
 ** the agreement with Delaunay, verdicts ("not systematic: N
 ** counterexamples", never "proved"), a Delaunay-equivalence check on random
 ** convex quadrilaterals, and witness pentagons for every non-type-I outcome.
-**
-** Determinism.  Pentagon i is sampler_pentagon(seed, i) and quadrilateral i
-** is sampler_quad(seed, i), so every count is independent of the thread
-** count.  The counts are the classify engine's (flipgraph_tally_run);
-** witnesses are the lowest sample indices of each outcome, collected by
-** its per-sample hook: each thread keeps its own lowest K, and the lowest
-** K of their union are the lowest K overall, whichever thread ran what.
+** The studies behind them are the library's (studies/study.h: the same
+** numbers Python's verdicts() returns); this file parses the options and
+** words what they found.  Pentagon i is sampler_pentagon(seed, i) and
+** quadrilateral i is sampler_quad(seed, i): no output depends on --threads.
 */
 #include <errno.h>
-#include <math.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -27,12 +22,9 @@
 #include "rule.h"
 #include "sampler.h"
 #include "report.h"
+#include "study.h"
 
 #define CLI_RULE_MAX 64
-#define CLI_RULE_WITNESS_MAX 100
-
-/* Witness slots: types II, III, IV, V (type I needs none). */
-#define CLI_RULE_WTYPES 4
 
 typedef struct cli_rule_opts {
   uint64_t samples, seed, witnesses, quads, threads;
@@ -43,23 +35,13 @@ typedef struct cli_rule_opts {
   cli_rules rules;            /* the arguments */
 } cli_rule_opts;
 
-typedef struct cli_rule_found {
-  int n;
-  uint64_t idx[CLI_RULE_WITNESS_MAX];
-} cli_rule_found;
-
-typedef struct cli_rule_quadcheck {
-  uint64_t tested, disagree, ties, cocircular;
-  uint64_t first;                     /* lowest disagreeing index, or UINT64_MAX */
-} cli_rule_quadcheck;
-
 #define T cli_rule_opts
 static const cli_option cli_rule_opts_help[] = {
   CLI_OPT_U64("--samples", "N", "random convex pentagons (iteration method), at most 2^40", T,
               samples, 1, 1ull << 40, 100000),
   CLI_OPT_SEED("sampler seed: pentagon i is table34's pentagon i of seed S", T, seed),
   CLI_OPT_U64("--witnesses", "K", "witness pentagons printed per non-type-I outcome, at most 100",
-              T, witnesses, 0, CLI_RULE_WITNESS_MAX, 3),
+              T, witnesses, 0, STUDY_WITNESS_MAX, 3),
   CLI_OPT_STRING("--svg-dir", "DIR", "none", "draw each witness's directed flip graph into DIR",
                  T, svg_dir),
   CLI_OPT_U64("--quads", "M", "random convex quadrilaterals for the Delaunay-equivalence check",
@@ -92,96 +74,13 @@ static const cli_spec cli_rule_spec = {
   "FILE.so rule NAME.  Types and verdicts: docs/classification.md.\n",
   cli_rule_opts_help, CLI_NOPTS(cli_rule_opts_help), cli_rule_positional};
 
-/* ---- statistics ----------------------------------------------------------- */
+/* ---- printing --------------------------------------------------------------- */
 
-static void cli_rule_pct_line(const char *label, uint64_t k, uint64_t n, const char *note) {
-  double lo, hi;
-  report_wilson(k, n, &lo, &hi);
+static void cli_rule_pct_line(const char *label, uint64_t k, uint64_t n, double lo, double hi,
+                              const char *note) {
   printf("  %-5s %10llu  %8.3f%%  [%.3f, %.3f]%s%s\n", label, (unsigned long long)k,
          n ? 100.0 * (double)k / (double)n : 0.0, lo, hi, note ? "  " : "", note ? note : "");
 }
-
-/* ---- pentagons: counts (the classify engine) and witnesses (its hook) ---- */
-
-static int cli_rule_wslot(flipgraph_type t) {
-  return t == FLIPGRAPH_I ? -1 : (int)t - 1;
-}
-
-/* Keep the k lowest indices in f, ascending (insertion: k <= 100). */
-static void cli_rule_keep(cli_rule_found *f, int k, uint64_t idx) {
-  if (f->n == k && (k == 0 || idx >= f->idx[k - 1])) return;
-  int j = f->n < k ? f->n++ : k - 1;
-  for (; j > 0 && f->idx[j - 1] > idx; j--) f->idx[j] = f->idx[j - 1];
-  f->idx[j] = idx;
-}
-
-typedef struct cli_rule_hook {
-  int nrules, k;
-  cli_rule_found *w;   /* [thread][rule][slot] */
-} cli_rule_hook;
-
-static void cli_rule_each(void *ctx, int thread, uint64_t index, const flipgraph_pentagon *p,
-                          const flipgraph *g) {
-  (void)p;
-  cli_rule_hook *h = ctx;
-  cli_rule_found *mine = h->w + (size_t)thread * (size_t)h->nrules * CLI_RULE_WTYPES;
-  for (int r = 0; r < h->nrules; r++) {
-    int s = cli_rule_wslot(g[r].type);
-    if (s >= 0) cli_rule_keep(&mine[r * CLI_RULE_WTYPES + s], h->k, index);
-  }
-}
-
-/* Each thread kept its own lowest K per outcome; the lowest K overall are
-** among them, whichever thread ran which chunk. */
-static int cli_rule_pentagons(const rule *rules, int nrules, const cli_rule_opts *o,
-                              flipgraph_counts *counts, cli_rule_found *found) {
-  int threads = flipgraph_tally_threads((int)o->threads, o->samples);
-  size_t per = (size_t)nrules * CLI_RULE_WTYPES;
-  cli_rule_hook h = {nrules, (int)o->witnesses, calloc((size_t)threads * per, sizeof *h.w)};
-  if (h.w == NULL) return -1;
-  cli_progress prog;
-  cli_progress_start(&prog, "rule");
-  flipgraph_run run = {o->seed, 0, o->samples, o->tie_eps, threads, cli_progress_update, &prog,
-                       cli_rule_each, &h, NULL};
-  int rc = flipgraph_tally_run(rules, nrules, &run, counts);
-  cli_progress_finish(&prog);
-  for (int t = 0; t < threads && rc == 0; t++)
-    for (size_t x = 0; x < per; x++) {
-      const cli_rule_found *src = &h.w[(size_t)t * per + x];
-      for (int i = 0; i < src->n; i++) cli_rule_keep(&found[x], h.k, src->idx[i]);
-    }
-  free(h.w);
-  return rc;
-}
-
-/* ---- quadrilaterals: Delaunay equivalence ------------------------------- */
-
-static void cli_rule_quads(const rule *r, const cli_rule_opts *o, cli_rule_quadcheck *out) {
-  rule dt = rule_delaunay();
-  uint64_t dis = 0, ties = 0, coc = 0, first = UINT64_MAX;
-  int threads = geom_threads_clamp((int)o->threads, omp_get_max_threads());
-#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads) \
-    reduction(+ : dis, ties, coc) reduction(min : first)
-  for (uint64_t i = 0; i < o->quads; i++) {
-    geom_point q[4];
-    sampler_quad(o->seed, i, q);
-    rule_choice d = rule_eval(&dt, q, NULL, NULL);
-    if (d == RULE_EITHER) {
-      coc++;
-      continue;
-    }
-    rule_choice c = rule_eval(r, q, NULL, NULL);
-    if (c == RULE_EITHER) {
-      ties++;
-    } else if (c != d) {
-      dis++;
-      if (i < first) first = i;
-    }
-  }
-  *out = (cli_rule_quadcheck){o->quads, dis, ties, coc, first};
-}
-
-/* ---- printing --------------------------------------------------------------- */
 
 static void cli_rule_describe(const rule *r) {
   if (!rule_is_triangle(r)) {
@@ -195,27 +94,32 @@ static void cli_rule_describe(const rule *r) {
          joint_get(rule_joint(r))->symbol);
 }
 
-/* A type-V pentagon says nothing about systematicity or locality, so the
-** "no counterexample" claims count only the pentagons of types I-IV. */
 /* "1 pentagon", "2 pentagons". */
 static const char *cli_rule_s(unsigned long long n) {
   return n == 1 ? "" : "s";
 }
 
-static void cli_rule_verdicts(const rule *r, const flipgraph_counts *c) {
+/* The "no counterexample" claims count the pentagons of types I-IV only
+** (v->decided): a type-V pentagon says nothing either way. */
+static void cli_rule_verdicts(const study_verdict *v) {
+  const flipgraph_counts *c = &v->counts;
   unsigned long long n = c->samples;
   unsigned long long t2 = c->type[FLIPGRAPH_II], t3 = c->type[FLIPGRAPH_III];
   unsigned long long t4 = c->type[FLIPGRAPH_IV], t5 = c->type[FLIPGRAPH_V];
-  unsigned long long decided = n - t5;
+  unsigned long long decided = v->decided;
   const char *of = t5 ? " of types I-IV" : "";
-  if (t3) printf("  verdict: not systematic: %llu counterexample%s (type III, two LOTs)\n", t3,
-                 cli_rule_s(t3));
-  else printf("  verdict: no counterexample to systematicity in %llu pentagons%s (no type III)\n",
-              decided, of);
-  if (t2) printf("  verdict: not local: %llu counterexample%s (type II)\n", t2, cli_rule_s(t2));
-  else printf("  verdict: no counterexample to locality in %llu pentagons%s (no type II)\n",
-              decided, of);
-  if (t4 && rule_is_triangle(r))
+  if (!v->systematic)
+    printf("  verdict: not systematic: %llu counterexample%s (type III, two LOTs)\n", t3,
+           cli_rule_s(t3));
+  else
+    printf("  verdict: no counterexample to systematicity in %llu pentagons%s (no type III)\n",
+           decided, of);
+  if (!v->local)
+    printf("  verdict: not local: %llu counterexample%s (type II)\n", t2, cli_rule_s(t2));
+  else
+    printf("  verdict: no counterexample to locality in %llu pentagons%s (no type II)\n",
+           decided, of);
+  if (v->sink_bug)
     printf("  verdict: BUG: %llu pentagons without a sink (type IV), impossible for a "
            "triangle-based rule (thesis theorem 1)\n", t4);
   else if (t4)
@@ -223,40 +127,33 @@ static void cli_rule_verdicts(const rule *r, const flipgraph_counts *c) {
   if (t5)
     printf("  verdict: returns either on %llu pentagon%s (type V): ties within tie_eps, which a "
            "good rule hits with probability zero\n", t5, cli_rule_s(t5));
-  if (n > 0 && c->dt == n)
+  if (v->always_delaunay)
     printf("  verdict: agrees with Delaunay on all %llu pentagons\n", n);
 }
 
-static void cli_rule_quad_report(const rule *r, const cli_rule_opts *o,
-                                 const cli_rule_quadcheck *qc) {
-  if (o->quads == 0) return;
+static void cli_rule_quad_report(const rule *r, const study_quadcheck *qc) {
+  const geom_point *q = qc->q;
+  if (qc->tested == 0) return;
   printf("  Delaunay equivalence on %llu random convex quadrilaterals: %llu disagreements, "
          "%llu ties (either), %llu cocircular skipped\n",
          (unsigned long long)qc->tested, (unsigned long long)qc->disagree,
          (unsigned long long)qc->ties, (unsigned long long)qc->cocircular);
-  if (qc->disagree == 0 && qc->ties == 0) {
+  if (qc->equivalent) {
     printf("  verdict: no counterexample to Delaunay equivalence in %llu quadrilaterals\n",
-           (unsigned long long)(qc->tested - qc->cocircular));
+           (unsigned long long)qc->decided);
     return;
   }
   if (qc->disagree == 0) {
     printf("  verdict: not Delaunay-equivalent: either on %llu quadrilaterals where Delaunay "
            "decides (no opposite choice on the other %llu)\n",
-           (unsigned long long)qc->ties,
-           (unsigned long long)(qc->tested - qc->cocircular - qc->ties));
+           (unsigned long long)qc->ties, (unsigned long long)(qc->decided - qc->ties));
     return;
   }
-  geom_point q[4];
-  sampler_quad(o->seed, qc->first, q);
-  double ac, bd;
-  rule dt = rule_delaunay();
-  rule_choice c = rule_eval(r, q, &ac, &bd);
-  rule_choice d = rule_eval(&dt, q, NULL, NULL);
-  printf("  verdict: not Delaunay-equivalent; first disagreement, quadrilateral #%llu "
+  printf("  verdict: not Delaunay-equivalent; first disagreement, quadrilateral #%lld "
          "ABCD = %.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g: rule %s, DT %s",
-         (unsigned long long)qc->first, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x,
-         q[3].y, rule_choice_str(c), rule_choice_str(d));
-  if (rule_is_triangle(r)) printf(" (F_AC = %.17g, F_BD = %.17g)", ac, bd);
+         (long long)qc->first, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y,
+         rule_choice_str(qc->choice), rule_choice_str(qc->dt));
+  if (rule_is_triangle(r)) printf(" (F_AC = %.17g, F_BD = %.17g)", qc->ac, qc->bd);
   printf("\n");
 }
 
@@ -299,13 +196,14 @@ static int cli_rule_svg(const char *path, const rule *r, const cli_rule_opts *o,
 
 /* Witnesses are re-derived from their index with the one-rule reference
 ** path (flipgraph_classify), which must agree with the fast plan. */
-static int cli_rule_witnesses(const rule *r, const cli_rule_opts *o, const cli_rule_found *w) {
+static int cli_rule_witnesses(const rule *r, const cli_rule_opts *o,
+                              const study_witnesses *w) {
   int any = 0;
-  for (int s = 0; s < CLI_RULE_WTYPES; s++) any |= w[s].n > 0;
+  for (int s = FLIPGRAPH_II; s < FLIPGRAPH_NTYPES; s++) any |= w[s].n > 0;
   if (!any || o->witnesses == 0) return 0;
   printf("  witnesses (lowest sample indices; decisions of Q0..Q4, A = diagonal v_{j+1}v_{j+3} "
          "of Q_j, B = v_{j+2}v_{j+4}, E = either; sinks T_i = fan at v_i):\n");
-  for (int s = 0; s < CLI_RULE_WTYPES; s++)
+  for (int s = FLIPGRAPH_II; s < FLIPGRAPH_NTYPES; s++)
     for (int k = 0; k < w[s].n; k++) {
       geom_point v[5];
       flipgraph_pentagon p;
@@ -334,17 +232,20 @@ static int cli_rule_witnesses(const rule *r, const cli_rule_opts *o, const cli_r
   return 0;
 }
 
-static void cli_rule_print(const rule *r, const cli_rule_opts *o, const flipgraph_counts *c) {
+static void cli_rule_print(const rule *r, const cli_rule_opts *o, const study_verdict *v) {
   static const char *const note[FLIPGRAPH_NTYPES] = {
     "one sink, systematic and local here", "one sink, not local", "two sinks, not systematic",
     "no sink", "either returned"};
+  const flipgraph_counts *c = &v->counts;
   cli_rule_describe(r);
   printf("  %llu pentagons (iteration method, seed %llu), tie_eps %g; 95%% Wilson intervals\n",
          (unsigned long long)c->samples, (unsigned long long)o->seed, o->tie_eps);
   printf("  %-5s %10s  %9s  %s\n", "type", "count", "percent", "95% interval");
   for (int t = 0; t < FLIPGRAPH_NTYPES; t++)
-    cli_rule_pct_line(flipgraph_type_name((flipgraph_type)t), c->type[t], c->samples, note[t]);
-  cli_rule_pct_line("DT", c->dt, c->samples, "type I with sink = Delaunay triangulation");
+    cli_rule_pct_line(flipgraph_type_name((flipgraph_type)t), c->type[t], c->samples, v->lo[t],
+                      v->hi[t], note[t]);
+  cli_rule_pct_line("DT", c->dt, c->samples, v->lo[STUDY_ROW_DT], v->hi[STUDY_ROW_DT],
+                    "type I with sink = Delaunay triangulation");
 }
 
 /* ---- the command ------------------------------------------------------------- */
@@ -354,6 +255,24 @@ static int cli_rule_parse(int argc, char **argv, cli_rule_opts *o) {
   int st = cli_options_parse(&cli_rule_spec, argc, argv, o, NULL);
   if (st != 0) return st;
   if (o->rules.n == 0) return cli_error("rule", "no rule given (try: fliplab rule --help)");
+  return 0;
+}
+
+/* The studies of every rule: pentagons (one tally for all rules, with a
+** progress bar) and quadrilaterals.  0, or 1 after the one-line error. */
+static int cli_rule_study(const rule *rules, int nrules, const cli_rule_opts *o,
+                          study_verdict *v, study_quadcheck *qc) {
+  char err[256];
+  cli_progress prog;
+  cli_progress_start(&prog, "rule");
+  flipgraph_run run = {o->seed, 0, o->samples, o->tie_eps, (int)o->threads, cli_progress_update,
+                       &prog, NULL, NULL, NULL};
+  int rc = study_pentagons(rules, nrules, &run, (int)o->witnesses, v);
+  cli_progress_finish(&prog);
+  if (rc != 0) return fprintf(stderr, "fliplab rule: out of memory\n"), 1;
+  for (int r = 0; r < nrules; r++)
+    if (study_quads(&rules[r], o->seed, o->quads, (int)o->threads, &qc[r], err, sizeof err) != 0)
+      return cli_error("rule", "%s", err), 1;
   return 0;
 }
 
@@ -367,36 +286,23 @@ int cli_cmd_rule(int argc, char **argv) {
   if (o.svg_dir != NULL && mkdir(o.svg_dir, 0777) != 0 && errno != EEXIST)
     return cli_error("rule", "cannot create --svg-dir '%s': %s", o.svg_dir, strerror(errno));
 
-  flipgraph_counts *counts = calloc((size_t)nrules, sizeof *counts);
-  cli_rule_found *found = calloc((size_t)nrules * CLI_RULE_WTYPES, sizeof *found);
-  cli_rule_quadcheck *qc = calloc((size_t)nrules, sizeof *qc);
-  if (counts == NULL || found == NULL || qc == NULL ||
-      cli_rule_pentagons(rules, nrules, &o, counts, found) != 0) {
-    free(counts);
-    free(found);
-    free(qc);
-    fprintf(stderr, "fliplab rule: out of memory\n");
-    return 1;
-  }
-  for (int r = 0; r < nrules; r++) cli_rule_quads(&rules[r], &o, &qc[r]);
-  if (cli_userdefs_failed("rule")) {
-    rc = 1;
-    goto out;
-  }
+  study_verdict *v = calloc((size_t)nrules, sizeof *v);
+  study_quadcheck *qc = calloc((size_t)nrules, sizeof *qc);
+  if (v == NULL || qc == NULL) rc = (fprintf(stderr, "fliplab rule: out of memory\n"), 1);
+  else rc = cli_rule_study(rules, nrules, &o, v, qc);
+  if (rc == 0 && cli_userdefs_failed("rule")) rc = 1;
   for (int r = 0; r < nrules && rc == 0; r++) {
     if (r > 0) printf("\n");
-    cli_rule_print(&rules[r], &o, &counts[r]);
-    cli_rule_verdicts(&rules[r], &counts[r]);
-    cli_rule_quad_report(&rules[r], &o, &qc[r]);
+    cli_rule_print(&rules[r], &o, &v[r]);
+    cli_rule_verdicts(&v[r]);
+    cli_rule_quad_report(&rules[r], &qc[r]);
     rc = cli_rule_sites(&rules[r], o.sites, o.site_samples, o.seed, o.tie_eps, (int)o.threads,
                         o.svg_dir);
-    if (rc == 0) rc = cli_rule_witnesses(&rules[r], &o, &found[(size_t)r * CLI_RULE_WTYPES]);
+    if (rc == 0) rc = cli_rule_witnesses(&rules[r], &o, v[r].witness);
   }
   if (rc == 0 && cli_userdefs_failed("rule")) rc = 1;
-out:
   fflush(stdout);
-  free(counts);
-  free(found);
+  free(v);
   free(qc);
   return rc;
 }

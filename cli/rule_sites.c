@@ -6,7 +6,8 @@
 ** sets, by default five-site disc sets (most have an interior site) and
 ** convex hexagons (section 7.3's next step), and the first set with two
 ** or more sinks is printed as a witness that `fliplab flipgraph` reads
-** back bit for bit.
+** back bit for bit.  The census and the witness are the library's
+** (study_sites); this file parses --sites and words them.
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +17,7 @@
 #include "rule.h"
 #include "sampler.h"
 #include "siteflip.h"
+#include "study.h"
 
 #define CLI_SITES_MAX 8
 
@@ -120,30 +122,25 @@ static int cli_sites_witness(const rule *r, const cli_site_spec *s, int64_t idx,
 
 static int cli_sites_one(const rule *r, const cli_site_spec *s, uint64_t samples, uint64_t seed,
                          double tie_eps, int threads, const char *svg_dir) {
-  siteflip_counts c = {0};
+  study_sitecheck c;
   char err[256], what[64];
-  if (siteflip_census(r, 1, s->sampler, s->n, seed, 0, samples, tie_eps, threads, 0, &c,
-                      NULL, NULL, NULL, err, sizeof err) != 0)
+  if (study_sites(r, s->sampler, s->n, seed, samples, tie_eps, threads, &c, err, sizeof err) != 0)
     return cli_error("rule", "%s", err), 1;
   cli_sites_words(what, sizeof what, s);
-  unsigned long long m = c.samples, decided = c.samples - c.tie;
-  if (c.multi_sink > 0) {
+  unsigned long long m = c.counts.samples, tie = c.counts.tie, none = c.counts.no_sink;
+  if (!c.systematic) {
     printf("  verdict: not systematic: %llu %s with two or more LOTs among %llu %s%s\n",
-           (unsigned long long)c.multi_sink, strchr(what, ' ') + 1, m, what,
+           (unsigned long long)c.counts.multi_sink, strchr(what, ' ') + 1, m, what,
            s->sampler != SAMPLER_SITES_CONVEX && s->n == 5 ? " (figure 3.8's kind)" : "");
-    geom_point p[SITEFLIP_MAX_SITES];
-    int64_t idx = siteflip_find_multi(r, s->sampler, s->n, seed, 0, samples, tie_eps, p);
-    if (idx >= 0 && cli_sites_witness(r, s, idx, p, tie_eps, svg_dir) != 0) return 1;
+    if (c.witness >= 0 && cli_sites_witness(r, s, c.witness, c.sites, tie_eps, svg_dir) != 0)
+      return 1;
   } else {
     printf("  verdict: no counterexample to systematicity in %llu %s%s (no set with two LOTs)\n",
-           decided, what, c.tie ? " without a tie" : "");
+           (unsigned long long)c.decided, what, tie ? " without a tie" : "");
   }
-  if (c.no_sink > 0)
-    printf("  verdict: no LOT at all on %llu of the %llu %s (no sink)\n",
-           (unsigned long long)c.no_sink, m, what);
-  if (c.tie > 0)
-    printf("  verdict: returns either on %llu of the %llu %s\n", (unsigned long long)c.tie, m,
-           what);
+  if (none > 0)
+    printf("  verdict: no LOT at all on %llu of the %llu %s (no sink)\n", none, m, what);
+  if (tie > 0) printf("  verdict: returns either on %llu of the %llu %s\n", tie, m, what);
   return 0;
 }
 

@@ -301,3 +301,32 @@ double rule_gap(const rule *r, double key1, double key2) {
   if (!isfinite(m) || !isfinite(d)) return 1;
   return m > 0 ? d / m : 0;
 }
+
+/* ---- what a rule's GOT is ---------------------------------------------- */
+
+/* The triangle rules whose GOT of a simple polygon is its constrained
+** Delaunay triangulation.  Each decides every convex quadrilateral as DT
+** does (table 3.4, tests/test_delaunay_equiv.c) with a strictly monotone
+** joint, so a flip that improves a quadrilateral's pair improves the
+** polygon's total: a GOT is locally optimal, and the only triangulation of
+** a polygon in general position that is locally optimal for DT is its CDT.
+** R_-inf, R_inf and -alpha_inf are DT-equivalent too, but a total that is
+** a min or a max ignores all triangles but one, so their GOT need not be
+** locally optimal (the CDT attains the optimum of R_inf and -alpha_inf
+** without being the only optimum, tests/test_got.c). */
+static const struct {
+  int measure;
+  joint_id joint;
+} rule_got_cdt[] = {
+  {MEASURE_R, JOINT_SUM},          {MEASURE_R, JOINT_RSS},
+  {MEASURE_R, JOINT_PRODUCT},      {MEASURE_R, JOINT_HARMONIC},
+  {MEASURE_NEG_R, JOINT_SUM},      {MEASURE_ABC, JOINT_SUM},
+  {MEASURE_NEG_R_OVER_R, JOINT_SUM}, {MEASURE_NEG_R2_OVER_A, JOINT_PRODUCT},
+};
+
+int rule_got_is_cdt(const rule *r) {
+  for (size_t k = 0; r->kind == RULE_TRIANGLE && k < sizeof rule_got_cdt / sizeof *rule_got_cdt;
+       k++)
+    if (r->measure == rule_got_cdt[k].measure && r->joint == rule_got_cdt[k].joint) return 1;
+  return 0;
+}

@@ -214,4 +214,11 @@ double rule_total_key(const rule *r, const double *bad, size_t n);
 ** so that products beyond the range of a double still have a gap. */
 double rule_gap(const rule *r, double key1, double key2);
 
+/* ---- what a rule's GOT is ----------------------------------------------
+** 1 when the rule's GOT of every simple polygon in general position is the
+** polygon's constrained Delaunay triangulation (theorem 3 and appendix A:
+** R_1, R_2, R_0, R_-1, -r_1, abc_1, -r/R_1, -r2/A_0, docs/lot.md), so that
+** its constrained LOT, the CDT, must have the GOT's triangles; else 0. */
+int rule_got_is_cdt(const rule *r);
+
 #endif

@@ -4,12 +4,12 @@
 ** rules that produced type-V graphs and a check that none produced type IV.
 ** Percentages are of all samples (the thesis's convention).
 */
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "measure.h"
 #include "joint.h"
 #include "report_internal.h"
+#include "study.h"
 
 
 /* The four rows of a joint block: label and which count they show. */
@@ -18,8 +18,6 @@ static const struct { const char *label; int type; } report_blockrows[] = {
   {"DT", REPORT_ROW_DT}, {"I", FLIPGRAPH_I}, {"II", FLIPGRAPH_II}, {"III", FLIPGRAPH_III},
 };
 #define REPORT_NBLOCKROWS 4
-
-#define REPORT_Z95 1.959963984540054   /* the 97.5% normal quantile */
 
 int report_format_parse(const char *s, report_format *out) {
   static const struct { const char *name; report_format f; } names[] = {
@@ -39,40 +37,6 @@ void report_row_from_rule(report_row *row, const rule *r, const flipgraph_counts
   snprintf(row->joint, sizeof row->joint, "%s", rule_joint_name(r));
   snprintf(row->rule, sizeof row->rule, "%s", rule_name(r));
   if (c != NULL) row->c = *c;
-}
-
-/* Centre and half-width of the 95% Wilson score interval, as fractions. */
-static void report_wilson_parts(uint64_t k, uint64_t n, double *centre, double *half) {
-  double z = REPORT_Z95, nn = (double)n, p = (double)k / nn;
-  double den = 1 + z * z / nn;
-  *centre = (p + z * z / (2 * nn)) / den;
-  *half = z / den * sqrt(p * (1 - p) / nn + z * z / (4 * nn * nn));
-}
-
-double report_wilson_halfwidth(uint64_t k, uint64_t n) {
-  if (n == 0) return 0;
-  double centre, half;
-  report_wilson_parts(k, n, &centre, &half);
-  return 100 * half;
-}
-
-void report_wilson(uint64_t k, uint64_t n, double *lo, double *hi) {
-  if (n == 0) {
-    *lo = 0;
-    *hi = 100;
-    return;
-  }
-  double centre, half;
-  report_wilson_parts(k, n, &centre, &half);
-  *lo = 100 * fmax(0, centre - half);
-  *hi = 100 * fmin(1, centre + half);
-}
-
-double report_wilson_max(uint64_t n) {
-  /* The half-width grows with p(1-p), so p = 1/2 is the worst case. */
-  if (n == 0) return 0;
-  double z = REPORT_Z95, nn = (double)n;
-  return 100 * z / (1 + z * z / nn) * sqrt(0.25 / nn + z * z / (4 * nn * nn));
 }
 
 uint64_t report_type_iv(const report_row *rows, int nrows) {
@@ -186,7 +150,7 @@ static void report_header_lines(FILE *f, const report_meta *m, int md) {
   if (m->note) fprintf(f, "%s%s", m->note, sep);
   fprintf(f, "Percentages of all samples (95%% Wilson half-width at most %.2f points).%s"
              "Row DT: type I with the Delaunay triangulation as sink.\n",
-          report_wilson_max(m->samples), sep);
+          study_wilson_max(m->samples), sep);
 }
 
 /* ------------------------------------------------------------- footer */

@@ -1,9 +1,9 @@
 /*
 ** test_report.c: the reports module on its own: CSV quoting and reading
 ** through libcsv (round trips, every malformed-input error naming its file
-** and line), summing shards, the Wilson half-width (checked against the
-** score equation that defines it), the text / Markdown tables' layout, the
+** and line), summing shards, the text / Markdown tables' layout, the
 ** scatter plot's points and the pentagon files (bit-exact round trip).
+** (The Wilson interval the tables' header cites: test_study.c.)
 */
 #define _POSIX_C_SOURCE 200809L
 #include <stdarg.h>
@@ -214,31 +214,6 @@ static void test_rows_add(void **state) {
   assert_non_null(strstr(err, "b.csv"));
   assert_memory_equal(sum, a, sizeof a);
   assert_int_equal(report_rows_add(sum, n, b, n - 1, "b.csv", err, sizeof err), -1);
-}
-
-/* The Wilson interval is {p : |k/n - p| <= z sqrt(p(1-p)/n)}: its end points
-** solve the score equation with equality. */
-static void test_wilson(void **state) {
-  (void)state;
-  const double z = 1.959963984540054;
-  static const uint64_t ns[] = {10, 137, 5000, 1000000};
-  for (size_t a = 0; a < sizeof ns / sizeof ns[0]; a++) {
-    uint64_t n = ns[a];
-    for (uint64_t k = 0; k <= n; k += n / 7 + 1) {
-      double ph = (double)k / (double)n, nn = (double)n;
-      double centre = (ph + z * z / (2 * nn)) / (1 + z * z / nn);
-      double h = report_wilson_halfwidth(k, n) / 100;
-      for (int s = -1; s <= 1; s += 2) {
-        double p = centre + s * h;
-        double lhs = (ph - p) * (ph - p), rhs = z * z * p * (1 - p) / nn;
-        assert_true(fabs(lhs - rhs) <= 1e-12 + 1e-9 * rhs);
-      }
-      assert_true(report_wilson_halfwidth(k, n) <= report_wilson_max(n) + 1e-12);
-    }
-  }
-  /* The familiar figure: 5000 samples, p = 1/2: about 1.39 points. */
-  assert_true(fabs(report_wilson_max(5000) - 1.3853) < 1e-3);
-  assert_true(report_wilson_max(0) == 0);
 }
 
 /* Text: every measure, every joint block with its four rows, the exact
@@ -520,7 +495,6 @@ int main(void) {
     cmocka_unit_test(test_csv_counts_roundtrip),
     cmocka_unit_test(test_csv_counts_errors),
     cmocka_unit_test(test_rows_add),
-    cmocka_unit_test(test_wilson),
     cmocka_unit_test(test_text_table),
     cmocka_unit_test(test_text_groups),
     cmocka_unit_test(test_md_table),

@@ -31,8 +31,8 @@ lib.flipgraph_classify_n.argtypes = [_lib.Point_p, ctypes.c_size_t, _lib.Rule_p,
                                      ctypes.POINTER(ctypes.c_size_t)]
 lib.geom_polyerr_str.restype = ctypes.c_char_p
 lib.geom_polyerr_str.argtypes = [ctypes.c_int]
-lib.report_wilson.restype = None
-lib.report_wilson.argtypes = [ctypes.c_uint64, ctypes.c_uint64, ctypes.POINTER(ctypes.c_double),
+lib.study_wilson.restype = None
+lib.study_wilson.argtypes = [ctypes.c_uint64, ctypes.c_uint64, ctypes.POINTER(ctypes.c_double),
                               ctypes.POINTER(ctypes.c_double)]
 lib.siteflip_find_multi.restype = ctypes.c_int64
 lib.siteflip_find_multi.argtypes = [_lib.Rule_p, ctypes.c_int, ctypes.c_int, ctypes.c_uint64,
@@ -81,9 +81,9 @@ def classify(pentagons, rules="DT", tie_eps=None, threads=0):
 
 def wilson(k, n):
     """The 95% Wilson score interval of k successes in n, in percent, as the
-    program prints it (report_wilson)."""
+    program prints it (study_wilson)."""
     lo, hi = ctypes.c_double(), ctypes.c_double()
-    lib.report_wilson(int(k), int(n), ctypes.byref(lo), ctypes.byref(hi))
+    lib.study_wilson(int(k), int(n), ctypes.byref(lo), ctypes.byref(hi))
     return lo.value, hi.value
 
 

@@ -1,0 +1,185 @@
+/*
+** study.h: the lab's studies of a flip rule, as numbers (docs/classification.md,
+** docs/lot.md).
+**
+** What `fliplab rule` and `fliplab lot --compare GOT` conclude is computed
+** here, once, for every front end: the program and the Python package only
+** parse their arguments and word or return what these calls fill in.
+**   - study_pentagons: the flip-graph types of random convex pentagons, their
+**     95% Wilson intervals, the verdicts (systematic: no type III; local: no
+**     type II) and the witnesses of the lowest sample indices;
+**   - study_quads: Delaunay equivalence on random convex quadrilaterals;
+**   - study_sites: systematicity on other random site sets (the census);
+**   - study_lot_got: a LOT's total against the GOT's of the same polygon
+**     (strictly convex points, or segments forming one simple polygon), and
+**     for the rules whose GOT is the CDT (rule_got_is_cdt) their triangles.
+** Every count is the same for any thread count.  Random samples give
+** evidence, not proof: a verdict is "no counterexample in N", never "proved".
+**
+** Front ends that read no C layout (python/) read the results through
+** study_size, study_field_name, study_field and study_field_text: each
+** result's numbers by name, from one table per kind.
+*/
+#ifndef FLIPLAB_STUDY_H
+#define FLIPLAB_STUDY_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "flipgraph.h"
+#include "geom.h"
+#include "got.h"
+#include "lot.h"
+#include "rule.h"
+#include "siteflip.h"
+
+/* ---- intervals ----------------------------------------------------------
+** The 95% Wilson score interval of k successes in n, in percent, clipped
+** to [0, 100] ([0, 100] when n == 0): it behaves at 0% and 100%, where
+** the normal approximation does not.  Its half-width in percentage points
+** (0 when n == 0), and the largest half-width over k for this n. */
+void study_wilson(uint64_t k, uint64_t n, double *lo, double *hi);
+double study_wilson_halfwidth(uint64_t k, uint64_t n);
+double study_wilson_max(uint64_t n);
+
+/* ---- pentagons ---------------------------------------------------------- */
+
+#define STUDY_WITNESS_MAX 100
+/* The rows of a verdict's intervals: the five types, then DT. */
+#define STUDY_ROW_DT FLIPGRAPH_NTYPES
+#define STUDY_ROWS (FLIPGRAPH_NTYPES + 1)
+
+/* The lowest sample indices of one outcome, ascending. */
+typedef struct study_witnesses {
+  int n;
+  uint64_t idx[STUDY_WITNESS_MAX];
+} study_witnesses;
+
+/* A rule's verdicts on random convex pentagons.  A type-V pentagon (a tie)
+** says nothing about systematicity or locality, so `decided` counts the
+** pentagons of types I-IV, the ones a "no counterexample" claim rests on. */
+typedef struct study_verdict {
+  flipgraph_counts counts;
+  double lo[STUDY_ROWS], hi[STUDY_ROWS];   /* 95% Wilson intervals, percent */
+  uint64_t decided;        /* pentagons of types I-IV */
+  int systematic;          /* no type III (two LOTs) */
+  int local;               /* no type II */
+  int sink_bug;            /* type IV under a triangle rule: impossible (thesis
+                           ** theorem 1), so a bug; for another rule: no LOT */
+  int always_delaunay;     /* every pentagon type I with the Delaunay sink */
+  study_witnesses witness[FLIPGRAPH_NTYPES];   /* per type; none for type I */
+} study_verdict;
+
+/* The verdicts of counts c under rule r (witnesses untouched). */
+void study_verdict_of(const rule *r, const flipgraph_counts *c, study_verdict *v);
+
+/* Classify pentagons run->first .. +count of run->seed's stream
+** (flipgraph_tally_run; its hook fields are this call's own and ignored)
+** under every rule, keeping the lowest `witnesses` (0 .. STUDY_WITNESS_MAX)
+** sample indices of each type but I, and fill out[0..nrules-1].  Each thread
+** keeps its own lowest K per outcome and the lowest K of their union are the
+** lowest K overall, so nothing depends on the thread count.  0, or -1 when
+** the tally refuses (flipgraph_tally_run) or memory runs out. */
+int study_pentagons(const rule *rules, int nrules, const flipgraph_run *run, int witnesses,
+                    study_verdict *out);
+
+/* ---- quadrilaterals: Delaunay equivalence ------------------------------- */
+
+/* Rule r against DT on quadrilaterals 0 .. tested-1 of sampler_quad(seed):
+** those where DT ties (four cocircular points) are skipped, a rule's tie
+** where DT decides is counted apart from a disagreement. */
+typedef struct study_quadcheck {
+  uint64_t tested, disagree, ties, cocircular;
+  uint64_t decided;        /* tested - cocircular: where DT decides */
+  int equivalent;          /* no disagreement and no tie: no counterexample */
+  int64_t first;           /* lowest disagreeing index, -1 when none */
+  geom_point q[4];         /* quadrilateral #first */
+  rule_choice choice, dt;  /* the rule's and DT's decision on it */
+  double ac, bd;           /* a triangle rule's joint values on it (else NaN) */
+} study_quadcheck;
+
+/* O(tested) rule evaluations, OpenMP over quadrilaterals.  threads: 0 for
+** all cores or 1 .. GEOM_MAX_THREADS; 0, or -1 with err for another count. */
+int study_quads(const rule *r, uint64_t seed, uint64_t tested, int threads,
+                study_quadcheck *out, char *err, size_t errlen);
+
+/* ---- other site sets ----------------------------------------------------
+** Convex pentagons cannot show every failure (thesis section 3.5: -R_1 is
+** type I on every pentagon, yet has two LOTs on a square with a site
+** inside), so a study also runs the census of other site sets. */
+typedef struct study_sitecheck {
+  int sampler, n;          /* a sampler_sites_kind and its site count */
+  siteflip_counts counts;
+  uint64_t decided;        /* sets without a tie */
+  int systematic;          /* no set with two or more sinks (LOTs) */
+  int64_t witness;         /* the lowest such set's index, -1 when none */
+  geom_point sites[SITEFLIP_MAX_SITES];   /* its sites */
+} study_sitecheck;
+
+/* The census of sets 0 .. samples-1 of sampler (n sites, seed) under r
+** (siteflip_census; its cost and thread contract) and its first witness.
+** 0, or -1 with err. */
+int study_sites(const rule *r, int sampler, int n, uint64_t seed, uint64_t samples,
+                double tie_eps, int threads, study_sitecheck *out, char *err, size_t errlen);
+
+/* ---- a LOT against the GOT ----------------------------------------------
+** The GOT is the least total over all triangulations of the polygon, so a
+** triangle rule's LOT totals at least the GOT's.  Totals are compared as
+** keys (rule_total_key): equal when within the sum of their certified error
+** bounds (got_cert_err_of), where floating point cannot tell them apart;
+** where no bound is known, within the rule's tie tolerance. */
+typedef struct study_gotcheck {
+  got_result got;          /* the polygon's GOT (freed by study_gotcheck_free) */
+  int ring;                /* the polygon is a constrained run's ring of segments
+                           ** (else the points' hull, in strictly convex position) */
+  size_t n;                /* the polygon's vertices */
+  uint32_t *tri;           /* the GOT's n - 2 triangles as input point indices */
+  double lot_key;          /* the LOT's total as a key (the GOT's: got.key) */
+  double lot_total;        /* in badness units (rule_unkey; the GOT's: got.total) */
+  char lot_text[64], got_text[64];   /* both totals as got prints them */
+  double rel;              /* relative difference of the totals (rule_gap) */
+  int certified;           /* told by certified bounds (else by the tie tolerance) */
+  const char *uncertified; /* why not (a static string), NULL when certified */
+  int equal;               /* LOT total = GOT total */
+  int below;               /* LOT total < GOT total: impossible, a failure */
+  lot_diff diff;           /* the LOT's triangles (a) against the GOT's (b) */
+  int same;                /* the same triangles */
+  int got_is_cdt;          /* rule_got_is_cdt: the triangles must be the same */
+  int failed;              /* below, or a CDT rule's other triangles with other totals */
+} study_gotcheck;
+
+/* The LOT tri[0..ntri-1] (anticlockwise triangles of input indices, as
+** lot_get_triangles gives them) of in's points under the triangle rule r,
+** against the GOT of its polygon: with segments or holes in `in`, the
+** simple polygon its segments form (one closed ring through every point,
+** no holes; the LOT must triangulate it); without, the points' hull
+** (hull[0..nhull-1], lot_get_hull), which must be every distinct point, in
+** strictly convex position.  Costs got_solve's Theta(n^3) and threads.
+** 0, or -1 with a one-line err (out then needs no freeing). */
+int study_lot_got(const geom_pslg *in, const uint32_t *hull, size_t nhull, const uint32_t *tri,
+                  size_t ntri, const rule *r, int threads, study_gotcheck *out, char *err,
+                  size_t errlen);
+void study_gotcheck_free(study_gotcheck *c);
+
+/* ---- reading results by name ---------------------------------------------
+** kind is "verdict", "quadcheck", "sitecheck" or "gotcheck" (the struct
+** study_KIND).  study_size: its size in bytes (0 for another kind).
+** study_field_name: the name of its field i (NULL past the last; counts
+** keep their flipgraph_counts or siteflip_counts names, intervals are
+** lo_ROW and hi_ROW); study_field_type: its type, 'u' a count, 'i' a
+** signed integer, 'b' a flag, 'd' a real, 's' a text (0 past the last);
+** study_field: field i of res as a double (exact for integers up to 2^53;
+** NaN for a text); study_field_text: a text field ("" for none; NULL for
+** another type).  The arrays: study_witness, the k-th witness index of type t
+** (-1 past the last); study_witness_sites, a sitecheck's witness set
+** into out (room for n sites; returns n, or 0 without a witness);
+** study_got_triangles, a gotcheck's 3 (n - 2) GOT vertex indices. */
+size_t study_size(const char *kind);
+const char *study_field_name(const char *kind, int i);
+int study_field_type(const char *kind, int i);
+double study_field(const char *kind, const void *res, int i);
+const char *study_field_text(const char *kind, const void *res, int i);
+int64_t study_witness(const study_verdict *v, int t, int k);
+int study_witness_sites(const study_sitecheck *s, geom_point *out);
+const uint32_t *study_got_triangles(const study_gotcheck *c);
+
+#endif
