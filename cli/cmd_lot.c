@@ -201,7 +201,7 @@ static int cli_lot_rules(const cli_lot_args *a, rule **r) {
   const char *one_only = a->out ? "--out" : a->cdf ? "--cdf" : a->shade ? "--shade" : NULL;
   if (n > 1 && one_only)
     cli_error(CMD, "%s takes one rule, not a list of %d (--rule '%s')", one_only, n, a->rule);
-  else if (a->cdf && strncmp(rule_name(&(*r)[0]), "ES:", 3) != 0)
+  else if (a->cdf && !rule_is_shape(&(*r)[0]))
     cli_error(CMD, "--cdf needs an empty-shape rule (--rule ES:SHAPE), not '%s'", a->rule);
   else if (a->cdf && (a->segments || a->holes || a->poly))
     cli_error(CMD, "--cdf takes an unconstrained run: the convex-distance Delaunay graph "
@@ -430,16 +430,12 @@ static int cli_lot_compare_got(const geom_pslg *in, const lot *L, const rule *r,
   return 0;
 }
 
-/* --cdf: the convex-distance Delaunay graph of the shape of --rule ES:SHAPE,
-** its count line and its CSV. */
-static int cli_lot_cdf(const cli_lot_args *a, const geom_point *p, const uint32_t *tri,
-                       size_t ntri, lot_cdf *g) {
-  shape *k = NULL;
-  char err[512];
-  if (shape_parse(a->rule + 3, &k, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
-  int rc = lot_cdf_extract(p, tri, ntri, k, g);
-  shape_free(k);
-  if (rc != 0) return cli_error(CMD, "out of memory");
+/* --cdf: the convex-distance Delaunay graph of the shape of --rule ES:SHAPE
+** (the rule's own, rule_shape), its count line and its CSV. */
+static int cli_lot_cdf(const cli_lot_args *a, const rule *r, const geom_point *p,
+                       const uint32_t *tri, size_t ntri, lot_cdf *g) {
+  if (lot_cdf_extract(p, tri, ntri, rule_shape(r), g) != 0)
+    return cli_error(CMD, "out of memory");
   FILE *f = cli_open_out(CMD, a->cdf);
   if (f == NULL) return 2;
   printf("cdf: %zu triangles, %zu extra edges (%zu triangles dropped)\n", g->triangles,
@@ -474,7 +470,7 @@ static int cli_lot_write(const cli_lot_args *a, const geom_point *p, size_t n,
                          int constrained) {
   lot_cdf g;
   memset(&g, 0, sizeof g);
-  int rc = a->cdf ? cli_lot_cdf(a, p, t->tri, t->ntri, &g) : 0;
+  int rc = a->cdf ? cli_lot_cdf(a, r, p, t->tri, t->ntri, &g) : 0;
   if (rc == 0 && a->out) {
     FILE *f = cli_open_out(CMD, a->out);
     if (f == NULL) rc = 2;

@@ -1,8 +1,9 @@
 /*
 ** rule_shape.c: empty-shape rules, named "ES:SPEC" (SPEC a shape of
-** geom/shape.h, docs/emptyshape.md): a whole-quadrilateral rule whose
+** shapes/shape.h, docs/emptyshape.md): a whole-quadrilateral rule whose
 ** context is the parsed shape, registered the first time rule_parse meets
-** the name and found in the registry afterwards.
+** the name and found in the registry afterwards.  The rule owns its shape,
+** parsed once here: every other part asks rule_shape for it.
 */
 #include <stdio.h>
 #include <stdlib.h>

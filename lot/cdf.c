@@ -18,7 +18,10 @@ typedef struct lot_cdf_rec {
 } lot_cdf_rec;
 
 int lot_cdf_nonedge(const shape *k, geom_point a, geom_point b, geom_point c) {
-  if (k->kind != SHAPE_POLYGON) return -1;
+  switch (k->kind) {
+  case SHAPE_ELLIPSE: return -1;   /* smooth: every triangle has a homothet */
+  case SHAPE_POLYGON: break;
+  }
   int ab = shape_support(k, a, b), bc = shape_support(k, b, c), ca = shape_support(k, c, a);
   if (ab == bc) return 2;
   if (ab == ca) return 1;

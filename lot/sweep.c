@@ -1,7 +1,8 @@
 /*
 ** sweep.c: the sweepline algorithm (thesis sections 2.5.1 and 4.1.1) for
 ** lot --algorithm sweep, written against the primitives of a shape
-** (sweep_internal.h; the circle's give the Delaunay triangulation).
+** (shapes/shape_sweep_internal.h; the circle's give the Delaunay
+** triangulation).
 **
 ** A vertical line sweeps the sites from left to right.  Its status is the
 ** boundary of the part of the triangulation that is certain whatever lies
@@ -39,7 +40,7 @@
 ** equal keys is a valid sweep (at that key each of the configurations is
 ** a true status), and this one is fixed, so cocircular sites give one
 ** reproducible valid triangulation.  The "above" test and the closing test
-** are exact (sweep_circle.c), so every decision is the exact one.
+** are exact (shapes/shape_sweep_*.c), so every decision is the exact one.
 **
 ** Adjacency: every edge made (by a site event, or as the new edge AC of a
 ** circumshape event) has a record with two slots, one per side; a boundary
@@ -86,7 +87,7 @@ typedef struct sw_hint {
 
 typedef struct lot_sweep {
   lot_mesh *m;
-  const lot_sweep_shape *s;
+  const shape_sweep *s;
   sw_node *nd;
   uint32_t nnd, ndcap, freed;
   uint32_t *ec;             /* two corners per edge record (SW_NONE: empty) */
@@ -521,7 +522,7 @@ static int sw_hints_init(lot_sweep *S) {
   return 0;
 }
 
-int lot_sweep_run(lot_mesh *m, const lot_sweep_shape *s, size_t *duplicates) {
+int lot_sweep_run(lot_mesh *m, const shape_sweep *s, size_t *duplicates) {
   lot_sweep S;
   memset(&S, 0, sizeof S);
   S.m = m;

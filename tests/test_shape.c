@@ -573,7 +573,7 @@ static void test_bad_specs(void **state) {
 /* ---- the filters against the exact runs ------------------------------------
 **
 ** A predicate's double run answers only when its error bound proves the sign
-** (geom/shape_arith.c), reads kept shape-only determinants, and evaluates
+** (shapes/shape_arith.c), reads kept shape-only determinants, and evaluates
 ** det4 along its last column; none of that may change a decision.  So the
 ** decision with the filters must be, trace and all, the decision with every
 ** predicate taken exactly (shape_set_exact_only).  The quadrilaterals are
@@ -661,7 +661,7 @@ static void test_filter_exact(void **state) {
 
 /* ---- the quick path against the exact runs ----------------------------------
 **
-** geom/shape_quick.c answers a decision only when every sign it rests on is
+** shapes/shape_quick.c answers a decision only when every sign it rests on is
 ** certain, and claims that answer (and its supports and contact triple) is
 ** the filtered-exact path's.  Checked against the purely exact decision on
 ** random quadrilaterals (where it must answer most of the time, else it
@@ -833,7 +833,7 @@ static void test_hint(void **state) {
 
 /* ---- the square's and the hexagon's own decisions ----------------------
 **
-** geom/shape_square.c (bounding boxes) and geom/shape_hex.c (slab
+** shapes/shape_square.c (bounding boxes) and shapes/shape_hex.c (slab
 ** coordinates) answer only when every comparison is certain, and claim the
 ** general path's answer.  Each is checked against the purely exact decision
 ** on the shapes that take it: on random quadrilaterals at scales 2^-60 to
@@ -856,7 +856,7 @@ static int tfast_square(const shape *k, const geom_point p[4]) {
 }
 
 static int tfast_square_takes(const shape *k) {
-  return k->linf;
+  return shape_variant_of(k) == SHAPE_V_SQUARE;
 }
 
 static int tfast_hex(const shape *k, const geom_point p[4]) {
@@ -864,7 +864,7 @@ static int tfast_hex(const shape *k, const geom_point p[4]) {
 }
 
 static int tfast_hex_takes(const shape *k) {
-  return k->hexa != NULL;
+  return shape_variant_of(k) == SHAPE_V_HEXAGON;
 }
 
 static void tfast_same(const tfast *f, const shape *k, const geom_point q[4], long *asked,
@@ -1008,7 +1008,7 @@ static void test_hex_at(void **state) {
   }
 }
 
-/* The octant windows (geom/shape_quick.c): each open octant fixes the
+/* The octant windows (shapes/shape_quick.c): each open octant fixes the
 ** signs of the edges outside it, so the supports of directions on and next
 ** to an octant's boundary rays (the axes and diagonals) and to each edge's
 ** own direction, nudged by ulps, are where a wrong table would show; every
@@ -1081,6 +1081,60 @@ static void test_quick_octants(void **state) {
   }
 }
 
+/* Every shape is one variant, chosen when it is made, and the public verbs
+** answer through its table: each spec below is the variant named, wants
+** hints as shape.h says (polygons of 3 to 255 vertices but the
+** axis-parallel square; no ellipse) and gives through the table, with a
+** trace, hinted (an empty hint, then the one it left) or not, the purely
+** exact decision of the general path, in every rotation. */
+typedef struct tvariant {
+  const char *spec;
+  shape_variant v;
+  int hints;
+} tvariant;
+
+static const tvariant tvariants[] = {
+    {"square", SHAPE_V_SQUARE, 0},    {"poly:3 -1;-2 -1;-2 4;3 4", SHAPE_V_SQUARE, 0},
+    {"hexagon", SHAPE_V_HEXAGON, 1},  {"poly:0 0;-1 1;0 2;2 2;3 1;2 0", SHAPE_V_HEXAGON, 1},
+    {"diamond", SHAPE_V_POLYGON, 1},  {"triangle", SHAPE_V_POLYGON, 1},
+    {"octagon", SHAPE_V_POLYGON, 1},  {"ngon:255", SHAPE_V_POLYGON, 1},
+    {"ngon:256", SHAPE_V_POLYGON, 0}, {"ellipse:2 1 0.5", SHAPE_V_ELLIPSE, 0},
+    {"ellipse:1 1", SHAPE_V_ELLIPSE, 0}};
+
+static void tvariant_same(const shape *k, const geom_point q[4]) {
+  for (int r = 0; r < 4; r++) {
+    geom_point a = q[r], b = q[(r + 1) % 4], c = q[(r + 2) % 4], d = q[(r + 3) % 4];
+    shape_set_exact_only(1);
+    shape_choice want = shape_decide(k, a, b, c, d, NULL);
+    shape_set_exact_only(0);
+    shape_trace tr;
+    shape_hint h = {0};
+    assert_int_equal(shape_decide(k, a, b, c, d, NULL), want);
+    assert_int_equal(shape_decide(k, a, b, c, d, &tr), want);
+    assert_int_equal(shape_decide_valid(k, a, b, c, d), want);
+    assert_int_equal(shape_decide_hinted(k, a, b, c, d, &h), want);
+    assert_int_equal(shape_decide_hinted(k, a, b, c, d, &h), want);
+  }
+}
+
+static void test_variants(void **state) {
+  (void)state;
+  testutil_rng rng = {41};
+  for (size_t i = 0; i < sizeof tvariants / sizeof tvariants[0]; i++) {
+    const tvariant *t = &tvariants[i];
+    shape *k = tshape_get(t->spec);
+    assert_int_equal(shape_variant_of(k), t->v);
+    assert_int_equal(shape_wants_hints(k), t->hints);
+    geom_point q[4];
+    for (int it = 0; it < testutil_reps(200); it++) {
+      testutil_convex_quad(&rng, q);
+      tvariant_same(k, q);
+      if (tshape_grid_quad(&rng, 4, 1, 0, q)) tvariant_same(k, q);
+    }
+    shape_free(k);
+  }
+}
+
 /* Two groups, so that ctest runs them side by side (tests/CMakeLists.txt):
 ** "quick" (the quick path against the exact one, the slowest) and "rest";
 ** no argument runs both. */
@@ -1106,6 +1160,7 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_named),
     cmocka_unit_test(test_support),
     cmocka_unit_test(test_bad_specs),
+    cmocka_unit_test(test_variants),
   };
   const char *part = argc > 1 ? argv[1] : "";
   if (*part != '\0' && strcmp(part, "quick") != 0 && strcmp(part, "rest") != 0) {

@@ -18,11 +18,6 @@ class LotCdf(ctypes.Structure):
                 ("rounded", ctypes.c_size_t), ("conflicts", ctypes.c_size_t)]
 
 
-lib.shape_parse.restype = ctypes.c_int
-lib.shape_parse.argtypes = [ctypes.c_char_p, ctypes.POINTER(ctypes.c_void_p), ctypes.c_char_p,
-                            ctypes.c_size_t]
-lib.shape_free.restype = None
-lib.shape_free.argtypes = [ctypes.c_void_p]
 lib.lot_cdf_extract.restype = ctypes.c_int
 lib.lot_cdf_extract.argtypes = [_lib.Point_p, ctypes.POINTER(ctypes.c_uint32), ctypes.c_size_t,
                                 ctypes.c_void_p, ctypes.POINTER(LotCdf)]
@@ -66,20 +61,14 @@ def cdf(t):
         raise ValueError("cdf: the triangulation was made with segments or holes; the "
                          "convex-distance Delaunay graph of a constrained run is not defined "
                          "here (docs/emptyshape.md)")
-    name = t.rule.name
-    if not name.startswith("ES:"):
-        raise ValueError("cdf needs an empty-shape rule (ES:SHAPE), not '%s'" % name)
-    k = ctypes.c_void_p()
-    e = _lib.errbuf()
-    if lib.shape_parse(name[3:].encode(), ctypes.byref(k), e, _lib.ERRLEN) != 0:
-        raise ValueError(_lib.text(e))
+    # the rule owns its shape (rule_shape): nothing is parsed again here
+    r = ctypes.byref(t.rule._c)
+    if not lib.rule_is_shape(r):
+        raise ValueError("cdf needs an empty-shape rule (ES:SHAPE), not '%s'" % t.rule.name)
     g = LotCdf()
     tri = np.ascontiguousarray(t.triangles, dtype=np.int32).view(np.uint32)
-    try:
-        rc = lib.lot_cdf_extract(points_ptr(t.points), ptr(tri, ctypes.c_uint32), len(tri), k,
-                                 ctypes.byref(g))
-    finally:
-        lib.shape_free(k)
+    rc = lib.lot_cdf_extract(points_ptr(t.points), ptr(tri, ctypes.c_uint32), len(tri),
+                             lib.rule_shape(r), ctypes.byref(g))
     if rc != 0:
         raise MemoryError("cdf: out of memory")
     try:

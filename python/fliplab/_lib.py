@@ -179,6 +179,8 @@ _void_p = ctypes.c_void_p
 # name: (restype, argtypes)
 _PROTOS = {
     "rule_parse": (_int, [_char_p, Rule_p, _char_p, _size]),
+    "rule_is_shape": (_int, [Rule_p]),
+    "rule_shape": (_void_p, [Rule_p]),
     "rule_triangle": (_int, [_int, _int, Rule_p, _char_p, _size]),
     "rule_delaunay": (Rule, []),
     "rule_quad_count": (_int, []),

@@ -49,16 +49,16 @@
 ** being exact: shape_hex_build checks), so at most 4 u S with S the sum
 ** over B and C of (|dx| + |dy|) emax, emax the edges' largest coordinate
 ** (a sum, at least each point's term, where a max would cost a branch that
-** is a coin toss; S as computed is within three roundings of it).  Every comparison below is the sign of
-** an integer combination of the values with total coefficient magnitude at
-** most 12 (the widest: 2 r m - m W_i and r m - |d_i m - t_i m| of case (1),
-** m = 3), evaluated in at most 10 roundings of partial sums at most 12 S in
-** magnitude: its error is at most 12 (4 u S) + 10 u (12 S) (1 + u)^10 <
-** 2^8 u S.  A sign is taken only beyond 2^-40 S = 2^13 u S; nearer, it
-** gives up.  D's term joins the sum for D's own comparisons.  In the coordinate
-** contract (docs/scale.md) no product underflows (a non-zero difference of
-** two coordinates is at least 2^-152, so a non-zero product at least
-** 2^-304) or overflows. */
+** is a coin toss; S as computed is within three roundings of it).  Every
+** comparison below is the sign of an integer combination of the values
+** with total coefficient magnitude at most 12 (the widest: 2 r m - m W_i
+** and r m - |d_i m - t_i m| of case (1), m = 3), evaluated in at most 10
+** roundings of partial sums at most 12 S in magnitude: its error is at
+** most 12 (4 u S) + 10 u (12 S) (1 + u)^10 < 2^8 u S.  A sign is taken
+** only beyond 2^-40 S = 2^13 u S; nearer, it gives up.  D's term joins the
+** sum for D's own comparisons.  In the coordinate contract (docs/scale.md)
+** no product underflows (a non-zero difference of two coordinates is at
+** least 2^-152, so a non-zero product at least 2^-304) or overflows. */
 
 /* The homothet of a contact triple t (the sides of A, B, C), from the
 ** values vB and vC of B and C in their sides' slabs (A's is 0): m t_0 =
@@ -106,7 +106,7 @@ typedef struct shape_hex_case {
 ** (|dx| + |dy|) emax >= |dx e_y| + |dy e_x| (emax: the edges' largest
 ** coordinate magnitude). */
 static inline double shape_hex_values(const shape *k, geom_point a, geom_point p, double v[3]) {
-  const struct shape_hex *x = k->hexa;
+  const struct shape_hex *x = k->impl->hexa;
   double dx = p.x - a.x, dy = p.y - a.y;
   for (int i = 0; i < 3; i++) v[i] = dx * x->e[i].y - dy * x->e[i].x;
   return (fabs(dx) + fabs(dy)) * x->emax;
@@ -263,7 +263,7 @@ int shape_hex_decide(const shape *k, const geom_point p[4], shape_hint *out) {
     code |= (unsigned)((b > 0) | (c > 0) << 1 | (b > c) << 2) << 3 * i;
   }
   if (!clear) return -1;
-  const shape_hex_plan *pl = h.pl = &k->hexa->plan[code];
+  const shape_hex_plan *pl = h.pl = &k->impl->hexa->plan[code];
   if (pl->corner >= 0) {   /* a point extreme on no side: a corner's rounding shape */
     int corner = pl->corner, c = corner == 6 ? 2 : shape_quick_corner(k, corner, p);
     if (c != 2 && out != NULL)
@@ -334,7 +334,7 @@ static void shape_hex_equations(int t0, int t1, int t2, shape_hex_eq *q) {
 }
 
 int shape_hex_at(const shape *k, const int t[3], const geom_point p[4]) {
-  const struct shape_hex *x = k->hexa;
+  const struct shape_hex *x = k->impl->hexa;
   if ((unsigned)t[0] >= 6 || (unsigned)t[1] >= 6 || (unsigned)t[2] >= 6) return -1;
   const shape_hex_eq *q = &x->eq[t[0] + 6 * t[1] + 36 * t[2]];
   if (q->m == 0) return -1;
@@ -350,8 +350,8 @@ int shape_hex_at(const shape *k, const int t[3], const geom_point p[4]) {
 }
 
 int shape_hex_build(shape *k) {
-  k->hexa = NULL;
-  if (k->kind != SHAPE_POLYGON || k->n != 6) return 0;
+  k->impl->hexa = NULL;
+  if (k->n != 6) return 0;
   geom_point e[6];
   for (int i = 0; i < 6; i++) {
     geom_point a = k->v[i], b = k->v[(i + 1) % 6];
@@ -374,11 +374,20 @@ int shape_hex_build(shape *k) {
   }
   for (unsigned c = 0; c < 512; c++) shape_hex_plan_of(c, &x->plan[c]);
   for (int t = 0; t < 216; t++) shape_hex_equations(t % 6, t / 6 % 6, t / 36, &x->eq[t]);
-  k->hexa = x;
+  k->impl->hexa = x;
   return 0;
 }
 
 void shape_hex_free(shape *k) {
-  free(k->hexa);
-  k->hexa = NULL;
+  free(k->impl->hexa);
+  k->impl->hexa = NULL;
 }
+
+/* ---- the hexagon's variant (shape_internal.h) ----------------------------- */
+
+static int shape_hex_wants_hints(const shape *k) {
+  (void)k;
+  return 1;
+}
+
+SHAPE_VARIANT_OPS(hexagon, shape_hex_decide, shape_hex_at, shape_hex_wants_hints);

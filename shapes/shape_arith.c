@@ -46,13 +46,13 @@
 ** most 8.
 **
 ** The exact run repeats the program on mpq_t registers (every double is a
-** rational), so both runs are the same program: one place to get right. */
-#define SHAPE_REGS 320
+** rational) of the pool of shape_mpq.c, so both runs are the same program:
+** one place to get right. */
 
 /* A program's value: in the double run the value v, its twin t and its
 ** rounding count k (plain numbers: a double run inlines into straight-line
 ** code that keeps them in machine registers); in the exact run the index q
-** of its rational in the register file. */
+** of its rational in the pool. */
 typedef struct shape_num {
   double v, t;
   int k, q;
@@ -60,11 +60,8 @@ typedef struct shape_num {
 
 typedef struct shape_ar {
   int exact;               /* 0: the double run, 1: the exact run */
-  int n;                   /* registers used (exact run) */
-  int nq;                  /* mpq registers initialised (exact run) */
   int poison;              /* a product underflowed: the double run decides nothing */
-  mpq_t *q;                /* the register file (exact run) */
-  mpq_t s;                 /* scratch (exact run) */
+  shape_mpq *P;            /* the registers (exact run) */
 } shape_ar;
 
 static atomic_ulong shape_exact_count;
@@ -73,31 +70,29 @@ unsigned long shape_exact_calls(void) {
   return atomic_load_explicit(&shape_exact_count, memory_order_relaxed);
 }
 
-/* A new register of the exact run.  The programs are fixed trees far
-** smaller than the file (tests/test_shape.c runs every one), so running
-** out is a bug. */
+/* The exact run's rational of value i, and a new register of it.  The
+** programs are fixed trees far smaller than the pool (tests/test_shape.c
+** runs every one). */
+static inline mpq_ptr shape_q(const shape_ar *a, shape_num i) {
+  return a->P->r[i.q];
+}
+
 static shape_num shape_reg(shape_ar *a) {
-  if (a->n >= SHAPE_REGS) abort();
-  int r = a->n++;
-  if (r >= a->nq) mpq_init(a->q[a->nq++]);
-  return (shape_num){.q = r};
+  shape_mpq_new(a->P);
+  return (shape_num){.q = a->P->n - 1};
 }
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_in(shape_ar *a, double x) {
   if (!a->exact) return (shape_num){x, fabs(x), 0, 0};
-  shape_num r = shape_reg(a);
-  mpq_set_d(a->q[r.q], x);
-  return r;
+  shape_mpq_d(a->P, x);
+  return (shape_num){.q = a->P->n - 1};
 }
 
 /* x - y of two inputs, one rounded leaf (the bound's argument). */
 static FLIPLAB_ALWAYS_INLINE shape_num shape_dif(shape_ar *a, double x, double y) {
   if (!a->exact) return (shape_num){x - y, fabs(x - y), 1, 0};
-  shape_num r = shape_reg(a);
-  mpq_set_d(a->q[r.q], x);
-  mpq_set_d(a->s, y);
-  mpq_sub(a->q[r.q], a->q[r.q], a->s);
-  return r;
+  shape_mpq_diff(a->P, x, y);
+  return (shape_num){.q = a->P->n - 1};
 }
 
 static FLIPLAB_ALWAYS_INLINE int shape_kmax(shape_num i, shape_num j) {
@@ -107,21 +102,21 @@ static FLIPLAB_ALWAYS_INLINE int shape_kmax(shape_num i, shape_num j) {
 static FLIPLAB_ALWAYS_INLINE shape_num shape_add(shape_ar *a, shape_num i, shape_num j) {
   if (!a->exact) return (shape_num){i.v + j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
   shape_num r = shape_reg(a);
-  mpq_add(a->q[r.q], a->q[i.q], a->q[j.q]);
+  mpq_add(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
 }
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_sub(shape_ar *a, shape_num i, shape_num j) {
   if (!a->exact) return (shape_num){i.v - j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
   shape_num r = shape_reg(a);
-  mpq_sub(a->q[r.q], a->q[i.q], a->q[j.q]);
+  mpq_sub(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
 }
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_neg(shape_ar *a, shape_num i) {
   if (!a->exact) return (shape_num){-i.v, i.t, i.k, 0};
   shape_num r = shape_reg(a);
-  mpq_neg(a->q[r.q], a->q[i.q]);
+  mpq_neg(shape_q(a, r), shape_q(a, i));
   return r;
 }
 
@@ -132,7 +127,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_mul(shape_ar *a, shape_num i, shape
     return r;
   }
   shape_num r = shape_reg(a);
-  mpq_mul(a->q[r.q], a->q[i.q], a->q[j.q]);
+  mpq_mul(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
 }
 
@@ -234,7 +229,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3_run(shape_ar *a, const shape *
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3(shape_ar *a, const shape *K, int i, int j,
                                                   int k) {
-  const struct shape_memo *mm = K->memo;
+  const struct shape_memo *mm = K->impl->memo;
   if (a->exact || mm == NULL) return shape_cof3_run(a, K, i, j, k);
   size_t n = (size_t)mm->n;
   const shape_memo_entry *e = &mm->cof[((size_t)i * n + (size_t)j) * n + (size_t)k];
@@ -244,7 +239,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_cof3(shape_ar *a, const shape *K, i
 
 int shape_memo_build(shape *K) {
   int n = K->n;
-  if (K->kind != SHAPE_POLYGON || n > SHAPE_MEMO_MAX) return 0;
+  if (n > SHAPE_MEMO_MAX) return 0;
   struct shape_memo *mm = malloc(sizeof *mm);
   shape_memo_entry *cof = malloc((size_t)n * (size_t)n * (size_t)n * sizeof *cof);
   signed char *sgn = malloc((size_t)n * (size_t)n * (size_t)n);
@@ -271,27 +266,28 @@ int shape_memo_build(shape *K) {
         mm->kmax = x.k > mm->kmax ? x.k : mm->kmax;
         mm->poisoned |= a.poison;
         shape_args g = {.K = K, .e = {i, j, k}};
-        sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* K->memo is not yet set */
+        sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* memo is not yet set */
       }
-  K->memo = mm;
+  K->impl->memo = mm;
   return 0;
 }
 
 int shape_memo_flat(const shape *K, shape_memo_flat_view *out) {
-  const struct shape_memo *mm = K->memo;
+  const struct shape_memo *mm = K->impl->memo;
   if (mm == NULL || mm->poisoned) return -1;
   *out = (shape_memo_flat_view){mm->val, mm->twin, mm->sgn, mm->kmax};
   return 0;
 }
 
 void shape_memo_free(shape *K) {
-  if (K->memo == NULL) return;
-  free(K->memo->cof);
-  free(K->memo->sgn);
-  free(K->memo->val);
-  free(K->memo->twin);
-  free(K->memo);
-  K->memo = NULL;
+  struct shape_memo *mm = K->impl->memo;
+  if (mm == NULL) return;
+  free(mm->cof);
+  free(mm->sgn);
+  free(mm->val);
+  free(mm->twin);
+  free(mm);
+  K->impl->memo = NULL;
 }
 
 /* det3h of edges e[0..2]. */
@@ -516,7 +512,7 @@ int shape_fast_det3w(const shape_w3 *w, const shape *K, const int e[3]) {
 }
 
 int shape_det3h_sign(const shape *K, const int e[3]) {
-  const struct shape_memo *mm = K->memo;
+  const struct shape_memo *mm = K->impl->memo;
   if (mm != NULL) {
     size_t n = (size_t)mm->n;
     return mm->sgn[((size_t)e[0] * n + (size_t)e[1]) * n + (size_t)e[2]];
@@ -528,27 +524,19 @@ int shape_det3h_sign(const shape *K, const int e[3]) {
 /* The exact run: the same program on rationals. */
 static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
   atomic_fetch_add_explicit(&shape_exact_count, 1, memory_order_relaxed);
-  mpq_t q[SHAPE_REGS];
-  shape_ar a = {.exact = 1, .q = q};
-  mpq_init(a.s);
-  int r = shape_progs[p](&a, g).q;   /* mpq_sgn is a macro reading its argument twice */
-  int s = mpq_sgn(a.q[r]);
-  for (int i = 0; i < a.nq; i++) mpq_clear(a.q[i]);
-  mpq_clear(a.s);
-  return s;
+  shape_mpq P;
+  shape_mpq_init(&P);
+  shape_ar a = {.exact = 1, .P = &P};
+  return shape_mpq_done(&P, shape_q(&a, shape_progs[p](&a, g)));
 }
 
 int shape_exact_diff(double a, double b, double *d) {
-  mpq_t x, y;
-  mpq_inits(x, y, NULL);
-  mpq_set_d(x, a);
-  mpq_set_d(y, b);
-  mpq_sub(x, x, y);
+  shape_mpq P;
+  shape_mpq_init(&P);
   *d = a - b;
-  mpq_set_d(y, *d);
-  int same = mpq_equal(x, y) != 0;
-  mpq_clears(x, y, NULL);
-  return same;
+  mpq_ptr x = shape_mpq_diff(&P, a, b);
+  mpq_sub(x, x, shape_mpq_d(&P, *d));
+  return shape_mpq_done(&P, x) == 0;
 }
 
 void shape_set_exact_only(int on) {

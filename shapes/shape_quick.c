@@ -1,6 +1,6 @@
 /*
 ** shape_quick.c: the quick polygon decision.  The support vertices and the
-** circumscribing homothet's test of geom/shape.c, computed in straight-line
+** circumscribing homothet's test of shape.c, computed in straight-line
 ** doubles with a proven error bound on a per-shape table; at the first sign
 ** the bound cannot certify as non-zero it gives up, and shape.c takes its
 ** filtered-exact path, so every answer is that path's answer.
@@ -18,10 +18,11 @@
 ** top of shape_arith.c bounds its error by (2k + 2) u t for any k at least
 ** the tree's rounding count, and a value beyond that bound has the exact
 ** value's sign (values that only choose where to look are not trusted:
-** the signs the answer rests on are certified).  The counts: a difference 1; cross(e, d) and w = cross(P -
-** A, e) (two products of differences, one subtraction) 5; cross(e_i, e_j)
-** 5; det3w = -w_B X_ik + w_C X_ij, 13; det4 = w_B M + w_C M' + w_P M'' (M
-** the kept det3h, count at most kmax), kmax + 9.  Underflow: every site and
+** the signs the answer rests on are certified).  The counts: a
+** difference 1; cross(e, d) and w = cross(P - A, e) (two products of
+** differences, one subtraction) 5; cross(e_i, e_j) 5; det3w = -w_B X_ik +
+** w_C X_ij, 13; det4 = w_B M + w_C M' + w_P M'' (M the kept det3h, count
+** at most kmax), kmax + 9.  Underflow: every site and
 ** shape coordinate is 0 or of magnitude at least 2^-100 (shape_quick_ready
 ** checks the sites, geom_polygon_check the shape), so each is a
 ** multiple of 2^-152 and every non-zero difference is at least 2^-152; a
@@ -96,11 +97,12 @@ typedef struct shape_quick {
 #define SHAPE_Q_BDET3W (28 * SHAPE_Q_U)   /* count 13 */
 
 void shape_quick_free(shape *k) {
-  if (k->quick == NULL) return;
-  free(k->quick->ex);
-  free(k->quick->xv);
-  free(k->quick);
-  k->quick = NULL;
+  shape_quick *q = k->impl->quick;
+  if (q == NULL) return;
+  free(q->ex);
+  free(q->xv);
+  free(q);
+  k->impl->quick = NULL;
 }
 
 /* The support where a sign pattern changes from + at s - 1 to - at s (the
@@ -184,7 +186,7 @@ static void shape_q_octants(const shape *k, shape_quick *q) {
 int shape_quick_build(shape *k) {
   shape_memo_flat_view m;
   /* (shape_q_support keeps one bit per edge in a 32-bit word) */
-  if (k->kind != SHAPE_POLYGON || k->n > 32 || shape_memo_flat(k, &m) != 0) return 0;
+  if (k->n > 32 || shape_memo_flat(k, &m) != 0) return 0;
   int n = k->n;
   shape_quick *q = calloc(1, sizeof *q);
   double *e = malloc(8 * (size_t)n * sizeof *e), *x = malloc(2 * (size_t)n * (size_t)n * sizeof *x);
@@ -225,7 +227,7 @@ int shape_quick_build(shape *k) {
       q->xt[i * n + j] = fabs(q->ex[i] * q->ey[j]) + fabs(q->ey[i] * q->ex[j]);
     }
   shape_q_octants(k, q);
-  k->quick = q;
+  k->impl->quick = q;
   return 0;
 }
 
@@ -299,7 +301,7 @@ static inline int shape_q_support(const shape_quick *q, double dx, double dy) {
 }
 
 int shape_quick_supports(const shape *k, const geom_point p[3], int sup[3]) {
-  const shape_quick *q = k->quick;
+  const shape_quick *q = k->impl->quick;
   sup[0] = shape_q_support(q, p[1].x - p[0].x, p[1].y - p[0].y);
   sup[1] = shape_q_support(q, p[2].x - p[1].x, p[2].y - p[1].y);
   sup[2] = shape_q_support(q, p[0].x - p[2].x, p[0].y - p[2].y);
@@ -486,7 +488,7 @@ static FLIPLAB_ALWAYS_INLINE int shape_q_dtest(const shape_q_tri *T, const geom_
 
 int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4], int t[3]) {
   shape_q_tri T;
-  T.q = k->quick, T.ax = p[0].x, T.ay = p[0].y;
+  T.q = k->impl->quick, T.ax = p[0].x, T.ay = p[0].y;
   if (shape_q_contacts(k, &T, sup, p) != 0) return -1;
   int ans = shape_q_dtest(&T, p);
   for (int r = 0; r < 3; r++) t[r] = T.t[r];
@@ -497,7 +499,7 @@ int shape_quick_homothet(const shape *k, const int sup[3], const geom_point p[4]
 ** only the rows the slacks read are set up; the contact test is not
 ** repeated, its sign of det3w having been certain when t was found. */
 int shape_quick_at(const shape *k, const int t[3], const geom_point p[4]) {
-  shape_q_tri T = {.q = k->quick, .t = {t[0], t[1], t[2]}, .ax = p[0].x, .ay = p[0].y};
+  shape_q_tri T = {.q = k->impl->quick, .t = {t[0], t[1], t[2]}, .ax = p[0].x, .ay = p[0].y};
   shape_q_rows(&T);
   if (T.d3 == 0) return -1;
   T.wb = shape_q_w(&T, t[1], p[1], &T.wbt);
@@ -519,7 +521,7 @@ int shape_quick_at(const shape *k, const int t[3], const geom_point p[4]) {
 #define SHAPE_Q_BCORNER (60 * SHAPE_Q_U)
 
 int shape_quick_corner(const shape *k, int c, const geom_point p[4]) {
-  const shape_quick *q = k->quick;
+  const shape_quick *q = k->impl->quick;
   int b = c > 0 ? c - 1 : q->n - 1;
   double ux = q->ex[c], uy = q->ey[c], vx = -q->ex[b], vy = -q->ey[b];
   double X[3], Xt[3], Y[3], Yt[3], Z[3], Zt[3];

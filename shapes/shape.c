@@ -1,7 +1,8 @@
 /*
-** shape.c: shapes (parsing, named shapes) and the empty-shape decision
-** (support points, circumscribing homothets, rounding shapes, ellipses).
-** The predicates themselves, exact, are in shape_arith.c;
+** shape.c: shapes (parsing, named shapes, the variant each one is, chosen
+** once) and the empty-shape decision (support points, circumscribing
+** homothets, rounding shapes, ellipses) of the general polygon and the
+** ellipse.  The predicates themselves, exact, are in shape_arith.c;
 ** docs/emptyshape.md has the definitions and the special-position rule.
 */
 #include <math.h>
@@ -12,16 +13,21 @@
 #include "shape.h"
 #include "shape_internal.h"
 
-/* ---- parsing ------------------------------------------------------------ */
+/* ---- shapes and their variants ------------------------------------------ */
 
-static shape *shape_new_polygon(int n) {
+/* A shape of kind kind and n vertices (none: an ellipse), its private part
+** empty: NULL out of memory. */
+static shape *shape_new(shape_kind kind, int n) {
   shape *k = calloc(1, sizeof *k);
   if (k == NULL) return NULL;
-  k->kind = SHAPE_POLYGON;
+  k->kind = kind;
   k->n = n;
-  k->v = calloc((size_t)n, sizeof *k->v);
-  k->half = calloc((size_t)n, 1);
-  if (k->v == NULL || k->half == NULL) {
+  k->impl = calloc(1, sizeof *k->impl);
+  if (n > 0 && k->impl != NULL) {
+    k->v = calloc((size_t)n, sizeof *k->v);
+    k->impl->half = calloc((size_t)n, 1);
+  }
+  if (k->impl == NULL || (n > 0 && (k->v == NULL || k->impl->half == NULL))) {
     shape_free(k);
     return NULL;
   }
@@ -30,13 +36,32 @@ static shape *shape_new_polygon(int n) {
 
 void shape_free(shape *k) {
   if (k == NULL) return;
-  shape_quick_free(k);
-  shape_memo_free(k);
-  shape_hex_free(k);
+  if (k->impl != NULL) {
+    shape_quick_free(k);
+    shape_memo_free(k);
+    shape_hex_free(k);
+    free(k->impl->half);
+    free(k->impl);
+  }
   free(k->v);
-  free(k->half);
   free(k);
 }
+
+/* K's variant v and with it its decisions: the one choice of them, made
+** when K is made. */
+static void shape_impl_set(shape *k, shape_variant v) {
+  const shape_ops *ops = NULL;
+  switch (v) {
+  case SHAPE_V_POLYGON: ops = &shape_ops_polygon; break;
+  case SHAPE_V_SQUARE: ops = &shape_ops_square; break;
+  case SHAPE_V_HEXAGON: ops = &shape_ops_hexagon; break;
+  case SHAPE_V_ELLIPSE: ops = &shape_ops_ellipse; break;
+  }
+  k->impl->variant = v;
+  k->impl->ops = ops;
+}
+
+/* ---- parsing ------------------------------------------------------------ */
 
 /* Numbers separated by ',' or blanks (a run of blanks, or blanks around
 ** one ','), none missing: 0 and *count, or -1 with err set. */
@@ -79,16 +104,18 @@ static int shape_numbers(const char *s, size_t len, double *out, int max, int *c
 static void shape_halves(shape *k) {
   for (int j = 0; j < k->n; j++) {
     shape_args g = {.K = k, .e = {0}, .p = {k->v[j], k->v[(j + 1) % k->n]}};
-    k->half[j] = j > 0 && shape_sign(SHAPE_PROG_CROSS, &g) <= 0;
+    k->impl->half[j] = j > 0 && shape_sign(SHAPE_PROG_CROSS, &g) <= 0;
   }
 }
 
 /* The polygon of n vertices p (copied), checked: strictly convex, within
 ** the coordinate contract (so the predicates' bound holds), anticlockwise
-** (a clockwise list is reversed, keeping its first vertex). */
+** (a clockwise list is reversed, keeping its first vertex); then its
+** tables, and its variant: a square or a hexagon with a decision of its
+** own (shape_square_is, shape_hex_build), else the general polygon. */
 static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *err,
                             size_t errlen) {
-  shape *k = shape_new_polygon(n);
+  shape *k = shape_new(SHAPE_POLYGON, n);
   if (k == NULL) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     return NULL;
@@ -106,12 +133,15 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
-  k->linf = shape_square_is(k);
   if (shape_hex_build(k) != 0 || shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
     return NULL;
   }
+  shape_variant v = SHAPE_V_POLYGON;
+  if (shape_square_is(k)) v = SHAPE_V_SQUARE;
+  if (k->impl->hexa != NULL) v = SHAPE_V_HEXAGON;
+  shape_impl_set(k, v);
   return k;
 }
 
@@ -198,13 +228,13 @@ static shape *shape_parse_ellipse(const char *spec, const char *s, char *err, si
     snprintf(err, errlen, "shape '%.60s': the semi-axes must lie between 2^-20 and 2^20", spec);
     return NULL;
   }
-  shape *k = calloc(1, sizeof *k);
+  shape *k = shape_new(SHAPE_ELLIPSE, 0);
   if (k == NULL) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     return NULL;
   }
+  shape_impl_set(k, SHAPE_V_ELLIPSE);
   double c = cos(x[2]), sn = sin(x[2]), ia = 1 / (x[0] * x[0]), ib = 1 / (x[1] * x[1]);
-  k->kind = SHAPE_ELLIPSE;
   k->q11 = ia * c * c + ib * sn * sn;
   k->q22 = ia * sn * sn + ib * c * c;
   k->q12 = (ia - ib) * c * sn;
@@ -275,7 +305,8 @@ static int shape_cross_eps(const shape *k, int j, geom_point p, geom_point q) {
 ** Q - P, angles measured anticlockwise from edge 0 in [0, 2 pi)?  hw is
 ** the half of Q - P (shape_halves). */
 static int shape_before(const shape *k, int j, geom_point p, geom_point q, int hw) {
-  if (k->half[j] != hw) return k->half[j] < hw;
+  const unsigned char *half = k->impl->half;
+  if (half[j] != hw) return half[j] < hw;
   return shape_cross_eps(k, j, p, q) > 0;
 }
 
@@ -490,8 +521,8 @@ static shape_choice shape_corner_hinted(const shape *k, int c, const geom_point 
 
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
-static shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
-                                         shape_trace *tr, shape_hint *h) {
+shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
+                                  shape_trace *tr, shape_hint *h) {
   int sup[3], t[3], hinted = shape_hint_decide(k, p, quick, h);
   if (hinted >= 0) return (shape_choice)hinted;
   if (!quick || shape_quick_supports(k, p, sup) != 0) {
@@ -531,49 +562,62 @@ static shape_choice shape_ellipse_decide(const shape *k, const geom_point p[4], 
   return s > 0 ? SHAPE_BD : s < 0 ? SHAPE_AC : SHAPE_EITHER;
 }
 
-/* The shapes with a decision of their own, tried before the general path:
-** the axis-parallel square's bounding boxes and the affinely regular
-** hexagon's slabs (their files have the arguments); the answer, or -1 for
-** the general path (and for every other shape). */
-static int shape_own_decide(const shape *k, const geom_point p[4], shape_hint *h) {
-  return k->linf ? shape_square_decide(p) : k->hexa ? shape_hex_decide(k, p, h) : -1;
-}
+/* ---- the variants' decisions ----------------------------------------------
+**
+** The public verbs call K's variant (shape_impl_set); the general polygon's
+** and the ellipse's are here, the square's and the hexagon's with their
+** decisions (shape_square.c, shape_hex.c). */
 
 shape_choice shape_decide(const shape *k, geom_point a, geom_point b, geom_point c, geom_point d,
                           shape_trace *tr) {
-  geom_point p[4] = {a, b, c, d};
   if (tr) *tr = (shape_trace){.corner = -1, .contact = {-1, -1, -1}};
-  for (int i = 0; i < 4; i++)
-    if (!geom_point_finite(p[i])) return SHAPE_EITHER;
-  if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, tr);
-  int quick = shape_quick_ready(k, p), own = quick && !tr ? shape_own_decide(k, p, NULL) : -1;
-  return own >= 0 ? (shape_choice)own : shape_polygon_decide(k, p, quick, tr, NULL);
+  if (!geom_point_finite(a) || !geom_point_finite(b) || !geom_point_finite(c) ||
+      !geom_point_finite(d))
+    return SHAPE_EITHER;
+  return k->impl->ops->decide(k, a, b, c, d, tr);
 }
 
 /* Sites in the coordinate contract are finite and 0 or of magnitude at
 ** least 1e-30 > 2^-100, all that shape_quick_ready checks of them. */
 shape_choice shape_decide_valid(const shape *k, geom_point a, geom_point b, geom_point c,
                                 geom_point d) {
-  return shape_decide_hinted(k, a, b, c, d, NULL);
-}
-
-int shape_wants_hints(const shape *k) {
-  return k->kind == SHAPE_POLYGON && k->n <= 255 && !k->linf;
+  return k->impl->ops->decide_hinted(k, a, b, c, d, NULL);
 }
 
 shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
                                  geom_point d, shape_hint *h) {
-  geom_point p[4] = {a, b, c, d};
-  if (k->kind == SHAPE_ELLIPSE) return shape_ellipse_decide(k, p, NULL);
-  int quick = shape_quick_on(k);
-  /* a homothet's hint: lot's commonest call (tried here only, as it needs the
-  ** quick path; when its test is uncertain the shape is found again) */
-  if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {
-    const int t[3] = {h->e[0], h->e[1], h->e[2]};
-    int ans = k->hexa ? shape_hex_at(k, t, p) : -1;
-    if (ans < 0) ans = shape_quick_at(k, t, p);
-    if (ans >= 0) return (shape_choice)ans;
-  }
-  int own = quick ? shape_own_decide(k, p, h) : -1;
-  return own >= 0 ? (shape_choice)own : shape_polygon_decide(k, p, quick, NULL, h);
+  return k->impl->ops->decide_hinted(k, a, b, c, d, h);
 }
+
+int shape_wants_hints(const shape *k) {
+  return k->impl->ops->wants_hints(k);
+}
+
+/* A hint holds edge and corner indices in bytes. */
+static int shape_polygon_wants_hints(const shape *k) {
+  return k->n <= 255;
+}
+
+SHAPE_VARIANT_OPS(polygon, NULL, NULL, shape_polygon_wants_hints);
+
+static shape_choice shape_ellipse_variant_decide(const shape *k, geom_point a, geom_point b,
+                                                 geom_point c, geom_point d, shape_trace *tr) {
+  const geom_point p[4] = {a, b, c, d};
+  return shape_ellipse_decide(k, p, tr);
+}
+
+/* An ellipse's decision is one determinant: nothing to hint. */
+static shape_choice shape_ellipse_hinted(const shape *k, geom_point a, geom_point b,
+                                         geom_point c, geom_point d, shape_hint *h) {
+  (void)h;
+  const geom_point p[4] = {a, b, c, d};
+  return shape_ellipse_decide(k, p, NULL);
+}
+
+static int shape_ellipse_wants_hints(const shape *k) {
+  (void)k;
+  return 0;
+}
+
+const shape_ops shape_ops_ellipse = {shape_ellipse_variant_decide, shape_ellipse_hinted,
+                                     shape_ellipse_wants_hints};

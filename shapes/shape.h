@@ -24,16 +24,15 @@ typedef enum shape_choice { SHAPE_AC = 0, SHAPE_BD = 1, SHAPE_EITHER = 2 } shape
 #define SHAPE_MAX_VERTICES 1024
 #define SHAPE_NGON_MAX 1024
 
+/* What a user reads of a shape; the rest (its variant, its decision and the
+** tables that speed it up, chosen once when the shape is made) is private to
+** shapes/ (shape_internal.h). */
 typedef struct shape {
   shape_kind kind;
   int n;                  /* polygon: vertex count (>= 3) */
   geom_point *v;          /* polygon: the vertices, anticlockwise (owned) */
-  unsigned char *half;    /* polygon, internal: 1 for the edges turned by [pi, 2 pi) from edge 0 */
-  struct shape_memo *memo; /* polygon, internal: shape-only determinants (geom/shape_arith.c) */
-  struct shape_quick *quick; /* polygon, internal: the quick decision's table (geom/shape_quick.c) */
-  int linf;               /* polygon, internal: 1 for an axis-parallel square (shape_square.c) */
-  struct shape_hex *hexa; /* polygon, internal: an affinely regular hexagon's slabs (shape_hex.c) */
   double q11, q12, q22;   /* ellipse: {x : q11 x^2 + 2 q12 x y + q22 y^2 <= 1} */
+  struct shape_impl *impl;   /* private */
 } shape;
 
 /* Parse a shape spec (docs/emptyshape.md has the grammar): "square",
@@ -88,7 +87,7 @@ shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geo
                                  geom_point d, shape_hint *h);
 /* 1 when keeping hints saves K's decisions work: polygons of 3 to 255
 ** vertices, but for an axis-parallel square, whose bounding-box decision
-** (geom/shape_square.c) needs none and leaves *h as it is; else 0. */
+** (shapes/shape_square.c) needs none and leaves *h as it is; else 0. */
 int shape_wants_hints(const shape *k);
 /* The vertex of polygon K extremal in the right-hand normal direction of
 ** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:
@@ -99,7 +98,7 @@ int shape_support(const shape *k, geom_point p, geom_point q);
 ** tie-break, docs/emptyshape.md): 1 when it is a homothet of polygon K, its
 ** contact edges (edge i joins vertices i and i + 1) of A, B, C in
 ** contact[]; 0 when it is the rounding shape of the corner *corner; -1 when
-** no contact triple was found (never expected).  geom/shape_sweep.c. */
+** no contact triple was found (never expected).  shapes/shape_sweep.c. */
 int shape_circumscribe(const shape *k, geom_point a, geom_point b, geom_point c, int contact[3],
                        int *corner);
 
