@@ -109,7 +109,7 @@ static void ts_check_verdict(const rule *r, const study_verdict *v, const flipgr
     uint64_t k = t == STUDY_ROW_DT ? c->dt : c->type[t];
     double p = c->samples ? 100.0 * (double)k / (double)c->samples : 50, lo, hi;
     study_wilson(k, c->samples, &lo, &hi);
-    assert_true(v->lo[t] == lo && v->hi[t] == hi && lo <= p && p <= hi);
+    assert_true(v->lo[t] == lo && v->hi[t] == hi && lo <= p + 1e-9 && p <= hi + 1e-9);
   }
 }
 
