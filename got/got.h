@@ -41,6 +41,7 @@
 #define FLIPLAB_GOT_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "geom.h"
 #include "joint.h"
 #include "rule.h"
@@ -150,5 +151,39 @@ typedef struct got_diff {
   size_t triangles_common;
 } got_diff;
 int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff *out);
+
+/* ---- options and results through verbs (got/got_result.c) ----
+** For callers that do not compile against this header (python/fliplab:
+** docs/python.md, "How the package talks to the library"), as lot.h's
+** lot_options and lot_stats verbs: got_options made and set by verbs,
+** got_result on the heap and read by the names of its fields.  A field
+** added to got_result needs its row in got_result.c's table. */
+
+/* got_options on the heap: threads 0 (all cores), tie_eps
+** RULE_DEFAULT_TIE_EPS; NULL when out of memory. */
+got_options *got_options_new(void);
+void got_options_free(got_options *o);
+/* 0, or -1 leaving o unchanged: threads outside 0 .. GEOM_MAX_THREADS, a
+** tie tolerance that is not a finite number >= 0. */
+int got_options_set_threads(got_options *o, int threads);
+int got_options_set_tie_eps(got_options *o, double tie_eps);
+
+/* A zero got_result on the heap for got_solve (NULL when out of memory);
+** got_result_delete frees its triangles (got_result_free) and itself. */
+got_result *got_result_new(void);
+void got_result_delete(got_result *res);
+
+/* got_result by name: got_result_field(i) is its i-th field in declaration
+** order (NULL past the last); got_result_get_i64 reads an integer (size_t,
+** int, the joint as its joint_id), got_result_get_double a double,
+** got_result_get_text cert_why (NULL when unset or for another name).
+** 0, or -1 for a name that is no field of that type.  The triangles
+** (tri) are read by got_result_get_triangles: ntri of them, i k j into
+** ijk[3 q ..] and the badness into bad[q]; returns ntri. */
+const char *got_result_field(size_t i);
+int got_result_get_i64(const got_result *res, const char *name, int64_t *out);
+int got_result_get_double(const got_result *res, const char *name, double *out);
+const char *got_result_get_text(const got_result *res, const char *name);
+size_t got_result_get_triangles(const got_result *res, int32_t *ijk, double *bad);
 
 #endif
