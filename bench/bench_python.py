@@ -9,8 +9,9 @@ of lot() run alternately) of:
   1. DT of N = 10^6 uniform points from one numpy array: fliplab.lot(p, "DT")
      against scipy.spatial.Delaunay(p), side by side in one process;
   2. the module's overhead: lot() in full (validation, conversion, result
-     arrays) against the C calls it makes (lot_build, lot_get_triangles,
-     lot_get_hull, lot_free called directly through ctypes on the same array);
+     arrays) against the C calls it makes (the lot_options verbs, lot_build,
+     lot_get_triangles, lot_get_hull, lot_get_neighbors, lot_free called
+     directly through ctypes on the same array);
   3. vectorised badness of 10^7 triangles (fliplab.badness(t, "R")) against a
      Python loop computing the same formula R = abc / (4A) with math, timed
      on the first 10^5 triangles and scaled by 100; and where the vectorised
@@ -53,19 +54,28 @@ def paired_medians(fa, fb, runs):
 
 
 def c_only(p):
+    """The C calls lot(p, "DT") makes, and nothing else: the options, the
+    build, the triangles, the hull and the neighbours (lot() reads both
+    off the mesh), through ctypes on the same array."""
     lib = _lib.lib
     r = fliplab.Rule("DT")
-    o = _lib.LotOptionsRoom()
-    lib.lot_options_init(ctypes.byref(o), ctypes.byref(r._c))
+    o = lib.lot_options_new(ctypes.byref(r._c))
     L = ctypes.c_void_p()
     e = _lib.errbuf()
-    if lib.lot_build(ctypes.byref(L), points_ptr(p), len(p), ctypes.byref(o), e, _lib.ERRLEN):
-        raise RuntimeError(_lib.text(e))
-    st = lib.lot_get_stats(L).contents
-    tri = np.empty((st.triangles, 3), dtype=np.int32)
+    try:
+        if lib.lot_build(ctypes.byref(L), points_ptr(p), len(p), o, e, _lib.ERRLEN):
+            raise RuntimeError(_lib.text(e))
+    finally:
+        lib.lot_options_free(o)
+    s = lib.lot_get_stats(L)
+    m = _lib.get_u64(lib.lot_stats_get_u64, s, "triangles")
+    tri = np.empty((m, 3), dtype=np.int32)
     lib.lot_get_triangles(L, ptr(tri, ctypes.c_uint32))
-    hull = np.empty(st.hull, dtype=np.int32)
+    hull = np.empty(_lib.get_u64(lib.lot_stats_get_u64, s, "hull"), dtype=np.int32)
     lib.lot_get_hull(L, ptr(hull, ctypes.c_uint32))
+    nb = np.empty((m, 3), dtype=np.int32)
+    if lib.lot_get_neighbors(L, ptr(nb, ctypes.c_int32)) != 0:
+        raise MemoryError("lot_get_neighbors: out of memory")
     lib.lot_free(L)
 
 

@@ -2,57 +2,86 @@
 triangulation (`fliplab lot --rule ES:SHAPE --cdf FILE`, lot/cdf.c,
 docs/emptyshape.md): the triangles whose circumscribing shape is a
 homothet of K, and the CDF-Delaunay edges that lie in no kept triangle."""
+from __future__ import annotations
+
 import ctypes
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib
 from ._arrays import points_ptr, ptr
+from ._mirrors import LotCdf
+
+if TYPE_CHECKING:
+    from ._lot import Triangulation
 
 lib = _lib.lib
 
 
-class LotCdf(ctypes.Structure):
-    """lot_cdf (lot/lot.h)."""
-    _fields_ = [("triangles", ctypes.c_size_t), ("tri", ctypes.POINTER(ctypes.c_uint32)),
-                ("edges", ctypes.c_size_t), ("edge", ctypes.POINTER(ctypes.c_uint32)),
-                ("rounded", ctypes.c_size_t), ("conflicts", ctypes.c_size_t)]
-
-
-lib.lot_cdf_extract.restype = ctypes.c_int
-lib.lot_cdf_extract.argtypes = [_lib.Point_p, ctypes.POINTER(ctypes.c_uint32), ctypes.c_size_t,
-                                ctypes.c_void_p, ctypes.POINTER(LotCdf)]
-lib.lot_cdf_free.restype = None
-lib.lot_cdf_free.argtypes = [ctypes.POINTER(LotCdf)]
-
-
 class Cdf:
-    """The CDF Delaunay graph: triangles (k, 3) int32 (the kept ones, rows
-    of the triangulation), edges (e, 2) int32 (smaller index first,
-    sorted), rounded (triangles dropped: their circumscribing shape is a
-    corner's rounding shape) and conflicts (0 on an empty-shape
-    triangulation)."""
+    """The CDF Delaunay graph of an empty-shape triangulation (cdf()).
 
-    def __init__(self, triangles, edges, rounded, conflicts):
+    Parameters
+    ----------
+    triangles : ndarray of int32, shape (k, 3)
+    edges : ndarray of int32, shape (e, 2)
+    rounded, conflicts : int
+
+    Attributes
+    ----------
+    triangles : ndarray of int32, shape (k, 3)
+        The kept triangles, rows of the triangulation.
+    edges : ndarray of int32, shape (e, 2)
+        CDF-Delaunay edges in no kept triangle, smaller index first, sorted.
+    rounded : int
+        Triangles dropped: their circumscribing shape is a corner's
+        rounding shape.
+    conflicts : int
+        0 on an empty-shape triangulation.
+    """
+
+    def __init__(self, triangles: npt.NDArray[np.int32], edges: npt.NDArray[np.int32],
+                 rounded: int, conflicts: int) -> None:
         self.triangles, self.edges = triangles, edges
         self.rounded, self.conflicts = rounded, conflicts
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "<fliplab.Cdf: %d triangles, %d extra edges, %d dropped>" % (
             len(self.triangles), len(self.edges), self.rounded)
 
 
-def _array(p, n, k):
+def _array(p: Any, n: int, k: int) -> npt.NDArray[np.int32]:
     a = np.empty((n, k), dtype=np.int32)
     if n:
         ctypes.memmove(a.ctypes.data, p, a.nbytes)
     return a
 
 
-def cdf(t):
-    """The CDF Delaunay graph of a Triangulation made by lot() with an
-    empty-shape rule ES:SHAPE, extracted as `lot --cdf` does.  A
-    triangulation made with segments or holes is refused, as `lot --cdf`
-    refuses a constrained run: its forced triangles have no empty shape."""
+def cdf(t: Triangulation) -> Cdf:
+    """The convex-distance Delaunay graph of an empty-shape triangulation,
+    extracted as the program's lot command does (docs/emptyshape.md).
+
+    Parameters
+    ----------
+    t : Triangulation
+        Made by lot() with an empty-shape rule ES:SHAPE, without segments
+        or holes (a constrained run's forced triangles have no empty shape).
+
+    Returns
+    -------
+    Cdf
+
+    Raises
+    ------
+    TypeError
+        t is no Triangulation.
+    ValueError
+        A rule other than ES:SHAPE, or a constrained run.
+    MemoryError
+        The extraction ran out of memory.
+    """
     from ._lot import Triangulation
     if not isinstance(t, Triangulation):
         raise TypeError("cdf: expected a fliplab.Triangulation (from fliplab.lot), got %s"

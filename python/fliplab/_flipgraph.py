@@ -1,72 +1,68 @@
 """_flipgraph.py: every triangulation of a small site set and its flip graph
 directed by a rule (classify/siteflip.h, docs/sitesets.md)."""
+from __future__ import annotations
+
 import ctypes
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib
+from ._args import tie_eps_arg
 from ._arrays import as_coords, frozen, points_ptr
-from ._rules import as_rule, tie_eps_arg, _raise_user_errors
+from ._mirrors import SiteflipResult
+from ._rules import Rule, as_rule, _raise_user_errors
 
 lib = _lib.lib
-SITEFLIP_MAX_SITES = 16
-
-
-class SiteflipQuad(ctypes.Structure):
-    _fields_ = [("v", ctypes.c_ubyte * 4), ("tri", ctypes.c_int * 4)]
-
-
-class SiteflipEdge(ctypes.Structure):
-    _fields_ = [("ac", ctypes.c_int), ("bd", ctypes.c_int), ("quad", ctypes.c_int)]
-
-
-class SiteflipGraph(ctypes.Structure):
-    _fields_ = [("n", ctypes.c_int), ("p", _lib.Point * SITEFLIP_MAX_SITES),
-                ("nnodes", ctypes.c_int), ("node", ctypes.c_void_p), ("per", ctypes.c_int),
-                ("node_tri", ctypes.POINTER(ctypes.c_int)), ("ntris", ctypes.c_int),
-                ("tri_v", ctypes.POINTER(ctypes.c_ubyte * 3)), ("tri", ctypes.c_void_p),
-                ("nquads", ctypes.c_int), ("quad", ctypes.POINTER(SiteflipQuad)),
-                ("nedges", ctypes.c_int), ("edge", ctypes.POINTER(SiteflipEdge)),
-                ("adj_off", ctypes.c_void_p), ("adj", ctypes.c_void_p),
-                ("delaunay", ctypes.c_int)]
-
-
-class SiteflipResult(ctypes.Structure):
-    _fields_ = [("nsinks", ctypes.c_int), ("nsources", ctypes.c_int), ("ties", ctypes.c_int),
-                ("cycle", ctypes.c_int), ("sink_dt", ctypes.c_int), ("has_got", ctypes.c_int),
-                ("got_node", ctypes.c_int), ("got_total", ctypes.c_double),
-                ("worst_sink", ctypes.c_int), ("worst_gap", ctypes.c_double)]
-
-
-_G = ctypes.POINTER(SiteflipGraph)
-lib.siteflip_build.restype = _G
-lib.siteflip_build.argtypes = [_lib.Point_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_size_t]
-lib.siteflip_free.restype = None
-lib.siteflip_free.argtypes = [_G]
-lib.siteflip_direct.restype = ctypes.c_int
-lib.siteflip_direct.argtypes = [_G, _lib.Rule_p, ctypes.c_double, ctypes.POINTER(ctypes.c_int),
-                                ctypes.POINTER(ctypes.c_int), ctypes.POINTER(SiteflipResult)]
-lib.siteflip_node_key.restype = ctypes.c_double
-lib.siteflip_node_key.argtypes = [_G, _lib.Rule_p, ctypes.c_int]
 
 
 class FlipGraph:
-    """The flip graph of a site set directed by a rule.
+    """The flip graph of a site set directed by a rule (flipgraph()).
 
-    points     (n, 2) the sites
-    nodes      (N, T, 3) int32: triangulation u's T triangles (site indices,
-               ascending), nodes in breadth-first order from triangulation 0
-    edges      (E, 2) int32 directed flips (from, to): the rule prefers `to`
-    ties       (K, 2) int32 flips the rule decides `either` (no direction)
-    quads      (E, 4) the flip's quadrilateral A B C D (anticlockwise, A the
-               smallest site), its diagonal AC in edges' ac node
-    sinks, sources   arrays of nodes; dt the Delaunay triangulation (-1 when
-               not unique); got the best triangulation of a triangle-based
-               rule (None otherwise), got_total its total; worst_sink,
-               worst_gap; cycle (a directed cycle among the strict edges);
-               sink_dt (True / False: the unique sink is / is not DT; None
-               when there is no unique sink or DT is not unique)."""
+    Parameters
+    ----------
+    g : ctypes pointer
+        The library's siteflip_graph (read, not kept).
+    dec : list of int
+        The rule's decision on each of the graph's quadrilaterals.
+    sinks : list of int
+        The sinks, first nsinks of them.
+    res : SiteflipResult
+        siteflip_direct's result.
+    rule : Rule
+    points : ndarray of float64, shape (n, 2)
 
-    def __init__(self, g, dec, sinks, res, rule, points):
+    Attributes
+    ----------
+    points : ndarray of float64, shape (n, 2)
+        The sites.
+    nodes : ndarray of int32, shape (N, T, 3)
+        Triangulation u's T triangles (site indices, ascending), nodes in
+        breadth-first order from triangulation 0.
+    edges : ndarray of int32, shape (E, 2)
+        Directed flips (from, to): the rule prefers `to`.
+    ties : ndarray of int32, shape (K, 2)
+        Flips the rule decides either way (no direction).
+    flip_quads : ndarray of int32, shape (E + K, 4)
+        Each flip's quadrilateral A B C D (anticlockwise, A the smallest site).
+    sinks, sources : ndarray of int32
+    dt : int
+        The Delaunay triangulation, -1 when not unique.
+    got, got_total : int or None, float or None
+        The best triangulation of a triangle-based rule and its total.
+    worst_sink, worst_gap : int or None, float or None
+    keys : ndarray of float64, shape (N,)
+        Each node's total in key space (a triangle-based rule).
+    cycle : bool
+        A directed cycle among the strict edges.
+    sink_dt : bool or None
+        The unique sink is DT (None when there is no unique sink or DT is
+        not unique).
+    """
+
+    def __init__(self, g: Any, dec: list[int], sinks: list[int], res: SiteflipResult,
+                 rule: Rule, points: npt.NDArray[np.float64]) -> None:
         G = g.contents
         self.rule = rule
         self.points = points
@@ -104,9 +100,20 @@ class FlipGraph:
             self.keys = np.array([lib.siteflip_node_key(g, ctypes.byref(rule._c), u)
                                   for u in range(N)])
 
-    def to_networkx(self):
-        """A networkx.DiGraph: node attributes triangles, sink, dt, got; an
-        edge per directed flip, two (tie=True) per tie."""
+    def to_networkx(self) -> Any:
+        """The graph for networkx.
+
+        Returns
+        -------
+        networkx.DiGraph
+            Node attributes triangles, sink, dt, got; an edge per directed
+            flip, two (tie=True) per tie.
+
+        Raises
+        ------
+        ImportError
+            networkx is not installed.
+        """
         import networkx as nx
         G = nx.DiGraph()
         sinks = set(self.sinks.tolist())
@@ -119,17 +126,40 @@ class FlipGraph:
             G.add_edge(b, a, tie=True)
         return G
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return ("<fliplab.FlipGraph %s: %d sites, %d triangulations, %d flips, %d sinks%s>"
                 % (self.rule.name, len(self.points), len(self.nodes),
                    len(self.edges) + len(self.ties), len(self.sinks),
                    ", ties" if len(self.ties) else ""))
 
 
-def flipgraph(sites, rule, tie_eps=None):
-    """Every triangulation of a site set (3 to 16 sites, no two equal, not
-    all on a line; convex or not) and its flip graph directed by the rule,
-    as `fliplab flipgraph --sites FILE --rule R`."""
+def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = None) -> FlipGraph:
+    """Every triangulation of a small site set and its flip graph directed by
+    the rule, as the program's `flipgraph --sites FILE --rule R`
+    (docs/sitesets.md).
+
+    Parameters
+    ----------
+    sites : array_like, shape (n, 2)
+        3 to 16 sites, no two equal, not all on a line; convex or not.
+    rule : str or Rule
+        A Rule or a rule name: "DT", MEASURE_JOINT, ES:SHAPE or a plugin's
+        quadrilateral rule (Rule).
+    tie_eps : float, optional
+        The relative tie tolerance (default the rule's).
+
+    Returns
+    -------
+    FlipGraph
+
+    Raises
+    ------
+    ValueError
+        Bad sites (the library's message), a bad rule or tie_eps; a bad
+        value of a user measure.
+    MemoryError
+        Out of memory.
+    """
     r = as_rule(rule)
     eps = tie_eps_arg(tie_eps, r.tie_eps)
     p = frozen(as_coords(sites, "sites", (-1, 2), own=True))   # kept as .points

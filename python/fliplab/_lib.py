@@ -1,139 +1,36 @@
-"""_lib.py: loading libfliplab.so with ctypes and declaring the C functions
-the package calls, with ctypes mirrors of the public structures they use.
+"""_lib.py: loading libfliplab.so with ctypes, and every prototype of the
+package: each C function it calls is declared here, in _PROTOS (restype,
+argtypes), and nowhere else (python/tests/test_package.py checks).
 
 Where the library is found, first match wins:
   1. the environment variable FLIPLAB_LIBRARY (a path to libfliplab.so:
      a build tree's, e.g. FLIPLAB_LIBRARY=build/libfliplab.so);
   2. the library installed with this package (``cmake --install`` writes
      _install.py beside this file, naming it relative to the package);
-  3. the dynamic linker's search (ldconfig, LD_LIBRARY_PATH).
+  3. the library pip installed inside this package (setup.py copies it here);
+  4. the dynamic linker's search (ldconfig, LD_LIBRARY_PATH).
 
 ctypes.CDLL releases the GIL for the duration of every call, so a long C
 call (a triangulation of 10^6 points, a census) lets other Python threads
-run.  The structure mirrors must match the C headers field for field:
-python/tests/test_layout.py compares every mirror of the package with the
-sizes and offsets the compiler gave the headers (python/tests/layout.c),
-and _check_layout() verifies the rule and options against
-lot_options_init's documented defaults when the module loads, so that a
-library built from other headers fails at import instead of reading garbage.
+run.  What the package reads from the library rather than restating:
+RULE_DEFAULT_TIE_EPS (the tie tolerance of a rule the library makes), the
+names of lot_stats' fields, which options go together
+(lot_options_check).  The structures it still mirrors are in _mirrors.py;
+_check_layout() tests the rule mirror and MAX_THREADS when the module
+loads, so that a library built from other headers fails at import
+instead of reading garbage.
 """
 import ctypes
 import os
 
-import numpy as np
+from ._args import MAX_THREADS
+from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, Measure, Point_p,
+                       ProgressFn, ReportCensusMeta, ReportCensusRow, ReportMeta, ReportPoly,
+                       ReportRow, Rule, Rule_p, RuleQuad, SamplerPentagons, SamplerRng,
+                       SiteflipCounts, SiteflipGraph_p, SiteflipResult, c_double_p, c_int32_p,
+                       c_uint32_p, RULE_TRIANGLE)
 
 SONAME = "libfliplab.so.0.1"
-
-c_double_p = ctypes.POINTER(ctypes.c_double)
-c_uint32_p = ctypes.POINTER(ctypes.c_uint32)
-c_int32_p = ctypes.POINTER(ctypes.c_int32)
-
-
-class Point(ctypes.Structure):
-    """geom_point (geom/predicates.h)."""
-    _fields_ = [("x", ctypes.c_double), ("y", ctypes.c_double)]
-
-
-Point_p = ctypes.POINTER(Point)
-
-
-class Rule(ctypes.Structure):
-    """rule (fliprules/rule.h)."""
-    _fields_ = [("kind", ctypes.c_int), ("measure", ctypes.c_int), ("joint", ctypes.c_int),
-                ("sign", ctypes.c_int), ("quad", ctypes.c_int), ("tie_eps", ctypes.c_double),
-                ("name", ctypes.c_char * 1024)]   # RULE_NAME_MAX
-
-
-Rule_p = ctypes.POINTER(Rule)
-RULE_TRIANGLE, RULE_QUAD = 0, 1
-RULE_DEFAULT_TIE_EPS = 1e-12
-
-
-class LotOptions(ctypes.Structure):
-    """lot_options (lot/lot.h), constraints included."""
-    _fields_ = [("r", Rule), ("algorithm", ctypes.c_int), ("order", ctypes.c_int),
-                ("seed", ctypes.c_uint64), ("max_flips", ctypes.c_uint64),
-                ("tie_eps", ctypes.c_double), ("decide", ctypes.c_void_p),
-                ("decide_ctx", ctypes.c_void_p), ("segments", c_uint32_p),
-                ("nsegments", ctypes.c_size_t), ("holes", Point_p),
-                ("nholes", ctypes.c_size_t), ("keep_hull", ctypes.c_int)]
-
-
-class LotOptionsRoom(ctypes.Structure):
-    """lot_options with room after it: fields a newer lot.h appends at the
-    end are set by lot_options_init and left at their defaults."""
-    _fields_ = [("o", LotOptions), ("_room", ctypes.c_char * 2048)]
-
-
-LOT_CYCLE_QUADS = 8
-
-
-class LotStats(ctypes.Structure):
-    """lot_stats (lot/lot.h)."""
-    _fields_ = [("n", ctypes.c_size_t), ("distinct", ctypes.c_size_t),
-                ("duplicates", ctypes.c_size_t), ("hull", ctypes.c_size_t),
-                ("triangles", ctypes.c_size_t), ("flips", ctypes.c_uint64),
-                ("status", ctypes.c_int), ("cycle_length", ctypes.c_uint64),
-                ("cycle_quads", ctypes.c_size_t),
-                ("cycle_quad", (ctypes.c_uint32 * 4) * LOT_CYCLE_QUADS),
-                ("max_flips", ctypes.c_uint64), ("seconds_init", ctypes.c_double),
-                ("seconds_flip", ctypes.c_double),
-                ("segments", ctypes.c_size_t), ("constrained", ctypes.c_size_t),
-                ("segments_merged", ctypes.c_size_t), ("segments_split", ctypes.c_size_t),
-                ("segments_removed", ctypes.c_size_t), ("holes", ctypes.c_size_t),
-                ("removed", ctypes.c_size_t)]
-
-
-class LotCheckResult(ctypes.Structure):
-    """lot_check_result (lot/lot.h)."""
-    _fields_ = [("interior_edges", ctypes.c_size_t), ("boundary_edges", ctypes.c_size_t),
-                ("decided", ctypes.c_size_t), ("not_optimal", ctypes.c_size_t),
-                ("bad_edge", ctypes.c_uint32 * 2), ("valid", ctypes.c_int),
-                ("segments_missing", ctypes.c_size_t), ("missing_segment", ctypes.c_size_t)]
-
-
-class GeomPslg(ctypes.Structure):
-    """geom_pslg (geom/geom.h): vertices, segments, hole points."""
-    _fields_ = [("pts", Point_p), ("npts", ctypes.c_size_t), ("seg", c_uint32_p),
-                ("nseg", ctypes.c_size_t), ("hole", Point_p), ("nholes", ctypes.c_size_t)]
-
-
-class ReportPoly(ctypes.Structure):
-    """report_poly (reports/report.h): a .poly file's graph and what was ignored."""
-    _fields_ = [("g", GeomPslg), ("seg_line", ctypes.POINTER(ctypes.c_uint64)),
-                ("attributes", ctypes.c_size_t), ("regions", ctypes.c_size_t),
-                ("markers", ctypes.c_int), ("first", ctypes.c_int)]
-
-
-class Measure(ctypes.Structure):
-    """measure (badness/measure.h)."""
-    _fields_ = [("name", ctypes.c_char_p), ("symbol", ctypes.c_char_p),
-                ("desc", ctypes.c_char_p), ("sign", ctypes.c_int), ("fn", ctypes.c_void_p),
-                ("ctx", ctypes.c_void_p)]
-
-
-class Joint(ctypes.Structure):
-    """The first fields of joint (joints/joint.h): its name."""
-    _fields_ = [("name", ctypes.c_char_p)]
-
-
-class RuleQuad(ctypes.Structure):
-    """rule_quad (fliprules/rule.h)."""
-    _fields_ = [("name", ctypes.c_char_p), ("desc", ctypes.c_char_p), ("fn", ctypes.c_void_p),
-                ("ctx", ctypes.c_void_p)]
-
-
-PentagonFn = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_uint64, ctypes.c_uint64, Point_p)
-
-
-class SamplerPentagons(ctypes.Structure):
-    """sampler_pentagons (samplers/sampler.h)."""
-    _fields_ = [("name", ctypes.c_char_p), ("draw", PentagonFn)]
-
-
-class SamplerRng(ctypes.Structure):
-    """sampler_rng (samplers/sampler.h)."""
-    _fields_ = [("s", ctypes.c_uint64 * 4)]
 
 
 def _find():
@@ -164,110 +61,231 @@ def _load():
     except OSError as e:
         raise ImportError(
             "fliplab: cannot load the shared library %r (%s); set FLIPLAB_LIBRARY to "
-            "the path of libfliplab.so (a build tree's, e.g. build/libfliplab.so) or "
-            "install fliplab with cmake --install" % (path, e)) from None
+            "the path of libfliplab.so (a build tree's, e.g. build/libfliplab.so), or "
+            "install the package with the library (docs/python.md)" % (path, e)) from None
 
 
 lib, path = _load()
+libc = ctypes.CDLL(None)     # open_memstream, for the tables written into memory
 
 _size = ctypes.c_size_t
+_size_p = ctypes.POINTER(ctypes.c_size_t)
 _char_p = ctypes.c_char_p
 _int = ctypes.c_int
+_int_p = ctypes.POINTER(ctypes.c_int)
 _u64 = ctypes.c_uint64
-_void_p = ctypes.c_void_p
+_u64_p = ctypes.POINTER(ctypes.c_uint64)
+_i64_p = ctypes.POINTER(ctypes.c_int64)
+_double = ctypes.c_double
+_void_p = ctypes.c_void_p       # the library's own objects: lot, lot_options, got_result, ...
+_rng_p = ctypes.POINTER(SamplerRng)
 
-# name: (restype, argtypes)
+# name: (restype, argtypes), by header
 _PROTOS = {
+    # fliprules/rule.h, badness/measure.h, badness/formula.h, joints/joint.h, plugins
     "rule_parse": (_int, [_char_p, Rule_p, _char_p, _size]),
-    "rule_is_shape": (_int, [Rule_p]),
-    "rule_shape": (_void_p, [Rule_p]),
     "rule_triangle": (_int, [_int, _int, Rule_p, _char_p, _size]),
     "rule_delaunay": (Rule, []),
     "rule_quad_count": (_int, []),
     "rule_quad_get": (ctypes.POINTER(RuleQuad), [_int]),
     "rule_eval_quads": (None, [Rule_p, Point_p, _size, ctypes.POINTER(ctypes.c_byte),
                                c_double_p, c_double_p]),
-    "rule_total_key": (ctypes.c_double, [Rule_p, c_double_p, _size]),
-    "rule_gap": (ctypes.c_double, [Rule_p, ctypes.c_double, ctypes.c_double]),
+    "rule_total_key": (_double, [Rule_p, c_double_p, _size]),
+    "rule_gap": (_double, [Rule_p, _double, _double]),
+    "rule_list_triangle": (_int, [_int_p, _int, Rule_p, _int]),
+    "rule_is_shape": (_int, [Rule_p]),
+    "rule_shape": (_void_p, [Rule_p]),
     "measure_count": (_int, []),
     "measure_get": (ctypes.POINTER(Measure), [_int]),
     "measure_find": (_int, [_char_p]),
     "measure_eval_tris": (None, [_int, Point_p, _size, c_double_p]),
+    "measure_register": (_int, [ctypes.POINTER(Measure)]),
+    "measure_check_name": (_int, [_char_p, _char_p, _char_p, _size]),
     "joint_count": (_int, []),
     "joint_get": (ctypes.POINTER(Joint), [_int]),
     "formula_define": (_int, [_char_p, _char_p, _size]),
     "formula_check_errors": (_int, [_char_p, _size]),
     "formula_clear_errors": (None, []),
+    "formula_check_value": (_double, [_char_p, ctypes.POINTER(GeomTri), _double, _int, _int]),
+    "formula_note_message": (None, [_char_p]),
     "plugin_load": (_int, [_char_p, _char_p, _size]),
-    "geom_coord_check": (_int, [ctypes.c_double]),
+    # geom/geom.h
+    "geom_coord_check": (_int, [_double]),
     "geom_coorderr_str": (_char_p, [_int]),
     "geom_coord_check_n": (_size, [c_double_p, _size]),
     "geom_threads_check": (_int, [ctypes.c_longlong, _char_p, _size]),
-    "lot_options_init": (None, [ctypes.POINTER(LotOptionsRoom), Rule_p]),
+    "geom_tri_make_n": (None, [ctypes.POINTER(GeomTri), Point_p, _size]),
+    "geom_simple_polygon_check": (_int, [Point_p, _size, _size_p, _size_p, _int_p]),
+    # lot/lot.h: the run's options and results through verbs
+    "lot_options_new": (_void_p, [Rule_p]),
+    "lot_options_free": (None, [_void_p]),
+    "lot_options_set_algorithm": (_int, [_void_p, _int]),
+    "lot_options_set_order": (_int, [_void_p, _int]),
+    "lot_options_set_seed": (None, [_void_p, _u64]),
+    "lot_options_set_max_flips": (None, [_void_p, _u64]),
+    "lot_options_set_tie_eps": (_int, [_void_p, _double]),
+    "lot_options_set_segments": (None, [_void_p, c_uint32_p, _size]),
+    "lot_options_set_holes": (None, [_void_p, Point_p, _size]),
+    "lot_options_set_keep_hull": (None, [_void_p, _int]),
+    "lot_options_check": (_int, [_void_p, _char_p, _size]),
     "lot_default_max_flips": (_u64, [_size]),
-    "lot_build": (_int, [ctypes.POINTER(_void_p), Point_p, _size,
-                         ctypes.POINTER(LotOptionsRoom), _char_p, _size]),
-    "lot_get_stats": (ctypes.POINTER(LotStats), [_void_p]),
+    "lot_check_memory": (_int, [_size, _char_p, _size]),
+    "lot_build": (_int, [ctypes.POINTER(_void_p), Point_p, _size, _void_p, _char_p, _size]),
+    "lot_free": (None, [_void_p]),
+    "lot_get_stats": (_void_p, [_void_p]),
+    "lot_stats_field": (_char_p, [_size]),
+    "lot_stats_get_u64": (_int, [_void_p, _char_p, _size, _u64_p]),
+    "lot_stats_get_double": (_int, [_void_p, _char_p, c_double_p]),
     "lot_get_triangles": (None, [_void_p, c_uint32_p]),
     "lot_get_hull": (_size, [_void_p, c_uint32_p]),
-    "lot_check_memory": (_int, [_size, _char_p, _size]),
-    "lot_free": (None, [_void_p]),
-    "lot_check": (_int, [Point_p, _size, c_uint32_p, _size, Rule_p,
-                         ctypes.POINTER(LotCheckResult)]),
     "lot_get_constrained": (_size, [_void_p, c_uint32_p]),
-    "lot_check_constrained": (_int, [Point_p, _size, c_uint32_p, _size, c_uint32_p, _size,
-                                     Rule_p, ctypes.POINTER(LotCheckResult)]),
-    "report_poly_read": (_int, [_char_p, ctypes.POINTER(ReportPoly), _char_p, _size]),
-    "report_poly_free": (None, [ctypes.POINTER(ReportPoly)]),
-    "lot_neighbors": (_int, [c_uint32_p, _size, _size, c_int32_p]),
-    "lot_get_badness": (None, [Point_p, c_uint32_p, _size, Rule_p, c_double_p]),
     "lot_get_neighbors": (_int, [_void_p, c_int32_p]),
+    "lot_get_badness": (None, [Point_p, c_uint32_p, _size, Rule_p, c_double_p]),
+    "lot_neighbors": (_int, [c_uint32_p, _size, _size, c_int32_p]),
     "lot_locate": (_int, [Point_p, _size, c_uint32_p, c_int32_p, _size, _int, Point_p, _size,
                           c_int32_p]),
+    "lot_check_result_new": (_void_p, []),
+    "lot_check_result_free": (None, [_void_p]),
+    "lot_check_result_field": (_char_p, [_size]),
+    "lot_check_result_get_u64": (_int, [_void_p, _char_p, _size, _u64_p]),
+    "lot_check": (_int, [Point_p, _size, c_uint32_p, _size, Rule_p, _void_p]),
+    "lot_check_constrained": (_int, [Point_p, _size, c_uint32_p, _size, c_uint32_p, _size,
+                                     Rule_p, _void_p]),
+    "lot_cdf_extract": (_int, [Point_p, c_uint32_p, _size, _void_p, ctypes.POINTER(LotCdf)]),
+    "lot_cdf_free": (None, [ctypes.POINTER(LotCdf)]),
+    # got/got.h
+    "got_options_new": (_void_p, []),
+    "got_options_free": (None, [_void_p]),
+    "got_options_set_threads": (_int, [_void_p, _int]),
+    "got_options_set_tie_eps": (_int, [_void_p, _double]),
+    "got_result_new": (_void_p, []),
+    "got_result_delete": (None, [_void_p]),
+    "got_result_field": (_char_p, [_size]),
+    "got_result_get_i64": (_int, [_void_p, _char_p, _i64_p]),
+    "got_result_get_double": (_int, [_void_p, _char_p, c_double_p]),
+    "got_result_get_text": (_char_p, [_void_p, _char_p]),
+    "got_result_get_triangles": (_size, [_void_p, c_int32_p, c_double_p]),
+    "got_check_memory": (_int, [_size, _int, _char_p, _size]),
+    "got_solve": (_int, [Point_p, _size, Rule_p, _void_p, _void_p, _char_p, _size]),
+    "got_format_total": (None, [_void_p, _double, _char_p, _size]),
+    # classify/flipgraph.h, classify/siteflip.h
+    "flipgraph_tally_run": (_int, [Rule_p, _int, ctypes.POINTER(FlipgraphRun),
+                                   ctypes.POINTER(FlipgraphCounts)]),
+    "siteflip_census": (_int, [Rule_p, _int, _int, _int, _u64, _u64, _u64, _double, _int, _size,
+                               ctypes.POINTER(SiteflipCounts), ProgressFn, _void_p, _int_p,
+                               _char_p, _size]),
+    "siteflip_build": (SiteflipGraph_p, [Point_p, _int, _char_p, _size]),
+    "siteflip_free": (None, [SiteflipGraph_p]),
+    "siteflip_direct": (_int, [SiteflipGraph_p, Rule_p, _double, _int_p, _int_p,
+                               ctypes.POINTER(SiteflipResult)]),
+    "siteflip_node_key": (_double, [SiteflipGraph_p, Rule_p, _int]),
+    # samplers/sampler.h
     "sampler_points_find": (_int, [_char_p]),
     "sampler_points": (None, [_int, _u64, _size, Point_p]),
-    "sampler_pentagon": (None, [_u64, _u64, Point_p]),
     "sampler_pentagons_find": (ctypes.POINTER(SamplerPentagons), [_char_p]),
-    "sampler_convex": (None, [_u64, _u64, _int, Point_p]),
     "sampler_sites_find": (_int, [_char_p]),
     "sampler_sites": (_int, [_int, _u64, _u64, _int, Point_p]),
     "sampler_quad": (None, [_u64, _u64, Point_p]),
-    "sampler_seed": (None, [ctypes.POINTER(SamplerRng), _u64, _u64]),
-    "sampler_vector": (_int, [ctypes.POINTER(SamplerRng), _size, Point_p]),
-    "sampler_circle": (_int, [ctypes.POINTER(SamplerRng), _size, Point_p]),
-    "sampler_star": (_int, [ctypes.POINTER(SamplerRng), _size, Point_p]),
-    "sampler_monotone": (_int, [ctypes.POINTER(SamplerRng), _size, Point_p]),
+    "sampler_seed": (None, [_rng_p, _u64, _u64]),
+    "sampler_vector": (_int, [_rng_p, _size, Point_p]),
+    "sampler_circle": (_int, [_rng_p, _size, Point_p]),
+    "sampler_star": (_int, [_rng_p, _size, Point_p]),
+    "sampler_monotone": (_int, [_rng_p, _size, Point_p]),
+    # reports/report.h
+    "report_poly_read": (_int, [_char_p, ctypes.POINTER(ReportPoly), _char_p, _size]),
+    "report_poly_free": (None, [ctypes.POINTER(ReportPoly)]),
+    "report_format_parse": (_int, [_char_p, _int_p]),
+    "report_write": (_int, [_void_p, _int, ctypes.POINTER(ReportMeta),
+                            ctypes.POINTER(ReportRow), _int]),
+    "report_census_write": (_int, [_void_p, _int, ctypes.POINTER(ReportCensusMeta),
+                                   ctypes.POINTER(ReportCensusRow), _int]),
+    "report_svg_colour": (None, [_double, _char_p, _size]),
+    # classify/flipgraph.h (flipgraph out: _classify.Flipgraph), geom/geom.h
+    "flipgraph_classify_n": (_size, [Point_p, _size, Rule_p, _int, _double, _int, _void_p,
+                                     _int_p, _size_p]),
+    "geom_polyerr_str": (_char_p, [_int]),
+    # studies/study.h: results read by field name (_studies.py), fliprules/rule.h
+    "study_wilson": (None, [_u64, _u64, c_double_p, c_double_p]),
+    "study_pentagons": (_int, [Rule_p, _int, ctypes.POINTER(FlipgraphRun), _int, _void_p]),
+    "study_quads": (_int, [Rule_p, _u64, _u64, _int, _void_p, _char_p, _size]),
+    "study_sites": (_int, [Rule_p, _int, _int, _u64, _u64, _double, _int, _void_p, _char_p,
+                           _size]),
+    "study_lot_got": (_int, [_void_p, c_uint32_p, _size, c_uint32_p, _size, Rule_p, _int,
+                             _void_p, _char_p, _size]),
+    "study_gotcheck_free": (None, [_void_p]),
+    "study_size": (_size, [_char_p]),
+    "study_field_name": (_char_p, [_char_p, _int]),
+    "study_field_type": (_int, [_char_p, _int]),
+    "study_field": (_double, [_char_p, _void_p, _int]),
+    "study_field_text": (_char_p, [_char_p, _void_p, _int]),
+    "study_witness": (ctypes.c_int64, [_void_p, _int, _int]),
+    "study_witness_sites": (_int, [_void_p, Point_p]),
+    "study_got_triangles": (c_uint32_p, [_void_p]),
+    "rule_got_is_cdt": (_int, [Rule_p]),
 }
 
-for _name, (_res, _args) in _PROTOS.items():
-    _f = getattr(lib, _name)
-    _f.restype = _res
-    _f.argtypes = _args
+# the C library's own, for a table written into memory (_report.py)
+_LIBC_PROTOS = {
+    "open_memstream": (_void_p, [ctypes.POINTER(_void_p), _size_p]),
+    "fclose": (_int, [_void_p]),
+    "free": (None, [_void_p]),
+}
+
+
+def _declare(dll, protos):
+    for name, (res, args) in protos.items():
+        f = getattr(dll, name)
+        f.restype = res
+        f.argtypes = args
+
+
+_declare(lib, _PROTOS)
+_declare(libc, _LIBC_PROTOS)
 
 ERRLEN = 1024
 
 
 def errbuf():
+    """A buffer for a C message (char *err, size_t errlen = ERRLEN)."""
     return ctypes.create_string_buffer(ERRLEN)
 
 
-MAX_THREADS = 1024   # GEOM_MAX_THREADS (geom/geom.h), checked at import
-
-
-def threads_arg(v):
-    """A thread count as every entry point of the library takes it: 0 (all
-    cores) or 1 .. MAX_THREADS, as an int; anything else raises ValueError
-    in the library's words (geom_threads_check)."""
-    ok = isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
-    if not ok or not 0 <= int(v) <= MAX_THREADS:
-        raise ValueError("threads: expected 0 (all cores) or 1 .. %d, got %r"
-                         % (MAX_THREADS, v))
-    return int(v)
-
-
 def text(b):
-    """A C message (bytes) as str."""
+    """A C message (a buffer or bytes) as str."""
     return b.value.decode("utf-8", "replace") if hasattr(b, "value") else b.decode()
+
+
+def c_names(field):
+    """The names field(0), field(1), ... until NULL (lot_stats_field, ...)."""
+    out, i = [], 0
+    while (name := field(i)) is not None:
+        out.append(name.decode())
+        i += 1
+    return tuple(out)
+
+
+def get_u64(getter, obj, name, i=0):
+    """Element i of the count `name` of obj, by getter (lot_stats_get_u64,
+    lot_check_result_get_u64)."""
+    v = ctypes.c_uint64()
+    if getter(obj, name.encode(), i, ctypes.byref(v)) != 0:
+        raise LookupError("fliplab: the library has no count %s[%d]" % (name, i))
+    return v.value
+
+
+def get_value(obj, name, getters):
+    """The field `name` of obj by the first getter of (getter, ctype) that
+    has it: an int or a float (got_result_get_i64, got_result_get_double)."""
+    for getter, ctype in getters:
+        v = ctype()
+        if getter(obj, name.encode(), ctypes.byref(v)) == 0:
+            return v.value
+    raise LookupError("fliplab: the library has no field %s" % name)
+
+
+# the library's default tie tolerance: the one of a rule it makes (rule.h)
+RULE_DEFAULT_TIE_EPS = lib.rule_delaunay().tie_eps
+LOT_STATS_FIELDS = c_names(lib.lot_stats_field)
 
 
 def _check_layout():
@@ -275,17 +293,10 @@ def _check_layout():
     e = errbuf()
     if lib.rule_parse(b"P_1", ctypes.byref(r), e, ERRLEN) != 0 or r.name != b"P_1" \
             or r.kind != RULE_TRIANGLE or r.tie_eps != RULE_DEFAULT_TIE_EPS:
-        raise ImportError("fliplab: python/fliplab/_lib.py's Rule does not match rule.h")
-    o = LotOptionsRoom()
-    lib.lot_options_init(ctypes.byref(o), ctypes.byref(r))
-    oo = o.o
-    if (oo.r.name, oo.algorithm, oo.order, oo.seed, oo.max_flips, oo.tie_eps, oo.decide,
-            bool(oo.segments), oo.nsegments, bool(oo.holes), oo.nholes, oo.keep_hull) != \
-            (b"P_1", 0, 0, 1, 0, RULE_DEFAULT_TIE_EPS, None, False, 0, False, 0, 0):
-        raise ImportError("fliplab: python/fliplab/_lib.py's LotOptions does not match lot.h")
+        raise ImportError("fliplab: python/fliplab/_mirrors.py's Rule does not match rule.h")
     if lib.geom_threads_check(MAX_THREADS, None, 0) != 0 or \
             lib.geom_threads_check(MAX_THREADS + 1, None, 0) == 0:
-        raise ImportError("fliplab: python/fliplab/_lib.py's MAX_THREADS does not match geom.h")
+        raise ImportError("fliplab: python/fliplab/_args.py's MAX_THREADS does not match geom.h")
 
 
 _check_layout()

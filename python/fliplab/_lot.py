@@ -1,16 +1,26 @@
 """_lot.py: locally optimal triangulations of point sets (lot/lot.h) from
-numpy arrays, with scipy.spatial.Delaunay's conventions for the result."""
+numpy arrays, with scipy.spatial.Delaunay's conventions for the result.
+The run's options go to C through the lot_options verbs and are checked
+by lot_options_check; its statistics and checks come back by field name
+(docs/python.md, "How the package talks to the library")."""
+from __future__ import annotations
+
 import ctypes
 import os
 import warnings
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib, _scipy
+from ._args import choice, u64
 from ._arrays import as_coords, as_indices, cstr, frozen, points_ptr, ptr
-from ._rules import as_rule, _raise_user_errors
+from ._rules import Rule, as_rule, _raise_user_errors
 
 lib = _lib.lib
 
+# Indexed by lot/lot.h's lot_algorithm, lot_order and lot_status.
 ALGORITHMS = ("incremental", "flip", "sweep")
 ORDERS = ("spatial", "input", "random")
 STATUS = ("converged", "cycle", "budget exhausted")
@@ -20,45 +30,61 @@ class CheckError(RuntimeError):
     """lot(..., check=True) found a triangulation that is not a valid LOT."""
 
 
-def _choice(v, names, what):
-    if v not in names:
-        raise ValueError("unknown %s '%s' (valid: %s)" % (what, v, ", ".join(names)))
-    return names.index(v)
-
-
-def _u64(v, what, lo=0):
-    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)) \
-            or not lo <= int(v) < 2 ** 64:
-        raise ValueError("%s: expected an integer in [%d, 2^64), got %r" % (what, lo, v))
-    return int(v)
-
-
 class Check:
-    """lot_check's verdict: valid (a triangulation), locally_optimal, the
-    counts, and the first edge the rule would flip (bad_edge, or None).
-    Constrained (lot_check_constrained): segments_missing, the input
-    segments that are no chain of triangle edges, and missing_segment, the
-    first of them (an index into the segments, or None); such a check
-    passes when segments_missing equals the missing_ok it was given."""
+    """lot_check's verdict on a triangulation (check(), Triangulation.check()).
 
-    def __init__(self, c, constrained=False, missing_ok=0):
-        self.valid = bool(c.valid)
-        self.interior_edges = c.interior_edges
-        self.boundary_edges = c.boundary_edges
-        self.decided = c.decided
-        self.not_optimal = c.not_optimal
-        self.bad_edge = (c.bad_edge[0], c.bad_edge[1]) if c.not_optimal else None
+    Parameters
+    ----------
+    counts : dict of str to int
+        lot_check_result's fields by name (lot_check_result_field).
+    constrained : bool
+        The check was lot_check_constrained's.
+    missing_ok : int
+        How many input segments may be missing (those in removed regions).
+
+    Attributes
+    ----------
+    valid : bool
+        A triangulation: anticlockwise, every edge in at most two
+        triangles, Euler's count.
+    locally_optimal : bool
+        Valid, no interior edge the rule would flip, segments_missing equal
+        to missing_ok; also the Check's truth value.
+    interior_edges, boundary_edges, decided, not_optimal : int
+        The counts.
+    bad_edge : tuple of int or None
+        The first edge the rule would flip.
+    segments_missing : int
+        Input segments that are no chain of triangle edges (constrained).
+    missing_segment : int or None
+        The first of them, an index into the segments.
+    """
+
+    def __init__(self, counts: dict[str, int], constrained: bool = False,
+                 missing_ok: int = 0) -> None:
+        self.valid = bool(counts["valid"])
+        self.interior_edges = counts["interior_edges"]
+        self.boundary_edges = counts["boundary_edges"]
+        self.decided = counts["decided"]
+        self.not_optimal = counts["not_optimal"]
+        self.bad_edge = tuple(counts["bad_edge"]) if self.not_optimal else None
         self.constrained = constrained
-        self.segments_missing = c.segments_missing if constrained else 0
-        self.missing_segment = c.missing_segment if self.segments_missing else None
-        self.locally_optimal = self.valid and c.not_optimal == 0 and \
+        self.segments_missing = counts["segments_missing"] if constrained else 0
+        self.missing_segment = counts["missing_segment"] if self.segments_missing else None
+        self.locally_optimal = self.valid and self.not_optimal == 0 and \
             self.segments_missing == missing_ok
 
-    def __bool__(self):
+    def __bool__(self) -> bool:
         return self.locally_optimal
 
-    def failure(self):
-        """Why the check failed, in lot --check's words (None when it passed)."""
+    def failure(self) -> str | None:
+        """Why the check failed, in the words of the program's check.
+
+        Returns
+        -------
+        str or None
+            None when the check passed.
+        """
         if self.locally_optimal:
             return None
         if not self.valid:
@@ -69,7 +95,7 @@ class Check:
         return ("%d of %d interior edges not locally optimal (first %d-%d)"
                 % (self.not_optimal, self.interior_edges, self.bad_edge[0], self.bad_edge[1]))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return ("Check(valid=%s, locally_optimal=%s, interior_edges=%d, decided=%d, "
                 "not_optimal=%d%s)" % (self.valid, self.locally_optimal, self.interior_edges,
                                        self.decided, self.not_optimal,
@@ -77,68 +103,135 @@ class Check:
                                        if self.constrained else ""))
 
 
-def check(points, triangles, rule, segments=None, missing_ok=0):
-    """Re-verify a triangulation from scratch (lot_check): structure
-    (anticlockwise, every edge in at most two triangles, Euler's count) and
-    local optimality of every interior edge for the rule.  With segments
-    (a (k, 2) index array; an empty one for a triangulation with holes
-    only) lot_check_constrained: each segment must be a chain of edges
-    (missing_ok of them may not be: those in removed regions), its edges
-    are not decided, and Euler's relation allows holes."""
+_CHECK_FIELDS = _lib.c_names(lib.lot_check_result_field)
+_CHECK_PAIRS = ("bad_edge",)    # the arrays of lot_check_result: two elements each
+
+
+def _check_counts(c: int) -> dict[str, Any]:
+    """lot_check_result c by name (lot_check_result_get_u64)."""
+    get = lib.lot_check_result_get_u64
+    return {f: [_lib.get_u64(get, c, f, i) for i in range(2)] if f in _CHECK_PAIRS
+            else _lib.get_u64(get, c, f) for f in _CHECK_FIELDS}
+
+
+def check(points: npt.ArrayLike, triangles: npt.ArrayLike, rule: str | Rule,
+          segments: npt.ArrayLike | None = None, missing_ok: int = 0) -> Check:
+    """Re-verify a triangulation from scratch, as the program's check does.
+
+    lot_check: structure (anticlockwise, every edge in at most two
+    triangles, Euler's count) and local optimality of every interior edge
+    for the rule.  With segments, lot_check_constrained: each segment must
+    be a chain of edges (missing_ok of them may not be: those in removed
+    regions), its edges are not decided, and Euler's relation allows holes.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+    triangles : array_like, shape (m, 3)
+        Indices into points, anticlockwise.
+    rule : str or Rule
+        A Rule or a rule name: "DT", MEASURE_JOINT, ES:SHAPE or a plugin's
+        quadrilateral rule (Rule).
+    segments : array_like, shape (k, 2), optional
+        Point indices of the segments; an empty (0, 2) array for a
+        triangulation with holes only.
+    missing_ok : int
+        How many segments may be no chain of edges.
+
+    Returns
+    -------
+    Check
+        True when the triangulation is a valid LOT.
+
+    Raises
+    ------
+    ValueError
+        Bad arrays or rule.
+    MemoryError
+        The check ran out of memory.
+    """
     r = as_rule(rule)
     p = as_coords(points, "points", (-1, 2))
     t = as_indices(triangles, "triangles", 3, len(p))
-    c = _lib.LotCheckResult()
-    if segments is None:
-        rc = lib.lot_check(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
-                           ctypes.byref(r._c), ctypes.byref(c))
-    else:
-        s = as_indices(segments, "segments", 2, len(p))
-        rc = lib.lot_check_constrained(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
-                                       ptr(s, ctypes.c_uint32), len(s), ctypes.byref(r._c),
-                                       ctypes.byref(c))
+    s = None if segments is None else as_indices(segments, "segments", 2, len(p))
+    c = lib.lot_check_result_new()
+    if not c:
+        raise MemoryError("check: out of memory")
+    try:
+        if s is None:
+            rc = lib.lot_check(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
+                               ctypes.byref(r._c), c)
+        else:
+            rc = lib.lot_check_constrained(points_ptr(p), len(p), ptr(t, ctypes.c_uint32),
+                                           len(t), ptr(s, ctypes.c_uint32), len(s),
+                                           ctypes.byref(r._c), c)
+        counts = _check_counts(c)
+    finally:
+        lib.lot_check_result_free(c)
     if rc != 0:
-        raise MemoryError("lot check: out of memory")
+        raise MemoryError("check: out of memory")
     _raise_user_errors()
-    return Check(c, segments is not None, missing_ok)
+    return Check(counts, s is not None, missing_ok)
 
 
 class Triangulation:
-    """The result of lot(): a LOT of the input points.  Its arrays are
-    read-only copies: changing the caller's input afterwards changes nothing.
+    """The result of lot(): a LOT of the input points.
 
-    points     (n, 2) float64, the input (duplicates included)
-    triangles  (m, 3) int32, indices into points, anticlockwise, each
-               starting at its smallest index, sorted (the rows of the
-               program's --out CSV); a duplicate point is represented by
-               its first occurrence
-    neighbors  (m, 3) int32: neighbors[t, k] is the triangle across the
-               edge opposite vertex k of triangle t, -1 on the hull
-               (scipy.spatial.Delaunay.neighbors' convention)
-    badness    (m,) float64, each triangle's badness under the rule (NaN
-               for DT and quadrilateral rules)
-    hull       the convex hull's vertices anticlockwise (collinear ones included)
-    constrained (c, 2) int32: the constrained edges of a run with segments
-               (the segments' pieces, split at the points on them, merged
-               where they overlap; smaller index first, sorted); (0, 2)
-               without; segments and holes are the run's input (or None)
-    flips, status ("converged", "cycle", "budget exhausted"), stats (a dict
-    of lot_stats: counts, cycle quadrilaterals, seconds), rule, algorithm,
-    order, seed.
-    badness is computed on first use; neighbors comes with lot()'s result
-    (lot_get_neighbors, from the mesh), else on first use (lot_neighbors).
+    Its arrays are read-only copies: changing the caller's input afterwards
+    changes nothing.  Like scipy.spatial.Delaunay (docs/python.md, "Where
+    it differs from scipy"): simplices, find_simplex(xi), convex_hull,
+    edges, vertex_neighbor_vertices; and to_matplotlib(), to_shapely().
 
-    Like scipy.spatial.Delaunay (docs/python.md, "Where it differs from
-    scipy"): simplices, find_simplex(xi), convex_hull, edges,
-    vertex_neighbor_vertices; and to_matplotlib(), to_shapely()."""
+    Parameters
+    ----------
+    points, triangles, hull, stats, rule, algorithm, order, seed
+        The attributes of those names (lot() makes Triangulations).
 
-    def __init__(self, points, triangles, hull, stats, rule, algorithm, order, seed):
+    Attributes
+    ----------
+    points : ndarray of float64, shape (n, 2)
+        The input, duplicates included.
+    triangles : ndarray of int32, shape (m, 3)
+        Indices into points, anticlockwise, each starting at its smallest
+        index, sorted (the rows of the program's output file); a duplicate
+        point is represented by its first occurrence.
+    neighbors : ndarray of int32, shape (m, 3)
+        neighbors[t, k] is the triangle across the edge opposite vertex k of
+        triangle t, -1 on the boundary (scipy.spatial.Delaunay.neighbors'
+        convention): read off the mesh by lot(), else made on first use.
+    badness : ndarray of float64, shape (m,)
+        Each triangle's badness under the rule (NaN for DT and
+        quadrilateral rules), computed on first use.
+    hull : ndarray of int32
+        The convex hull's vertices anticlockwise (collinear ones included).
+    constrained : ndarray of int32, shape (c, 2)
+        The constrained edges of a run with segments (the segments' pieces,
+        split at the points on them, merged where they overlap; smaller
+        index first, sorted); (0, 2) without.
+    segments, holes : ndarray or None
+        The run's constraints.
+    flips : int
+    status : str
+        One of "converged", "cycle", "budget exhausted" (STATUS).
+    stats : dict
+        lot_stats by field name (counts, the cycle's quadrilaterals, seconds).
+    rule : Rule
+    algorithm : str
+        lot()'s: "incremental", "flip" or "sweep" (ALGORITHMS).
+    order : str
+        lot()'s: "spatial", "input" or "random" (ORDERS).
+    seed : int
+    """
+
+    def __init__(self, points: npt.NDArray[np.float64], triangles: npt.NDArray[np.int32],
+                 hull: npt.NDArray[np.int32], stats: dict[str, Any], rule: Rule,
+                 algorithm: str, order: str, seed: int) -> None:
         self.points = points
         self.triangles = triangles
         self.hull = hull
         self.constrained = frozen(np.empty((0, 2), dtype=np.int32))
-        self.segments = None
-        self.holes = None
+        self.segments: npt.NDArray[np.int32] | None = None
+        self.holes: npt.NDArray[np.float64] | None = None
         self.rule = rule
         self.algorithm = algorithm
         self.order = order
@@ -146,33 +239,54 @@ class Triangulation:
         self.stats = stats
         self.flips = stats["flips"]
         self.status = stats["status"]
-        self._neighbors = None
-        self._badness = None
-        self._derived = {}      # convex_hull, edges, vertex_neighbor_vertices (_scipy)
+        self._neighbors: npt.NDArray[np.int32] | None = None
+        self._badness: npt.NDArray[np.float64] | None = None
+        self._derived: dict[str, Any] = {}    # convex_hull, edges, ... (_scipy)
 
     @property
-    def neighbors(self):
+    def neighbors(self) -> npt.NDArray[np.int32]:
+        """(m, 3) int32: the triangle across the edge opposite each vertex, -1
+        on the boundary (lot_get_neighbors in lot(), else lot_neighbors)."""
         if self._neighbors is None:
             nb = np.empty(self.triangles.shape, dtype=np.int32)
             t = np.ascontiguousarray(self.triangles, dtype=np.int32).view(np.uint32)
             if lib.lot_neighbors(ptr(t, ctypes.c_uint32), len(t), len(self.points),
                                  ptr(nb, ctypes.c_int32)) != 0:
-                raise MemoryError("lot neighbors: out of memory")
+                raise MemoryError("neighbors: out of memory")
             self._neighbors = frozen(nb)
         return self._neighbors
 
-    def find_simplex(self, xi, bruteforce=False, tol=None):
-        """scipy.spatial.Delaunay.find_simplex, exact: for each point of xi
-        (an array whose last axis is x, y) the index of a triangle holding
-        it, -1 outside (and for NaN or infinite points); on an edge the
-        smaller of its two triangles, on a vertex the smallest triangle
-        with it.  lot_locate: walks in a spatial order; bruteforce=True
-        scans every triangle instead (the same answers).  tol: the test is
-        exact, so only None (or 0) is taken."""
+    def find_simplex(self, xi: npt.ArrayLike, bruteforce: bool = False,
+                     tol: float | None = None) -> npt.NDArray[np.int32]:
+        """scipy.spatial.Delaunay.find_simplex, exact (lot_locate).
+
+        Parameters
+        ----------
+        xi : array_like, shape (..., 2)
+            Query points.
+        bruteforce : bool
+            Scan every triangle instead of walking (the same answers).
+        tol : None or 0
+            The test is exact: no tolerance is taken.
+
+        Returns
+        -------
+        ndarray of int32, shape xi.shape[:-1]
+            For each point the index of a triangle holding it, -1 outside
+            (and for NaN or infinite points); on an edge the smaller of its
+            two triangles, on a vertex the smallest triangle with it.
+
+        Raises
+        ------
+        ValueError
+            xi of another shape or dtype, a tol other than None or 0.
+        MemoryError
+            The location ran out of memory.
+        """
         return _scipy.find_simplex(self, xi, bruteforce, tol)
 
     @property
-    def convex_hull(self):
+    def convex_hull(self) -> npt.NDArray[np.int32]:
         """(h, 2) int32: the boundary edges (neighbors == -1), built as
         scipy.spatial.Delaunay.convex_hull is: row t's vertices without
         vertex k, in order, by triangle then k.  Without removed triangles
@@ -181,34 +295,57 @@ class Triangulation:
         return _scipy.cached(self, "convex_hull", _scipy.convex_hull)
 
     @property
-    def edges(self):
+    def edges(self) -> npt.NDArray[np.int32]:
         """(e, 2) int32: every edge once, smaller index first, sorted."""
         return _scipy.cached(self, "edges", _scipy.edges)
 
     @property
-    def vertex_neighbor_vertices(self):
+    def vertex_neighbor_vertices(self) -> tuple[npt.NDArray[np.int32], npt.NDArray[np.int32]]:
         """(indptr, indices) as scipy.spatial.Delaunay's: the vertices joined
         to vertex k are indices[indptr[k]:indptr[k+1]], ascending (empty for
         a duplicate point or one in no kept triangle)."""
         return _scipy.cached(self, "vertex_neighbor_vertices",
                              _scipy.vertex_neighbor_vertices)
 
-    def to_matplotlib(self):
-        """matplotlib.tri.Triangulation(x, y, triangles), its neighbours given
-        from ours in matplotlib's convention (docs/python.md)."""
+    def to_matplotlib(self) -> Any:
+        """The triangulation for matplotlib.
+
+        Returns
+        -------
+        matplotlib.tri.Triangulation
+            Triangulation(x, y, triangles), its neighbours given from ours
+            in matplotlib's convention (docs/python.md).
+
+        Raises
+        ------
+        ImportError
+            matplotlib is not installed.
+        """
         return _scipy.to_matplotlib(self)
 
-    def to_shapely(self):
-        """A list of shapely Polygons, one per triangle (row order)."""
+    def to_shapely(self) -> list[Any]:
+        """The triangles as shapely polygons.
+
+        Returns
+        -------
+        list of shapely.geometry.Polygon
+            One per triangle, anticlockwise, in row order.
+
+        Raises
+        ------
+        ImportError
+            shapely is not installed.
+        """
         return _scipy.to_shapely(self)
 
     @property
-    def simplices(self):
+    def simplices(self) -> npt.NDArray[np.int32]:
         """triangles, under scipy.spatial.Delaunay's name."""
         return self.triangles
 
     @property
-    def badness(self):
+    def badness(self) -> npt.NDArray[np.float64]:
+        """(m,) float64: each triangle's badness under the rule (lot_get_badness)."""
         if self._badness is None:
             b = np.empty(len(self.triangles), dtype=np.float64)
             t = self.triangles.view(np.uint32)
@@ -218,103 +355,180 @@ class Triangulation:
             self._badness = frozen(b)
         return self._badness
 
-    def total(self):
-        """The triangulation's total badness: its badness values combined by
-        the rule's joint (rule_total_key, then back to badness units)."""
+    def total(self) -> float:
+        """The triangulation's total badness.
+
+        Returns
+        -------
+        float
+            The badness values combined by the rule's joint (rule_total_key,
+            then back to badness units).
+
+        Raises
+        ------
+        ValueError
+            The rule is a quadrilateral rule.
+        """
         if not self.rule.is_triangle:
             raise ValueError("rule %s is a quadrilateral rule: no total badness"
                              % self.rule.name)
         b = np.ascontiguousarray(self.badness)
         return lib.rule_total_key(ctypes.byref(self.rule._c), ptr(b, ctypes.c_double), len(b))
 
-    def check(self):
-        """Re-verify from scratch (lot_check; lot_check_constrained for a run
-        with segments or holes, as lot --check): a Check, true when locally
-        optimal and every segment outside the removed regions is kept."""
+    def check(self) -> Check:
+        """Re-verify from scratch, as the program's check does.
+
+        Returns
+        -------
+        Check
+            lot_check's verdict (lot_check_constrained's for a run with
+            segments or holes): true when locally optimal and every segment
+            outside the removed regions is kept.
+
+        Raises
+        ------
+        MemoryError
+            The check ran out of memory.
+        """
         if self.segments is None and self.holes is None:
             return check(self.points, self.triangles, self.rule)
         seg = self.segments if self.segments is not None else np.empty((0, 2), np.uint32)
         return check(self.points, self.triangles, self.rule, seg,
                      self.stats["segments_removed"])
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return ("<fliplab.Triangulation LOT(%s): %d points, %d triangles, %d flips, %s>"
                 % (self.rule.name, len(self.points), len(self.triangles), self.flips,
                    self.status))
 
 
-def _stats(st):
-    quads = [tuple(st.cycle_quad[q][i] for i in range(4)) for q in range(st.cycle_quads)]
-    return {"n": st.n, "distinct": st.distinct, "duplicates": st.duplicates, "hull": st.hull,
-            "triangles": st.triangles, "flips": st.flips, "status": STATUS[st.status],
-            "cycle_length": st.cycle_length, "cycle_quads": quads, "max_flips": st.max_flips,
-            "seconds_init": st.seconds_init, "seconds_flip": st.seconds_flip,
-            "segments": st.segments, "constrained": st.constrained,
-            "segments_merged": st.segments_merged, "segments_split": st.segments_split,
-            "segments_removed": st.segments_removed, "holes": st.holes, "removed": st.removed}
+# lot_stats' fields are counts or times: read each by the getter that has it
+_STAT_GETTERS = ((lambda s, f, v: lib.lot_stats_get_u64(s, f, 0, v), ctypes.c_uint64),
+                 (lib.lot_stats_get_double, ctypes.c_double))
 
 
-def _constraints(o, n, segments, holes, keep_hull):
+def _stats(L: Any) -> dict[str, Any]:
+    """lot_stats of L by field name, as the library names them; status as
+    its name in STATUS, cycle_quads as the list of the cycle's
+    quadrilaterals (cycle_quad's rows) rather than their count."""
+    s = lib.lot_get_stats(L)
+    out = {f: _lib.get_value(s, f, _STAT_GETTERS) for f in _lib.LOT_STATS_FIELDS
+           if f != "cycle_quad"}
+    out["status"] = STATUS[out["status"]]
+    out["cycle_quads"] = [tuple(_lib.get_u64(lib.lot_stats_get_u64, s, "cycle_quad", 4 * q + k)
+                                for k in range(4)) for q in range(out["cycle_quads"])]
+    return out
+
+
+def _options(o: int, r: Rule, alg: int, odr: int, seed: int, max_flips: int) -> None:
+    """The run's options into the lot_options o (each checked before)."""
+    if lib.lot_options_set_algorithm(o, alg) != 0 or lib.lot_options_set_order(o, odr) != 0 \
+            or lib.lot_options_set_tie_eps(o, r.tie_eps) != 0:
+        raise ValueError("lot: the library refused algorithm %r, order %r or tie_eps %r"
+                         % (ALGORITHMS[alg], ORDERS[odr], r.tie_eps))
+    lib.lot_options_set_seed(o, seed)
+    lib.lot_options_set_max_flips(o, max_flips)
+
+
+def _constraints(o: int, n: int, segments: npt.ArrayLike | None, holes: npt.ArrayLike | None,
+                 keep_hull: bool) -> tuple[Any, Any]:
     """segments, holes and keep_hull into the options o, validated as the
     program's readers do (the arrays returned must outlive the call)."""
     s = None if segments is None else as_indices(segments, "segments", 2, n)
     h = None if holes is None else frozen(as_coords(holes, "holes", (-1, 2), own=True))
-    if keep_hull and s is None and h is None:
-        raise ValueError("keep_hull applies to constrained runs (segments, holes)")
     if s is not None:
-        o.o.segments, o.o.nsegments = ptr(s, ctypes.c_uint32), len(s)
+        lib.lot_options_set_segments(o, ptr(s, ctypes.c_uint32), len(s))
     if h is not None:
-        o.o.holes, o.o.nholes = points_ptr(h), len(h)
-    o.o.keep_hull = 1 if keep_hull else 0
+        lib.lot_options_set_holes(o, points_ptr(h), len(h))
+    lib.lot_options_set_keep_hull(o, 1 if keep_hull else 0)
     return s, h
 
 
-def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max_flips=None,
-        tie_eps=None, check=False, segments=None, holes=None, keep_hull=False):
-    """A locally optimal triangulation LOT(rule) of an (n, 2) array of points,
-    as `fliplab lot --rule RULE` (same algorithm, order and seed: the same
-    triangles).  Exact duplicates are merged (the first occurrence
-    represents them); fewer than three distinct points, all points on one
-    line, or a coordinate outside the contract (0 or magnitude in [1e-30,
-    1e30]) raise ValueError with the C library's message.  check=True
-    re-verifies the result from scratch and raises CheckError when it is
-    not locally optimal (a cycle, an exhausted budget).
+def lot(points: npt.ArrayLike, rule: str | Rule = "DT", algorithm: str = "incremental",
+        order: str = "spatial", seed: int = 1, max_flips: int | None = None,
+        tie_eps: float | None = None, check: bool = False,
+        segments: npt.ArrayLike | None = None, holes: npt.ArrayLike | None = None,
+        keep_hull: bool = False) -> Triangulation:
+    """A locally optimal triangulation LOT(rule) of a point set, as the
+    program's lot command makes it (the same algorithm, order and seed: the
+    same triangles).
 
-    Constrained (`lot --segments S.csv --holes H.csv [--keep-hull]`, the
-    CDT for DT): segments, a (k, 2) integer array of point indices, stay
-    edges; holes, (h, 2) points, remove the regions holding them; the
-    triangles outside the outermost segment-bounded region are removed
-    unless keep_hull.  Crossing segments, a hole on a segment or outside
-    every region raise ValueError with the C library's message."""
+    Exact duplicates are merged (the first occurrence represents them).
+    Constrained (for DT the constrained Delaunay triangulation): segments
+    stay edges, holes remove the regions holding them, and the triangles
+    outside the outermost segment-bounded region are removed unless
+    keep_hull.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+        Coordinates 0 or of magnitude in [1e-30, 1e30].
+    rule : str or Rule
+        A Rule or a rule name: "DT", MEASURE_JOINT ("P_1", "-alpha_inf"),
+        ES:SHAPE or a plugin's quadrilateral rule (Rule).
+    algorithm : str
+        "incremental" (insert, then flip back to a LOT), "flip" (a sweep
+        triangulation, then Lawson's flips) or "sweep" (the sweepline
+        algorithm: rule DT or ES:SHAPE).
+    order : str
+        The insertion order of algorithm "incremental": "spatial" (BRIO
+        rounds along a Hilbert curve), "input" or "random".
+    seed : int
+        The random order's seed, in [0, 2^64).
+    max_flips : int, optional
+        Stop after this many flips (status "budget exhausted"); default
+        1000 n + 10^7.
+    tie_eps : float, optional
+        The rule's relative tie tolerance (default the rule's).
+    check : bool
+        Re-verify the result from scratch (Triangulation.check()).
+    segments : array_like, shape (k, 2), optional
+        Point indices of segments that must stay edges.
+    holes : array_like, shape (h, 2), optional
+        Hole points: the regions holding them are removed.
+    keep_hull : bool
+        With segments or holes: keep the triangles outside the outermost
+        segment-bounded region.
+
+    Returns
+    -------
+    Triangulation
+
+    Raises
+    ------
+    ValueError
+        Fewer than three distinct points, all on one line, a coordinate
+        outside the contract, crossing segments, a misplaced hole, options
+        that do not go together (order with another algorithm, keep_hull
+        without constraints: the library's lot_options_check), a bad rule
+        or keyword (the library's message, or one naming the keyword).
+    MemoryError
+        The points do not fit in memory.
+    CheckError
+        check=True and the result is not locally optimal (a cycle, an
+        exhausted budget).
+    """
     r = as_rule(rule)
     if tie_eps is not None:
-        r = type(r)(r, tie_eps=tie_eps)
-    alg = _choice(algorithm, ALGORITHMS, "algorithm")
-    odr = _choice(order, ORDERS, "order")
-    if odr != 0 and alg != 0:
-        raise ValueError("order applies to algorithm 'incremental' only")
+        r = Rule(r, tie_eps=tie_eps)
+    alg = choice(algorithm, ALGORITHMS, "algorithm")
+    odr = choice(order, ORDERS, "order")
+    seed = u64(seed, "seed")
+    flips = 0 if max_flips is None else u64(max_flips, "max_flips", 1)
     p = frozen(as_coords(points, "points", (-1, 2), own=True))
     n = len(p)
-    o = _lib.LotOptionsRoom()
-    lib.lot_options_init(ctypes.byref(o), ctypes.byref(r._c))
-    o.o.algorithm = alg
-    o.o.order = odr
-    o.o.seed = _u64(seed, "seed")
-    o.o.max_flips = 0 if max_flips is None else _u64(max_flips, "max_flips", 1)
-    o.o.tie_eps = r.tie_eps
-    seg, hol = _constraints(o, n, segments, holes, keep_hull)
-    e = _lib.errbuf()
-    if lib.lot_check_memory(n, e, _lib.ERRLEN) != 0:
-        raise MemoryError(_lib.text(e))
-    L = ctypes.c_void_p()
-    if lib.lot_build(ctypes.byref(L), points_ptr(p), n, ctypes.byref(o), e, _lib.ERRLEN) != 0:
-        _raise_user_errors()        # a Python measure's own error comes first
-        raise _build_error(_lib.text(e))
+    o = lib.lot_options_new(ctypes.byref(r._c))
+    if not o:
+        raise MemoryError("lot: out of memory")
     try:
-        _raise_user_errors()
-        res = _result(L, p, r, algorithm, order, int(seed))
+        _options(o, r, alg, odr, seed, flips)
+        seg, hol = _constraints(o, n, segments, holes, keep_hull)
+        e = _lib.errbuf()
+        if lib.lot_options_check(o, e, _lib.ERRLEN) != 0:     # which options go together
+            raise ValueError(_lib.text(e))
+        res = _build(p, o, r, algorithm, order, seed)
     finally:
-        lib.lot_free(L)
+        lib.lot_options_free(o)
     res.holes = hol
     res.segments = None if seg is None else frozen(seg.astype(np.int32))
     if check:
@@ -324,45 +538,85 @@ def lot(points, rule="DT", algorithm="incremental", order="spatial", seed=1, max
     return res
 
 
-def _build_error(msg):
+def _build(p: npt.NDArray[np.float64], o: int, r: Rule, algorithm: str, order: str,
+           seed: int) -> Triangulation:
+    """lot_build with the options o, and its Triangulation."""
+    n = len(p)
+    e = _lib.errbuf()
+    if lib.lot_check_memory(n, e, _lib.ERRLEN) != 0:
+        raise MemoryError(_lib.text(e))
+    L = ctypes.c_void_p()
+    if lib.lot_build(ctypes.byref(L), points_ptr(p), n, o, e, _lib.ERRLEN) != 0:
+        _raise_user_errors()        # a Python measure's own error comes first
+        raise _build_error(_lib.text(e))
+    try:
+        _raise_user_errors()
+        return _result(L, p, r, algorithm, order, seed)
+    finally:
+        lib.lot_free(L)
+
+
+def _build_error(msg: str) -> Exception:
     """lot_build's message as the exception to raise (its words name no
     flag of the program, so they read the same here)."""
     return (MemoryError if "out of memory" in msg else ValueError)(msg)
 
 
-def _result(L, p, r, algorithm, order, seed):
+def _result(L: Any, p: npt.NDArray[np.float64], r: Rule, algorithm: str, order: str,
+            seed: int) -> Triangulation:
     """The Triangulation of a built lot L (still alive): triangles, hull,
     constrained edges and neighbours read off it, all read-only."""
-    st = lib.lot_get_stats(L).contents
-    stats = _stats(st)
-    tri = np.empty((st.triangles, 3), dtype=np.int32)
+    stats = _stats(L)
+    m = stats["triangles"]
+    tri = np.empty((m, 3), dtype=np.int32)
     lib.lot_get_triangles(L, ptr(tri, ctypes.c_uint32))
-    hull = np.empty(st.hull, dtype=np.int32)
+    hull = np.empty(stats["hull"], dtype=np.int32)
     lib.lot_get_hull(L, ptr(hull, ctypes.c_uint32))
-    con = np.empty((st.constrained, 2), dtype=np.int32)
+    con = np.empty((stats["constrained"], 2), dtype=np.int32)
     lib.lot_get_constrained(L, ptr(con, ctypes.c_uint32))
-    nb = np.empty((st.triangles, 3), dtype=np.int32)
+    nb = np.empty((m, 3), dtype=np.int32)
     if lib.lot_get_neighbors(L, ptr(nb, ctypes.c_int32)) != 0:
-        raise MemoryError("lot neighbors: out of memory")
+        raise MemoryError("neighbors: out of memory")
     res = Triangulation(p, frozen(tri), frozen(hull), stats, r, algorithm, order, seed)
     res.constrained, res._neighbors = frozen(con), frozen(nb)
     return res
 
 
-def _copy(ptr_, count, cols, dtype):
+def _copy(ptr_: Any, count: int, cols: int, dtype: Any) -> np.ndarray:
     if count == 0:
         return np.empty((0, cols), dtype=dtype)
     return np.ctypeslib.as_array(ptr_, (count, cols)).astype(dtype)
 
 
-def read_poly(path):
-    """Triangle's .poly file as `lot --poly FILE.poly` reads it (the same C
-    reader, report_poly_read, docs/formats.md): (points (n, 2) float64,
-    segments (k, 2) int32 0-based, holes (h, 2) float64), ready for
-    lot(points, rule, segments=segments, holes=holes).  A malformed file
-    raises ValueError "FILE line N: problem"; what the file has beyond the
-    graph (vertex attributes, regional attribute / area lines, boundary
-    markers) is ignored with a warning, as the program's note."""
+def read_poly(path: str | bytes | os.PathLike[str]) -> tuple[
+        npt.NDArray[np.float64], npt.NDArray[np.int32], npt.NDArray[np.float64]]:
+    """Triangle's .poly file, read by the program's own reader
+    (report_poly_read, docs/formats.md).
+
+    What the file has beyond the graph (vertex attributes, regional
+    attribute / area lines, boundary markers) is ignored with a
+    UserWarning, as the program's note.
+
+    Parameters
+    ----------
+    path : str, bytes or os.PathLike
+        The .poly file.
+
+    Returns
+    -------
+    points : ndarray of float64, shape (n, 2)
+    segments : ndarray of int32, shape (k, 2)
+        Numbered from 0.
+    holes : ndarray of float64, shape (h, 2)
+        Ready for lot(points, rule, segments=segments, holes=holes).
+
+    Raises
+    ------
+    ValueError
+        A malformed file: "FILE line N: problem" (the program's message).
+    MemoryError
+        The file does not fit in memory.
+    """
     pf = _lib.ReportPoly()
     e = _lib.errbuf()
     if lib.report_poly_read(cstr(path, "path", path=True), ctypes.byref(pf), e,

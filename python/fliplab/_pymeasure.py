@@ -18,62 +18,60 @@ slower than a formula).  Values are checked as a plugin's are
 error after the call.  An exception raised by fn is re-raised after the
 call, and so is a result of the wrong length (one value per triangle, in
 badness() as in the callback: _values), as the ValueError badness() gives."""
+from __future__ import annotations
+
 import ctypes
+from typing import Any, Callable
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib
 from ._arrays import as_coords, check_contract, cstr, points_ptr
+from ._mirrors import TRI_VARS as VARS, GeomTri, MeasureFn
+from ._rules import SIGNS
 
 lib = _lib.lib
 
-TRI_DTYPE = np.dtype([("x1", "f8"), ("y1", "f8"), ("x2", "f8"), ("y2", "f8"), ("x3", "f8"),
-                      ("y3", "f8"), ("a", "f8"), ("b", "f8"), ("c", "f8"), ("alpha", "f8"),
-                      ("beta", "f8"), ("gamma", "f8"), ("A", "f8"), ("P", "f8"), ("R", "f8"),
-                      ("r", "f8"), ("h", "f8"), ("rx", "f8"), ("ry", "f8")])
-VARS = TRI_DTYPE.names
+TRI_DTYPE = np.dtype([(n, "f8") for n in VARS])   # geom_tri's layout: 19 doubles
 
-
-class GeomTri(ctypes.Structure):
-    """geom_tri (geom/geom.h): 19 doubles in TRI_DTYPE's order."""
-    _fields_ = [(n, ctypes.c_double) for n in VARS]
-
-
-MeasureFn = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.POINTER(GeomTri), ctypes.c_void_p)
-lib.measure_register.restype = ctypes.c_int
-lib.measure_register.argtypes = [ctypes.POINTER(_lib.Measure)]
-lib.measure_check_name.restype = ctypes.c_int
-lib.measure_check_name.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_char_p,
-                                   ctypes.c_size_t]
-lib.formula_check_value.restype = ctypes.c_double
-lib.formula_check_value.argtypes = [ctypes.c_char_p, ctypes.POINTER(GeomTri), ctypes.c_double,
-                                    ctypes.c_int, ctypes.c_int]
-lib.formula_note_message.restype = None
-lib.formula_note_message.argtypes = [ctypes.c_char_p]
-lib.geom_tri_make_n.restype = None
-lib.geom_tri_make_n.argtypes = [ctypes.POINTER(GeomTri), _lib.Point_p,
-                                ctypes.c_size_t]
-
-_SIGN = {">= 0": 1, "<= 0": -1, "any": 0}
+_SIGN = dict(zip(SIGNS, (0, 1, -1)))      # the library's measure_sign
 _registry = {}      # measure id -> (fn, sign, keep-alive objects)
 _pending = []       # the first exception a callback raised, re-raised after the call
 
 
-def quantities(triangles):
-    """The quantities of every triangle of an (m, 3, 2) array, as the C
-    library computes them (geom_tri_make: vertices in canonical order): a
-    structured (m,) array with the fields of VARS."""
+def quantities(triangles: npt.ArrayLike) -> npt.NDArray[np.void]:
+    """The quantities of every triangle, as the C library computes them
+    (geom_tri_make: vertices in canonical order; one C pass).
+
+    Parameters
+    ----------
+    triangles : array_like, shape (m, 3, 2)
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        A structured array with the fields of the formula variables
+        (docs/measures.md): x1 y1 x2 y2 x3 y3 a b c alpha beta gamma A P R r
+        h rx ry.
+
+    Raises
+    ------
+    ValueError
+        Triangles of another shape or outside the coordinate contract.
+    """
     t = as_coords(triangles, "triangles", (-1, 3, 2))
     check_contract(t, "triangle")
-    out = np.empty(len(t), dtype=TRI_DTYPE)    # geom_tri's layout: 19 doubles
+    out = np.empty(len(t), dtype=TRI_DTYPE)
     lib.geom_tri_make_n(out.ctypes.data_as(ctypes.POINTER(GeomTri)), points_ptr(t), len(t))
     return out
 
 
-def _as_dict(rec):
+def _as_dict(rec: Any) -> dict[str, Any]:
     return {n: rec[n] for n in VARS}
 
 
-def _values(out, m, name):
+def _values(out: Any, m: int, name: str) -> npt.NDArray[np.float64]:
     """fn's result as m float64 values; another length is a ValueError (a
     scalar counts as one value), the same from badness() and from the C
     algorithms' callback."""
@@ -83,12 +81,40 @@ def _values(out, m, name):
     return v
 
 
-def measure(name, fn, sign="any", desc="a Python measure"):
-    """Register fn (arrays of triangle quantities -> array of badness; small
-    is good) as the measure NAME; sign ">= 0", "<= 0" or "any" (the joints'
-    sign convention, docs/joints.md).  Returns NAME."""
+def measure(name: str, fn: Callable[[dict[str, Any]], Any], sign: str = "any",
+            desc: str = "a Python measure") -> str:
+    """Register a badness measure written in Python, usable by name wherever a
+    built-in one is (badness(), and rules NAME_JOINT in lot(), table34(),
+    census(), got(), flipgraph()).
+
+    Parameters
+    ----------
+    name : str
+        The new measure's name (the alphabet of measure names; not taken).
+    fn : callable
+        fn(q) -> array: q is a dict of numpy arrays of triangle quantities,
+        keyed by the formula variables (quantities()); it returns one
+        badness per triangle (small is good).
+    sign : str
+        "any", ">= 0" or "<= 0": the values' sign, which decides the
+        joints the measure takes (docs/joints.md).
+    desc : str
+        A description, as measures() lists it.
+
+    Returns
+    -------
+    str
+        name.
+
+    Raises
+    ------
+    ValueError
+        An unknown sign, a name refused or taken, a NUL character, a full
+        registry.
+    """
     if sign not in _SIGN:
-        raise ValueError("sign: expected '>= 0', '<= 0' or 'any', got %r" % (sign,))
+        raise ValueError("sign: expected one of %s, got %r"
+                         % (", ".join(repr(x) for x in SIGNS), sign))
     bname, bdesc = cstr(name, "measure"), cstr(desc, "desc")
     e = _lib.errbuf()
     if lib.measure_check_name(b"measure", bname, e, _lib.ERRLEN) != 0:
@@ -122,7 +148,12 @@ def measure(name, fn, sign="any", desc="a Python measure"):
     return name
 
 
-def raise_pending():
+def is_python(mid: int) -> bool:
+    """The measure mid was registered by measure()."""
+    return mid in _registry
+
+
+def raise_pending() -> None:
     """Raise the first exception a callback kept during the last C call (fn's
     own, or _values' ValueError), clearing it; called by every path into C
     that may call Python measures (_rules._raise_user_errors)."""
@@ -132,7 +163,7 @@ def raise_pending():
         raise ex
 
 
-def badness_python(mid, triangles):
+def badness_python(mid: int, triangles: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """badness() of a Python measure: fn once on the whole array."""
     fn, s, _ = _registry[mid]
     q = quantities(triangles)

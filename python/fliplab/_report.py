@@ -5,86 +5,37 @@ table34() or census() result with the C library's own writers
 same run, and `fliplab merge` takes shards written either way.  A file is
 written to a temporary name beside it and renamed into place only when
 the whole table is out, as the program does."""
+from __future__ import annotations
+
 import ctypes
 import os
 import tempfile
+from typing import Any, Callable
 
 from . import _lib
-from ._census import FlipgraphCounts, SiteflipCounts
+from ._args import choice
+from ._census import FORMATS
+from ._mirrors import ReportCensusMeta, ReportCensusRow, ReportMeta, ReportRow, ReportRun, \
+    SITEFLIP_COUNTS
 
 lib = _lib.lib
-_libc = ctypes.CDLL(None)
-_libc.open_memstream.restype = ctypes.c_void_p
-_libc.open_memstream.argtypes = [ctypes.POINTER(ctypes.c_void_p), ctypes.POINTER(ctypes.c_size_t)]
-_libc.fclose.restype = ctypes.c_int
-_libc.fclose.argtypes = [ctypes.c_void_p]
-_libc.free.restype = None
-_libc.free.argtypes = [ctypes.c_void_p]
-JOINT_NAME_MAX = 16
-FORMATS = {"text": 0, "md": 1, "csv": 2}
+libc = _lib.libc
 
 
-class ReportRow(ctypes.Structure):
-    """report_row (reports/report.h)."""
-    _fields_ = [("measure", ctypes.c_char * 64), ("joint", ctypes.c_char * JOINT_NAME_MAX),
-                ("rule", ctypes.c_char * 1024), ("c", FlipgraphCounts)]
-
-
-class ReportRun(ctypes.Structure):
-    """report_run (reports/report.h)."""
-    _fields_ = [("known", ctypes.c_int), ("seed", ctypes.c_uint64), ("tie_eps", ctypes.c_double),
-                ("first", ctypes.c_uint64), ("end", ctypes.c_uint64), ("total", ctypes.c_uint64),
-                ("rules", ctypes.c_uint64), ("sampler", ctypes.c_char_p)]
-
-
-class ReportMeta(ctypes.Structure):
-    """report_meta (reports/report.h)."""
-    _fields_ = [("samples", ctypes.c_uint64), ("has_seed", ctypes.c_int),
-                ("seed", ctypes.c_uint64), ("has_tie_eps", ctypes.c_int),
-                ("tie_eps", ctypes.c_double), ("shard_k", ctypes.c_uint64),
-                ("shard_n", ctypes.c_uint64), ("shard_first", ctypes.c_uint64),
-                ("shard_total", ctypes.c_uint64), ("sampler", ctypes.c_char_p),
-                ("note", ctypes.c_char_p), ("text_columns", ctypes.c_int),
-                ("run", ctypes.POINTER(ReportRun))]
-
-
-class ReportCensusRow(ctypes.Structure):
-    """report_census_row (reports/report.h)."""
-    _fields_ = [("measure", ctypes.c_char * 64), ("joint", ctypes.c_char * JOINT_NAME_MAX),
-                ("rule", ctypes.c_char * 1024), ("sites", ctypes.c_int),
-                ("sampler", ctypes.c_char * 16), ("c", SiteflipCounts)]
-
-
-class ReportCensusMeta(ctypes.Structure):
-    """report_census_meta (reports/report.h)."""
-    _fields_ = [("has_seed", ctypes.c_int), ("seed", ctypes.c_uint64),
-                ("has_tie_eps", ctypes.c_int), ("tie_eps", ctypes.c_double),
-                ("shard_k", ctypes.c_uint64), ("shard_n", ctypes.c_uint64)]
-
-
-lib.report_write.restype = ctypes.c_int
-lib.report_write.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.POINTER(ReportMeta),
-                             ctypes.POINTER(ReportRow), ctypes.c_int]
-lib.report_census_write.restype = ctypes.c_int
-lib.report_census_write.argtypes = [ctypes.c_void_p, ctypes.c_int,
-                                    ctypes.POINTER(ReportCensusMeta),
-                                    ctypes.POINTER(ReportCensusRow), ctypes.c_int]
-
-
-def _memstream(write):
+def _memstream(write: Callable[[Any], int]) -> bytes:
     """What write(FILE *) puts into a memory stream, as bytes."""
     buf, size = ctypes.c_void_p(), ctypes.c_size_t()
-    f = _libc.open_memstream(ctypes.byref(buf), ctypes.byref(size))
+    f = libc.open_memstream(ctypes.byref(buf), ctypes.byref(size))
     if not f:
         raise MemoryError("to_csv: out of memory")
     rc = write(f)
-    if _libc.fclose(f) != 0 or rc != 0:
-        _libc.free(buf)
+    if libc.fclose(f) != 0 or rc != 0:
+        libc.free(buf)
         raise MemoryError("to_csv: out of memory")
     try:
         return ctypes.string_at(buf, size.value)
     finally:
-        _libc.free(buf)
+        libc.free(buf)
 
 
 def _shard(meta):
@@ -118,7 +69,7 @@ def _census_bytes(t, fmt):
     for row, x in zip(rows, t):
         row.measure, row.joint, row.rule = (x[k].encode() for k in ("measure", "joint", "rule"))
         row.sites, row.sampler = int(x["sites"]), x["sampler"].encode()
-        for f, _ in SiteflipCounts._fields_:
+        for f in SITEFLIP_COUNTS:
             setattr(row.c, f, int(x[f]))
     k, n = _shard(m)
     meta = ReportCensusMeta(has_seed=1, seed=m["seed"], has_tie_eps=1, tie_eps=m["tie_eps"],
@@ -139,18 +90,19 @@ def _write_atomic(path, data):
         raise
 
 
-def to_csv(counts, path=None, format="csv", columns=0):
-    """The table of a table34() or census() result as the program writes it
-    (format "csv", "md" or "text"; columns: text's measures per block, 0
-    all): returned as a str when path is None, else written to path (a
-    temporary file renamed into place)."""
-    if format not in FORMATS:
-        raise ValueError("format must be text, md or csv, got %r" % (format,))
-    fmt = FORMATS[format]
-    data = (_census_bytes(counts, fmt) if "sites" in counts.meta
-            else _table34_bytes(counts, fmt, int(columns)))
+def to_csv(counts: Any, path: str | os.PathLike[str] | None = None, format: str = "csv",
+           columns: int = 0) -> str | None:
+    """Counts.to_csv: the table of a table34() or census() result as the
+    program writes it (format one of FORMATS; columns: text's measures per
+    block, 0 all), returned as a str when path is None, else written to
+    path (a temporary file renamed into place)."""
+    choice(format, FORMATS, "format")
+    fmt = ctypes.c_int()
+    if lib.report_format_parse(format.encode(), ctypes.byref(fmt)) != 0:
+        raise ValueError("format: the library does not know %r" % (format,))
+    data = (_census_bytes(counts, fmt.value) if "sites" in counts.meta
+            else _table34_bytes(counts, fmt.value, int(columns)))
     if path is None:
         return data.decode()
     _write_atomic(path, data)
     return None
-

@@ -1,32 +1,30 @@
 """_rules.py: flip rules and badness measures by name (built-in, formula,
 plugin, empty-shape), and their vectorised evaluation on numpy arrays of
 triangles and quadrilaterals."""
+from __future__ import annotations
+
 import ctypes
+import os
+from typing import Any, overload
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib
+from ._args import tie_eps_arg
 from ._arrays import as_coords, check_contract, cstr, points_ptr, ptr
 
 lib = _lib.lib
 
 AC, BD, EITHER, UNDECIDED = 0, 1, 2, -1
-_SIGNS = {-1: "<= 0", 0: "any", 1: ">= 0"}
+# The forms of a rule name (docs/rules.md): every docstring taking a rule
+# names them (python/tests/test_package.py).
+RULE_FORMS = ("DT", "MEASURE_JOINT", "ES:SHAPE")
+SIGNS = ("any", ">= 0", "<= 0")     # a measure's sign, as measures() and measure() name it
+_SIGN_OF = {0: "any", 1: ">= 0", -1: "<= 0"}
 
 
-def tie_eps_arg(v, default=None):
-    """A tie tolerance: a finite real number >= 0 as a float (None: default).
-    Strings, booleans and anything else raise ValueError naming the keyword,
-    never a bare TypeError from a comparison."""
-    if v is None:
-        return default
-    ok = isinstance(v, (int, float, np.integer, np.floating)) and \
-        not isinstance(v, (bool, np.bool_))
-    if not (ok and np.isfinite(v) and v >= 0):
-        raise ValueError("tie_eps: expected a finite number >= 0, got %r" % (v,))
-    return float(v)
-
-
-def _raise_user_errors():
+def _raise_user_errors() -> None:
     """An exception a Python measure raised during the last call, or a bad
     value a formula, plugin or Python measure produced (formula_check_errors)
     as ValueError, cleared for the next call."""
@@ -41,12 +39,35 @@ def _raise_user_errors():
 
 
 class Rule:
-    """A flip rule: "DT", MEASURE_JOINT ("P_1", "-alpha_inf"), a measure of
-    define() or load_plugin() with a joint, a plugin's quadrilateral rule, or
-    an empty-shape rule "ES:SHAPE".  tie_eps: the relative tie tolerance of
-    triangle-based rules (default 1e-12, as the program's --tie-eps)."""
+    """A flip rule, by name.
 
-    def __init__(self, name, tie_eps=None):
+    Parameters
+    ----------
+    name : str or Rule
+        A rule name, in one of the forms "DT" (the Delaunay rule),
+        MEASURE_JOINT (a measure of measures() and a joint of joints(), as
+        "P_1", "-alpha_inf"; a define()'d, plugin or Python measure too), a
+        plugin's quadrilateral rule (quad_rules()), or ES:SHAPE (an
+        empty-shape rule, docs/emptyshape.md).  A Rule is copied.
+    tie_eps : float, optional
+        The relative tie tolerance of a triangle-based rule, a finite number
+        >= 0 (default: the library's RULE_DEFAULT_TIE_EPS, 1e-12, as the
+        program's).
+
+    Raises
+    ------
+    ValueError
+        An unknown or malformed name (the library's message), a name with a
+        NUL character, a bad tie_eps.
+    TypeError
+        name is neither a str nor a Rule.
+
+    Attributes
+    ----------
+    name, measure, joint, is_triangle, is_delaunay, tie_eps
+    """
+
+    def __init__(self, name: str | Rule, tie_eps: float | None = None) -> None:
         if isinstance(name, Rule):
             self._c = _lib.Rule.from_buffer_copy(name._c)
         else:
@@ -60,118 +81,214 @@ class Rule:
             self._c.tie_eps = tie_eps_arg(tie_eps)
 
     @property
-    def name(self):
+    def name(self) -> str:
+        """The rule's name, as the library prints it."""
         return self._c.name.decode()
 
     @property
-    def is_triangle(self):
+    def is_triangle(self) -> bool:
         """True for a triangle-based rule MEASURE_JOINT."""
         return self._c.kind == _lib.RULE_TRIANGLE
 
     @property
-    def is_delaunay(self):
-        return self._c.kind == _lib.RULE_QUAD and self._c.quad == 0
+    def is_delaunay(self) -> bool:
+        """True for DT."""
+        return not self.is_triangle and self._c.quad == 0
 
     @property
-    def measure(self):
+    def measure(self) -> str:
         """The measure's name ("" for a quadrilateral rule)."""
         if not self.is_triangle:
             return ""
         return lib.measure_get(self._c.measure).contents.name.decode()
 
     @property
-    def joint(self):
-        """The joint's name, "-inf" .. "inf" ("" for a quadrilateral rule)."""
+    def joint(self) -> str:
+        """The joint's name, one of joints() ("" for a quadrilateral rule)."""
         if not self.is_triangle:
             return ""
         return lib.joint_get(self._c.joint).contents.name.decode()
 
     @property
-    def tie_eps(self):
+    def tie_eps(self) -> float:
+        """The relative tie tolerance."""
         return self._c.tie_eps
 
-    def badness(self, triangles):
-        """The rule's measure on an (m, 3, 2) array of triangles: badness()."""
+    def badness(self, triangles: npt.ArrayLike) -> npt.NDArray[np.float64]:
+        """The rule's measure on triangles: badness(triangles, self).
+
+        Parameters
+        ----------
+        triangles : array_like, shape (m, 3, 2)
+            As badness()'s.
+
+        Returns
+        -------
+        ndarray of float64, shape (m,)
+            Each triangle's badness.
+
+        Raises
+        ------
+        ValueError
+            A quadrilateral rule (no triangle badness), or bad triangles.
+        """
         if not self.is_triangle:
             raise ValueError("rule %s is a quadrilateral rule: no triangle badness" % self.name)
         return _badness_id(self._c.measure, triangles)
 
-    def decide(self, quads, values=False):
-        """decide(quads, self, values)."""
+    def decide(self, quads: npt.ArrayLike, values: bool = False) -> Any:
+        """The rule's decision on quadrilaterals: decide(quads, self, values).
+
+        Parameters
+        ----------
+        quads : array_like, shape (m, 4, 2)
+        values : bool
+            Also return the two joint values.
+
+        Returns
+        -------
+        ndarray of int8, or a tuple (decisions, ac, bd) with values=True
+
+        Raises
+        ------
+        ValueError
+            Bad quadrilaterals.
+        """
         return decide(quads, self, values)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return "fliplab.Rule(%r)" % self.name
 
-    def __eq__(self, other):
+    def __eq__(self, other: object) -> bool:
         return isinstance(other, Rule) and bytes(self._c) == bytes(other._c)
 
-    def __hash__(self):
+    def __hash__(self) -> int:
         return hash(bytes(self._c))
 
 
-def as_rule(r):
+def as_rule(r: str | Rule) -> Rule:
     return r if isinstance(r, Rule) else Rule(r)
 
 
-def measures():
-    """Every registered measure (built-in, then define()'d and plugin ones):
-    a list of dicts name, symbol, sign (">= 0", "<= 0", "any"), desc."""
+def measures() -> list[dict[str, str]]:
+    """Every registered measure: built-in, then define()'d, plugin and
+    Python ones.
+
+    Returns
+    -------
+    list of dict
+        One dict per measure with the keys name, symbol, sign (one of
+        "any", ">= 0", "<= 0") and desc.
+    """
     out = []
     for i in range(lib.measure_count()):
         m = lib.measure_get(i).contents
         out.append({"name": m.name.decode(), "symbol": m.symbol.decode() if m.symbol else "",
-                    "sign": _SIGNS[m.sign], "desc": m.desc.decode() if m.desc else ""})
+                    "sign": _SIGN_OF[m.sign], "desc": m.desc.decode() if m.desc else ""})
     return out
 
 
-def joints():
-    """The joint names ("-inf", "-1", "0", "1", "2", "inf")."""
+def joints() -> list[str]:
+    """The joints' names, in the library's order.
+
+    Returns
+    -------
+    list of str
+        "-inf", "-1", "0", "1", "2", "inf" (docs/joints.md).
+    """
     return [lib.joint_get(j).contents.name.decode() for j in range(lib.joint_count())]
 
 
-def quad_rules():
-    """The quadrilateral rules registered: DT, plugins' rules, ES:SHAPE used so far."""
+def quad_rules() -> list[str]:
+    """The quadrilateral rules registered.
+
+    Returns
+    -------
+    list of str
+        DT, the plugins' rules, and every ES:SHAPE used so far.
+    """
     return [lib.rule_quad_get(i).contents.name.decode() for i in range(lib.rule_quad_count())]
 
 
-def rules(measure_names=None):
-    """Every triangle-based rule name MEASURE_JOINT for the given measures
-    (default: every registered measure), joint-major as table 3.4, skipping
-    joints a measure's sign does not allow."""
+def rules(measure_names: list[str] | None = None) -> list[str]:
+    """Every triangle-based rule name MEASURE_JOINT of the given measures,
+    joint-major as table 3.4, skipping the joints a measure's sign does
+    not allow.
+
+    Parameters
+    ----------
+    measure_names : list of str, optional
+        Names of measures() (default: every registered measure).
+
+    Returns
+    -------
+    list of str
+
+    Raises
+    ------
+    ValueError
+        A name with a NUL character.
+    """
     names = [m["name"] for m in measures()] if measure_names is None else list(measure_names)
     out = []
     for j in joints():
         for m in names:
             try:
                 out.append(Rule(m + "_" + j).name)
-            except ValueError:
-                pass
+            except ValueError as e:
+                if "NUL" in str(e):
+                    raise
     return out
 
 
-def define(definition):
-    """Register a formula measure, as the program's --define: "NAME = EXPR",
-    "NAME >= 0 : EXPR" or "NAME <= 0 : EXPR" (variables: docs/measures.md).
-    Returns NAME; NAME_JOINT then names a rule everywhere.  A definition
-    may be given once per process (a second one of the same name is refused,
-    as a second --define would be); ValueError with the C message."""
+def define(definition: str) -> str:
+    """Register a formula measure, as the program's define option.
+
+    Parameters
+    ----------
+    definition : str
+        "NAME = EXPR", "NAME >= 0 : EXPR" or "NAME <= 0 : EXPR" (the
+        variables and functions: docs/measures.md).  NAME_JOINT then names a
+        rule everywhere.  A name may be defined once per process.
+
+    Returns
+    -------
+    str
+        NAME.
+
+    Raises
+    ------
+    ValueError
+        A malformed definition or a name already taken (the library's message).
+    """
     e = _lib.errbuf()
-    mid = lib.formula_define(cstr(definition, "define"), e, _lib.ERRLEN)
+    mid = lib.formula_define(cstr(definition, "definition"), e, _lib.ERRLEN)
     if mid < 0:
         raise ValueError(_lib.text(e))
     return lib.measure_get(mid).contents.name.decode()
 
 
-def load_plugin(path):
-    """Load a plugin (fliplab/plugin.h), as the program's --plugin FILE.so:
-    its measures and quadrilateral rules become usable by name."""
+def load_plugin(path: str | bytes | os.PathLike[str]) -> None:
+    """Load a plugin (fliplab/plugin.h, docs/plugins.md), as the program's
+    plugin option: its measures and quadrilateral rules become usable by
+    name.
+
+    Parameters
+    ----------
+    path : str, bytes or os.PathLike
+        The plugin's shared object.
+
+    Raises
+    ------
+    ValueError
+        The library's message: the file cannot be loaded, or is no plugin.
+    """
     e = _lib.errbuf()
-    if lib.plugin_load(cstr(path, "plugin", path=True), e, _lib.ERRLEN) != 0:
+    if lib.plugin_load(cstr(path, "path", path=True), e, _lib.ERRLEN) != 0:
         raise ValueError(_lib.text(e))
 
 
-def _measure_id(m):
+def _measure_id(m: str | Rule) -> int:
     if isinstance(m, Rule):
         if not m.is_triangle:
             raise ValueError("rule %s is a quadrilateral rule: no triangle badness" % m.name)
@@ -187,14 +304,14 @@ def _measure_id(m):
             r = None
         if r is not None:
             return _measure_id(r)
-        raise ValueError("unknown measure '%s' (valid: %s)"
+        raise ValueError("measure: unknown measure '%s' (valid: %s)"
                          % (m, ", ".join(x["name"] for x in measures())))
     return mid
 
 
-def _badness_id(mid, triangles):
+def _badness_id(mid: int, triangles: npt.ArrayLike) -> npt.NDArray[np.float64]:
     from . import _pymeasure
-    if mid in _pymeasure._registry:
+    if _pymeasure.is_python(mid):
         try:
             return _pymeasure.badness_python(mid, triangles)
         finally:
@@ -207,24 +324,71 @@ def _badness_id(mid, triangles):
     return out
 
 
-def badness(triangles, measure):
-    """The badness measure (a name, or a triangle-based Rule or rule name:
-    its measure) of every triangle of an (m, 3, 2) array (vertices in any
-    order): an (m,) float64 array, bit for bit what the C library computes
-    (measure_eval on geom_tri_make's triangle).  Degenerate (flat) triangles
-    get what their quantities give (inf or NaN), as in C."""
+def badness(triangles: npt.ArrayLike, measure: str | Rule) -> npt.NDArray[np.float64]:
+    """The badness of every triangle, bit for bit what the C library computes
+    (measure_eval on geom_tri_make's triangle).
+
+    Parameters
+    ----------
+    triangles : array_like, shape (m, 3, 2)
+        The triangles' vertices, in any order.  Degenerate (flat) triangles
+        get what their quantities give (inf or NaN), as in C.
+    measure : str or Rule
+        A name of measures(), or a triangle-based rule (a Rule, or a name
+        MEASURE_JOINT: its measure).
+
+    Returns
+    -------
+    ndarray of float64, shape (m,)
+
+    Raises
+    ------
+    ValueError
+        An unknown measure, a quadrilateral rule, triangles of another shape
+        or outside the coordinate contract, a bad value of a user measure.
+    TypeError
+        measure is neither a str nor a Rule.
+    """
     return _badness_id(_measure_id(measure), triangles)
 
 
-def decide(quads, rule, values=False):
-    """The rule's decision on every quadrilateral ABCD of an (m, 4, 2)
-    array (anticlockwise): an (m,) int8 array of AC (0: keep the diagonal
-    q[0] q[2]), BD (1), EITHER (2: a tie) or UNDECIDED (-1: not strictly
-    convex and anticlockwise, decided by no rule).  values=True also
-    returns the joint values f(b(ABC), b(ACD)) and f(b(ABD), b(BCD)) (NaN
-    for quadrilateral rules and undecided quadrilaterals)."""
+@overload
+def decide(quads: npt.ArrayLike, rule: str | Rule) -> npt.NDArray[np.int8]: ...
+
+
+@overload
+def decide(quads: npt.ArrayLike, rule: str | Rule, values: bool) -> Any: ...
+
+
+def decide(quads: npt.ArrayLike, rule: str | Rule, values: bool = False) -> Any:
+    """The rule's decision on every quadrilateral ABCD.
+
+    Parameters
+    ----------
+    quads : array_like, shape (m, 4, 2)
+        Quadrilaterals, anticlockwise.
+    rule : str or Rule
+        A Rule or a rule name: "DT", MEASURE_JOINT, ES:SHAPE or a plugin's
+        quadrilateral rule (Rule).
+    values : bool
+        Also return the joint values f(b(ABC), b(ACD)) and f(b(ABD), b(BCD))
+        (NaN for quadrilateral rules and undecided quadrilaterals).
+
+    Returns
+    -------
+    ndarray of int8, shape (m,)
+        AC (0: keep the diagonal q[0] q[2]), BD (1), EITHER (2: a tie) or
+        UNDECIDED (-1: not strictly convex and anticlockwise); with
+        values=True the tuple (decisions, ac, bd), two float64 arrays.
+
+    Raises
+    ------
+    ValueError
+        A bad rule, quadrilaterals of another shape or outside the
+        coordinate contract, a bad value of a user measure.
+    """
     r = as_rule(rule)
-    q = as_coords(quads, "quadrilaterals", (-1, 4, 2))
+    q = as_coords(quads, "quads", (-1, 4, 2))
     check_contract(q, "quadrilateral")
     m = q.shape[0]
     out = np.empty(m, dtype=np.int8)

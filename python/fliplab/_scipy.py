@@ -3,11 +3,20 @@ on a triangulation, for fliplab's Triangulation: exact point location
 (lot_locate), the boundary edges, the edges, the vertices' neighbours, and
 conversions to matplotlib and shapely and from shapely polygons.  Where
 the conventions differ from scipy's: docs/python.md."""
+from __future__ import annotations
+
 import ctypes
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+import numpy.typing as npt
 
 from . import _lib
 from ._arrays import as_coords, frozen, points_ptr, ptr, refuse_masked
+
+if TYPE_CHECKING:
+    from ._lot import Triangulation
+    from ._rules import Rule
 
 lib = _lib.lib
 
@@ -143,13 +152,35 @@ def _polygons(geom, sg):
                     % type(geom).__name__)
 
 
-def from_shapely(geom):
-    """(points, segments, holes) of a shapely Polygon or MultiPolygon, for
-    lot(points, rule, segments=segments, holes=holes): every ring's
-    vertices and edges, and for each interior ring a point strictly inside
-    it and outside the geometry (representative_point of the ring's area
-    minus the geometry, so an island inside a hole is kept).  Shared
-    vertices are repeated; lot() merges them."""
+def from_shapely(geom: Any) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32],
+                                     npt.NDArray[np.float64]]:
+    """The points, segments and holes of a shapely polygon, for lot(points,
+    rule, segments=segments, holes=holes).
+
+    Every ring's vertices and edges; for each interior ring a point
+    strictly inside it and outside the geometry (representative_point of
+    the ring's area minus the geometry, so an island inside a hole is
+    kept).  Shared vertices are repeated; lot() merges them.
+
+    Parameters
+    ----------
+    geom : shapely.geometry.Polygon or shapely.geometry.MultiPolygon
+
+    Returns
+    -------
+    points : ndarray of float64, shape (n, 2)
+    segments : ndarray of int32, shape (k, 2)
+    holes : ndarray of float64, shape (h, 2)
+
+    Raises
+    ------
+    TypeError
+        geom is no Polygon or MultiPolygon.
+    ValueError
+        The geometry is empty.
+    ImportError
+        shapely is not installed.
+    """
     sg = _shapely()
     pts, segs, holes = [], [], []
     base = 0
@@ -170,10 +201,30 @@ def from_shapely(geom):
             np.array(holes, dtype=np.float64).reshape(-1, 2))
 
 
-def lot_polygon(polygon, rule="DT", **kw):
-    """lot() of a shapely Polygon or MultiPolygon (from_shapely): its
-    constrained LOT (for DT, the constrained Delaunay triangulation) with
-    the holes and the outside removed; keywords as lot()'s."""
+def lot_polygon(polygon: Any, rule: str | Rule = "DT", **kw: Any) -> Triangulation:
+    """The constrained LOT of a shapely polygon (for DT the constrained
+    Delaunay triangulation), its holes and outside removed: lot() of
+    from_shapely(polygon).
+
+    Parameters
+    ----------
+    polygon : shapely.geometry.Polygon or shapely.geometry.MultiPolygon
+    rule : str or Rule
+        A Rule or a rule name: "DT", MEASURE_JOINT, ES:SHAPE or a plugin's
+        quadrilateral rule (Rule).
+    **kw
+        lot()'s other keywords (algorithm, order, seed, max_flips, tie_eps,
+        check, keep_hull).
+
+    Returns
+    -------
+    Triangulation
+
+    Raises
+    ------
+    TypeError, ValueError, ImportError
+        As from_shapely() and lot().
+    """
     from ._lot import lot
     p, s, h = from_shapely(polygon)
     return lot(p, rule, segments=s, holes=h if len(h) else None, **kw)

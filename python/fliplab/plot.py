@@ -1,21 +1,41 @@
-"""plot.py: matplotlib pictures: a triangulation shaded by badness on the
+"""fliplab.plot: matplotlib pictures: a triangulation shaded by badness on the
 colour scale of the program's SVGs (report_svg_colour: light yellow = good,
 dark red = bad; the smallest finite badness of the picture at one end, the
 largest at the other, a NaN or infinite value light grey), two
 triangulations side by side on one scale, and a directed flip graph.
 matplotlib is imported only when a function here is called."""
 import ctypes
+from typing import TYPE_CHECKING, Any, Sequence
+
 import numpy as np
 
 from . import _lib
 
-_lib.lib.report_svg_colour.restype = None
-_lib.lib.report_svg_colour.argtypes = [ctypes.c_double, ctypes.c_char_p, ctypes.c_size_t]
+if TYPE_CHECKING:
+    from ._flipgraph import FlipGraph
+    from ._lot import Triangulation
+
+__all__ = ["badness_cmap", "triangulation", "compare", "flipgraph"]
 
 
-def badness_cmap(n=256):
-    """The SVGs' badness scale as a matplotlib ListedColormap, sampled from
-    the C library's report_svg_colour at n points."""
+def badness_cmap(n: int = 256) -> Any:
+    """The SVGs' badness scale as a matplotlib colormap.
+
+    Parameters
+    ----------
+    n : int
+        Colours sampled from the library's report_svg_colour.
+
+    Returns
+    -------
+    matplotlib.colors.ListedColormap
+        Named "fliplab_badness"; NaN and infinite values light grey.
+
+    Raises
+    ------
+    ImportError
+        matplotlib is not installed.
+    """
     from matplotlib.colors import ListedColormap
     buf = ctypes.create_string_buffer(16)
     cols = []
@@ -28,16 +48,42 @@ def badness_cmap(n=256):
     return cm
 
 
-def _range(*bads):
+def _range(*bads: Any) -> tuple[float, float]:
     vals = np.concatenate([b[np.isfinite(b)] for b in bads if b is not None] or [np.zeros(0)])
     return (vals.min(), vals.max()) if vals.size else (0.0, 1.0)
 
 
-def triangulation(t, ax=None, shade=True, vmin=None, vmax=None, title=None, colorbar=True,
-                  points=True):
-    """Draw a Triangulation (of lot()) on ax (a new figure when None): edges
-    as hairlines, triangles filled by badness when shade and the rule has
-    one.  Returns the axes."""
+def triangulation(t: "Triangulation", ax: Any = None, shade: bool = True,
+                  vmin: float | None = None, vmax: float | None = None, title: str | None = None,
+                  colorbar: bool = True, points: bool = True) -> Any:
+    """Draw a triangulation: edges as hairlines, triangles filled by badness.
+
+    Parameters
+    ----------
+    t : Triangulation
+        A result of lot().
+    ax : matplotlib.axes.Axes, optional
+        Where to draw (default a new figure).
+    shade : bool
+        Fill the triangles by badness, when the rule has one.
+    vmin, vmax : float, optional
+        The badness scale's ends (default the picture's finite extremes).
+    title : str, optional
+        The axes' title (default "LOT(RULE): M triangles").
+    colorbar : bool
+        Draw the badness scale beside.
+    points : bool
+        Mark the points.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Raises
+    ------
+    ImportError
+        matplotlib is not installed.
+    """
     import matplotlib.pyplot as plt
     import matplotlib.tri as mtri
     if ax is None:
@@ -63,9 +109,29 @@ def triangulation(t, ax=None, shade=True, vmin=None, vmax=None, title=None, colo
     return ax
 
 
-def compare(a, b, shade=True, titles=None):
+def compare(a: "Triangulation", b: "Triangulation", shade: bool = True,
+            titles: Sequence[str] | None = None) -> Any:
     """Two triangulations of the same points side by side on one badness
-    scale (as `lot --compare DT --svg --shade`).  Returns the figure."""
+    scale, as the program's lot command draws a comparison with DT.
+
+    Parameters
+    ----------
+    a, b : Triangulation
+        Results of lot().
+    shade : bool
+        Fill the triangles by badness.
+    titles : sequence of two str, optional
+        The panels' titles.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Raises
+    ------
+    ImportError
+        matplotlib is not installed.
+    """
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(12, 6))
     ba = a.badness if shade else None
@@ -82,12 +148,29 @@ def compare(a, b, shade=True, titles=None):
     return fig
 
 
-def flipgraph(g, ax=None, size=None):
-    """A directed flip graph (of flipgraph()) drawn as the thesis draws it:
-    each triangulation a small picture, in columns by flip distance from
-    triangulation 0, an arrow on each flip towards the preferred one (a
-    dashed line for a tie), sinks framed in thick green, sources in dashed
-    red, the Delaunay triangulation tagged DT.  Returns the axes."""
+def flipgraph(g: "FlipGraph", ax: Any = None, size: tuple[float, float] | None = None) -> Any:
+    """Draw a directed flip graph: each triangulation a small picture, in
+    columns by flip distance from triangulation 0, an arrow on each flip
+    towards the preferred one (a dashed line for a tie), sinks framed in
+    thick green, sources in dashed red, the Delaunay triangulation tagged DT.
+
+    Parameters
+    ----------
+    g : FlipGraph
+        A result of fliplab.flipgraph().
+    ax, size : matplotlib.axes.Axes, tuple of two float, optional
+        Where to draw; without, a new figure of that size in inches.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ax, or the new figure's axes.
+
+    Raises
+    ------
+    ImportError
+        Without matplotlib.
+    """
     import matplotlib.pyplot as plt
     from matplotlib.patches import FancyArrowPatch, Rectangle
     N = len(g.nodes)

@@ -1,10 +1,13 @@
 /*
-** layout.c: the C layout of every public structure python/fliplab mirrors
-** with ctypes, for test_layout.py: one line "STRUCT sizeof N" per
-** structure and "STRUCT FIELD OFFSET SIZE" per field (FIELD a C member
-** designator: lot_stats.cycle_quad, geom_tri.v[1].y).  The mirrors are
-** checked against what the compiler made of the headers, not against a
-** copy of them: a field added, moved or resized in a header fails the test.
+** layout.c: the C layout of every public structure python/fliplab reads or
+** fills, for test_layout.py: one line "STRUCT sizeof N" per structure and
+** "STRUCT FIELD OFFSET SIZE" per field (FIELD a C member designator:
+** lot_stats.cycle_quad, geom_tri.v[1].y).  The ctypes mirrors are checked
+** against what the compiler made of the headers, not against a copy of
+** them: a field added, moved or resized in a header fails the test.  So
+** are the structures the package reaches through verbs instead (lot_options
+** and got_options: a setter per field; lot_stats, lot_check_result and
+** got_result: every field readable by its name).
 */
 #include <stddef.h>
 #include <stdio.h>
@@ -58,14 +61,14 @@ static void layout_lot(void) {
   F(lot_options, seed); F(lot_options, max_flips); F(lot_options, tie_eps);
   F(lot_options, decide); F(lot_options, decide_ctx); F(lot_options, segments);
   F(lot_options, nsegments); F(lot_options, holes); F(lot_options, nholes);
-  F(lot_options, keep_hull);
+  F(lot_options, keep_hull); F(lot_options, weights);
   Z(lot_stats); F(lot_stats, n); F(lot_stats, distinct); F(lot_stats, duplicates);
   F(lot_stats, hull); F(lot_stats, triangles); F(lot_stats, flips); F(lot_stats, status);
   F(lot_stats, cycle_length); F(lot_stats, cycle_quads); F(lot_stats, cycle_quad);
   F(lot_stats, max_flips); F(lot_stats, seconds_init); F(lot_stats, seconds_flip);
   F(lot_stats, segments); F(lot_stats, constrained); F(lot_stats, segments_merged);
   F(lot_stats, segments_split); F(lot_stats, segments_removed); F(lot_stats, holes);
-  F(lot_stats, removed);
+  F(lot_stats, removed); F(lot_stats, redundant); F(lot_stats, rounds);
   Z(lot_check_result); F(lot_check_result, interior_edges);
   F(lot_check_result, boundary_edges); F(lot_check_result, decided);
   F(lot_check_result, not_optimal); F(lot_check_result, bad_edge); F(lot_check_result, valid);
@@ -123,8 +126,6 @@ static void layout_siteflip(void) {
 }
 
 static void layout_got(void) {
-  Z(got_triangle); F(got_triangle, i); F(got_triangle, k); F(got_triangle, j);
-  F(got_triangle, badness);
   Z(got_options); F(got_options, threads); F(got_options, tie_eps);
   Z(got_result); F(got_result, n); F(got_result, measure); F(got_result, joint);
   F(got_result, sign); F(got_result, key); F(got_result, total); F(got_result, has_runner_up);

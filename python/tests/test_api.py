@@ -105,7 +105,8 @@ def test_got_brute_force():
     for seed in range(4):
         p = fliplab.samplers.convex_polygons(8, 1, seed=seed)[0]
         g = fliplab.got(p, "P_1")
-        best = min(sum(fliplab.badness(p[np.array(t)], "P")) for t in _triangulations(list(range(8))))
+        best = min(sum(fliplab.badness(p[np.array(t)], "P"))
+                   for t in _triangulations(list(range(8))))
         assert abs(g.total - best) <= 1e-12 * best
         assert len(g.triangles) == 6 and np.isclose(g.badness.sum(), g.total)
     cw = p[::-1].copy()                                 # clockwise: reversed keeping vertex 0?

@@ -1,52 +1,83 @@
-"""test_layout.py: every ctypes mirror of a C structure in python/fliplab
-has the layout the compiler gave the header: the same size, and each
-field at the same offset with the same size (python/tests/layout.c prints
-them; ctest passes its path as FLIPLAB_LAYOUT).  A partial mirror (the
-first fields only) is checked field by field; every mirror in the package
-is in the list below, and every structure of the list is mirrored."""
+"""test_layout.py: the package's view of the C structures agrees with the
+layout the compiler gave the headers (python/tests/layout.c prints it;
+ctest passes its path as FLIPLAB_LAYOUT).
+
+- Every ctypes mirror (every ctypes.Structure of the package) has the same
+  size, and each field the same offset and size; a partial mirror (the
+  first fields only) is checked field by field.  Every mirror is listed
+  here, and nothing is listed that is no mirror.
+- The structures reached through verbs instead of a mirror: every field
+  of lot_options and got_options has its setter (lot_options_set_FIELD), and
+  every field of lot_stats, lot_check_result and got_result is readable by
+  its name (the library's table, lot_stats_field, ...), the names tiling
+  the structure as the compiler laid it out, so a field added to a header
+  without its row in the table fails here."""
 import ctypes
+import importlib
 import os
+import pkgutil
+import re
 import subprocess
 
 import pytest
 
-from fliplab import _cdf, _census, _classify, _flipgraph, _got, _lib, _pymeasure, _report
+import fliplab
+from fliplab import _lib, _mirrors
 from conftest import ROOT
 
-# mirror -> (C structure, complete: the sizes must agree too, {Python field: C designator})
+# "module.Class" -> (C structure, complete: the sizes must agree too,
+# {Python field: C designator})
 _VERTS = {"%s%d" % (c, k + 1): "v[%d].%s" % (k, c) for k in range(3) for c in "xy"}
 MIRRORS = {
-    _lib.Point: ("geom_point", True, {}),
-    _pymeasure.GeomTri: ("geom_tri", True, dict(_VERTS, A="area")),
-    _lib.GeomPslg: ("geom_pslg", True, {}),
-    _lib.Rule: ("rule", True, {}),
-    _lib.Measure: ("measure", True, {}),
-    _lib.Joint: ("joint", False, {}),
-    _lib.RuleQuad: ("rule_quad", True, {}),
-    _lib.SamplerPentagons: ("sampler_pentagons", True, {}),
-    _lib.SamplerRng: ("sampler_rng", True, {}),
-    _lib.LotOptions: ("lot_options", True, {}),
-    _lib.LotStats: ("lot_stats", True, {}),
-    _lib.LotCheckResult: ("lot_check_result", True, {}),
-    _lib.ReportPoly: ("report_poly", True, {}),
-    _census.FlipgraphCounts: ("flipgraph_counts", True, {}),
-    _classify.Flipgraph: ("flipgraph", True, {}),
-    _cdf.LotCdf: ("lot_cdf", True, {}),
-    _report.ReportRow: ("report_row", True, {}),
-    _report.ReportRun: ("report_run", True, {}),
-    _report.ReportMeta: ("report_meta", True, {}),
-    _report.ReportCensusRow: ("report_census_row", True, {}),
-    _report.ReportCensusMeta: ("report_census_meta", True, {}),
-    _census.FlipgraphRun: ("flipgraph_run", True, {}),
-    _census.SiteflipCounts: ("siteflip_counts", True, {}),
-    _flipgraph.SiteflipQuad: ("siteflip_quad", True, {}),
-    _flipgraph.SiteflipEdge: ("siteflip_edge", True, {}),
-    _flipgraph.SiteflipGraph: ("siteflip_graph", True, {}),
-    _flipgraph.SiteflipResult: ("siteflip_result", True, {}),
-    _got.GotTriangle: ("got_triangle", True, {}),
-    _got.GotOptions: ("got_options", True, {}),
-    _got.GotResult: ("got_result", True, {}),
+    "_mirrors.Point": ("geom_point", True, {}),
+    "_mirrors.GeomTri": ("geom_tri", True, dict(_VERTS, A="area")),
+    "_mirrors.GeomPslg": ("geom_pslg", True, {}),
+    "_mirrors.Rule": ("rule", True, {}),
+    "_mirrors.Measure": ("measure", True, {}),
+    "_mirrors.Joint": ("joint", False, {}),
+    "_mirrors.RuleQuad": ("rule_quad", True, {}),
+    "_mirrors.SamplerPentagons": ("sampler_pentagons", True, {}),
+    "_mirrors.SamplerRng": ("sampler_rng", True, {}),
+    "_mirrors.ReportPoly": ("report_poly", True, {}),
+    "_mirrors.LotCdf": ("lot_cdf", True, {}),
+    "_mirrors.FlipgraphCounts": ("flipgraph_counts", True, {}),
+    "_mirrors.FlipgraphRun": ("flipgraph_run", True, {}),
+    "_mirrors.SiteflipCounts": ("siteflip_counts", True, {}),
+    "_mirrors.SiteflipQuad": ("siteflip_quad", True, {}),
+    "_mirrors.SiteflipEdge": ("siteflip_edge", True, {}),
+    "_mirrors.SiteflipGraph": ("siteflip_graph", True, {}),
+    "_mirrors.SiteflipResult": ("siteflip_result", True, {}),
+    "_mirrors.ReportRow": ("report_row", True, {}),
+    "_mirrors.ReportRun": ("report_run", True, {}),
+    "_mirrors.ReportMeta": ("report_meta", True, {}),
+    "_mirrors.ReportCensusRow": ("report_census_row", True, {}),
+    "_mirrors.ReportCensusMeta": ("report_census_meta", True, {}),
+    "_classify.Flipgraph": ("flipgraph", True, {}),
 }
+# structures set by verbs: field -> the verb that sets it (default
+# lot_options_set_FIELD), None for what a binding does not set
+SETTERS = {
+    "lot_options": {"r": "lot_options_new", "nsegments": "lot_options_set_segments",
+                    "nholes": "lot_options_set_holes", "decide": None, "decide_ctx": None},
+    "got_options": {},
+}
+# setters the design names that another part of the tree adds with its field
+PENDING = {"lot_options_set_weights"}
+# structures read by name: C structure -> the library's list of its field names
+BY_NAME = {"lot_stats": "lot_stats_field", "lot_check_result": "lot_check_result_field",
+           "got_result": "got_result_field"}
+
+
+def _package_mirrors():
+    """Every ctypes.Structure defined in a module of the package, as "module.Class"."""
+    found = {}
+    for m in pkgutil.iter_modules(fliplab.__path__):
+        mod = importlib.import_module("fliplab." + m.name)
+        for v in vars(mod).values():
+            if isinstance(v, type) and issubclass(v, ctypes.Structure) \
+                    and v.__module__ == mod.__name__:
+                found["%s.%s" % (m.name, v.__name__)] = v
+    return found
 
 
 @pytest.fixture(scope="module")
@@ -86,38 +117,72 @@ def mismatches(layout, mirror, cname, complete, rename):
     return out
 
 
-@pytest.mark.parametrize("mirror", list(MIRRORS), ids=lambda m: m.__name__)
-def test_mirror_matches_c(layout, mirror):
-    assert mismatches(layout, mirror, *MIRRORS[mirror]) == []
+@pytest.mark.parametrize("name", sorted(_package_mirrors()))
+def test_mirror_matches_c(layout, name):
+    assert name in MIRRORS, "%s mirrors a C structure: list it in MIRRORS" % name
+    assert mismatches(layout, _package_mirrors()[name], *MIRRORS[name]) == []
 
 
 def test_mismatches_are_found(layout):
-    """The comparison sees what a stale mirror gets wrong: lot_options as
-    the package mirrored it before the constraint fields (8 fields), and a
-    lot_stats with one field a size_t too narrow."""
-    class OldOptions(ctypes.Structure):
-        _fields_ = _lib.LotOptions._fields_[:8]
+    """The comparison sees what a stale mirror gets wrong: a rule without its
+    name (the last field), and a flipgraph_counts with one field too narrow."""
+    class OldRule(ctypes.Structure):
+        _fields_ = _mirrors.Rule._fields_[:-1]
 
-    class NarrowStats(ctypes.Structure):
-        _fields_ = [(n, ctypes.c_uint32 if n == "flips" else t)
-                    for n, t in _lib.LotStats._fields_]
-    old = mismatches(layout, OldOptions, "lot_options", True, {})
-    assert len(old) == 6 and "C lot_options.keep_hull is not mirrored" in " ".join(old)
-    narrow = mismatches(layout, NarrowStats, "lot_stats", True, {})
-    f, s = layout[1]["lot_stats"]["flips"][0], layout[1]["lot_stats"]["status"][0]
-    assert narrow[:2] == [
-        "NarrowStats.flips at %d (4 bytes), C lot_stats.flips at %d (8 bytes)" % (f, f),
-        "NarrowStats.status at %d (4 bytes), C lot_stats.status at %d (4 bytes)" % (f + 4, s)]
+    class NarrowCounts(ctypes.Structure):
+        _fields_ = [(n, ctypes.c_uint32 if n == "samples" else t)
+                    for n, t in _mirrors.FlipgraphCounts._fields_]
+    old = mismatches(layout, OldRule, "rule", True, {})
+    assert old == ["OldRule: C rule.name is not mirrored",
+                   "OldRule: %d bytes, C rule %d" % (ctypes.sizeof(OldRule), layout[0]["rule"])]
+    narrow = mismatches(layout, NarrowCounts, "flipgraph_counts", True, {})
+    assert narrow == [
+        "NarrowCounts.samples at 0 (4 bytes), C flipgraph_counts.samples at 0 (8 bytes)"]
 
 
-def test_every_mirror_listed(layout):
-    """Each ctypes.Structure of the package is in MIRRORS (LotOptionsRoom
-    wraps LotOptions), and each structure layout.c prints has a mirror."""
-    import fliplab
-    found = set()
-    for mod in (_lib, _cdf, _census, _classify, _flipgraph, _got, _pymeasure, _report) + tuple(
-            getattr(fliplab, m) for m in ("_lot", "_rules", "_samplers")):
-        found |= {v for v in vars(mod).values()
-                  if isinstance(v, type) and issubclass(v, ctypes.Structure)}
-    assert found - set(MIRRORS) == {_lib.LotOptionsRoom}
-    assert {m[0] for m in MIRRORS.values()} == set(layout[0])
+def test_every_structure_accounted_for(layout):
+    """Each structure layout.c prints is mirrored, set by verbs or read by
+    name; each mirror's C structure is printed."""
+    mirrored = {m[0] for m in MIRRORS.values()}
+    assert set(layout[0]) == mirrored | set(SETTERS) | set(BY_NAME)
+    assert not mirrored & (set(SETTERS) | set(BY_NAME))
+
+
+def _setter_cases():
+    return [(s, f) for s in ("lot_options", "got_options") for f in _fields_of(s)]
+
+
+def _fields_of(cname):
+    """The fields layout.c prints for cname (read from its source: the
+    parametrisation is made before the layout program runs)."""
+    with open(os.path.join(ROOT, "python", "tests", "layout.c")) as f:
+        return re.findall(r"\bF\(%s, (\w+)\)" % cname, f.read())
+
+
+@pytest.mark.parametrize("cname,field", _setter_cases())
+def test_every_option_has_a_setter(layout, cname, field):
+    assert field in layout[1][cname]
+    verb = SETTERS[cname].get(field, "%s_set_%s" % (cname, field))
+    if verb is None:
+        return
+    if verb in PENDING and not hasattr(_lib.lib, verb):
+        pytest.xfail("%s: designed (docs/python.md), not yet in the library" % verb)
+    assert hasattr(_lib.lib, verb), "C %s.%s has no setter %s" % (cname, field, verb)
+    assert verb in _lib._PROTOS, "%s is not declared in _lib._PROTOS" % verb
+
+
+@pytest.mark.parametrize("cname", sorted(BY_NAME))
+def test_every_field_readable_by_name(layout, cname):
+    """The library's names are the fields layout.c prints, in declaration
+    order, and they tile the structure: between two fields, and after the
+    last, only the padding the next field's alignment needs."""
+    sizes, fields = layout
+    names = _lib.c_names(getattr(_lib.lib, BY_NAME[cname]))
+    c = fields[cname]
+    assert list(names) == sorted(c, key=lambda f: c[f][0])
+    end = 0
+    for f in names:
+        off, size = c[f]
+        assert 0 <= off - end < 8, "%s: %d bytes before %s are no field" % (cname, off - end, f)
+        end = off + size
+    assert 0 <= sizes[cname] - end < 8, "%s: bytes after its last field" % cname

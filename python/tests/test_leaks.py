@@ -2,7 +2,8 @@
 attribute, badness, decide, check, samplers, constrained runs and read_poly,
 failing calls) must not grow
 the C heap (glibc's mallinfo2: bytes in use by malloc) nor the Python heap
-(tracemalloc) once warmed up."""
+(tracemalloc) once warmed up; nor must the small objects the package asks
+the library for (options, results), refused calls included."""
 import ctypes
 import gc
 import tracemalloc
@@ -74,3 +75,36 @@ def test_no_leak(tmp_path):
     # result array would add 60 times that.
     assert c1 - c0 < 256 * 1024, "C heap grew by %d bytes over 60 rounds" % (c1 - c0)
     assert py1 - py0 < 256 * 1024, "Python heap grew by %d bytes over 60 rounds" % (py1 - py0)
+
+
+def _verbs_round(p, poly):
+    """Each object the package asks the library for and hands back: the run's
+    options (also when lot_options_check refuses them), a check's result, a
+    GOT's options and result (also when got_solve refuses the polygon)."""
+    for bad in ({"algorithm": "flip", "order": "input"}, {"keep_hull": True}):
+        try:
+            fliplab.lot(p, "DT", **bad)
+        except ValueError:
+            pass
+    fliplab.check(p, fliplab.lot(p, "DT").triangles, "P_1")
+    fliplab.got(poly, "P_1", threads=1)
+    try:
+        fliplab.got(poly[[0, 2, 1, 3]], "P_1", threads=1)          # crossing: refused
+    except ValueError:
+        pass
+
+
+def test_verbs_no_leak():
+    """Thousands of the library's small objects (got_result, the smallest,
+    is 200 bytes): a leak of any one of them grows the C heap by 400 KB."""
+    p = fliplab.samplers.points(12, "uniform", 3)
+    poly = fliplab.samplers.polygon(5, "vector", seed=2)
+    for _ in range(20):
+        _verbs_round(p, poly)
+    gc.collect()
+    c0 = c_heap()
+    for _ in range(2000):
+        _verbs_round(p, poly)
+    gc.collect()
+    c1 = c_heap()
+    assert c1 - c0 < 64 * 1024, "C heap grew by %d bytes over 2000 rounds" % (c1 - c0)

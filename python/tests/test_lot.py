@@ -44,7 +44,8 @@ def test_conventions():
         assert t.triangles.dtype == np.int32 and t.triangles.shape == (t.stats["triangles"], 3)
         assert t.points.dtype == np.float64 and t.points.shape == (500, 2)
         a, b, c = (p[t.triangles[:, i]] for i in range(3))
-        cross = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        cross = ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1])
+                 - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
         assert (cross > 0).all()                                     # anticlockwise
         assert (t.triangles[:, 0] < t.triangles[:, 1:].min(axis=1)).all()
         assert len(t.triangles) == 2 * 500 - len(t.hull) - 2          # Euler
