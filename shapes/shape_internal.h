@@ -17,11 +17,11 @@
 /* ---- variants -------------------------------------------------------------
 **
 ** Every shape is one variant, each with a decision of its own, told apart
-** once when the shape is made (shape.c, shape_impl_make, one exhaustive
+** once when the shape is made (shape.c, shape_impl_set, one exhaustive
 ** switch): an axis-parallel square (bounding boxes, shape_square.c), an
 ** affinely regular hexagon (slabs, shape_hex.c), every other polygon
-** (supports and homothets, shape.c) and an ellipse (one determinant,
-** shape.c).  A variant is its table of decisions, shape_ops; the public
+** (supports and homothets, shape_polygon.c) and an ellipse (one determinant,
+** shape_ellipse.c).  A variant is its table of decisions, shape_ops; the public
 ** verbs call through it and test no flag. */
 typedef enum shape_variant {
   SHAPE_V_POLYGON, SHAPE_V_SQUARE, SHAPE_V_HEXAGON, SHAPE_V_ELLIPSE
@@ -77,7 +77,7 @@ typedef struct shape_args {
 ** det3h: rows (e_x, e_y, h) of edges e[0..2], h = cross(k_i, k_{i+1});
 ** det3w: rows (e_x, e_y, w) of (e[r], p[r]), w = cross(p - o, e) (deriv: e.(p - o));
 ** det4: rows (e_x, e_y, h, w) of (e[r], p[r]), r < 4;
-** corner: the rounding-shape determinant of p[0..2] about o (shape.c);
+** corner: the rounding-shape determinant of p[0..2] about o (shape_polygon.c);
 ** ellipse: rows (x, y, Q(x, y)) of p[r] - o, r < 3. */
 typedef enum shape_prog {
   SHAPE_PROG_CROSS, SHAPE_PROG_DET3H, SHAPE_PROG_DET3W, SHAPE_PROG_DET4, SHAPE_PROG_CORNER,
@@ -124,7 +124,7 @@ FLIPLAB_INTERNAL int shape_det3h_sign(const shape *K, const int e[3]);
 
 /* The contact edges t (of A, B, C = p[0..2]) of the circumscribing
 ** homothet of the anticlockwise triangle p whose supports s_AB, s_BC, s_CA
-** (sup) differ, and det3's sign; 0 when none is found (shape.c). */
+** (sup) differ, and det3's sign; 0 when none is found (shape_polygon.c). */
 FLIPLAB_INTERNAL int shape_contacts(const shape *k, const int sup[3], const geom_point p[3],
                                     int t[3]);
 
@@ -177,7 +177,7 @@ FLIPLAB_INTERNAL int shape_quick_homothet(const shape *k, const int sup[3], cons
 ** contact triple of p[0..2] (no supports, no search), or -1. */
 FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_point p[4]);
 /* The certain sign of SHAPE_PROG_CORNER of corner c, p[0..2] about o = p[3]
-** (shape.c's rounding-shape test), or 2. */
+** (shape_polygon.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
 
 /* 1 when a - b is a double, exactly (GMP: for building a shape's tables);
@@ -209,7 +209,7 @@ FLIPLAB_INTERNAL int shape_hex_at(const shape *k, const int t[3], const geom_poi
 /* ---- the variants' decisions -------------------------------------------- */
 
 /* The general polygon decision of the anticlockwise quadrilateral p
-** (shape.c): quick when the quick path may be asked (shape_quick_ready, or
+** (shape_polygon.c): quick when the quick path may be asked (shape_quick_ready, or
 ** shape_quick_on for sites in the coordinate contract), with a trace and a
 ** hint (each may be NULL). */
 FLIPLAB_INTERNAL shape_choice shape_polygon_decide(const shape *k, const geom_point p[4],
@@ -223,7 +223,7 @@ typedef int (*shape_at_fn)(const shape *k, const int t[3], const geom_point p[4]
 
 /* shape_decide and shape_decide_hinted of a polygon variant whose own
 ** decisions are own and at (NULL: none), written once and inlined with
-** them constant into each variant's table (shape.c, shape_square.c,
+** them constant into each variant's table (shape_polygon.c, shape_square.c,
 ** shape_hex.c): an own answer is the general path's (their files have the
 ** arguments), so it is taken first; a homothet's hint (lot's commonest
 ** call) is tried before anything else, with the quick path's shape_quick_at

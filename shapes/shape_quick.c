@@ -1,8 +1,8 @@
 /*
 ** shape_quick.c: the quick polygon decision.  The support vertices and the
-** circumscribing homothet's test of shape.c, computed in straight-line
+** circumscribing homothet's test of shape_polygon.c, computed in straight-line
 ** doubles with a proven error bound on a per-shape table; at the first sign
-** the bound cannot certify as non-zero it gives up, and shape.c takes its
+** the bound cannot certify as non-zero it gives up, and shape_polygon.c takes its
 ** filtered-exact path, so every answer is that path's answer.
 */
 #include <math.h>
@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include "shape_internal.h"
 
-/* ---- why a quick answer is shape.c's answer ---------------------------
+/* ---- why a quick answer is shape_polygon.c's answer ---------------------------
 **
 ** Signs.  Every value below is a tree of +, -, * over inputs, differences
 ** of two inputs (one rounded leaf) and the kept det3h runs of
@@ -34,26 +34,26 @@
 ** value or twin infinite or NaN, whose comparison fails: the sign is
 ** uncertain.
 **
-** Decisions.  shape.c reads every predicate under the perturbation (the
+** Decisions.  shape_polygon.c reads every predicate under the perturbation (the
 ** value's sign, or the eps coefficient's when the value is 0).  A certain
 ** sign is non-zero, so it is the perturbed sign too; each step below then
-** gives shape.c's result:
+** gives shape_polygon.c's result:
 ** - support(P, Q) is the start s of the first edge not before Q - P: the
 **   perturbed cross(e_j, Q - P) changes sign from + to - exactly once
 **   going round the edges (it is never 0, P != Q), from e_{s-1} to e_s,
 **   so a certain + at s - 1 and a certain - at s find it, whatever search
-**   shape.c uses.
+**   shape_polygon.c uses.
 ** - The contact triple: a triple t whose det3h is not 0, whose det3w has
 **   det3h's sign (s > 0) and whose slacks (each point against the two
 **   edges next to its own) are certainly positive, but for those that
-**   shape.c's contact test skips because it proves them positive under the
+**   shape_polygon.c's contact test skips because it proves them positive under the
 **   perturbation (above shape_contact_ok), passes that test, with all six
 **   perturbed slacks positive.  Every passing triple gives the same
 **   homothet H (of the turned shape), and each point lies strictly inside
 **   its edge of H (both neighbouring slacks positive), so on no other
-**   edge: t is the only passing triple, the one shape.c's search returns.
+**   edge: t is the only passing triple, the one shape_polygon.c's search returns.
 **   How the quick search reaches t does not matter.
-** - D: shape.c answers AC at the first arc edge (from C's contact edge to
+** - D: shape_polygon.c answers AC at the first arc edge (from C's contact edge to
 **   A's) with a negative slack, else BD when none is 0; the same edges in
 **   the same order, each certain, give the same answer. */
 
@@ -354,7 +354,7 @@ static FLIPLAB_ALWAYS_INLINE void shape_q_rows(shape_q_tri *T) {
 
 /* ---- which checks a contact triple needs ---------------------------------
 **
-** shape.c's contact test checks each point against both neighbours of its
+** shape_polygon.c's contact test checks each point against both neighbours of its
 ** contact edge.  Here only the neighbours inside the point's own range are
 ** checked (the movable bits): the others follow.  Say A's contact edge t0
 ** is the first of its range, t0 = s_CA, so its previous edge m = t0 - 1 is
@@ -372,8 +372,8 @@ static FLIPLAB_ALWAYS_INLINE void shape_q_rows(shape_q_tri *T) {
 ** The last edge of a range and the next point's range are the mirror
 ** image (s_AB's - at s).  This is exact geometry under the perturbation
 ** (every sign used is a perturbed sign: the certified supports and slacks
-** are), so the triple passing these checks passes shape.c's six; and a
-** range never holds another point's contact edge, so shape.c's settled
+** are), so the triple passing these checks passes shape_polygon.c's six; and a
+** range never holds another point's contact edge, so shape_polygon.c's settled
 ** checks are all among those left out. */
 
 /* Test triple T->t: 1 when it is the contact triple, 0 with *move set to
@@ -466,7 +466,7 @@ static int shape_q_contacts(const shape *k, shape_q_tri *T, const int sup[3],
 /* D's slack on an edge of the arc from C's contact edge t2 to A's t0.  On
 ** the two ends no determinant is needed: C is on edge line t2, so c_t2 -
 ** n_t2.D = n_t2.(C - D) = cross(e_t2, D - C), and likewise cross(e_t0, D -
-** A) on t0 (n_m.X = cross(X, e_m)); the settled checks of shape.c's contact
+** A) on t0 (n_m.X = cross(X, e_m)); the settled checks of shape_polygon.c's contact
 ** test are the same identity, and both are certified as the supports are
 ** (one rounded difference, count 5). */
 static FLIPLAB_ALWAYS_INLINE int shape_q_dslack(const shape_q_tri *T, int m,
@@ -476,7 +476,7 @@ static FLIPLAB_ALWAYS_INLINE int shape_q_dslack(const shape_q_tri *T, int m,
   return shape_q_slack(T, m, p[3]);
 }
 
-/* D against the homothet of contact triple T->t: shape.c's arc walk. */
+/* D against the homothet of contact triple T->t: shape_polygon.c's arc walk. */
 static FLIPLAB_ALWAYS_INLINE int shape_q_dtest(const shape_q_tri *T, const geom_point p[4]) {
   for (int m = T->t[2];; m = T->q->nb[1][m]) {
     int s = shape_q_dslack(T, m, p);

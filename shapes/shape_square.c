@@ -3,7 +3,7 @@
 ** For an axis-parallel square K the circumscribing homothet of a triangle
 ** is read off the triangle's bounding box, and D's test is comparisons of
 ** coordinates and of differences of coordinates: no product, no filter.
-** Where a comparison ties it gives up, and shape.c's quick and exact paths
+** Where a comparison ties it gives up, and shape_polygon.c's quick and exact paths
 ** decide (so every answer is theirs).
 */
 #include <math.h>
@@ -21,12 +21,12 @@
 ** its boundary, so it is THE circumscribing homothet (docs/emptyshape.md:
 ** it is unique when it exists).  When Q's y is strictly between the others'
 ** no homothet passes through the three (the triangle is a staircase, whose
-** circumscribing shape is a corner's rounding shape): left to shape.c.  A
+** circumscribing shape is a corner's rounding shape): left to shape_polygon.c.  A
 ** side longer than W would need a third side touched on the x-slab's
 ** behalf, impossible with one point per side and the x-extremes strictly
 ** inside the slab's two sides.  Two of A, B, C with one x or one y (two
 ** sites on a line parallel to a side), or W = H (a site on a corner's
-** cone), are special position, left to shape.c (its perturbation decides);
+** cone), are special position, left to shape_polygon.c (its perturbation decides);
 ** so below the three x and the three y are different.  H > W is the same
 ** with x and y swapped.
 **

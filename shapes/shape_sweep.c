@@ -70,7 +70,7 @@ int shape_sweep_sqrt_cmp(mpq_ptr q1, mpq_srcptr r1, mpq_ptr q2, mpq_srcptr r2) {
 int shape_circumscribe(const shape *k, geom_point a, geom_point b, geom_point c, int contact[3],
                        int *corner) {
   int sup[3] = {shape_support(k, a, b), shape_support(k, b, c), shape_support(k, c, a)};
-  /* All three cannot coincide (shape.c, shape_polygon_decide). */
+  /* All three cannot coincide (shape_polygon.c, shape_polygon_decide). */
   if (sup[0] == sup[1] || sup[0] == sup[2]) {
     *corner = sup[0];
     return 0;

@@ -12,7 +12,7 @@
 **   homothet: t.x + s xr, xr the x of K's rightmost corner J (of a vertical
 **     right edge, its lower end: the tie-break turns K anticlockwise);
 **     (t, s) solves the rows (n_m, h_m | n_m.P) of the contact edges
-**     (shape.c), so the key is rational: A.x + (Dx + xr Ds) / D;
+**     (shape_polygon.c), so the key is rational: A.x + (Dx + xr Ds) / D;
 **   rounding shape of J (both sides point left, or one is vertical):
 **     its rightmost point is where u_x X + v_x Y is largest on the branch,
 **     A.x + (u_x hx + v_x hy - 2 sqrt(u_x v_x r)) / delta (AM-GM), with

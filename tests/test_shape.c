@@ -140,7 +140,7 @@ static void test_rotations_grid(void **state) {
 
 /* ---- a brute-force rational oracle ------------------------------------------
 **
-** Independent of shape.c: supports by comparing every vertex, the
+** Independent of shape_polygon.c: supports by comparing every vertex, the
 ** circumscribing homothet by trying every triple of edges (any edges, not
 ** the ranges) with Cramer's rule in rationals, and for a problem corner the
 ** hyperbola through the mapped A, B, C solved as a linear system.  Only for
