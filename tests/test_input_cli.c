@@ -149,8 +149,12 @@ static void test_nul_in_field(void **state) {
   char p[512], q[512];
   static const char pts[] = "x,y\n0,0\n1,0\n0.5\0garbage,0.8\n";
   ti_bytes(p, sizeof p, "nul.csv", pts, sizeof pts - 1);
-  ti_refused(TI_RUN("lot --rule DT --points %s", p), 2, "line 4: x '0.5' is not a number", 300);
-  ti_refused(TI_RUN("got --rule P_1 --polygon %s", p), 2, "line 4: x '0.5' is not a number", 300);
+  /* the field shown whole, its NUL as '?' (the points reader shows fields
+  ** as the segments and weights readers do: report_pairs_shown) */
+  ti_refused(TI_RUN("lot --rule DT --points %s", p), 2, "line 4: x '0.5?garbage' is not a number",
+             300);
+  ti_refused(TI_RUN("got --rule P_1 --polygon %s", p), 2,
+             "line 4: x '0.5?garbage' is not a number", 300);
   static const char pent[] = "0,0,1,0,1.5\0001,0.5,1,1,0,1\n";
   ti_bytes(p, sizeof p, "nul.csv", pent, sizeof pent - 1);
   ti_refused(TI_RUN("classify --input %s", p), 2, "x3 '1.5' is not a number", 300);
