@@ -36,7 +36,7 @@ typedef struct cli_lot_tri {
 } cli_lot_tri;
 
 typedef struct cli_lot_args {
-  const char *rule, *points, *out, *svg, *cdf, *segments, *holes, *poly;
+  const char *rule, *points, *out, *svg, *cdf, *segments, *holes, *poly, *weights;
   int sampler, algorithm, order, compare;   /* compare: 0 DT, 1 GOT, -1 none */
   uint64_t random, seed, max_flips, threads;
   double tie_eps;
@@ -60,7 +60,7 @@ static int cli_lot_sampler(const char *cmd, const cli_option *o, const char *v, 
 #define T cli_lot_args
 static const cli_option cli_lot_opts[] = {
   CLI_OPT_STRING("--rule", "RULE,...", "required",
-                 "DT, MEASURE_JOINT (e.g. P_1, -alpha_inf), ES:SHAPE, a\n"
+                 "DT, WDT, MEASURE_JOINT (e.g. P_1, -alpha_inf), ES:SHAPE, a\n"
                  "                     --define'd measure with a joint, or a --plugin\n"
                  "                     quadrilateral rule; a comma list builds one LOT per\n"
                  "                     rule (lines per rule, --svg one panel each; not\n"
@@ -80,6 +80,11 @@ static const cli_option cli_lot_opts[] = {
                  "Triangle's .poly file: points, segments and holes\n"
                  "                     (instead of --points, --random, --segments, --holes)",
                  T, poly),
+  CLI_OPT_STRING("--weights", "W.csv", "none",
+                 "with --rule WDT and --points: a weight 'w' per row of\n"
+                 "                     the points file (optional header 'w'): the regular\n"
+                 "                     triangulation; redundant sites are named and left\n"
+                 "                     out (docs/lot.md)", T, weights),
   CLI_OPT_FLAG("--keep-hull", "with segments: keep the triangles outside the outermost\n"
                "                     segment-bounded region (default: removed)", T, keep_hull),
   {.name = "--random", .arg = "N", .dflt = "none", .help = "N random points from --sampler",
@@ -157,6 +162,8 @@ static int cli_lot_parse_input(const cli_lot_args *a, uint64_t given) {
   if (sampler && a->points) return cli_error(CMD, "--sampler applies to --random only");
   if (a->segments && a->points == NULL)
     return cli_error(CMD, "--segments needs --points FILE.csv (its rows are the indices)");
+  if (a->weights && a->points == NULL)
+    return cli_error(CMD, "--weights needs --points FILE.csv (a weight per row)");
   if (a->keep_hull && a->segments == NULL && a->holes == NULL)
     return cli_error(CMD, "--keep-hull applies to constrained runs (--segments, --holes, "
                      "--poly)");
@@ -274,6 +281,34 @@ static int cli_lot_input(const cli_lot_args *a, geom_pslg *in, char *desc, size_
   return 0;
 }
 
+/* --weights: a weight per point, into *w (NULL without the option). */
+static int cli_lot_weights(const cli_lot_args *a, const geom_pslg *in, double **w, char *desc,
+                           size_t desclen) {
+  char err[512];
+  *w = NULL;
+  if (a->weights == NULL) return 0;
+  if (report_weights_read(a->weights, in->npts, w, err, sizeof err) != 0)
+    return cli_error(CMD, "--weights: %s", err);
+  size_t len = strlen(desc);
+  snprintf(desc + len, desclen - len, ", weights from %s", a->weights);
+  return 0;
+}
+
+/* A weighted run's sites left out: their count, the rounds, the first few. */
+static void cli_lot_redundant_line(const lot *L) {
+  const lot_stats *st = lot_get_stats(L);
+  uint32_t *red = malloc((st->redundant + 1) * sizeof *red);
+  printf("redundant: %zu sites (power cells empty: no regular triangulation keeps them; "
+         "%zu rounds)", st->redundant, st->rounds);
+  if (red != NULL) {
+    lot_get_redundant(L, red);
+    for (size_t k = 0; k < st->redundant && k < 20; k++) printf("%s %u", k ? "" : ":", red[k]);
+    if (st->redundant > 20) printf(" ...");
+  }
+  printf("\n");
+  free(red);
+}
+
 static void cli_lot_status(const lot_stats *st) {
   if (st->status == LOT_CONVERGED) {
     printf("status: converged\n");
@@ -307,12 +342,14 @@ static int cli_lot_check_segments(const lot_check_result *c, const geom_pslg *in
 /* --check: 0 when the triangulation is valid, every interior edge (but
 ** the segments' ones) is locally optimal, and no segment is lost. */
 static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
-                         const rule *r, const geom_pslg *in, const lot_stats *st) {
+                         const rule *r, const geom_pslg *in, const lot_options *o,
+                         const lot_stats *st) {
   lot_check_result c;
   lot_tie_result tie = {0};   /* unconstrained runs only */
   int constrained = in->nseg || in->nholes;
   if ((constrained ? lot_check_constrained(p, n, tri, ntri, in->seg, in->nseg, r, &c)
-                   : lot_check_ties(p, n, tri, ntri, r, &c, &tie)) != 0) {
+       : o->weights ? lot_check_weighted(p, o->weights, n, tri, ntri, r, &c)
+                    : lot_check_ties(p, n, tri, ntri, r, &c, &tie)) != 0) {
     printf("check: failed (out of memory)\n");
     return 1;
   }
@@ -333,8 +370,10 @@ static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, siz
     return 1;
   }
   char how[160];
-  int len = snprintf(how, sizeof how, "%s", rule_is_delaunay(r)
-                     ? "every one passes the exact empty-circle test" : "the rule keeps every one");
+  int len = snprintf(how, sizeof how, "%s", o->weights
+                     ? "every one passes the exact power test (regular, convex or not)"
+                     : rule_is_delaunay(r) ? "every one passes the exact empty-circle test"
+                                           : "the rule keeps every one");
   if (tie.ties)   /* no ties, no words: the line stays as before */
     snprintf(how + len, sizeof how - (size_t)len, "; %zu ties, every one as the tie-break "
              "settles it", tie.ties);
@@ -506,6 +545,7 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
          inc ? cli_lot_order_name[o->order] : "", tie_eps);
   printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
   if (o->nsegments || o->nholes) cli_lot_constraint_lines(o, st);
+  if (o->weights) cli_lot_redundant_line(L);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
   if (ties > 0 || restarted)   /* a polygon's sweep met sites in special position */
@@ -587,7 +627,7 @@ static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rul
     return 2;
   }
   cli_lot_summary(r, desc, &o, L, a->tie_eps);
-  if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, st) != 0) *failed = 1;
+  if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, &o, st) != 0) *failed = 1;
   if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
   else if (a->compare == 1) rc = cli_lot_compare_got(in, L, r, t, a, failed);
   if (rc == 0 && single) rc = cli_lot_write(a, p, n, t, dt, ndt, r, constrained);
@@ -616,6 +656,9 @@ int cli_cmd_lot(int argc, char **argv) {
   int failed = 0;
   if (t == NULL) rc = cli_error(CMD, "out of memory");
   else rc = cli_lot_input(&a, &in, desc, sizeof desc);
+  double *w = NULL;
+  if (rc == 0) rc = cli_lot_weights(&a, &in, &w, desc, sizeof desc);
+  o.weights = w;
   o.segments = in.seg;
   o.nsegments = in.nseg;
   o.holes = in.hole;
@@ -630,6 +673,7 @@ int cli_cmd_lot(int argc, char **argv) {
     free(t[k].con);
   }
   free(t);
+  free(w);
   geom_pslg_free(&in);
   free(r);
   return rc == 0 && failed ? 1 : rc;

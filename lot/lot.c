@@ -950,9 +950,9 @@ static uint32_t lot_weighted_subset(const geom_point *p, const double *w, uint32
 }
 
 /* The final round's lot speaks of the whole input: input indices, the
-** sites left out, the counts of every round. */
+** sites left out, the flips, times and number of every round (in acc). */
 static int lot_weighted_finish(lot *L, const unsigned char *keep, const uint32_t *map, size_t n,
-                               long dups, uint64_t flips, size_t rounds) {
+                               long dups, const lot_stats *acc) {
   for (uint32_t v = 0; v < L->m.np; v++) L->m.inp[v] = map[L->m.inp[v]];
   size_t out = 0;
   for (size_t i = 0; i < n; i++) out += keep[i] == LOT_W_HIDDEN;
@@ -965,8 +965,10 @@ static int lot_weighted_finish(lot *L, const unsigned char *keep, const uint32_t
   L->st.duplicates = (size_t)dups;
   L->st.distinct = n - (size_t)dups;
   L->st.redundant = out;
-  L->st.flips = flips;
-  L->st.rounds = rounds;
+  L->st.flips = acc->flips;
+  L->st.rounds = acc->rounds;
+  L->st.seconds_init = acc->seconds_init;
+  L->st.seconds_flip = acc->seconds_flip;
   return 0;
 }
 
@@ -984,16 +986,17 @@ static int lot_build_weighted(lot **out, const geom_point *p, size_t n, const lo
   lot *L = NULL;
   long dups = keep && map && q && wq ? (memset(keep, LOT_W_KEPT, n), 0) : -1;
   if (dups == 0) dups = lot_weighted_dedupe(p, o->weights, (uint32_t)n, keep, map);
-  uint64_t flips = 0;
-  size_t rounds = 0;
+  lot_stats acc = {0};
   int rc = dups < 0 ? -2 : 0;
   while (rc == 0) {
     uint32_t m = lot_weighted_subset(p, o->weights, (uint32_t)n, keep, q, wq, map);
     lot_options oo = *o;
     oo.weights = wq;
     if ((rc = lot_build_once(&L, q, m, &oo, err, errlen)) != 0) break;
-    flips += L->st.flips;
-    rounds++;
+    acc.flips += L->st.flips;
+    acc.rounds++;
+    acc.seconds_init += L->st.seconds_init;
+    acc.seconds_flip += L->st.seconds_flip;
     if (L->st.status != LOT_CONVERGED) break;   /* unfinished: no LOT to read */
     free(mark);
     if ((mark = calloc(m, 1)) == NULL) rc = -2;
@@ -1003,7 +1006,7 @@ static int lot_build_weighted(lot **out, const geom_point *p, size_t n, const lo
     lot_free(L);
     L = NULL;
   }
-  if (rc == 0 && lot_weighted_finish(L, keep, map, n, dups, flips, rounds) != 0) rc = -2;
+  if (rc == 0 && lot_weighted_finish(L, keep, map, n, dups, &acc) != 0) rc = -2;
   if (rc == -2) snprintf(err, errlen, "out of memory for %zu points", n);
   if (rc != 0) lot_free(L);
   *out = rc == 0 ? L : NULL;

@@ -328,8 +328,7 @@ void lot_options_free(lot_options *o);
 ** lot_build (segments: 2 input indices each; holes: hole points).  The
 ** int setters return 0, or -1 leaving o unchanged for a value outside the
 ** type (an algorithm or order that is no enumerator; a tie tolerance that
-** is not a finite number >= 0).  lot_options_set_weights(o, w) joins them
-** with the per-site weights. */
+** is not a finite number >= 0). */
 int lot_options_set_algorithm(lot_options *o, int algorithm);
 int lot_options_set_order(lot_options *o, int order);
 void lot_options_set_seed(lot_options *o, uint64_t seed);
@@ -338,6 +337,8 @@ int lot_options_set_tie_eps(lot_options *o, double tie_eps);
 void lot_options_set_segments(lot_options *o, const uint32_t *segments, size_t nsegments);
 void lot_options_set_holes(lot_options *o, const geom_point *holes, size_t nholes);
 void lot_options_set_keep_hull(lot_options *o, int keep_hull);
+/* weights[i]: point i's weight (WDT; NULL: none); lot_build checks them. */
+void lot_options_set_weights(lot_options *o, const double *weights);
 
 /* Whether the options make sense together, before lot_build: 0, or -1
 ** with a one-line message naming the options by their fields (no flag of

@@ -61,6 +61,10 @@ void lot_options_set_keep_hull(lot_options *o, int keep_hull) {
   o->keep_hull = keep_hull != 0;
 }
 
+void lot_options_set_weights(lot_options *o, const double *weights) {
+  o->weights = weights;
+}
+
 int lot_options_check(const lot_options *o, char *err, size_t errlen) {
   const char *why = NULL;
   if ((int)o->algorithm < LOT_INCREMENTAL || (int)o->algorithm > LOT_SWEEP)
