@@ -120,6 +120,33 @@ static void test_bad_shapes(void **state) {
   assert_true(testutil_one_line(err));
 }
 
+/* The rule owns its shape: lot --cdf reads it off the rule (rule_shape),
+** never off the --rule text again.  A name with blanks around it is the
+** same rule (one trimming for every rule name), and its CDF graph the same
+** file; the text re-read from its fourth character, the CDF of ' ES:square'
+** was refused as the unknown shape ':square'. */
+static void test_cdf_reads_the_rule(void **state) {
+  (void)state;
+  static const char *const names[] = {"ES:square", " ES:square", "ES:square ",
+                                      "  ES:ellipse:2 1  "};
+  char a[4096], b[4096];
+  testutil_tmppath(a, sizeof a, "es_cdf_a.csv");
+  testutil_tmppath(b, sizeof b, "es_cdf_b.csv");
+  assert_int_equal(RUN("lot --rule ES:square --random 400 --cdf %s", a), 0);
+  slurp(a, out2, sizeof out2);
+  for (size_t i = 1; i < sizeof names / sizeof names[0]; i++) {
+    if (RUN("lot --rule '%s' --random 400 --cdf %s", names[i], b) != 0)
+      fail_msg("lot --rule '%s' --cdf: %s", names[i], err);
+    if (i < 3) {
+      slurp(b, out, sizeof out);
+      if (strcmp(out, out2) != 0) fail_msg("'%s': another CDF graph", names[i]);
+    }
+  }
+  assert_int_equal(RUN("lot --rule DT --random 40 --cdf %s", b), 2);
+  assert_true(testutil_one_line(err));
+  assert_non_null(strstr(err, "--cdf needs an empty-shape rule"));
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_lot_check),
@@ -127,6 +154,7 @@ int main(void) {
     cmocka_unit_test(test_verdicts),
     cmocka_unit_test(test_flip_classify),
     cmocka_unit_test(test_bad_shapes),
+    cmocka_unit_test(test_cdf_reads_the_rule),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
