@@ -149,9 +149,9 @@ static void cli_rule_quad_report(const rule *r, const study_quadcheck *qc) {
            (unsigned long long)qc->ties, (unsigned long long)(qc->decided - qc->ties));
     return;
   }
-  printf("  verdict: not Delaunay-equivalent; first disagreement, quadrilateral #%lld "
+  printf("  verdict: not Delaunay-equivalent; first disagreement, quadrilateral #%llu "
          "ABCD = %.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g: rule %s, DT %s",
-         (long long)qc->first, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y,
+         (unsigned long long)qc->first, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y,
          rule_choice_str(qc->choice), rule_choice_str(qc->dt));
   if (rule_is_triangle(r)) printf(" (F_AC = %.17g, F_BD = %.17g)", qc->ac, qc->bd);
   printf("\n");

@@ -132,7 +132,7 @@ static int cli_sites_one(const rule *r, const cli_site_spec *s, uint64_t samples
     printf("  verdict: not systematic: %llu %s with two or more LOTs among %llu %s%s\n",
            (unsigned long long)c.counts.multi_sink, strchr(what, ' ') + 1, m, what,
            s->sampler != SAMPLER_SITES_CONVEX && s->n == 5 ? " (figure 3.8's kind)" : "");
-    if (c.witness >= 0 && cli_sites_witness(r, s, c.witness, c.sites, tie_eps, svg_dir) != 0)
+    if (c.has_witness && cli_sites_witness(r, s, (int64_t)c.witness, c.sites, tie_eps, svg_dir))
       return 1;
   } else {
     printf("  verdict: no counterexample to systematicity in %llu %s%s (no set with two LOTs)\n",

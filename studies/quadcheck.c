@@ -14,7 +14,7 @@
 static void study_quad_first(const rule *r, uint64_t seed, study_quadcheck *out) {
   rule dt = rule_delaunay();
   out->ac = out->bd = NAN;
-  sampler_quad(seed, (uint64_t)out->first, out->q);
+  sampler_quad(seed, out->first, out->q);
   out->choice = rule_eval(r, out->q, &out->ac, &out->bd);
   out->dt = rule_eval(&dt, out->q, NULL, NULL);
   if (!rule_is_triangle(r)) out->ac = out->bd = NAN;
@@ -51,7 +51,7 @@ int study_quads(const rule *r, uint64_t seed, uint64_t tested, int threads,
   out->cocircular = coc;
   out->decided = tested - coc;
   out->equivalent = dis == 0 && ties == 0;
-  out->first = dis ? (int64_t)first : -1;
+  out->first = dis ? first : 0;
   out->choice = out->dt = RULE_EITHER;
   out->ac = out->bd = NAN;
   if (dis) study_quad_first(r, seed, out);

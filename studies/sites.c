@@ -12,13 +12,14 @@ int study_sites(const rule *r, int sampler, int n, uint64_t seed, uint64_t sampl
   memset(out, 0, sizeof *out);
   out->sampler = sampler;
   out->n = n;
-  out->witness = -1;
   if (siteflip_census(r, 1, sampler, n, seed, 0, samples, tie_eps, threads, 0, &out->counts,
                       NULL, NULL, NULL, err, errlen) != 0)
     return -1;
   out->decided = out->counts.samples - out->counts.tie;
   out->systematic = out->counts.multi_sink == 0;
-  if (!out->systematic)
-    out->witness = siteflip_find_multi(r, sampler, n, seed, 0, samples, tie_eps, out->sites);
+  int64_t w = out->systematic ? -1 : siteflip_find_multi(r, sampler, n, seed, 0, samples,
+                                                          tie_eps, out->sites);
+  out->has_witness = w >= 0;
+  out->witness = w >= 0 ? (uint64_t)w : 0;
   return 0;
 }

@@ -16,9 +16,10 @@
 ** Every count is the same for any thread count.  Random samples give
 ** evidence, not proof: a verdict is "no counterexample in N", never "proved".
 **
-** Front ends that read no C layout (python/) read the results through
-** study_size, study_field_name, study_field and study_field_text: each
-** result's numbers by name, from one table per kind.
+** Front ends that read no C layout (python/) make the results with
+** study_KIND_new and read them by the names of their fields
+** (study_KIND_field, study_KIND_get_u64, ...), as lot_stats and got_result
+** are read: one table per structure, geom/'s one reader.
 */
 #ifndef FLIPLAB_STUDY_H
 #define FLIPLAB_STUDY_H
@@ -91,7 +92,7 @@ typedef struct study_quadcheck {
   uint64_t tested, disagree, ties, cocircular;
   uint64_t decided;        /* tested - cocircular: where DT decides */
   int equivalent;          /* no disagreement and no tie: no counterexample */
-  int64_t first;           /* lowest disagreeing index, -1 when none */
+  uint64_t first;          /* the lowest disagreeing index (when disagree > 0) */
   geom_point q[4];         /* quadrilateral #first */
   rule_choice choice, dt;  /* the rule's and DT's decision on it */
   double ac, bd;           /* a triangle rule's joint values on it (else NaN) */
@@ -111,7 +112,8 @@ typedef struct study_sitecheck {
   siteflip_counts counts;
   uint64_t decided;        /* sets without a tie */
   int systematic;          /* no set with two or more sinks (LOTs) */
-  int64_t witness;         /* the lowest such set's index, -1 when none */
+  int has_witness;         /* such a set was found again (when not systematic) */
+  uint64_t witness;        /* the lowest such set's index */
   geom_point sites[SITEFLIP_MAX_SITES];   /* its sites */
 } study_sitecheck;
 
@@ -160,26 +162,50 @@ int study_lot_got(const geom_pslg *in, const uint32_t *hull, size_t nhull, const
                   size_t errlen);
 void study_gotcheck_free(study_gotcheck *c);
 
-/* ---- reading results by name ---------------------------------------------
-** kind is "verdict", "quadcheck", "sitecheck" or "gotcheck" (the struct
-** study_KIND).  study_size: its size in bytes (0 for another kind).
-** study_field_name: the name of its field i (NULL past the last; counts
-** keep their flipgraph_counts or siteflip_counts names, intervals are
-** lo_ROW and hi_ROW); study_field_type: its type, 'u' a count, 'i' a
-** signed integer, 'b' a flag, 'd' a real, 's' a text (0 past the last);
-** study_field: field i of res as a double (exact for integers up to 2^53;
-** NaN for a text); study_field_text: a text field ("" for none; NULL for
-** another type).  The arrays: study_witness, the k-th witness index of type t
-** (-1 past the last); study_witness_sites, a sitecheck's witness set
-** into out (room for n sites; returns n, or 0 without a witness);
-** study_got_triangles, a gotcheck's 3 (n - 2) GOT vertex indices. */
-size_t study_size(const char *kind);
-const char *study_field_name(const char *kind, int i);
-int study_field_type(const char *kind, int i);
-double study_field(const char *kind, const void *res, int i);
-const char *study_field_text(const char *kind, const void *res, int i);
-int64_t study_witness(const study_verdict *v, int t, int k);
-int study_witness_sites(const study_sitecheck *s, geom_point *out);
-const uint32_t *study_got_triangles(const study_gotcheck *c);
+/* ---- results through verbs --------------------------------------------
+** For callers that do not compile against this header (the Python
+** package), as lot_stats and got_result are read (lot.h, got.h).
+** study_KIND_new: a zeroed result on the heap (NULL when out of memory),
+** study_KIND_delete frees it (a gotcheck's GOT too).  study_KIND_field(i):
+** the name of its i-th field (NULL past the last).  study_KIND_get_u64:
+** element i of an integer field (a count, an index, a flag 0 or 1, a
+** rule_choice); study_KIND_get_double: a real field; study_gotcheck_get_text:
+** lot_text, got_text or uncertified ("" for none); each 0, or -1 for a name
+** that is no field of that type (or i outside it).  The arrays:
+** study_verdict_interval, row r's interval (types I-V, then DT:
+** STUDY_ROW_DT); study_verdict_witness, the k-th witness index of type t
+** (-1 past the last); study_sitecheck_sites, the witness set into out (room
+** for n sites; returns n, or 0 without a witness); study_gotcheck_triangles,
+** the GOT's 3 (n - 2) vertex indices; study_gotcheck_got, the GOT itself
+** (read by got.h's verbs). */
+study_verdict *study_verdict_new(void);
+void study_verdict_delete(study_verdict *v);
+const char *study_verdict_field(size_t i);
+int study_verdict_get_u64(const study_verdict *v, const char *name, size_t i, uint64_t *out);
+int study_verdict_interval(const study_verdict *v, int row, double *lo, double *hi);
+int64_t study_verdict_witness(const study_verdict *v, int t, int k);
+
+study_quadcheck *study_quadcheck_new(void);
+void study_quadcheck_delete(study_quadcheck *q);
+const char *study_quadcheck_field(size_t i);
+int study_quadcheck_get_u64(const study_quadcheck *q, const char *name, size_t i,
+                            uint64_t *out);
+int study_quadcheck_get_double(const study_quadcheck *q, const char *name, double *out);
+
+study_sitecheck *study_sitecheck_new(void);
+void study_sitecheck_delete(study_sitecheck *s);
+const char *study_sitecheck_field(size_t i);
+int study_sitecheck_get_u64(const study_sitecheck *s, const char *name, size_t i,
+                            uint64_t *out);
+int study_sitecheck_sites(const study_sitecheck *s, geom_point *out);
+
+study_gotcheck *study_gotcheck_new(void);
+void study_gotcheck_delete(study_gotcheck *c);
+const char *study_gotcheck_field(size_t i);
+int study_gotcheck_get_u64(const study_gotcheck *c, const char *name, size_t i, uint64_t *out);
+int study_gotcheck_get_double(const study_gotcheck *c, const char *name, double *out);
+const char *study_gotcheck_get_text(const study_gotcheck *c, const char *name);
+const uint32_t *study_gotcheck_triangles(const study_gotcheck *c);
+const got_result *study_gotcheck_got(const study_gotcheck *c);
 
 #endif
