@@ -65,7 +65,8 @@ def as_coords(a, what, shape, own=False):
         raise ValueError("%s: an integer coordinate of magnitude 2^53 or more is not a double"
                          % what)
     if arr.ndim != len(shape) or any(s >= 0 and d != s for d, s in zip(arr.shape, shape)):
-        want = "(" + ", ".join("m" if s < 0 else str(s) for s in shape) + ")"
+        want = "(" + ", ".join("m" if s < 0 else str(s) for s in shape) + \
+            ("," if len(shape) == 1 else "") + ")"
         raise ValueError("%s: expected an array of shape %s, got shape %s"
                          % (what, want.replace("m", "n", 1) if len(shape) == 2 else want,
                             arr.shape))

@@ -115,7 +115,8 @@ def _check_counts(c: int) -> dict[str, Any]:
 
 
 def check(points: npt.ArrayLike, triangles: npt.ArrayLike, rule: str | Rule,
-          segments: npt.ArrayLike | None = None, missing_ok: int = 0) -> Check:
+          segments: npt.ArrayLike | None = None, missing_ok: int = 0,
+          weights: npt.ArrayLike | None = None) -> Check:
     """Re-verify a triangulation from scratch, as the program's check does.
 
     lot_check: structure (anticlockwise, every edge in at most two
@@ -137,6 +138,10 @@ def check(points: npt.ArrayLike, triangles: npt.ArrayLike, rule: str | Rule,
         triangulation with holes only.
     missing_ok : int
         How many segments may be no chain of edges.
+    weights : array_like, shape (n,), optional
+        Per-site weights of rule "WDT" (lot_check_weighted): every interior
+        edge, convex quadrilateral or not, must pass the power test, so the
+        triangulation is the regular one of the sites it uses.
 
     Returns
     -------
@@ -154,11 +159,15 @@ def check(points: npt.ArrayLike, triangles: npt.ArrayLike, rule: str | Rule,
     p = as_coords(points, "points", (-1, 2))
     t = as_indices(triangles, "triangles", 3, len(p))
     s = None if segments is None else as_indices(segments, "segments", 2, len(p))
+    w = None if weights is None else _weights(weights, len(p))
     c = lib.lot_check_result_new()
     if not c:
         raise MemoryError("check: out of memory")
     try:
-        if s is None:
+        if w is not None and s is None:
+            rc = lib.lot_check_weighted(points_ptr(p), ptr(w, ctypes.c_double), len(p),
+                                        ptr(t, ctypes.c_uint32), len(t), ctypes.byref(r._c), c)
+        elif s is None:
             rc = lib.lot_check(points_ptr(p), len(p), ptr(t, ctypes.c_uint32), len(t),
                                ctypes.byref(r._c), c)
         else:
@@ -210,6 +219,12 @@ class Triangulation:
         index first, sorted); (0, 2) without.
     segments, holes : ndarray or None
         The run's constraints.
+    weights : ndarray of float64, shape (n,), or None
+        The run's per-site weights (rule "WDT").
+    redundant : ndarray of int32
+        A weighted run's redundant sites, ascending: their power cells are
+        empty, no regular triangulation keeps them, and the triangles leave
+        them out (empty without weights).
     flips : int
     status : str
         One of "converged", "cycle", "budget exhausted" (STATUS).
@@ -232,6 +247,8 @@ class Triangulation:
         self.constrained = frozen(np.empty((0, 2), dtype=np.int32))
         self.segments: npt.NDArray[np.int32] | None = None
         self.holes: npt.NDArray[np.float64] | None = None
+        self.weights: npt.NDArray[np.float64] | None = None
+        self.redundant = frozen(np.empty(0, dtype=np.int32))
         self.rule = rule
         self.algorithm = algorithm
         self.order = order
@@ -391,7 +408,7 @@ class Triangulation:
             The check ran out of memory.
         """
         if self.segments is None and self.holes is None:
-            return check(self.points, self.triangles, self.rule)
+            return check(self.points, self.triangles, self.rule, weights=self.weights)
         seg = self.segments if self.segments is not None else np.empty((0, 2), np.uint32)
         return check(self.points, self.triangles, self.rule, seg,
                      self.stats["segments_removed"])
@@ -448,7 +465,7 @@ def lot(points: npt.ArrayLike, rule: str | Rule = "DT", algorithm: str = "increm
         order: str = "spatial", seed: int = 1, max_flips: int | None = None,
         tie_eps: float | None = None, check: bool = False,
         segments: npt.ArrayLike | None = None, holes: npt.ArrayLike | None = None,
-        keep_hull: bool = False) -> Triangulation:
+        keep_hull: bool = False, weights: npt.ArrayLike | None = None) -> Triangulation:
     """A locally optimal triangulation LOT(rule) of a point set, as the
     program's lot command makes it (the same algorithm, order and seed: the
     same triangles).
@@ -489,6 +506,10 @@ def lot(points: npt.ArrayLike, rule: str | Rule = "DT", algorithm: str = "increm
     keep_hull : bool
         With segments or holes: keep the triangles outside the outermost
         segment-bounded region.
+    weights : array_like, shape (n,), optional
+        Per-site weights of rule "WDT", the weighted Delaunay rule (each 0
+        or of magnitude in [1e-60, 1e60]): the regular triangulation, with
+        the redundant sites left out and listed (Triangulation.redundant).
 
     Returns
     -------
@@ -523,13 +544,16 @@ def lot(points: npt.ArrayLike, rule: str | Rule = "DT", algorithm: str = "increm
     try:
         _options(o, r, alg, odr, seed, flips)
         seg, hol = _constraints(o, n, segments, holes, keep_hull)
+        w = None if weights is None else _weights(weights, n)
+        if w is not None:
+            lib.lot_options_set_weights(o, ptr(w, ctypes.c_double))
         e = _lib.errbuf()
         if lib.lot_options_check(o, e, _lib.ERRLEN) != 0:     # which options go together
             raise ValueError(_lib.text(e))
         res = _build(p, o, r, algorithm, order, seed)
     finally:
         lib.lot_options_free(o)
-    res.holes = hol
+    res.holes, res.weights = hol, w
     res.segments = None if seg is None else frozen(seg.astype(np.int32))
     if check:
         c = res.check()
@@ -577,9 +601,18 @@ def _result(L: Any, p: npt.NDArray[np.float64], r: Rule, algorithm: str, order: 
     nb = np.empty((m, 3), dtype=np.int32)
     if lib.lot_get_neighbors(L, ptr(nb, ctypes.c_int32)) != 0:
         raise MemoryError("neighbors: out of memory")
+    red = np.empty(stats["redundant"], dtype=np.int32)
+    lib.lot_get_redundant(L, ptr(red, ctypes.c_uint32))
     res = Triangulation(p, frozen(tri), frozen(hull), stats, r, algorithm, order, seed)
-    res.constrained, res._neighbors = frozen(con), frozen(nb)
+    res.constrained, res._neighbors, res.redundant = frozen(con), frozen(nb), frozen(red)
     return res
+
+
+def _weights(weights: npt.ArrayLike, n: int) -> npt.NDArray[np.float64]:
+    """Per-site weights as a read-only float64 copy of n values (the library
+    checks each against the weight contract)."""
+    w = as_coords(weights, "weights", (n,), own=True)
+    return frozen(w)
 
 
 def _copy(ptr_: Any, count: int, cols: int, dtype: Any) -> np.ndarray:

@@ -105,16 +105,8 @@ def _init(obj):
     return obj.__new__ if "__new__" in vars(obj) else obj.__init__
 
 
-# Modules another part of the work is rewriting: their functions join these
-# tests when it lands (an xfail that passes is fine).
-REWRITTEN = {"fliplab._classify", "fliplab._studies"}
-
-
 def _cases():
-    return [pytest.param(n, o, id=n, marks=pytest.mark.xfail(
-        reason="%s is being rewritten" % o.__module__, strict=False))
-        if o.__module__ in REWRITTEN else pytest.param(n, o, id=n)
-        for n, o in _public_callables()]
+    return [pytest.param(n, o, id=n) for n, o in _public_callables()]
 
 
 @pytest.mark.parametrize("name,obj", _cases())
@@ -211,9 +203,7 @@ def _str_params():
         f = _init(obj) if inspect.isclass(obj) else obj
         for p in inspect.signature(f).parameters.values():
             if p.name not in ("self", "cls") and _takes_str(f, p.name):
-                mark = [pytest.mark.xfail(reason="being rewritten", strict=False)] \
-                    if obj.__module__ in REWRITTEN else []
-                yield pytest.param(name, obj, p.name, id="%s-%s" % (name, p.name), marks=mark)
+                yield pytest.param(name, obj, p.name, id="%s-%s" % (name, p.name))
 
 
 @pytest.mark.parametrize("name,obj,param", list(_str_params()))
