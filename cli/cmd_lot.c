@@ -565,7 +565,7 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
 static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, const char *desc,
                             const cli_lot_tri *t, const rule *r, int nr) {
   report_lot_panel *pn = calloc((size_t)nr, sizeof *pn);
-  char (*cap)[160] = calloc((size_t)nr, sizeof *cap);
+  char (*cap)[RULE_NAME_MAX + 64] = calloc((size_t)nr, sizeof *cap);
   FILE *f = pn && cap ? cli_open_out(CMD, path) : NULL;
   int rc = 2;
   if (pn == NULL || cap == NULL) cli_error(CMD, "out of memory");
