@@ -1,16 +1,16 @@
 #!/bin/sh
-# install_check.sh BUILD_DIR SOURCE_DIR: what README.md's "C API" section
+# install_check.sh BUILD_DIR SOURCE_DIR: what docs/api.md (the C API)
 # promises, checked on an installed copy (`cmake --install` into a scratch
 # prefix):
 #  - only public headers are installed, and each compiles on its own;
 #  - the shared library is installed beside the static one, with its SONAME,
 #    and exports only what the installed headers declare (nm -D);
-#  - the README's example program builds through plain pkg-config (the
+#  - docs/api.md's example program builds through plain pkg-config (the
 #    shared library), through pkg-config --static, and through
 #    find_package(fliplab) with both fliplab::fliplab (static) and
-#    fliplab::fliplab_shared, runs, and prints exactly the output the README
+#    fliplab::fliplab_shared, runs, and prints exactly the output docs/api.md
 #    shows;
-#  - the README's plugin build line works and the installed program loads
+#  - docs/api.md's plugin build line works and the installed program loads
 #    the plugin;
 #  - the Python package, installed under the prefix, loads in a fresh
 #    interpreter (FLIPLAB_PYTHON, Debian's) from there with the installed
@@ -79,41 +79,41 @@ done
 # needs FILE SONAME: the program loads that library (yes or no).
 needs() { readelf -d "$1" | grep -q "(NEEDED).*\[$2\]"; }
 
-# The README's blocks: the fenced block after a marker, or its indented lines.
+# docs/api.md's blocks: the fenced block after a marker, or its indented lines.
 block() {
   awk -v m="<!-- $1" 'index($0, m) == 1 {on = 1; next}
     on == 1 && /^```/ {on = 2; next}
     on == 2 && /^```/ {exit}
-    on == 2 {print}' "$src/README.md"
+    on == 2 {print}' "$src/docs/api.md"
 }
 indented() {
   awk -v m="<!-- $1" 'index($0, m) == 1 {on = 1; next}
     on && /^    / {print substr($0, 5); seen = 1; next}
-    on && seen {exit}' "$src/README.md"
+    on && seen {exit}' "$src/docs/api.md"
 }
 block api-example > "$tmp/example.c"
 block api-example-output > "$tmp/expected.txt"
-test -s "$tmp/example.c" && test -s "$tmp/expected.txt" || fail "README example not found"
+test -s "$tmp/example.c" && test -s "$tmp/expected.txt" || fail "docs/api.md example not found"
 
-# Through pkg-config: plainly (README.md's line, the shared library, found at
-# run time through LD_LIBRARY_PATH as the README says), and with --static.
+# Through pkg-config: plainly (docs/api.md's line, the shared library, found at
+# run time through LD_LIBRARY_PATH as docs/api.md says), and with --static.
 "$cc" -std=c11 -Wall -Wextra -Wpedantic -Werror "$tmp/example.c" \
    $(pkg-config --cflags --libs fliplab) -o "$tmp/example_pc"
 needs "$tmp/example_pc" "$soname" || fail "pkg-config --libs: not linked to $soname"
 LD_LIBRARY_PATH="$lib" "$tmp/example_pc" > "$tmp/got_pc.txt"
-diff "$tmp/expected.txt" "$tmp/got_pc.txt" || fail "pkg-config build: output differs from README.md"
+diff "$tmp/expected.txt" "$tmp/got_pc.txt" || fail "pkg-config build: output differs from docs/api.md"
 "$cc" -std=c11 -Wall -Wextra -Wpedantic -Werror "$tmp/example.c" \
    $(pkg-config --cflags --static --libs fliplab) -o "$tmp/example_pcs"
 LD_LIBRARY_PATH="$lib" "$tmp/example_pcs" > "$tmp/got_pcs.txt"
-diff "$tmp/expected.txt" "$tmp/got_pcs.txt" || fail "pkg-config --static build: output differs from README.md"
+diff "$tmp/expected.txt" "$tmp/got_pcs.txt" || fail "pkg-config --static build: output differs from docs/api.md"
 
-# Through CMake's find_package: the README's fliplab::fliplab (static: the
+# Through CMake's find_package: docs/api.md's fliplab::fliplab (static: the
 # program needs no libfliplab.so), and fliplab::fliplab_shared (CMake's rpath).
 for target in fliplab fliplab_shared; do
   d=$tmp/cmake_$target
   mkdir -p "$d"
   block api-cmake | sed "s/fliplab::fliplab)/fliplab::$target)/" > "$d/CMakeLists.txt"
-  grep -q "fliplab::$target)" "$d/CMakeLists.txt" || fail "README's api-cmake block: no fliplab::fliplab"
+  grep -q "fliplab::$target)" "$d/CMakeLists.txt" || fail "docs/api.md's api-cmake block: no fliplab::fliplab"
   cp "$tmp/example.c" "$d/example.c"
   cmake -S "$d" -B "$d/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" \
         -DCMAKE_BUILD_TYPE=Release >/dev/null || fail "find_package(fliplab) failed"
@@ -124,15 +124,15 @@ for target in fliplab fliplab_shared; do
     needs "$d/build/example" "$soname" || fail "fliplab::fliplab_shared: not linked to $soname"
   fi
   "$d/build/example" > "$d/got.txt"
-  diff "$tmp/expected.txt" "$d/got.txt" || fail "CMake build ($target): output differs from README.md"
+  diff "$tmp/expected.txt" "$d/got.txt" || fail "CMake build ($target): output differs from docs/api.md"
 done
 
 # The plugin build line, run from a copy of plugins/, then loaded.
 mkdir -p "$tmp/plugin"
 cp -r "$src/plugins" "$tmp/plugin/plugins"
 indented plugin-build > "$tmp/plugin/commands.sh"
-test -s "$tmp/plugin/commands.sh" || fail "README plugin lines not found"
-(cd "$tmp/plugin" && sh -e commands.sh > out.txt) || fail "README plugin lines failed"
+test -s "$tmp/plugin/commands.sh" || fail "docs/api.md plugin lines not found"
+(cd "$tmp/plugin" && sh -e commands.sh > out.txt) || fail "docs/api.md plugin lines failed"
 grep -q "^rule rule109: quadrilateral rule" "$tmp/plugin/out.txt" || fail "plugin not used"
 
 # The Python package: a fresh interpreter, no FLIPLAB_LIBRARY, only the
