@@ -1,6 +1,6 @@
 /*
-** bench_cdt.c: constrained triangulations at scale (issue targets in the
-** README): the exact CDT of N uniform points (fliplab's "uniform" sampler)
+** bench_cdt.c: constrained triangulations at scale (the targets of
+** docs/performance.md): the exact CDT of N uniform points (the "uniform" sampler)
 ** with M non-crossing segments (sampler_segments, the stream of `fliplab
 ** sample --sampler segments`), next to
 **   - fliplab's unconstrained DT of the same points (what the segments cost),

@@ -19,7 +19,7 @@
 **      with a DT run just before it; the median of the pairs' ratios),
 **      flips per point, status; or, with RULES (a comma list of rule
 **      names: "ES:square,ES:hexagon,ES:ellipse:2 1"), those rules instead,
-**      each paired with DT the same way (README's empty-shape speed table:
+**      each paired with DT the same way (docs/performance.md, empty shapes:
 **      bench_lot 1000000 3 1 5 'ES:square,ES:hexagon,...').
 ** Times cover the triangulation only (input validation, ordering,
 ** insertion, flips), not sampling or output.

@@ -2,7 +2,7 @@
 ** benchutil.h: what every benchmark of bench/ needs besides the code it
 ** times: wall and CPU clocks, the median of repeated runs, the load
 ** average printed beside the figures, and seeded polygons to time.  One
-** home, so that every table in the README is measured the same way.
+** home, so that every table of docs/performance.md is measured the same way.
 */
 #ifndef FLIPLAB_BENCHUTIL_H
 #define FLIPLAB_BENCHUTIL_H
