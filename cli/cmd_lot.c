@@ -298,8 +298,9 @@ static int cli_lot_weights(const cli_lot_args *a, const geom_pslg *in, double **
 static void cli_lot_redundant_line(const lot *L) {
   const lot_stats *st = lot_get_stats(L);
   uint32_t *red = malloc((st->redundant + 1) * sizeof *red);
-  printf("redundant: %zu sites (power cells empty: no regular triangulation keeps them; "
-         "%zu rounds)", st->redundant, st->rounds);
+  printf("redundant: %zu site%s (power cells empty: no regular triangulation keeps them; "
+         "%zu round%s)", st->redundant, st->redundant == 1 ? "" : "s", st->rounds,
+         st->rounds == 1 ? "" : "s");
   if (red != NULL) {
     lot_get_redundant(L, red);
     for (size_t k = 0; k < st->redundant && k < 20; k++) printf("%s %u", k ? "" : ":", red[k]);
