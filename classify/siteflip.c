@@ -539,11 +539,14 @@ void siteflip_free(siteflip_graph *g) {
 
 /* ---- one rule ------------------------------------------------------------- */
 
-static rule_choice siteflip_decide(const siteflip_graph *g, const rule *r, int q) {
+static rule_choice siteflip_decide(const siteflip_graph *g, const rule *r, const double *w,
+                                   int q) {
   const siteflip_quad *Q = &g->quad[q];
   if (!rule_is_triangle(r)) {
     geom_point pts[4] = {g->p[Q->v[0]], g->p[Q->v[1]], g->p[Q->v[2]], g->p[Q->v[3]]};
-    return rule_eval(r, pts, NULL, NULL);
+    if (w == NULL) return rule_eval(r, pts, NULL, NULL);
+    const double wq[4] = {w[Q->v[0]], w[Q->v[1]], w[Q->v[2]], w[Q->v[3]]};
+    return rule_eval_weighted(r, pts, wq, NULL, NULL);
   }
   return rule_eval_tris(r, &g->tri[Q->tri[0]], &g->tri[Q->tri[1]], &g->tri[Q->tri[2]],
                         &g->tri[Q->tri[3]], NULL, NULL);
@@ -603,6 +606,12 @@ static void siteflip_got(const siteflip_graph *g, const rule *r, const int *sink
 
 int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
                     rule_choice *dec, int *sinks, siteflip_result *res) {
+  return siteflip_direct_weighted(g, r, NULL, tie_eps, dec, sinks, res);
+}
+
+int siteflip_direct_weighted(const siteflip_graph *g, const rule *r, const double *w,
+                             double tie_eps, rule_choice *dec, int *sinks,
+                             siteflip_result *res) {
   memset(res, 0, sizeof *res);
   rule re = *r;
   rule_set_tie_eps(&re, tie_eps);
@@ -616,7 +625,7 @@ int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
     return -1;
   }
   for (int q = 0; q < g->nquads; q++) {
-    dec[q] = siteflip_decide(g, &re, q);
+    dec[q] = siteflip_decide(g, &re, w, q);
     res->ties |= dec[q] == RULE_EITHER;
   }
   for (int e = 0; e < g->nedges; e++) {

@@ -127,6 +127,15 @@ typedef struct siteflip_result {
 ** memory. */
 int siteflip_direct(const siteflip_graph *g, const rule *r, double tie_eps,
                     rule_choice *dec, int *sinks, siteflip_result *res);
+/* The same with per-site weights w[0..n-1] (by site index; NULL: none;
+** each within the weight contract, geom_weight_check: the caller checks),
+** which a rule that reads them (WDT, rule_wants_weights) decides by.  Every
+** triangulation uses every site, so where a site is redundant (its power
+** cell empty) no node is regular and the sinks are the LOTs of the power
+** rule among the triangulations that keep it. */
+int siteflip_direct_weighted(const siteflip_graph *g, const rule *r, const double *w,
+                             double tie_eps, rule_choice *dec, int *sinks,
+                             siteflip_result *res);
 
 /* Total badness of node u under a triangle-based rule, in key space
 ** (joint.h): keys compare as the totals do. */

@@ -15,7 +15,7 @@
 #define CMD "flipgraph"
 
 typedef struct cli_flipgraph_opts {
-  const char *rule, *points, *svg, *out;
+  const char *rule, *points, *svg, *out, *weights;
   double tie_eps;
   uint64_t memory;
 } cli_flipgraph_opts;
@@ -26,6 +26,9 @@ static const cli_option cli_flipgraph_help[] = {
                  "DT, a quadrilateral rule, or MEASURE_JOINT (e.g. R_1)", T, rule),
   CLI_OPT_STRING("--points", "FILE.csv", "required",
                  "the sites: CSV rows x,y (optional header x,y)", T, points),
+  CLI_OPT_STRING("--weights", "W.csv", "none",
+                 "with --rule WDT: a weight 'w' per site (rows of the\n"
+                 "                     points file; optional header 'w')", T, weights),
   CLI_OPT_FILE("--svg", "FILE.svg", "none", "svg",
                "draw the directed flip graph (at most 64 triangulations)", T, svg),
   CLI_OPT_TIE_EPS("relative tie tolerance of the rule", 1, T, tie_eps),
@@ -51,6 +54,20 @@ static int cli_flipgraph_parse(int argc, char **argv, cli_flipgraph_opts *o) {
   if (st != 0) return st;
   if (o->rule == NULL || o->points == NULL)
     return cli_error(CMD, "--rule and --points are required (try: fliplab flipgraph --help)");
+  return 0;
+}
+
+/* --weights: a weight per site for WDT, into *w (NULL without the option). */
+static int cli_flipgraph_weights(const cli_flipgraph_opts *o, const rule *r, size_t n,
+                                 double **w) {
+  char err[512];
+  *w = NULL;
+  if (o->weights == NULL) return 0;
+  if (!rule_wants_weights(r))
+    return cli_error(CMD, "--weights applies to the weighted Delaunay rule WDT, not %s",
+                     rule_name(r));
+  if (report_weights_read(o->weights, n, w, err, sizeof err) != 0)
+    return cli_error(CMD, "--weights: %s", err);
   return 0;
 }
 
@@ -113,7 +130,13 @@ int cli_cmd_flipgraph(int argc, char **argv) {
   if (cli_parse_rule(CMD, o.rule, &r) != 0) return 2;
   geom_point *p;
   size_t n;
-  if (report_points_read(o.points, &p, NULL, &n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
+  if (report_points_read(o.points, &p, NULL, &n, err, sizeof err) != 0)
+    return cli_error(CMD, "%s", err);
+  double *w;
+  if (cli_flipgraph_weights(&o, &r, n, &w) != 0) {
+    free(p);
+    return 2;
+  }
   /* siteflip_check refuses more than 16 sites before reading any. */
   cli_progress prog;
   cli_progress_start(&prog, CMD " enumerating");
@@ -123,13 +146,17 @@ int cli_cmd_flipgraph(int argc, char **argv) {
                                             sizeof err);
   cli_progress_finish(&prog);
   free(p);
-  if (g == NULL) return cli_error(CMD, "%s: %s", o.points, err);
+  if (g == NULL) {
+    free(w);
+    return cli_error(CMD, "%s: %s", o.points, err);
+  }
   rule_choice *dec = malloc(((size_t)g->nquads + 1) * sizeof *dec);
   int *sinks = malloc((size_t)g->nnodes * sizeof *sinks);
   siteflip_result res;
   int rc = 1;
   FILE *out = NULL;
-  if (dec == NULL || sinks == NULL || siteflip_direct(g, &r, o.tie_eps, dec, sinks, &res) != 0) {
+  if (dec == NULL || sinks == NULL ||
+      siteflip_direct_weighted(g, &r, w, o.tie_eps, dec, sinks, &res) != 0) {
     cli_error(CMD, "out of memory");
     goto done;
   }
@@ -142,6 +169,7 @@ int cli_cmd_flipgraph(int argc, char **argv) {
   rc = cli_close_out(out) != 0 ? 1 : 0;
   if (rc == 0 && o.svg != NULL) rc = cli_flipgraph_svg(o.svg, g, &r, dec, &res);
 done:
+  free(w);
   free(dec);
   free(sinks);
   siteflip_free(g);

@@ -134,8 +134,8 @@ void rule_eval_quads(const rule *r, const geom_point *q, size_t m, signed char *
 ** q[i]'s, and the rule keeps the diagonal of the lower convex hull of the
 ** sites lifted to (x, y, x^2 + y^2 - w) (rule_power_eval, exact).  Every
 ** other rule ignores weights; WDT without them (w == NULL, or an engine
-** that has none: classify, census, flipgraph) reads every weight as 0,
-** where it is DT exactly.  rule_wants_weights: 1 for WDT. */
+** that has none: classify's pentagons, the census) reads every weight as
+** 0, where it is DT exactly.  rule_wants_weights: 1 for WDT. */
 rule_choice rule_eval_weighted(const rule *r, const geom_point q[4], const double w[4],
                                double *ac, double *bd);
 rule_choice rule_power_eval(geom_point a, geom_point b, geom_point c, geom_point d,

@@ -26,6 +26,7 @@
 #include "lot.h"
 #include "rule.h"
 #include "sampler.h"
+#include "siteflip.h"
 #include "splitmix.h"
 #include "testutil.h"
 
@@ -269,6 +270,73 @@ static void test_large_set_certified(void **state) {
   twt_free(&t);
 }
 
+static int twt_u32_cmp(const void *x, const void *y) {
+  uint32_t a = *(const uint32_t *)x, b = *(const uint32_t *)y;
+  return a < b ? -1 : a > b;
+}
+
+/* A triangle as the sorted triple of its sites, packed (sites < 2^10). */
+static uint32_t twt_pack(uint32_t a, uint32_t b, uint32_t c) {
+  uint32_t v[3] = {a, b, c};
+  qsort(v, 3, sizeof *v, twt_u32_cmp);
+  return v[0] << 20 | v[1] << 10 | v[2];
+}
+
+/* The flip graph of a small weighted site set directed by WDT: where lot
+** leaves no site out, one sink, lot's regular triangulation; equal weights
+** direct it as DT does.  (Where a site is redundant no triangulation of all
+** the sites is regular, and the graph may have several sinks.) */
+static void test_flip_graph(void **state) {
+  (void)state;
+  uint64_t s = 15;
+  rule wdt = twt_rule("WDT"), dt = twt_rule("DT");
+  char err[256];
+  int unique = 0;
+  for (int rep = 0; rep < testutil_reps(60); rep++) {
+    geom_point p[8];
+    double w[8], eq[8];
+    for (int i = 0; i < 8; i++) {
+      p[i] = (geom_point){twt_unit(&s), twt_unit(&s)};
+      w[i] = 0.06 * twt_unit(&s);
+      eq[i] = 0.5;
+    }
+    siteflip_graph *g = siteflip_build(p, 8, err, sizeof err);
+    assert_non_null(g);
+    size_t nq = (size_t)g->nquads;
+    rule_choice *dec = malloc(nq * sizeof *dec), *ddt = malloc(nq * sizeof *ddt);
+    int *sinks = malloc((size_t)g->nnodes * sizeof *sinks);
+    siteflip_result res, rdt;
+    assert_int_equal(siteflip_direct_weighted(g, &wdt, eq, 0, dec, NULL, &res), 0);
+    assert_int_equal(siteflip_direct(g, &dt, 0, ddt, NULL, &rdt), 0);
+    assert_memory_equal(dec, ddt, (size_t)g->nquads * sizeof *dec);
+    assert_int_equal(siteflip_direct_weighted(g, &wdt, w, 0, dec, sinks, &res), 0);
+    twt_tri t;
+    assert_int_equal(twt_build("WDT", p, 8, w, LOT_INCREMENTAL, &t, err, sizeof err), 0);
+    if (t.nred == 0) {
+      assert_int_equal(res.nsinks, 1);
+      assert_int_equal(g->per, (int)t.n);
+      uint32_t a[32], b[32];
+      for (int k = 0; k < g->per; k++) {
+        const unsigned char *v = g->tri_v[g->node_tri[(size_t)sinks[0] * (size_t)g->per + k]];
+        a[k] = twt_pack(v[0], v[1], v[2]);
+        b[k] = twt_pack(t.t[3 * k], t.t[3 * k + 1], t.t[3 * k + 2]);
+      }
+      qsort(a, t.n, sizeof *a, twt_u32_cmp);
+      qsort(b, t.n, sizeof *b, twt_u32_cmp);
+      assert_memory_equal(a, b, t.n * sizeof *a);
+      unique++;
+    } else {
+      assert_true(res.nsinks >= 1);   /* acyclic: the lifted surface only goes down */
+    }
+    twt_free(&t);
+    free(dec);
+    free(ddt);
+    free(sinks);
+    siteflip_free(g);
+  }
+  assert_true(unique > testutil_reps(60) / 4);
+}
+
 /* Exact duplicates: the heaviest represents them (the first on a tie). */
 static void test_duplicates(void **state) {
   (void)state;
@@ -316,6 +384,7 @@ int main(void) {
     cmocka_unit_test(test_equal_weights_are_dt),
     cmocka_unit_test(test_small_sets_against_lifting),
     cmocka_unit_test(test_large_set_certified),
+    cmocka_unit_test(test_flip_graph),
     cmocka_unit_test(test_duplicates),
     cmocka_unit_test(test_refused),
   };

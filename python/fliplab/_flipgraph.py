@@ -10,7 +10,7 @@ import numpy.typing as npt
 
 from . import _lib
 from ._args import tie_eps_arg
-from ._arrays import as_coords, frozen, points_ptr
+from ._arrays import as_coords, frozen, points_ptr, ptr
 from ._mirrors import SiteflipResult
 from ._rules import Rule, as_rule, _raise_user_errors
 
@@ -133,7 +133,8 @@ class FlipGraph:
                    ", ties" if len(self.ties) else ""))
 
 
-def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = None) -> FlipGraph:
+def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = None,
+              weights: npt.ArrayLike | None = None) -> FlipGraph:
     """Every triangulation of a small site set and its flip graph directed by
     the rule, as the program's `flipgraph --sites FILE --rule R`
     (docs/sitesets.md).
@@ -147,6 +148,10 @@ def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = No
         quadrilateral rule (Rule).
     tie_eps : float, optional
         The relative tie tolerance (default the rule's).
+    weights : array_like, shape (n,), optional
+        Per-site weights of rule "WDT" (each 0 or of magnitude in [1e-60,
+        1e60]), as `flipgraph --weights`: every triangulation keeps every
+        site, so with a redundant site no node is regular.
 
     Returns
     -------
@@ -155,14 +160,16 @@ def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = No
     Raises
     ------
     ValueError
-        Bad sites (the library's message), a bad rule or tie_eps; a bad
-        value of a user measure.
+        Bad sites (the library's message), a bad rule or tie_eps, weights
+        with another rule or outside their contract; a bad value of a user
+        measure.
     MemoryError
         Out of memory.
     """
     r = as_rule(rule)
     eps = tie_eps_arg(tie_eps, r.tie_eps)
     p = frozen(as_coords(sites, "sites", (-1, 2), own=True))   # kept as .points
+    w = None if weights is None else _weights(weights, len(p), r)
     e = _lib.errbuf()
     g = lib.siteflip_build(points_ptr(p), len(p), e, _lib.ERRLEN)
     if not g:
@@ -173,7 +180,9 @@ def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = No
         dec = (ctypes.c_int * max(G.nquads, 1))()
         sinks = (ctypes.c_int * max(G.nnodes, 1))()
         res = SiteflipResult()
-        if lib.siteflip_direct(g, ctypes.byref(r._c), eps, dec, sinks, ctypes.byref(res)) != 0:
+        wp = None if w is None else ptr(w, ctypes.c_double)
+        if lib.siteflip_direct_weighted(g, ctypes.byref(r._c), wp, eps, dec, sinks,
+                                        ctypes.byref(res)) != 0:
             _raise_user_errors()
             raise MemoryError("flipgraph: out of memory")
         _raise_user_errors()
@@ -182,3 +191,17 @@ def flipgraph(sites: npt.ArrayLike, rule: str | Rule, tie_eps: float | None = No
         return out
     finally:
         lib.siteflip_free(g)
+
+
+def _weights(weights: npt.ArrayLike, n: int, r: Rule) -> npt.NDArray[np.float64]:
+    """Per-site weights for WDT, each checked against the weight contract
+    (geom_weight_check), in the library's words."""
+    if r.name != "WDT":
+        raise ValueError("weights apply to the weighted Delaunay rule WDT, not %s" % r.name)
+    w = as_coords(weights, "weights", (n,), own=True)
+    for i, x in enumerate(w.tolist()):
+        e = lib.geom_weight_check(x)
+        if e != 0:
+            raise ValueError("weights: site %d: weight %g %s"
+                             % (i, x, lib.geom_weighterr_str(e).decode()))
+    return w

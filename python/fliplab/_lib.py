@@ -114,6 +114,8 @@ _PROTOS = {
     "geom_coorderr_str": (_char_p, [_int]),
     "geom_coord_check_n": (_size, [c_double_p, _size]),
     "geom_threads_check": (_int, [ctypes.c_longlong, _char_p, _size]),
+    "geom_weight_check": (_int, [ctypes.c_double]),
+    "geom_weighterr_str": (_char_p, [_int]),
     "geom_tri_make_n": (None, [ctypes.POINTER(GeomTri), Point_p, _size]),
     "geom_simple_polygon_check": (_int, [Point_p, _size, _size_p, _size_p, _int_p]),
     # lot/lot.h: the run's options and results through verbs
@@ -182,6 +184,8 @@ _PROTOS = {
     "siteflip_free": (None, [SiteflipGraph_p]),
     "siteflip_direct": (_int, [SiteflipGraph_p, Rule_p, _double, _int_p, _int_p,
                                ctypes.POINTER(SiteflipResult)]),
+    "siteflip_direct_weighted": (_int, [SiteflipGraph_p, Rule_p, c_double_p, _double, _int_p,
+                                        _int_p, ctypes.POINTER(SiteflipResult)]),
     "siteflip_node_key": (_double, [SiteflipGraph_p, Rule_p, _int]),
     # samplers/sampler.h
     "sampler_points_find": (_int, [_char_p]),

@@ -130,3 +130,27 @@ def test_sweep_refused():
     p = np.array([[0, 0], [1, 0], [0, 1], [1, 1]], dtype=float)
     with pytest.raises(ValueError, match="sweep"):
         fliplab.lot(p, "WDT", algorithm="sweep", weights=np.zeros(4))
+
+
+def test_flipgraph_weights(cli):
+    """flipgraph(..., weights=): without a redundant site the one sink is
+    lot's regular triangulation, as the program's flipgraph --weights says."""
+    rng = np.random.default_rng(8)
+    for _ in range(6):
+        p, w = rng.random((7, 2)), rng.random(7) * 0.05
+        t = fliplab.lot(p, "WDT", weights=w)
+        g = fliplab.flipgraph(p, "WDT", weights=w)
+        if len(t.redundant) == 0:
+            assert len(g.sinks) == 1
+            sink = sorted(tuple(sorted(x)) for x in g.nodes[g.sinks[0]].tolist())
+            assert sink == sorted(tuple(sorted(x)) for x in t.triangles.tolist())
+    write_points(cli.file("p.csv"), p)
+    with open(cli.file("w.csv"), "w") as f:
+        f.write("".join("%r\n" % float(x) for x in w))
+    r = cli.run("flipgraph", "--rule", "WDT", "--points", cli.file("p.csv"), "--weights",
+                cli.file("w.csv"))
+    assert "sinks: %d" % len(g.sinks) in r.stdout
+    with pytest.raises(ValueError, match="WDT, not DT"):
+        fliplab.flipgraph(p, "DT", weights=w)
+    with pytest.raises(ValueError, match="site 2: weight inf is not finite"):
+        fliplab.flipgraph(p, "WDT", weights=[0, 0, np.inf, 0, 0, 0, 0])
