@@ -33,6 +33,8 @@ typedef struct cli_lot_tri {
   size_t ntri;
   uint32_t *con;        /* constrained edges in the result (2 each) */
   size_t ncon;
+  uint32_t *red;        /* a weighted run's redundant sites */
+  size_t nred;
 } cli_lot_tri;
 
 typedef struct cli_lot_args {
@@ -295,19 +297,12 @@ static int cli_lot_weights(const cli_lot_args *a, const geom_pslg *in, double **
 }
 
 /* A weighted run's sites left out: their count, the rounds, the first few. */
-static void cli_lot_redundant_line(const lot *L) {
-  const lot_stats *st = lot_get_stats(L);
-  uint32_t *red = malloc((st->redundant + 1) * sizeof *red);
+static void cli_lot_redundant_line(const lot_stats *st, const cli_lot_tri *t) {
   printf("redundant: %zu site%s (power cells empty: no regular triangulation keeps them; "
-         "%zu round%s)", st->redundant, st->redundant == 1 ? "" : "s", st->rounds,
+         "%zu round%s)", t->nred, t->nred == 1 ? "" : "s", st->rounds,
          st->rounds == 1 ? "" : "s");
-  if (red != NULL) {
-    lot_get_redundant(L, red);
-    for (size_t k = 0; k < st->redundant && k < 20; k++) printf("%s %u", k ? "" : ":", red[k]);
-    if (st->redundant > 20) printf(" ...");
-  }
-  printf("\n");
-  free(red);
+  for (size_t k = 0; k < t->nred && k < 20; k++) printf("%s %u", k ? "" : ":", t->red[k]);
+  printf("%s\n", t->nred > 20 ? " ..." : "");
 }
 
 static void cli_lot_status(const lot_stats *st) {
@@ -351,7 +346,7 @@ static int cli_lot_check(const geom_point *p, size_t n, const uint32_t *tri, siz
   if ((constrained ? lot_check_constrained(p, n, tri, ntri, in->seg, in->nseg, r, &c)
        : o->weights ? lot_check_weighted(p, o->weights, n, tri, ntri, r, &c)
                     : lot_check_ties(p, n, tri, ntri, r, &c, &tie)) != 0) {
-    printf("check: failed (out of memory)\n");
+    cli_error(CMD, "--check: out of memory");   /* no verdict: said on stderr, exit 1 */
     return 1;
   }
   if (!c.valid) {
@@ -536,7 +531,7 @@ static void cli_lot_constraint_lines(const lot_options *o, const lot_stats *st) 
 
 /* The header, counts, status and time lines. */
 static void cli_lot_summary(const rule *r, const char *desc, const lot_options *o,
-                            const lot *L, double tie_eps) {
+                            const lot *L, const cli_lot_tri *t, double tie_eps) {
   const lot_stats *st = lot_get_stats(L);
   int restarted;
   size_t ties = lot_get_sweep_ties(L, &restarted);
@@ -546,7 +541,7 @@ static void cli_lot_summary(const rule *r, const char *desc, const lot_options *
          inc ? cli_lot_order_name[o->order] : "", tie_eps);
   printf("points: %zu (hull %zu, duplicates %zu)\n", st->n, st->hull, st->duplicates);
   if (o->nsegments || o->nholes) cli_lot_constraint_lines(o, st);
-  if (o->weights) cli_lot_redundant_line(L);
+  if (o->weights) cli_lot_redundant_line(st, t);
   printf("triangles: %zu\n", st->triangles);
   printf("flips: %llu\n", (unsigned long long)st->flips);
   if (ties > 0 || restarted)   /* a polygon's sweep met sites in special position */
@@ -585,7 +580,7 @@ static int cli_lot_svg_list(const char *path, const geom_point *p, size_t n, con
   return rc;
 }
 
-/* The LOT's triangles, badness and constrained edges into *t. */
+/* The LOT's triangles, badness, constrained edges and redundant sites into *t. */
 static int cli_lot_take(const lot *L, const geom_point *p, const rule *r, cli_lot_tri *t) {
   const lot_stats *st = lot_get_stats(L);
   t->ntri = st->triangles;
@@ -593,7 +588,10 @@ static int cli_lot_take(const lot *L, const geom_point *p, const rule *r, cli_lo
   t->tri = malloc(3 * st->triangles * sizeof *t->tri);
   t->bad = malloc(st->triangles * sizeof *t->bad);
   t->con = malloc((2 * st->constrained + 1) * sizeof *t->con);
-  if (t->tri == NULL || t->bad == NULL || t->con == NULL) return cli_error(CMD, "out of memory");
+  t->red = malloc((st->redundant + 1) * sizeof *t->red);
+  if (t->tri == NULL || t->bad == NULL || t->con == NULL || t->red == NULL)
+    return cli_error(CMD, "out of memory");
+  t->nred = lot_get_redundant(L, t->red);
   lot_get_triangles(L, t->tri);
   lot_get_badness(p, t->tri, t->ntri, r, t->bad);
   if (t->ncon) lot_get_constrained(L, t->con);
@@ -627,7 +625,7 @@ static int cli_lot_one(const cli_lot_args *a, const lot_options *base, const rul
     lot_free(L);
     return 2;
   }
-  cli_lot_summary(r, desc, &o, L, a->tie_eps);
+  cli_lot_summary(r, desc, &o, L, t, a->tie_eps);
   if (a->check && cli_lot_check(p, n, t->tri, t->ntri, r, in, &o, st) != 0) *failed = 1;
   if (a->compare == 0) rc = cli_lot_compare_dt(p, n, &o, t->tri, t->ntri, &dt, &ndt);
   else if (a->compare == 1) rc = cli_lot_compare_got(in, L, r, t, a, failed);
@@ -672,6 +670,7 @@ int cli_cmd_lot(int argc, char **argv) {
     free(t[k].tri);
     free(t[k].bad);
     free(t[k].con);
+    free(t[k].red);
   }
   free(t);
   free(w);

@@ -48,6 +48,9 @@ static const char *const tf_cmds[] = {
   "--define 'q = a*b' table34 --measures q --samples 5 --format csv",
   "--define 'q = a*b' got --rule q_1 --random 6",
   "lot --rule ES:hexagon --random 30 --out %1$s/out.csv --cdf %1$s/cdf.csv",
+  /* the weighted rule: a redundant site, so two rounds */
+  "lot --rule WDT --points %1$s/wpts.csv --weights %1$s/w.csv --check --out %1$s/out.csv",
+  "flipgraph --rule WDT --points %1$s/wpts.csv --weights %1$s/w.csv",
 };
 
 static int tf_setup(void **state) {
@@ -58,6 +61,10 @@ static int tf_setup(void **state) {
   if (system(cmd) != 0) return -1;
   snprintf(cmd, sizeof cmd, "%s/poly.csv", tf_dir);
   testutil_write_file(cmd, "x,y\n0,0\n2,0\n3,1\n2,2.5\n0,2\n");
+  snprintf(cmd, sizeof cmd, "%s/wpts.csv", tf_dir);
+  testutil_write_file(cmd, "0,0\n4,0\n4,4\n0,4\n2,2\n1,3\n3,1\n");
+  snprintf(cmd, sizeof cmd, "%s/w.csv", tf_dir);
+  testutil_write_file(cmd, "0\n0\n0\n0\n-9\n1\n0.5\n");
   if (testutil_runf(NULL, 0, tf_err, TF_CAP, "sample --count 3 --out %s/pent.csv", tf_dir) ||
       testutil_runf(NULL, 0, tf_err, TF_CAP,
                     "table34 --samples 9 --measures R --shard 1/2 --format csv --out %s/s1.csv",
