@@ -69,6 +69,15 @@
 #define FLIPLAB_COLD
 #endif
 
+/* Out of line but compiled for speed: the body behind a cold entry point
+** that some inputs reach often (the exact predicates' integer stage on
+** grids; a cold function is optimised for size, and so is all it inlines). */
+#if defined(__GNUC__)
+#define FLIPLAB_NOINLINE __attribute__((noinline))
+#else
+#define FLIPLAB_NOINLINE
+#endif
+
 /* A function (or object) declared in a *_internal.h header: shared by the
 ** files of libfliplab, never part of its interface.  Hidden, so that a
 ** shared build of the library exports only what the public headers

@@ -1,26 +1,65 @@
 /*
-** predicates.c: orientation and incircle tests, exact for double inputs.
+** predicates.c: orientation, incircle and power tests, exact for double
+** inputs.
 **
 ** Each test first evaluates its determinant in floating point and accepts
 ** the sign when the value is larger than a proven bound on the rounding
-** error; otherwise it recomputes the determinant exactly with GMP rationals
-** (every double is a rational, so mpq arithmetic is exact).  The bounds are
-** Shewchuk's "stage A" bounds (Adaptive Precision Floating-Point Arithmetic
-** and Fast Robust Geometric Predicates, 1997, section 4), which cover the
-** rounding of the input differences as well as of the products and sums.
+** error (the filters; the bounds are Shewchuk's "stage A" bounds, Adaptive
+** Precision Floating-Point Arithmetic and Fast Robust Geometric
+** Predicates, 1997, section 4, which cover the rounding of the input
+** differences as well as of the products and sums).  What a filter cannot
+** decide, a determinant exactly zero or nearly so (grids, integer
+** coordinates, cocircular sites), is decided here, exactly, by the first
+** of three stages that applies:
+**
+**   1. integers (int64_t, __int128, 256-bit sums), when every coordinate
+**      difference is exact in double and all are integer multiples of one
+**      power of two, below 2^62 in that unit: integer grids and lattices,
+**      integer coordinates below 2^52, and most tuples of sites close
+**      together next to their distance from the origin (tens of
+**      nanoseconds);
+**   2. floating-point expansions (sums of doubles carried exactly), when
+**      every coordinate is 0 or of magnitude in [2^-200, 2^200] (the whole
+**      coordinate contract) and, for incircle and power, the differences
+**      are exact (their spread is then more than 62 bits);
+**   3. GMP rationals otherwise (every double is a rational, so mpq
+**      arithmetic is exact): the last resort, and the reference the tests
+**      compare the other two with (geom_exact_gmp_only).
+** All three compute the same exact determinant, so the stage that decides
+** changes no answer, only its cost; geom_exact_stage_calls counts them.
 */
 #include <math.h>
 #include <stdatomic.h>
+#include <stdint.h>
+#include <string.h>
 #include <gmp.h>
 #include "fliplab_config.h"
 #include "predicates.h"
 
 /* GEOM_EPS, and why tiny differences skip the filter: see predicates.h. */
 
-static atomic_ulong geom_exact_count;
+/* One counter per predicate and deciding stage (predicates.h). */
+static atomic_ulong geom_exact_count[GEOM_PRED_COUNT][GEOM_STAGE_COUNT];
+
+static void geom_exact_note(geom_pred p, geom_stage s) {
+  atomic_fetch_add_explicit(&geom_exact_count[p][s], 1, memory_order_relaxed);
+}
+
+unsigned long geom_exact_stage_calls(geom_pred p, geom_stage s) {
+  return atomic_load_explicit(&geom_exact_count[p][s], memory_order_relaxed);
+}
 
 unsigned long geom_exact_calls(void) {
-  return atomic_load_explicit(&geom_exact_count, memory_order_relaxed);
+  unsigned long n = 0;
+  for (int p = 0; p < GEOM_PRED_COUNT; p++)
+    for (int s = 0; s < GEOM_STAGE_COUNT; s++) n += geom_exact_stage_calls(p, s);
+  return n;
+}
+
+static atomic_int geom_gmp_only;
+
+int geom_exact_gmp_only(int on) {
+  return atomic_exchange_explicit(&geom_gmp_only, on != 0, memory_order_relaxed);
 }
 
 /* NaN and infinities have no rational value (mpq_set_d would abort): the
@@ -30,9 +69,35 @@ static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) 
       && isfinite(c.x) && isfinite(c.y) && isfinite(d.x) && isfinite(d.y);
 }
 
-/* The exact paths are rare: keep them out of line so the filters stay small
-** enough to inline cheaply into their callers' hot loops. */
+/* The ranges within which the first two stages are exact (their arguments
+** below): coordinates 0 or of magnitude in [2^-200, 2^200], weights 0 or
+** in [2^-400, 2^400] (a weight is a squared length).  NaN and infinities
+** fail both.  Combined with & rather than &&: every test of a call is
+** evaluated, and nothing branches on the data. */
+static int geom_moderate(double x, double lo, double hi) {
+  double m = fabs(x);
+  return (m == 0) | ((m >= lo) & (m <= hi));
+}
+
+/* The first two stages may run: not in GMP-only mode, and the n points (and
+** their weights, w != NULL) moderate. */
+static int geom_fast_ok(const geom_point *p, int n, const double *w) {
+  int ok = !atomic_load_explicit(&geom_gmp_only, memory_order_relaxed);
+  for (int i = 0; i < n; i++)
+    ok &= geom_moderate(p[i].x, 0x1p-200, 0x1p200) & geom_moderate(p[i].y, 0x1p-200, 0x1p200);
+  for (int i = 0; w != NULL && i < n; i++) ok &= geom_moderate(w[i], 0x1p-400, 0x1p400);
+  return ok;
+}
+
+/* The exact paths are rare on most inputs: their entry points are cold and
+** out of line, so the filters stay small enough to inline cheaply into
+** their callers' hot loops.  On grids and integer inputs, though, they
+** decide a large share of all tests, so each entry point hands over at
+** once to a function compiled for speed (FLIPLAB_NOINLINE), and the
+** expansions stay out of it (their buffers would enlarge its frame). */
 #define GEOM_COLD FLIPLAB_COLD
+
+/* ---- stage 3: GMP rationals --------------------------------------------- */
 
 /* The orientation determinant (bx-ax)(cy-ay) - (by-ay)(cx-ax) of finite
 ** points, exactly, into det (initialised): every double is a rational, so
@@ -51,10 +116,7 @@ static void geom_orient_det_q(mpq_t det, geom_point a, geom_point b, geom_point 
   for (int i = 0; i < 4; i++) mpq_clear(t[i]);
 }
 
-/* The exact half of geom_orient (geom.h holds the filter). */
-GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  if (!geom_finite4(a, b, c, a)) return 0;
+static int geom_orient_sign_q(geom_point a, geom_point b, geom_point c) {
   mpq_t det;
   mpq_init(det);
   geom_orient_det_q(det, a, b, c);
@@ -63,31 +125,235 @@ GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
   return s;
 }
 
-/* ---- |orientation determinant| exactly, by floating-point expansions ----
+/* The lifted determinant of a, b, c, d translated so that d is the origin:
+**   | adx ady adx^2+ady^2-(wa-wd) |
+**   | bdx bdy bdx^2+bdy^2-(wb-wd) |
+**   | cdx cdy cdx^2+cdy^2-(wc-wd) |
+** (positive when d's lifted point lies below the plane of the others', abc
+** anticlockwise), exactly; w == NULL: all weights 0, the incircle
+** determinant.  The one GMP form behind geom_incircle_exact and
+** geom_power_exact. */
+static int geom_lifted_sign_q(geom_point a, geom_point b, geom_point c, geom_point d,
+                              const double w[4]) {
+  geom_point pt[3] = {a, b, c};
+  mpq_t x[3], y[3], lift[3], t, u, det;
+  mpq_inits(t, u, det, NULL);
+  for (int i = 0; i < 3; i++) {
+    mpq_inits(x[i], y[i], lift[i], NULL);
+    mpq_set_d(x[i], pt[i].x); mpq_set_d(t, d.x); mpq_sub(x[i], x[i], t);
+    mpq_set_d(y[i], pt[i].y); mpq_set_d(t, d.y); mpq_sub(y[i], y[i], t);
+    mpq_mul(lift[i], x[i], x[i]);
+    mpq_mul(t, y[i], y[i]);
+    mpq_add(lift[i], lift[i], t);
+    if (w != NULL) {
+      mpq_set_d(t, w[i]);
+      mpq_set_d(u, w[3]);
+      mpq_sub(t, t, u);
+      mpq_sub(lift[i], lift[i], t);
+    }
+  }
+  mpq_set_ui(det, 0, 1);
+  for (int i = 0; i < 3; i++) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpq_mul(t, x[j], y[k]);          /* lift_i * (x_j y_k - x_k y_j) */
+    mpq_mul(u, x[k], y[j]);
+    mpq_sub(t, t, u);
+    mpq_mul(t, t, lift[i]);
+    mpq_add(det, det, t);
+  }
+  int s = mpq_sgn(det);
+  for (int i = 0; i < 3; i++) mpq_clears(x[i], y[i], lift[i], NULL);
+  mpq_clears(t, u, det, NULL);
+  return s;
+}
+
+/* ---- stage 1: 128-bit integers ------------------------------------------
 **
-** geom_twice_area's slow path (flat triangles: 4% of the candidates some
-** LOT rules evaluate), so it avoids GMP's allocations and gcds.  The
-** determinant (qx-px)(ry-py) - (qy-py)(rx-px) is carried exactly as an
-** expansion (Shewchuk 1997, section 2): a sum of doubles, nonoverlapping
-** and increasing in magnitude, whose sign is the sign of its largest
-** component.  Each coordinate difference is a two-term expansion
-** (geom_two_diff), each of the 8 products of terms is one (geom_two_product,
-** Dekker's split), and each of those 16 doubles is added with
-** geom_grow_expansion.  These error-free transformations need round to
-** nearest, no contraction into FMA (fliplab_config.h), and neither overflow
-** nor underflow: with every coordinate 0 or of magnitude in [2^-200, 2^200]
-** (the contract's [1e-30, 1e30] and more), every difference term is a
-** multiple of 2^-252 below 2^201 in magnitude (as in geom.h), so every
-** product term is a multiple of 2^-504 below 2^402, all normal, and the
-** split's 2^27 + 1 factor stays below 2^229.  Other finite coordinates go
-** to GMP rationals.
+** When every coordinate difference d is exact in double and all are integer
+** multiples of one unit u = 2^k with |d/u| < 2^62, the determinant is u^m
+** times the same determinant of the integers d/u (m its degree), with the
+** same sign, computed in int64_t, __int128 and (the lifted determinant's
+** products) 256-bit magnitudes, each routine's bound written above it.  The
+** unit comes from the largest |d|: with 2^(e-1) <= max |d| < 2^e, u = 2^(e
+** - 62) makes every |d/u| < 2^62; and any unit u' that works has 2^(e-1) <
+** 2^62 u', so u' >= u and multiples of u' are multiples of u: testing u
+** alone loses no case.  The scaling is exact: with moderate coordinates
+** (geom_fast_ok) every nonzero |d| lies in [2^-252, 2^201], so 1/u lies in
+** [2^-140, 2^313] and d/u is a normal double in [2^-392, 2^62); a nonzero
+** weight difference (moderate weights: in [2^-452, 2^401]) times 1/u^2 is
+** at least 2^-732, normal, or overflows to infinity, which the bound test
+** refuses.  Where the compiler has no __int128 the stage is skipped and the
+** expansions decide. */
+#if defined(__SIZEOF_INT128__)
+#define GEOM_HAVE_INT128 1
+__extension__ typedef __int128 geom_i128;
+#else
+#define GEOM_HAVE_INT128 0
+#endif
+
+/* 1/u = 2^(62 - e) for the n values v (1 when all are 0), e read off the
+** exponent field of the largest (a normal double: 2^(e-1) <= m < 2^e for
+** the biased exponent e + 1022), 1/u made from its own exponent field. */
+static double geom_int_scale(const double *v, int n) {
+  double m = 0;
+  for (int i = 0; i < n; i++) m = fabs(v[i]) > m ? fabs(v[i]) : m;
+  if (m == 0) return 1;
+  uint64_t b;
+  memcpy(&b, &m, sizeof b);
+  int e = (int)(b >> 52) - 1022;
+  b = (uint64_t)(1023 + 62 - e) << 52;
+  memcpy(&m, &b, sizeof m);
+  return m;
+}
+
+/* z[i] = v[i] s for i < n when every one is an integer of magnitude below
+** lim (<= 2^62): 1; else 0. */
+static int geom_ints(const double *v, int n, double s, double lim, int64_t *z) {
+  for (int i = 0; i < n; i++) {
+    double t = v[i] * s;
+    if (!(fabs(t) < lim) || t != (double)(int64_t)t) return 0;
+    z[i] = (int64_t)t;
+  }
+  return 1;
+}
+
+/* The orientation determinant d0 d1 - d2 d3 of exact differences in 128-bit
+** integers: 1 and *sign, or 0 when they are not integer multiples of one
+** unit below 2^62 in it.  With |z| < 2^62 each product is below 2^124 and
+** the difference below 2^125, inside __int128's 2^127. */
+static int geom_orient_int(const double d[4], int *sign) {
+#if GEOM_HAVE_INT128
+  int64_t z[4];
+  if (!geom_ints(d, 4, geom_int_scale(d, 4), 0x1p62, z)) return 0;
+  geom_i128 det = (geom_i128)z[0] * z[1] - (geom_i128)z[2] * z[3];
+  *sign = (det > 0) - (det < 0);
+  return 1;
+#else
+  (void)d, (void)sign;
+  return 0;
+#endif
+}
+
+#if GEOM_HAVE_INT128
+/* Unsigned 256-bit numbers, the magnitudes of the lifted determinant's
+** products: four 64-bit limbs, the lowest first. */
+__extension__ typedef unsigned __int128 geom_u128;
+typedef struct geom_u256 {
+  uint64_t w[4];
+} geom_u256;
+
+/* r += a b, for a, b below 2^127 whose products, summed into r, stay below
+** 2^256 (the caller's bound): the four 64 x 64-bit partial products,
+** added with their carries. */
+static void geom_u256_addmul(geom_u256 *r, geom_u128 a, geom_u128 b) {
+  uint64_t a0 = (uint64_t)a, a1 = (uint64_t)(a >> 64), b0 = (uint64_t)b, b1 = (uint64_t)(b >> 64);
+  geom_u128 p00 = (geom_u128)a0 * b0, p01 = (geom_u128)a0 * b1;
+  geom_u128 p10 = (geom_u128)a1 * b0, p11 = (geom_u128)a1 * b1;
+  geom_u128 mid = (p00 >> 64) + (uint64_t)p01 + (uint64_t)p10;   /* < 3 2^64 */
+  geom_u128 hi = (mid >> 64) + (p01 >> 64) + (p10 >> 64) + p11;  /* the product's top half */
+  const uint64_t t[4] = {(uint64_t)p00, (uint64_t)mid, (uint64_t)hi, (uint64_t)(hi >> 64)};
+  geom_u128 carry = 0;
+  for (int i = 0; i < 4; i++) {
+    carry += (geom_u128)r->w[i] + t[i];
+    r->w[i] = (uint64_t)carry;
+    carry >>= 64;
+  }
+}
+
+/* The sign of a - b. */
+static int geom_u256_cmp(const geom_u256 *a, const geom_u256 *b) {
+  for (int i = 3; i >= 0; i--)
+    if (a->w[i] != b->w[i]) return a->w[i] > b->w[i] ? 1 : -1;
+  return 0;
+}
+
+/* w[i] = W[i] s2 for i < 3 when every one is an integer below 2^125 in
+** magnitude: 1; else 0. */
+static int geom_wide_ints(const double W[3], double s2, geom_i128 w[3]) {
+  for (int i = 0; i < 3; i++) {
+    double t = W[i] * s2;
+    if (!(fabs(t) < 0x1p125) || t != (double)(geom_i128)t) return 0;
+    w[i] = (geom_i128)t;
+  }
+  return 1;
+}
+
+/* The lifted determinant sum_i L_i (x_j y_k - x_k y_j), L_i = x_i^2 + y_i^2
+** - W_i, of integers x = z[0..2], y = z[3..5] below 2^62 in magnitude and W
+** below 2^125: x^2 + y^2 < 2^125, so |L| < 2^126, and each minor is below
+** 2^125, both in __int128; each product |L m| is below 2^251, and the
+** positive and the negative products are summed apart as 256-bit
+** magnitudes (below 2^253 each), whose comparison is the sign. */
+static int geom_lifted_wide(const int64_t z[6], const geom_i128 w[3]) {
+  geom_u256 pos = {{0, 0, 0, 0}}, neg = {{0, 0, 0, 0}};
+  for (int i = 0; i < 3; i++) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    geom_i128 lift = (geom_i128)z[i] * z[i] + (geom_i128)z[3 + i] * z[3 + i] - w[i];
+    geom_i128 minor = (geom_i128)z[j] * z[3 + k] - (geom_i128)z[k] * z[3 + j];
+    geom_u256_addmul((lift < 0) != (minor < 0) ? &neg : &pos,
+                     (geom_u128)(lift < 0 ? -lift : lift), (geom_u128)(minor < 0 ? -minor : minor));
+  }
+  return geom_u256_cmp(&pos, &neg);
+}
+
+/* The same without weights for integers below 2^30 (a grid's common case,
+** three multiplications where the wide form takes twelve): x^2 + y^2 <
+** 2^61 and each minor below 2^61, both in int64_t; each product is below
+** 2^122 and the sum of three below 2^124, inside __int128. */
+static int geom_lifted_narrow(const int64_t z[6]) {
+  geom_i128 det = 0;
+  for (int i = 0; i < 3; i++) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    int64_t lift = z[i] * z[i] + z[3 + i] * z[3 + i];
+    int64_t minor = z[j] * z[3 + k] - z[k] * z[3 + j];
+    det += (geom_i128)lift * minor;
+  }
+  return (det > 0) - (det < 0);
+}
+#endif
+
+/* The lifted determinant of exact differences x, y (and weight differences
+** W, or NULL: the incircle test) in integers: 1 and *sign, or 0 when they
+** are not integer multiples of one unit below 2^62 in it (and W of its
+** square, below 2^125).  When every integer is a multiple of 2^32 (the
+** unit could be 2^32 times coarser: differences within 2^30 of it) and
+** there are no weights, the narrow form decides, else the wide one. */
+static int geom_lifted_int(const double x[3], const double y[3], const double *W, int *sign) {
+#if GEOM_HAVE_INT128
+  const double v[6] = {x[0], x[1], x[2], y[0], y[1], y[2]};
+  double s = geom_int_scale(v, 6);
+  int64_t z[6];
+  geom_i128 w[3] = {0, 0, 0};
+  if (!geom_ints(v, 6, s, 0x1p62, z) || (W != NULL && !geom_wide_ints(W, s * s, w))) return 0;
+  uint64_t low = 0;
+  for (int i = 0; i < 6; i++) low |= (uint64_t)z[i] & 0xffffffffu;
+  if (W != NULL || low != 0) {
+    *sign = geom_lifted_wide(z, w);
+    return 1;
+  }
+  geom_ints(v, 6, s * 0x1p-32, 0x1p30, z);   /* the same integers over 2^32, exactly */
+  *sign = geom_lifted_narrow(z);
+  return 1;
+#else
+  (void)x, (void)y, (void)W, (void)sign;
+  return 0;
+#endif
+}
+
+/* ---- stage 2: floating-point expansions ---------------------------------
 **
-** The exact value T = |det| is then rounded toward zero, as mpq_get_d
-** did before: a candidate t (the plain sum of the components, within a few
-** ulps of T) is moved down while t > T and up while its successor is still
-** <= T, each comparison exact (the sign of the expansion minus t).  The
-** loop ends exactly at the largest double <= T, whatever the candidate's
-** accuracy.  tests/test_geom.c checks the result against GMP bit for bit. */
+** An expansion (Shewchuk 1997, section 2) is a sum of doubles,
+** nonoverlapping and increasing in magnitude, whose sign is the sign of
+** its largest component.  The error-free transformations below (the sum,
+** difference and product of two doubles as two doubles) and the
+** operations built on them keep every value exact; they need round to
+** nearest even, no contraction into FMA (fliplab_config.h), and neither
+** overflow nor underflow.  With moderate coordinates every difference term
+** is a multiple of 2^-252 below 2^201 in magnitude, so every term of a
+** determinant of degree 4 is a multiple of 2^-1008 (a granularity doubles
+** hold exactly: 2^-1074) below 2^810, and Dekker's split multiplies no
+** value above 2^405 by 2^27 + 1; weight terms (moderate weights: multiples
+** of 2^-452 below 2^401) stay within the same ranges. */
 
 /* x + y = a + b exactly, x = fl(a + b). */
 static inline void geom_two_sum(double a, double b, double *x, double *y) {
@@ -134,6 +400,62 @@ static int geom_grow_expansion(int n, const double *e, double b, double *h) {
   return k;
 }
 
+/* h = e + f (n and m components): the components of both merged by
+** magnitude, then added from the smallest up, each addition's rounding
+** error kept as a component (Shewchuk's fast expansion sum, section 2.6,
+** nonoverlapping under round to nearest even).  At most n + m components,
+** zeros dropped, at least one.  Cost O(n + m).  h may not alias e or f. */
+static int geom_expansion_sum(int n, const double *e, int m, const double *f, double *h) {
+  int i = 0, j = 0, k = 0;
+  double q = 0;
+  while (i < n || j < m) {
+    double g = j >= m || (i < n && fabs(e[i]) <= fabs(f[j])) ? e[i++] : f[j++], hh;
+    geom_two_sum(q, g, &q, &hh);
+    if (hh != 0) h[k++] = hh;
+  }
+  if (q != 0 || k == 0) h[k++] = q;
+  return k;
+}
+
+/* h = e b: each e_i b as a two-term product, its halves added in turn to a
+** running sum (Shewchuk's scale expansion, section 2.7, nonoverlapping
+** under round to nearest even).  At most 2n components, zeros dropped, at
+** least one.  Cost O(n).  h may not alias e. */
+static int geom_scale_expansion(int n, const double *e, double b, double *h) {
+  double q, hh, p, t, s;
+  int k = 0;
+  geom_two_product(e[0], b, &q, &hh);
+  if (hh != 0) h[k++] = hh;
+  for (int i = 1; i < n; i++) {
+    geom_two_product(e[i], b, &p, &t);
+    geom_two_sum(q, t, &s, &hh);
+    if (hh != 0) h[k++] = hh;
+    geom_two_sum(p, s, &q, &hh);
+    if (hh != 0) h[k++] = hh;
+  }
+  if (q != 0 || k == 0) h[k++] = q;
+  return k;
+}
+
+/* The largest products the lifted determinant forms (geom_lifted_expansion):
+** a lift of at most 5 components times a minor of at most 4. */
+#define GEOM_LIFT_MAX 5
+#define GEOM_MINOR_MAX 4
+#define GEOM_TERM_MAX (2 * GEOM_LIFT_MAX * GEOM_MINOR_MAX)
+
+/* h = e f (n <= GEOM_LIFT_MAX, m <= GEOM_MINOR_MAX components): e scaled by
+** each component of f, the parts summed.  At most 2nm components. */
+static int geom_expansion_product(int n, const double *e, int m, const double *f, double *h) {
+  double part[2 * GEOM_LIFT_MAX], acc[GEOM_TERM_MAX];
+  int k = geom_scale_expansion(n, e, f[0], h);
+  for (int j = 1; j < m; j++) {
+    int np = geom_scale_expansion(n, e, f[j], part);
+    k = geom_expansion_sum(k, h, np, part, acc);
+    memcpy(h, acc, (size_t)k * sizeof *h);
+  }
+  return k;
+}
+
 /* The sign of (e - t), e an expansion of n components (exact). */
 static int geom_expansion_cmp(int n, const double *e, double t) {
   double h[34];
@@ -156,9 +478,153 @@ static void geom_add_product(double *e, int *n, double a, double b) {
   *n = k;
 }
 
-/* Outside [2^-200, 2^200] (beyond the contract: tests and plugins may go
-** there) the expansions could underflow or overflow: exact rationals. */
+/* The orientation determinant's differences bx - ax, cy - ay, by - ay,
+** cx - ax, each as d[0][k] + d[1][k] (geom_two_diff: the rounded value and
+** its error): 1 when every one is exact (every error is 0). */
+static int geom_orient_diffs(geom_point a, geom_point b, geom_point c, double d[2][4]) {
+  geom_two_diff(b.x, a.x, &d[0][0], &d[1][0]);
+  geom_two_diff(c.y, a.y, &d[0][1], &d[1][1]);
+  geom_two_diff(b.y, a.y, &d[0][2], &d[1][2]);
+  geom_two_diff(c.x, a.x, &d[0][3], &d[1][3]);
+  return (d[1][0] == 0) & (d[1][1] == 0) & (d[1][2] == 0) & (d[1][3] == 0);
+}
+
+/* The orientation determinant (d0)(d1) - (d2)(d3) of those differences,
+** exactly, as an expansion into e (room for 34): each of the 8 products of
+** terms is a two-term product, and each of those 16 doubles is added with
+** geom_grow_expansion (zero terms skipped, so exact differences cost two
+** products).  Returns its length. */
+static int geom_orient_expansion(double d[2][4], double e[34]) {
+  int n = 1;
+  e[0] = 0;
+  for (int i = 0; i < 2; i++)
+    for (int j = 0; j < 2; j++) {
+      geom_add_product(e, &n, d[i][0], d[j][1]);
+      geom_add_product(e, &n, -d[i][2], d[j][3]);
+    }
+  return n;
+}
+
+/* x_i = p_i.x - p_3.x, y_i likewise and W_i = w_i - w_3 (w != NULL), i < 3:
+** 1 when every one is exact in double (geom_two_diff's error is 0). */
+static int geom_lifted_diffs(const geom_point p[4], const double *w, double x[3], double y[3],
+                             double W[3]) {
+  int exact = 1;
+  for (int i = 0; i < 3; i++) {
+    double ex, ey, ew = 0;
+    geom_two_diff(p[i].x, p[3].x, &x[i], &ex);
+    geom_two_diff(p[i].y, p[3].y, &y[i], &ey);
+    if (w != NULL) geom_two_diff(w[i], w[3], &W[i], &ew);
+    exact &= (ex == 0) & (ey == 0) & (ew == 0);
+  }
+  return exact;
+}
+
+/* The term L_i (x_j y_k - x_k y_j) of the lifted determinant (W == NULL:
+** no weights) as an expansion into h (room for GEOM_TERM_MAX): the lift
+** x_i^2 + y_i^2 - W_i has at most 5 components, the minor at most 4. */
+static int geom_lifted_term(const double x[3], const double y[3], const double *W, int i,
+                            double *h) {
+  int j = (i + 1) % 3, k = (i + 2) % 3;
+  double sx[2], sy[2], u[2], v[2], sq[4], lift[GEOM_LIFT_MAX], minor[GEOM_MINOR_MAX];
+  geom_two_product(x[i], x[i], &sx[1], &sx[0]);
+  geom_two_product(y[i], y[i], &sy[1], &sy[0]);
+  int nl = geom_expansion_sum(2, sx, 2, sy, W == NULL ? lift : sq);
+  if (W != NULL) nl = geom_grow_expansion(nl, sq, -W[i], lift);
+  geom_two_product(x[j], y[k], &u[1], &u[0]);
+  geom_two_product(-x[k], y[j], &v[1], &v[0]);
+  int nm = geom_expansion_sum(2, u, 2, v, minor);
+  return geom_expansion_product(nl, lift, nm, minor, h);
+}
+
+/* The sign of the lifted determinant of exact differences, summed as an
+** expansion of at most 3 GEOM_TERM_MAX components. */
+static FLIPLAB_NOINLINE int geom_lifted_sign_expansion(const double x[3], const double y[3],
+                                                        const double *W) {
+  double det[3 * GEOM_TERM_MAX], sum[3 * GEOM_TERM_MAX], term[GEOM_TERM_MAX];
+  int n = geom_lifted_term(x, y, W, 0, det);
+  for (int i = 1; i < 3; i++) {
+    int nt = geom_lifted_term(x, y, W, i, term);
+    n = geom_expansion_sum(n, det, nt, term, sum);
+    memcpy(det, sum, (size_t)n * sizeof *det);
+  }
+  return (det[n - 1] > 0) - (det[n - 1] < 0);
+}
+
+/* ---- the exact halves of the predicates ---------------------------------- */
+
+/* The exact half of geom_orient (predicates.h holds the filter): stage 1
+** when the differences allow it, else stage 2 (exact for any moderate
+** coordinates, rounded differences and all), else GMP. */
+static FLIPLAB_NOINLINE int geom_orient_stages(geom_point a, geom_point b, geom_point c) {
+  const geom_point p[3] = {a, b, c};
+  if (geom_fast_ok(p, 3, NULL)) {
+    double d[2][4], e[34];
+    int s, n;
+    if (geom_orient_diffs(a, b, c, d) && geom_orient_int(d[0], &s)) {
+      geom_exact_note(GEOM_PRED_ORIENT, GEOM_STAGE_INT);
+      return s;
+    }
+    geom_exact_note(GEOM_PRED_ORIENT, GEOM_STAGE_EXPANSION);
+    n = geom_orient_expansion(d, e);
+    return (e[n - 1] > 0) - (e[n - 1] < 0);
+  }
+  geom_exact_note(GEOM_PRED_ORIENT, GEOM_STAGE_GMP);
+  return geom_finite4(a, b, c, a) ? geom_orient_sign_q(a, b, c) : 0;
+}
+
+GEOM_COLD int geom_orient_exact(geom_point a, geom_point b, geom_point c) {
+  return geom_orient_stages(a, b, c);
+}
+
+/* The exact half of geom_incircle and geom_power (pred names the counter):
+** stages 1 and 2 when the differences are exact, else GMP. */
+static FLIPLAB_NOINLINE int geom_lifted_exact(geom_pred pred, const geom_point p[4],
+                                               const double *w) {
+  double x[3], y[3], W[3];
+  if (geom_fast_ok(p, 4, w) && geom_lifted_diffs(p, w, x, y, W)) {
+    int s;
+    if (geom_lifted_int(x, y, w != NULL ? W : NULL, &s)) {
+      geom_exact_note(pred, GEOM_STAGE_INT);
+      return s;
+    }
+    geom_exact_note(pred, GEOM_STAGE_EXPANSION);
+    return geom_lifted_sign_expansion(x, y, w != NULL ? W : NULL);
+  }
+  geom_exact_note(pred, GEOM_STAGE_GMP);
+  if (!geom_finite4(p[0], p[1], p[2], p[3])) return 0;
+  for (int i = 0; w != NULL && i < 4; i++)
+    if (!isfinite(w[i])) return 0;
+  return geom_lifted_sign_q(p[0], p[1], p[2], p[3], w);
+}
+
+GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
+  const geom_point p[4] = {a, b, c, d};
+  return geom_lifted_exact(GEOM_PRED_INCIRCLE, p, NULL);
+}
+
+GEOM_COLD int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_point d,
+                               const double w[4]) {
+  const geom_point p[4] = {a, b, c, d};
+  return geom_lifted_exact(GEOM_PRED_POWER, p, w);
+}
+
+/* ---- |orientation determinant| exactly ----------------------------------
+**
+** geom_twice_area's slow path (flat triangles: 4% of the candidates some
+** LOT rules evaluate), so it avoids GMP's allocations and gcds: the
+** determinant as an expansion (geom_orient_expansion), for moderate
+** coordinates; other finite coordinates go to GMP rationals.
+**
+** The exact value T = |det| is then rounded toward zero, as mpq_get_d
+** does: a candidate t (the plain sum of the components, within a few
+** ulps of T) is moved down while t > T and up while its successor is still
+** <= T, each comparison exact (the sign of the expansion minus t).  The
+** loop ends exactly at the largest double <= T, whatever the candidate's
+** accuracy.  tests/test_geom.c checks the result against GMP bit for bit. */
+
 static GEOM_COLD double geom_twice_area_gmp(geom_point p, geom_point q, geom_point r) {
+  geom_exact_note(GEOM_PRED_AREA, GEOM_STAGE_GMP);
   mpq_t det;
   mpq_init(det);
   geom_orient_det_q(det, p, q, r);
@@ -168,28 +634,13 @@ static GEOM_COLD double geom_twice_area_gmp(geom_point p, geom_point q, geom_poi
   return v;
 }
 
-static int geom_coord_moderate(double x) {
-  double m = fabs(x);
-  return m == 0 || (m >= 0x1p-200 && m <= 0x1p200);
-}
-
 GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  if (!(geom_coord_moderate(p.x) && geom_coord_moderate(p.y) && geom_coord_moderate(q.x)
-        && geom_coord_moderate(q.y) && geom_coord_moderate(r.x) && geom_coord_moderate(r.y)))
-    return geom_twice_area_gmp(p, q, r);
-  double d[4][2];   /* qx - px, ry - py, qy - py, rx - px, each as hi + lo */
-  geom_two_diff(q.x, p.x, &d[0][0], &d[0][1]);
-  geom_two_diff(r.y, p.y, &d[1][0], &d[1][1]);
-  geom_two_diff(q.y, p.y, &d[2][0], &d[2][1]);
-  geom_two_diff(r.x, p.x, &d[3][0], &d[3][1]);
-  double e[34] = {0};   /* 16 products of 2 terms: at most 32 components, +1 in a compare */
-  int n = 1;
-  for (int i = 0; i < 2; i++)
-    for (int j = 0; j < 2; j++) {
-      geom_add_product(e, &n, d[0][i], d[1][j]);
-      geom_add_product(e, &n, -d[2][i], d[3][j]);
-    }
+  const geom_point t3[3] = {p, q, r};
+  if (!geom_fast_ok(t3, 3, NULL)) return geom_twice_area_gmp(p, q, r);
+  geom_exact_note(GEOM_PRED_AREA, GEOM_STAGE_EXPANSION);
+  double d[2][4], e[34];
+  geom_orient_diffs(p, q, r, d);
+  int n = geom_orient_expansion(d, e);
   if (e[n - 1] == 0) return 0;
   if (e[n - 1] < 0)
     for (int i = 0; i < n; i++) e[i] = -e[i];
@@ -201,63 +652,6 @@ GEOM_COLD double geom_twice_area_exact(geom_point p, geom_point q, geom_point r)
        up = nextafter(t, INFINITY))
     t = up;
   return t;
-}
-
-/* The lifted determinant of a, b, c, d translated so that d is the origin:
-**   | adx ady adx^2+ady^2-(wa-wd) |
-**   | bdx bdy bdx^2+bdy^2-(wb-wd) |
-**   | cdx cdy cdx^2+cdy^2-(wc-wd) |
-** (positive when d's lifted point lies below the plane of the others', abc
-** anticlockwise), exactly; w == NULL: all weights 0, the incircle
-** determinant.  The one GMP form behind geom_incircle_exact and
-** geom_power_exact. */
-static int geom_lifted_sign_q(geom_point a, geom_point b, geom_point c, geom_point d,
-                              const double w[4]) {
-  geom_point pt[3] = {a, b, c};
-  mpq_t x[3], y[3], lift[3], t, u, det;
-  mpq_inits(t, u, det, NULL);
-  for (int i = 0; i < 3; i++) {
-    mpq_inits(x[i], y[i], lift[i], NULL);
-    mpq_set_d(x[i], pt[i].x); mpq_set_d(t, d.x); mpq_sub(x[i], x[i], t);
-    mpq_set_d(y[i], pt[i].y); mpq_set_d(t, d.y); mpq_sub(y[i], y[i], t);
-    mpq_mul(lift[i], x[i], x[i]);
-    mpq_mul(t, y[i], y[i]);
-    mpq_add(lift[i], lift[i], t);
-    if (w != NULL) {
-      mpq_set_d(t, w[i]);
-      mpq_set_d(u, w[3]);
-      mpq_sub(t, t, u);
-      mpq_sub(lift[i], lift[i], t);
-    }
-  }
-  mpq_set_ui(det, 0, 1);
-  for (int i = 0; i < 3; i++) {
-    int j = (i + 1) % 3, k = (i + 2) % 3;
-    mpq_mul(t, x[j], y[k]);          /* lift_i * (x_j y_k - x_k y_j) */
-    mpq_mul(u, x[k], y[j]);
-    mpq_sub(t, t, u);
-    mpq_mul(t, t, lift[i]);
-    mpq_add(det, det, t);
-  }
-  int s = mpq_sgn(det);
-  for (int i = 0; i < 3; i++) mpq_clears(x[i], y[i], lift[i], NULL);
-  mpq_clears(t, u, det, NULL);
-  return s;
-}
-
-GEOM_COLD int geom_incircle_exact(geom_point a, geom_point b, geom_point c, geom_point d) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  if (!geom_finite4(a, b, c, d)) return 0;
-  return geom_lifted_sign_q(a, b, c, d, NULL);
-}
-
-GEOM_COLD int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_point d,
-                               const double w[4]) {
-  atomic_fetch_add_explicit(&geom_exact_count, 1, memory_order_relaxed);
-  if (!geom_finite4(a, b, c, d) || !isfinite(w[0]) || !isfinite(w[1]) || !isfinite(w[2]) ||
-      !isfinite(w[3]))
-    return 0;
-  return geom_lifted_sign_q(a, b, c, d, w);
 }
 
 /* The power test's filter.  With d the origin, X_i, Y_i the coordinate

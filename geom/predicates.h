@@ -7,11 +7,14 @@
 ** their circumcircle, -1 strictly outside, 0 on it.
 ** Each evaluates its determinant in floating point and accepts the sign
 ** when it clears a proven bound on the rounding error, else recomputes it
-** exactly with GMP rationals (geom_orient_exact; geom/predicates.c).  The
-** bounds are Shewchuk's "stage A" bounds (Adaptive Precision
-** Floating-Point Arithmetic and Fast Robust Geometric Predicates, 1997),
-** which cover the rounding of the input differences too.  NaN and infinite
-** coordinates give 0; callers validate input first.
+** exactly (geom_orient_exact; geom/predicates.c): in integers when the
+** coordinate differences are integer multiples of one power of two within
+** 62 bits of it (grids, integer coordinates), else in floating-point
+** expansions, else in GMP rationals.  The bounds are Shewchuk's "stage A"
+** bounds (Adaptive Precision Floating-Point Arithmetic and Fast Robust
+** Geometric Predicates, 1997), which cover the rounding of the input
+** differences too.  NaN and infinite coordinates give 0; callers validate
+** input first.
 **
 ** Depends on nothing but <math.h> (fabs) and fliplab_config.h (the
 ** floating-point contract the error bounds assume); geom.h builds on it.
@@ -157,11 +160,30 @@ static inline int geom_incircle_valid(geom_point a, geom_point b, geom_point c, 
 ** the others' (d has negative power against the orthogonal circle of a,
 ** b, c: the edge between them is not regular), -1 strictly above, 0 on it.
 ** All weights equal: geom_incircle's answer.  Exact for finite inputs
-** (filter, then GMP; predicates.c has the bound). */
+** (filter, then the exact stages of geom_incircle; predicates.c has the
+** bound). */
 int geom_power(geom_point a, geom_point b, geom_point c, geom_point d, const double w[4]);
 int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_point d, const double w[4]);
 
 /* Counts of predicate calls that needed the exact fallback (diagnostics). */
 unsigned long geom_exact_calls(void);
+
+/* The exact fallback's calls broken down by predicate and by the stage that
+** decided (predicates.c): integers (128-bit, and 256-bit sums for the
+** lifted determinant) when the coordinate differences are exact integer
+** multiples of one power of two within 62 bits of it, floating-point
+** expansions, GMP rationals (the last resort).  Summed over all threads
+** since the start; geom_exact_calls is the total. */
+typedef enum geom_pred {
+  GEOM_PRED_ORIENT, GEOM_PRED_INCIRCLE, GEOM_PRED_POWER, GEOM_PRED_AREA, GEOM_PRED_COUNT
+} geom_pred;
+typedef enum geom_stage {
+  GEOM_STAGE_INT, GEOM_STAGE_EXPANSION, GEOM_STAGE_GMP, GEOM_STAGE_COUNT
+} geom_stage;
+unsigned long geom_exact_stage_calls(geom_pred p, geom_stage s);
+/* on != 0: every exact fallback goes straight to GMP, skipping the faster
+** stages (process-wide; the purely exact mode the tests and bench_grid
+** compare the fast stages with).  Returns the previous setting. */
+int geom_exact_gmp_only(int on);
 
 #endif
