@@ -437,14 +437,15 @@ static int geom_scale_expansion(int n, const double *e, double b, double *h) {
   return k;
 }
 
-/* The largest products the lifted determinant forms (geom_lifted_expansion):
-** a lift of at most 5 components times a minor of at most 4. */
+/* The largest products the lifted determinant forms (geom_lifted_term): a
+** lift of at most 5 components times a minor of at most 4. */
 #define GEOM_LIFT_MAX 5
 #define GEOM_MINOR_MAX 4
 #define GEOM_TERM_MAX (2 * GEOM_LIFT_MAX * GEOM_MINOR_MAX)
 
 /* h = e f (n <= GEOM_LIFT_MAX, m <= GEOM_MINOR_MAX components): e scaled by
-** each component of f, the parts summed.  At most 2nm components. */
+** each component of f, the parts summed.  At most 2nm components; cost
+** O(n m^2). */
 static int geom_expansion_product(int n, const double *e, int m, const double *f, double *h) {
   double part[2 * GEOM_LIFT_MAX], acc[GEOM_TERM_MAX];
   int k = geom_scale_expansion(n, e, f[0], h);
