@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <string.h>
 #include <unistd.h>
 #include "testutil.h"
@@ -64,7 +65,10 @@ static void testutil_slurp(const char *path, char *buf, size_t cap) {
   fclose(f);
 }
 
+/* The folder is made here, so that a test that writes its inputs before
+** running the program (which makes it too) works alone in a new build. */
 void testutil_tmppath(char *buf, size_t len, const char *name) {
+  mkdir(FLIPLAB_BUILD_DIR "/testtmp", 0777);   /* EEXIST is fine */
   snprintf(buf, len, "%s/testtmp/%ld-%s", FLIPLAB_BUILD_DIR, (long)getpid(), name);
 }
 
