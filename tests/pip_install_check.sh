@@ -38,8 +38,11 @@ skip() { echo "pip_install_check: skipped: $*"; rm -rf "$tmp"; exit 77; }
 
 # The tree as it is, build folders, .git and bytecode left out.
 mkdir "$tmp/src"
-(cd "$src" && tar -cf - --exclude='./build*' --exclude=./.git --exclude=__pycache__ \
-   --exclude=./testtmp --exclude=./dist --exclude='*.egg-info' .) | tar -xf - -C "$tmp/src" ||
+# A build folder of any name (one holding CMakeCache.txt) is left out too:
+# the scratch folder lies inside the build folder, which may lie in the tree.
+(cd "$src" && tar -cf - --exclude='./build*' --exclude-tag-all=CMakeCache.txt --exclude=./.git \
+   --exclude=__pycache__ --exclude=./testtmp --exclude=./dist --exclude='*.egg-info' .) |
+  tar -xf - -C "$tmp/src" ||
   fail "cannot copy $src"
 
 "$py" -m venv --system-site-packages "$tmp/venv" > "$tmp/venv.log" 2>&1 ||
