@@ -1102,22 +1102,42 @@ static int lot_tri_cmp(const void *x, const void *y) {
   return 0;
 }
 
-/* Insertion sort of a few triangles (a bucket of lot_sort_triangles). */
-static void lot_tri_insertion(uint32_t *t, size_t k) {
+/* Insertion sort of a few rows of stride (3 or 4) words by their first
+** three (a bucket of lot_rows_sort). */
+static FLIPLAB_ALWAYS_INLINE void lot_rows_insertion(uint32_t *r, size_t k, size_t stride) {
   for (size_t i = 1; i < k; i++) {
-    uint32_t x[3] = {t[3 * i], t[3 * i + 1], t[3 * i + 2]};
+    uint32_t x[4];
+    memcpy(x, r + stride * i, stride * sizeof *r);
     size_t j = i;
-    for (; j > 0 && lot_tri_cmp(t + 3 * (j - 1), x) > 0; j--)
-      for (int c = 0; c < 3; c++) t[3 * j + c] = t[3 * (j - 1) + c];
-    for (int c = 0; c < 3; c++) t[3 * j + c] = x[c];
+    for (; j > 0 && lot_tri_cmp(r + stride * (j - 1), x) > 0; j--)
+      memcpy(r + stride * j, r + stride * (j - 1), stride * sizeof *r);
+    memcpy(r + stride * j, x, stride * sizeof *r);
+  }
+}
+
+/* The w rows of stride words (3: a triangle; 4: a triangle and its mesh
+** triangle) of src into dst, in the order of qsort with lot_tri_cmp on
+** their first three words, in linear time for bounded degree: a counting
+** sort on the first word (below n; start: n + 1 zeroed counts), then each
+** bucket (the rows whose smallest vertex is v: a handful) by insertion, or
+** by qsort when large (a vertex of high degree).  The one sort of
+** lot_get_triangles and lot_get_neighbors, inlined into each so that the
+** stride is a constant there. */
+static FLIPLAB_ALWAYS_INLINE void lot_rows_sort(uint32_t *dst, const uint32_t *src, size_t w,
+                                               size_t stride, size_t n, size_t *start) {
+  for (size_t t = 0; t < w; t++) start[src[stride * t] + 1]++;
+  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
+  for (size_t t = 0; t < w; t++)
+    memcpy(dst + stride * start[src[stride * t]]++, src + stride * t, stride * sizeof *src);
+  for (size_t v = 0, b = 0; v < n; b = start[v++]) {   /* bucket v is [b, start[v]) */
+    size_t k = start[v] - b;
+    if (k > 32) qsort(dst + stride * b, k, stride * sizeof *dst, lot_tri_cmp);
+    else lot_rows_insertion(dst + stride * b, k, stride);
   }
 }
 
 /* The order of qsort with lot_tri_cmp (a total order: the triangles are
-** distinct), in linear time for bounded degree: a counting sort on the
-** first index (indices below n) into a copy, then each bucket (the
-** triangles whose smallest vertex is v: a handful) by insertion, or by
-** qsort when large (a vertex of high degree).  qsort alone when the copy
+** distinct), by lot_rows_sort from a copy; qsort alone when the copy
 ** cannot be made.  For 2 10^6 triangles about ten times faster than qsort,
 ** which cost as much as the triangulation. */
 static void lot_sort_triangles(uint32_t *tri, size_t w, size_t n) {
@@ -1130,17 +1150,7 @@ static void lot_sort_triangles(uint32_t *tri, size_t w, size_t n) {
     return;
   }
   memcpy(copy, tri, 3 * w * sizeof *tri);
-  for (size_t t = 0; t < w; t++) start[copy[3 * t] + 1]++;
-  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
-  for (size_t t = 0; t < w; t++) {
-    size_t d = start[copy[3 * t]]++;
-    for (int c = 0; c < 3; c++) tri[3 * d + c] = copy[3 * t + c];
-  }
-  for (size_t v = 0, b = 0; v < n; b = start[v++]) {   /* bucket v is [b, start[v]) */
-    size_t k = start[v] - b;
-    if (k > 32) qsort(tri + 3 * b, k, 3 * sizeof *tri, lot_tri_cmp);
-    else lot_tri_insertion(tri + 3 * b, k);
-  }
+  lot_rows_sort(tri, copy, w, 3, n, start);
   free(start);
   free(copy);
 }
@@ -1171,19 +1181,6 @@ void lot_free(lot *L) {
 
 /* Insertion sort of a few 4-word records (v0, v1, v2, mesh triangle) by
 ** their first three words: a bucket of lot_rank_triangles. */
-static void lot_rec_insertion(uint32_t *r, size_t k) {
-  for (size_t i = 1; i < k; i++) {
-    uint32_t x[4] = {r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]};
-    size_t j = i;
-    for (; j > 0 && lot_tri_cmp(r + 4 * (j - 1), x) > 0; j--)
-      for (int c = 0; c < 4; c++) r[4 * j + c] = r[4 * (j - 1) + c];
-    for (int c = 0; c < 4; c++) r[4 * j + c] = x[c];
-  }
-}
-
-static int lot_rec_cmp(const void *x, const void *y) {
-  return lot_tri_cmp(x, y);
-}
 
 /* Triangle t's vertices as lot_get_triangles writes them (input indices,
 ** the smallest first) into v; returns the slot of the mesh corner that
@@ -1197,8 +1194,8 @@ static int lot_tri_rotated(const lot_mesh *m, uint32_t t, uint32_t v[3]) {
 }
 
 /* The rows of lot_get_triangles as records rec[4i..4i+3] = (v0, v1, v2, mesh
-** triangle), in its order, found by the same sort (a counting sort on v0
-** into rec, then each bucket by insertion, or qsort when large); rot[t] =
+** triangle), in its order, found by the same sort (lot_rows_sort, into
+** rec); rot[t] =
 ** the mesh corner slot that became v0.  One pass over the mesh reads its
 ** vertices (into tmp, in mesh order); the others read arrays in order.
 ** O(n + T) time for bounded degree.  0, or -1 when out of memory. */
@@ -1215,17 +1212,9 @@ static int lot_rows(const lot *L, uint32_t *rec, uint8_t *rot) {
   for (uint32_t t = 0; t < m->nt; t++) {
     if (lot_is_ghost(m, t) || lot_cdt_gone(&L->cdt, t)) continue;
     rot[t] = (uint8_t)lot_tri_rotated(m, t, tmp + 4 * w);
-    tmp[4 * w + 3] = t;
-    start[tmp[4 * w++] + 1]++;
+    tmp[4 * w++ + 3] = t;
   }
-  for (size_t v = 0; v < n; v++) start[v + 1] += start[v];
-  for (size_t j = 0; j < w; j++)
-    memcpy(rec + 4 * start[tmp[4 * j]]++, tmp + 4 * j, 4 * sizeof *tmp);
-  for (size_t v = 0, b = 0; v < n; b = start[v++]) {   /* bucket v is [b, start[v]) */
-    size_t k = start[v] - b;
-    if (k > 32) qsort(rec + 4 * b, k, 4 * sizeof *rec, lot_rec_cmp);
-    else lot_rec_insertion(rec + 4 * b, k);
-  }
+  lot_rows_sort(rec, tmp, w, 4, n, start);
   free(start);
   free(tmp);
   return 0;
