@@ -82,7 +82,8 @@ size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, char *
 ** (N >= 3): tc, vertices the newest-side circumcircle algorithm scans from
 ** side p_0 p_{N-1}; cross, diagonals crossing the cut of STUDY_AVG_CROSS
 ** (k = floor((N-2)/2)); len_sum, the sum of the index lengths of the N-3
-** diagonals (L(D) = len_sum / (N-3)). */
+** diagonals (L(D) = len_sum / (N-3)).  Three uint64_t in this order (the
+** Python package reads it as such an array). */
 typedef struct study_tri_stats {
   uint64_t tc, cross, len_sum;
 } study_tri_stats;
