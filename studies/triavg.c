@@ -307,7 +307,7 @@ study_avg *study_avg_new(int n, int enumerate, char *err, size_t errcap) {
   }
   if (!a->enumerated) return a;
   for (int m = 1; m <= n; m++) {
-    study_enum_run(m, &a->tot);
+    study_enum_run(m, 0, &a->tot);
     a->prefix_deg[m] = study_deg_sum(a->tot.hist[m + 1], m + 2);
     a->prefix_count[m] = a->tot.count;
   }

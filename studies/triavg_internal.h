@@ -64,7 +64,10 @@ typedef struct study_enum_totals {
   uint64_t hist[STUDY_ENUM_VMAX][STUDY_ENUM_VMAX];   /* [vertex][interior degree] */
 } study_enum_totals;
 
-FLIPLAB_INTERNAL void study_enum_run(int n, study_enum_totals *t);
+/* Enumerate the (n+2)-gon into t: the degree histogram of every vertex, or
+** (every_vertex == 0, O(1) per triangulation) of p_n and p_{n+1} only,
+** the two that G^d_n and T_i read. */
+FLIPLAB_INTERNAL void study_enum_run(int n, int every_vertex, study_enum_totals *t);
 
 /* The exact value behind study_avg_text (0: it does not exist). */
 FLIPLAB_INTERNAL int study_avg_value(const study_avg *a, int kind, int enumerated, mpq_t out);

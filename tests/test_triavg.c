@@ -85,7 +85,7 @@ static void test_every_vertex_has_law_g(void **state) {
   mpz_init(g);
   for (int n = 1; n <= TEST_ENUM_N; n++) {
     study_enum_totals t;
-    study_enum_run(n, &t);
+    study_enum_run(n, 1, &t);
     assert_true(t.count == ta_catalan(n));
     for (int v = 0; v < n + 2; v++)
       for (int d = 0; d < n + 2; d++) {
