@@ -22,9 +22,9 @@
 #include <stdint.h>
 
 /* The largest n of a closed form (its sums take O(n^2) word operations:
-** about a second at the bound) and of an enumeration (C_18 = 477,638,700
-** triangulations of the 20-gon, and 4/3 as many for T_i's smaller
-** polygons: about a minute). */
+** a few seconds at the bound) and of an enumeration (C_18 = 477,638,700
+** triangulations of the 20-gon, and a third more for T_i's smaller
+** polygons: about 20 s of CPU). */
 #define STUDY_AVG_NMAX 100000
 #define STUDY_AVG_ENUM_NMAX 18
 

@@ -154,8 +154,8 @@ static int study_tri_keys(const uint32_t *tri, size_t ntri, uint32_t nv, study_t
     uint32_t v[3] = {tri[3 * r], tri[3 * r + 1], tri[3 * r + 2]};
     for (int q = 0; q < 3; q++)
       if (v[q] >= nv) {
-        snprintf(err, errcap, "triangle %zu: vertex %u is not below the %u vertices", r,
-                 (unsigned)v[q], (unsigned)nv);
+        snprintf(err, errcap, "triangle %zu: vertex %u is out of range (the vertices are "
+                 "0 .. %u)", r, (unsigned)v[q], (unsigned)nv - 1);
         return -1;
       }
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {

@@ -328,7 +328,7 @@ static void test_refusals(void **state) {
     assert_true(strlen(err) > 10 && !strchr(err, '\n'));
   }
   static const struct { uint32_t nv; size_t nt; uint32_t t[12]; const char *what; } tris[] = {
-    {5, 3, {0, 1, 2, 0, 2, 3, 0, 3, 5}, "not below"},
+    {5, 3, {0, 1, 2, 0, 2, 3, 0, 3, 5}, "out of range"},
     {5, 3, {0, 1, 1, 0, 2, 3, 0, 3, 4}, "repeats"},
     {5, 2, {0, 1, 2, 0, 2, 4}, "3 triangles"},
     {5, 3, {0, 1, 2, 0, 2, 3, 1, 3, 4}, "no triangle"},

@@ -43,7 +43,7 @@ def ch5_averages(n: int, method: str = "closed") -> dict[str, Any]:
         to enumerate.
     method : {"closed", "enumerate"} (CH5_METHODS)
         The closed forms, or the averages over every triangulation counted
-        one by one (C_18 = 477,638,700 of them at the bound: a minute).
+        one by one (C_18 = 477,638,700 of them at the bound: about 20 s).
 
     Returns
     -------
