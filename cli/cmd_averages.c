@@ -62,12 +62,12 @@ static const cli_spec cli_avg_spec = {
 
 /* The exact text of one value (closed form or enumerated), malloc'ed. */
 static char *cli_avg_text(const study_avg *a, int kind, int d, int enumerated) {
-  size_t len = kind >= 0 ? study_avg_text(a, kind, enumerated, NULL, 0)
-                         : study_avg_degcount_text(a, d, enumerated, NULL, 0);
+  size_t len = kind >= 0 ? study_avg_text(a, kind, enumerated, 0, NULL, 0)
+                         : study_avg_degcount_text(a, d, enumerated, 0, NULL, 0);
   char *s = malloc(len + 1);
   if (!s) return NULL;
-  if (kind >= 0) study_avg_text(a, kind, enumerated, s, len + 1);
-  else study_avg_degcount_text(a, d, enumerated, s, len + 1);
+  if (kind >= 0) study_avg_text(a, kind, enumerated, 0, s, len + 1);
+  else study_avg_degcount_text(a, d, enumerated, 0, s, len + 1);
   return s;
 }
 
@@ -95,11 +95,11 @@ static int cli_avg_row(FILE *f, const study_avg *a, int kind, int d, int enumera
 static int cli_avg_width(const study_avg *a, int n, int degrees) {
   size_t w = 10;
   for (int k = 0; k < STUDY_AVG_COUNT; k++) {
-    size_t l = study_avg_text(a, k, 0, NULL, 0);
+    size_t l = study_avg_text(a, k, 0, 0, NULL, 0);
     if (l > w) w = l;
   }
   for (int d = 0; degrees && d < n; d++) {
-    size_t l = study_avg_degcount_text(a, d, 0, NULL, 0);
+    size_t l = study_avg_degcount_text(a, d, 0, 0, NULL, 0);
     if (l > w) w = l;
   }
   return (int)w;
@@ -116,7 +116,7 @@ static int cli_avg_block(FILE *f, int n, const cli_avg_opts *o) {
   else fprintf(f, "decimal\n");
   for (int k = 0; k < STUDY_AVG_COUNT + (o->degrees ? n : 0) && rc >= 0; k++) {
     int kind = k < STUDY_AVG_COUNT ? k : -1, d = k - STUDY_AVG_COUNT;
-    if (kind >= 0 && study_avg_text(a, kind, 0, NULL, 0) == 0) continue;  /* L at n = 1 */
+    if (kind >= 0 && study_avg_text(a, kind, 0, 0, NULL, 0) == 0) continue;  /* L at n = 1 */
     rc = cli_avg_row(f, a, kind, d, o->enumerate, width);
     if (rc == 1 && !bad++)
       cli_error(CMD, "n = %d, %s: the closed form and the enumeration differ", n,

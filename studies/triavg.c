@@ -344,13 +344,14 @@ static size_t study_avg_put(char *s, char *buf, size_t cap) {
   return len;
 }
 
-size_t study_avg_text(const study_avg *a, int kind, int enumerated, char *buf, size_t cap) {
+size_t study_avg_text(const study_avg *a, int kind, int enumerated, int hex, char *buf,
+                      size_t cap) {
   mpq_t q;
   mpq_init(q);
   size_t len = 0;
   if (cap) buf[0] = 0;
-  if (study_avg_value(a, kind, enumerated, q)) len = study_avg_put(mpq_get_str(NULL, 10, q),
-                                                                   buf, cap);
+  if (study_avg_value(a, kind, enumerated, q))
+    len = study_avg_put(mpq_get_str(NULL, hex ? 16 : 10, q), buf, cap);
   mpq_clear(q);
   return len;
 }
@@ -381,7 +382,7 @@ void study_avg_degcount(int n, int d, mpz_t out) {
   mpz_clear(b);
 }
 
-size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, char *buf,
+size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, int hex, char *buf,
                                size_t cap) {
   if (cap) buf[0] = 0;
   if (d < 0 || d >= a->n || (enumerated && !a->enumerated)) return 0;
@@ -393,7 +394,7 @@ size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, char *
   } else {
     study_avg_degcount(a->n, d, g);
   }
-  size_t len = study_avg_put(mpz_get_str(NULL, 10, g), buf, cap);
+  size_t len = study_avg_put(mpz_get_str(NULL, hex ? 16 : 10, g), buf, cap);
   mpz_clear(g);
   return len;
 }

@@ -63,17 +63,20 @@ study_avg *study_avg_new(int n, int enumerate, char *err, size_t errcap);
 void study_avg_delete(study_avg *a);
 
 /* Quantity `kind`, closed form (enumerated == 0) or enumeration, as exact
-** text "p/q" (or "p") in buf, as snprintf does: the length of the whole
-** text is returned, at most cap - 1 bytes and a NUL are written.  0 when
-** the value does not exist (L at n = 1; no enumeration made).  The double
-** is the nearest below or equal (NaN when the value does not exist). */
-size_t study_avg_text(const study_avg *a, int kind, int enumerated, char *buf, size_t cap);
+** text "p/q" (or "p") in base 10, or 16 when hex is set (Python reads that
+** one: its decimal conversion stops at 4300 digits), in buf, as snprintf
+** does: the length of the whole text is returned, at most cap - 1 bytes
+** and a NUL are written.  0 when the value does not exist (L at n = 1; no
+** enumeration made).  The double is the nearest below or equal (NaN when
+** the value does not exist). */
+size_t study_avg_text(const study_avg *a, int kind, int enumerated, int hex, char *buf,
+                      size_t cap);
 double study_avg_double(const study_avg *a, int kind, int enumerated);
 
 /* G^d_n, the number of triangulations in which p_n has interior degree d
 ** (0 <= d <= n-1), closed form or enumerated, as text as above (0 when d
 ** is out of range or no enumeration was made). */
-size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, char *buf,
+size_t study_avg_degcount_text(const study_avg *a, int d, int enumerated, int hex, char *buf,
                                size_t cap);
 
 /* ---- one triangulation ---------------------------------------------------- */

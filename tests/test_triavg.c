@@ -68,11 +68,11 @@ static void test_closed_equals_enumeration(void **state) {
     }
     char g1[64], g2[64];
     for (int d = 0; d < n; d++) {
-      study_avg_degcount_text(a, d, 0, g1, sizeof g1);
-      study_avg_degcount_text(a, d, 1, g2, sizeof g2);
+      study_avg_degcount_text(a, d, 0, 0, g1, sizeof g1);
+      study_avg_degcount_text(a, d, 1, 0, g2, sizeof g2);
       assert_string_equal(g1, g2);
     }
-    assert_int_equal(study_avg_degcount_text(a, n, 0, g1, sizeof g1), 0);
+    assert_int_equal(study_avg_degcount_text(a, n, 0, 0, g1, sizeof g1), 0);
     study_avg_delete(a);
   }
   mpq_clears(c, e, NULL);
@@ -307,10 +307,10 @@ static void test_small_values(void **state) {
   char buf[64];
   for (size_t q = 0; q < sizeof rows / sizeof *rows; q++) {
     study_avg *a = ta_new(rows[q].n, 0);
-    size_t len = study_avg_text(a, rows[q].kind, 0, buf, sizeof buf);
+    size_t len = study_avg_text(a, rows[q].kind, 0, 0, buf, sizeof buf);
     assert_int_equal(len, strlen(rows[q].text));
     assert_string_equal(buf, rows[q].text);
-    assert_int_equal(study_avg_text(a, rows[q].kind, 1, buf, sizeof buf), 0);
+    assert_int_equal(study_avg_text(a, rows[q].kind, 1, 0, buf, sizeof buf), 0);
     study_avg_delete(a);
   }
 }

@@ -22,17 +22,19 @@ CH5_METHODS = ("closed", "enumerate")
 CH5_QUANTITIES = _lib.c_names(lib.study_avg_name)
 
 
-def _text(fn, *args):
-    """A value of the library as exact text (study_avg_text's protocol), or None."""
-    size = fn(*args, None, 0)
+def _value(fn, *args):
+    """A value of the library (study_avg_text's protocol, in hexadecimal: no
+    limit on the digits int() converts) as a Fraction, or None."""
+    size = fn(*args, 1, None, 0)
     if size == 0:
         return None
     buf = ctypes.create_string_buffer(size + 1)
-    fn(*args, buf, size + 1)
-    return buf.value.decode()
+    fn(*args, 1, buf, size + 1)
+    num, _, den = buf.value.decode().partition("/")
+    return Fraction(int(num, 16), int(den or "1", 16))
 
 
-def ch5_averages(n: int, method: str = "closed") -> dict[str, Any]:
+def ch5_averages(n: int, method: str = "closed", degrees: bool = True) -> dict[str, Any]:
     """Chapter 5's averages over the C_n triangulations of the convex
     (n+2)-gon, each triangulation equally likely.
 
@@ -44,6 +46,9 @@ def ch5_averages(n: int, method: str = "closed") -> dict[str, Any]:
     method : {"closed", "enumerate"} (CH5_METHODS)
         The closed forms, or the averages over every triangulation counted
         one by one (C_18 = 477,638,700 of them at the bound: about 20 s).
+    degrees : bool
+        Include "G" (n binomial differences of O(n) digits each: seconds
+        past n = 10^4).
 
     Returns
     -------
@@ -51,8 +56,8 @@ def ch5_averages(n: int, method: str = "closed") -> dict[str, Any]:
         CH5_QUANTITIES' names ("Tc", "Tc_min", "Tc_max", "A", "La", "Lmin",
         "Lmax", "deg", "Ti": docs/averages.md) to Fraction ("La", "Lmin"
         and "Lmax" are absent at n = 1: the triangle has no diagonal), and
-        "G": the list of G^d_n (triangulations in which p_n has interior
-        degree d), d = 0 .. n-1, as int.
+        with degrees "G": the list of G^d_n (triangulations in which p_n
+        has interior degree d), d = 0 .. n-1, as int.
 
     Raises
     ------
@@ -73,10 +78,12 @@ def ch5_averages(n: int, method: str = "closed") -> dict[str, Any]:
     try:
         out: dict[str, Any] = {}
         for k, name in enumerate(CH5_QUANTITIES):
-            t = _text(lib.study_avg_text, a, k, enum)
-            if t is not None:
-                out[name] = Fraction(t)
-        out["G"] = [int(_text(lib.study_avg_degcount_text, a, d, enum)) for d in range(int(n))]
+            v = _value(lib.study_avg_text, a, k, enum)
+            if v is not None:
+                out[name] = v
+        if degrees:
+            out["G"] = [int(_value(lib.study_avg_degcount_text, a, d, enum))
+                        for d in range(int(n))]
         return out
     finally:
         lib.study_avg_delete(a)

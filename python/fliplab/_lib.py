@@ -248,8 +248,8 @@ _PROTOS = {
     "study_avg_name": (_char_p, [_int]),
     "study_avg_new": (_void_p, [_int, _int, _char_p, _size]),
     "study_avg_delete": (None, [_void_p]),
-    "study_avg_text": (_size, [_void_p, _int, _int, _char_p, _size]),
-    "study_avg_degcount_text": (_size, [_void_p, _int, _int, _char_p, _size]),
+    "study_avg_text": (_size, [_void_p, _int, _int, _int, _char_p, _size]),
+    "study_avg_degcount_text": (_size, [_void_p, _int, _int, _int, _char_p, _size]),
     "study_tri_measure": (_int, [c_uint32_p, _size, ctypes.c_uint32, _u64_p, c_uint32_p,
                                  _char_p, _size]),
 }

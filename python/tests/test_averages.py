@@ -72,6 +72,16 @@ def test_measure_averages(n):
         assert max(r["L"] for r in rows) == v["Lmax"]
 
 
+def test_large_n_exact():
+    """Past Python's 4300-digit limit on decimal conversion (the values
+    come in hexadecimal): T_c(n) at n = 8000, whose C_n has over 4800 digits."""
+    n = 8000
+    v = fliplab.ch5_averages(n, degrees=False)
+    assert "G" not in v
+    assert v["Tc"] == Fraction(4 ** n, _catalan(n)) - (2 * n + 1)
+    assert v["Tc"].denominator.bit_length() > 4300 * 3
+
+
 def test_measure_any_row_order():
     t = np.array([(0, 1, 2), (0, 2, 5), (2, 3, 5), (3, 4, 5)])
     a = fliplab.ch5_measure(t, 6)
