@@ -23,6 +23,7 @@ from ._flipgraph import FlipGraph, flipgraph
 from ._pymeasure import measure, quantities
 from ._classify import classify
 from ._studies import compare_got, verdicts, wilson
+from ._averages import CH5_METHODS, CH5_QUANTITIES, ch5_averages, ch5_measure
 from ._cdf import Cdf, cdf
 from ._scipy import from_shapely, lot_polygon
 
@@ -35,4 +36,5 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "samplers", "plot", "library_path", "FORMATS", "Counts", "census", "table34", "Got",
            "got", "FlipGraph", "flipgraph", "measure", "quantities", "classify", "verdicts",
            "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
-           "compare_got"]
+           "compare_got", "ch5_averages", "ch5_measure",
+           "CH5_METHODS", "CH5_QUANTITIES"]

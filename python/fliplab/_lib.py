@@ -244,6 +244,14 @@ _PROTOS = {
     "study_gotcheck_get_text": (_char_p, [_void_p, _char_p]),
     "study_gotcheck_triangles": (c_uint32_p, [_void_p]),
     "study_gotcheck_got": (_void_p, [_void_p]),
+    # studies/triavg.h: chapter 5's exact averages (_averages.py)
+    "study_avg_name": (_char_p, [_int]),
+    "study_avg_new": (_void_p, [_int, _int, _char_p, _size]),
+    "study_avg_delete": (None, [_void_p]),
+    "study_avg_text": (_size, [_void_p, _int, _int, _int, _char_p, _size]),
+    "study_avg_degcount_text": (_size, [_void_p, _int, _int, _int, _char_p, _size]),
+    "study_tri_measure": (_int, [c_uint32_p, _size, ctypes.c_uint32, _u64_p, c_uint32_p,
+                                 _char_p, _size]),
 }
 
 # the C library's own, for a table written into memory (_report.py)

@@ -179,6 +179,7 @@ CHOICES = {
     ("fliplab.census", "sampler"): fliplab.samplers.SITE_SETS,
     ("fliplab.Counts.to_csv", "format"): fliplab.FORMATS,
     ("fliplab.measure", "sign"): fliplab.SIGNS,
+    ("fliplab.ch5_averages", "method"): fliplab.CH5_METHODS,
     ("fliplab.Rule", "name"): _rules.RULE_FORMS,
     ("*", "rule"): _rules.RULE_FORMS,
     ("*", "rules"): _rules.RULE_FORMS,
