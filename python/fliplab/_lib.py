@@ -24,7 +24,7 @@ import ctypes
 import os
 
 from ._args import MAX_THREADS
-from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, Measure, Point_p,
+from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, LotDiff, Measure, Point_p,
                        ProgressFn, ReportCensusMeta, ReportCensusRow, ReportMeta, ReportPoly,
                        ReportRow, Rule, Rule_p, RuleQuad, SamplerPentagons, SamplerRng,
                        SiteflipCounts, SiteflipGraph_p, SiteflipResult, c_double_p, c_int32_p,
@@ -159,6 +159,7 @@ _PROTOS = {
                                      Rule_p, _void_p]),
     "lot_cdf_extract": (_int, [Point_p, c_uint32_p, _size, _void_p, ctypes.POINTER(LotCdf)]),
     "lot_cdf_free": (None, [ctypes.POINTER(LotCdf)]),
+    "lot_compare": (_int, [c_uint32_p, _size, c_uint32_p, _size, ctypes.POINTER(LotDiff)]),
     # got/got.h
     "got_options_new": (_void_p, []),
     "got_options_free": (None, [_void_p]),
