@@ -142,8 +142,19 @@ function fmt(x) { return x === null || x === undefined ? "-" : Number(x).toPreci
 
 function showTriangle(t) {
   const v = t.v.map((i) => i + 1).join(" ");
-  $("info").textContent = "triangle (" + v + "): badness " +
+  let text = "triangle (" + v + "): badness " +
     (t.badness === null ? "- (" + S.graph?.rule + " is not triangle-based)" : fmt(t.badness));
+  const old = document.getElementById("homothet");
+  if (old) old.remove();
+  if (t.shape && t.shape.outline) {
+    const pts = t.shape.outline.map((p) => sx(S.view, p) + "," + sy(S.view, p)).join(" ");
+    el("polygon", {id: "homothet", class: "homothet", points: pts}, $("tri-layer"));
+    text += "\ncircumscribing homothet of the shape (dashed)";
+  } else if (t.shape) {
+    text += "\ncircumscribing shape: the rounding shape of the shape's corner " + t.shape.corner +
+      " (unbounded, not drawn)";
+  }
+  $("info").textContent = text;
 }
 
 function showEdge(key, fl) {

@@ -172,6 +172,14 @@ def _census(g: Any) -> dict[str, Any]:
             "worst_gap": None if g.worst_gap is None else _num(g.worst_gap)}
 
 
+def _shape_of(r: Any, tri: Any) -> dict[str, Any]:
+    """A triangle's circumscribing shape under ES:SHAPE, to draw (Rule.circumscribe)."""
+    outline, corner = r.circumscribe(tri, points=96)
+    if outline is None:
+        return {"corner": corner}
+    return {"outline": outline.tolist()}
+
+
 def api_graph(body: dict) -> dict[str, Any]:
     """The flip graph of the request's sites under its rule."""
     import fliplab
@@ -186,6 +194,7 @@ def api_graph(body: dict) -> dict[str, Any]:
     tris = sorted({tuple(t) for t in g.nodes.reshape(-1, 3).tolist()})
     tid = {t: i for i, t in enumerate(tris)}
     bad = r.badness(p[np.array(tris)]).tolist() if r.is_triangle else [None] * len(tris)
+    shape = [_shape_of(r, p[list(t)]) for t in tris] if r.name.startswith("ES:") else None
     q = g.flip_quads
     _, vac, vbd = fliplab.decide(p[q], r, values=True)
     adj: list[list[int]] = [[] for _ in range(N)]
@@ -194,8 +203,9 @@ def api_graph(body: dict) -> dict[str, Any]:
         adj[b].append(a)
     return {"rule": r.name, "triangle_rule": r.is_triangle, "shape": r.name.startswith("ES:"),
             "sites": p.tolist(),
-            "triangles": [{"v": list(t), "badness": _num(b) if b is not None else None}
-                          for t, b in zip(tris, bad)],
+            "triangles": [{"v": list(t), "badness": _num(b) if b is not None else None,
+                           "shape": shape[i] if shape else None}
+                          for i, (t, b) in enumerate(zip(tris, bad))],
             "nodes": [sorted(tid[tuple(t)] for t in node) for node in g.nodes.tolist()],
             "flips": [{"ac": a, "bd": b, "decision": ["AC", "BD", "either"][d],
                        "quad": quad, "ac_value": _num(x), "bd_value": _num(y)}

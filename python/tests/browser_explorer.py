@@ -79,6 +79,12 @@ class Page:
         w, h = e.size["width"], e.size["height"]
         ActionChains(self.d).move_to_element_with_offset(e, x - w / 2, y - h / 2).click().perform()
 
+    def click_at_move(self, id_, x, y):
+        """The mouse moved to (x, y) from the element's top left corner."""
+        e = self.el(id_)
+        w, h = e.size["width"], e.size["height"]
+        ActionChains(self.d).move_to_element_with_offset(e, x - w / 2, y - h / 2).perform()
+
     def sites(self):
         """The sites the page holds, as it sends them to the server."""
         return self.d.execute_script("return S.sites;")
@@ -176,6 +182,19 @@ def bad_input(pg):
     pg.el("apply").click()
     pg.settle()
     check_counts(pg, "ES:hexagon")
+    at = pg.d.execute_script("""const r = $('sites').getBoundingClientRect();
+        for (const t of document.querySelectorAll('#sites .tri')) {
+          const p = t.getAttribute('points').split(' ').map((s) => s.split(',').map(Number));
+          const x = (p[0][0] + p[1][0] + p[2][0]) / 3, y = (p[0][1] + p[1][1] + p[2][1]) / 3;
+          if (document.elementFromPoint(r.x + x, r.y + y) === t) return [x, y];
+        }
+        return null;""")
+    assert at, "no triangle with its centroid free"
+    pg.click_at_move("sites", *at)
+    pg.until(lambda: "circumscribing" in pg.text("info"), "the homothet")
+    assert ("rounding shape" in pg.text("info")
+            or pg.d.find_elements(By.ID, "homothet")), pg.text("info")
+    pg.shot("homothet")
 
 
 def exports(pg, downloads, g):

@@ -318,3 +318,30 @@ def test_compare_counts_shared_edges_and_triangles():
         assert b.compare(b)["triangles_common"] == len(b.triangles)
     with pytest.raises(ValueError):
         a.compare(fliplab.lot(fliplab.samplers.points(50, "uniform", 1), "DT"))
+
+
+def test_es_triangles_carry_their_circumscribing_shape(server):
+    """Each triangle's outline under ES:SHAPE passes through its three sites,
+    and equals Rule.circumscribe's; a corner's rounding shape names the corner."""
+    sites = fliplab.samplers.site_sets(6, 1, "disc", seed=2)[0]
+    for rule in ("ES:hexagon", "ES:square", "ES:ellipse:2 1 0.5"):
+        st, g, _ = post(server, "/api/graph", {"sites": sites.tolist(), "rule": rule})
+        assert st == 200
+        r = fliplab.Rule(rule)
+        for t in g["triangles"]:
+            outline, corner = r.circumscribe(sites[t["v"]], points=96)
+            if outline is None:
+                assert t["shape"] == {"corner": corner}
+                continue
+            assert t["shape"]["outline"] == outline.tolist()
+            if "ellipse" not in rule:   # a polygon: each site on a side (to rounding)
+                o = np.array(outline)
+                for q in sites[t["v"]]:
+                    e = np.roll(o, -1, axis=0) - o
+                    d = (e[:, 0] * (q[1] - o[:, 1]) - e[:, 1] * (q[0] - o[:, 0])) \
+                        / np.hypot(e[:, 0], e[:, 1])
+                    assert abs(d.min()) < 1e-9
+    with pytest.raises(ValueError):
+        fliplab.Rule("DT").circumscribe([[0, 0], [1, 0], [0, 1]])
+    with pytest.raises(ValueError):
+        fliplab.Rule("ES:square").circumscribe([[0, 0], [1, 1], [2, 2]])
