@@ -33,6 +33,7 @@ except ImportError:
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 BUILD_BASE = "build-pip"
+WEB_FILES = ("index.html", "explorer.js", "explorer.css")   # the explorer's page
 
 
 def _grep(path, pattern):
@@ -58,6 +59,15 @@ class build_py(_build_py):
     def run(self):
         super().run()
         self.build_library()
+        self.copy_web()
+
+    def copy_web(self):
+        """The explorer's page (web/) into the package as fliplab/web, where
+        fliplab.explorer serves it from (docs/explorer.md)."""
+        for name in WEB_FILES:
+            out = os.path.join(self.build_lib, "fliplab", "web", name)
+            self.mkpath(os.path.dirname(out))
+            self.copy_file(os.path.join(HERE, "web", name), out)
 
     def library_output(self):
         return os.path.join(self.build_lib, "fliplab", SONAME)
@@ -81,7 +91,8 @@ class build_py(_build_py):
         self.copy_file(built, out, preserve_mode=True)
 
     def get_outputs(self, include_bytecode=1):
-        return super().get_outputs(include_bytecode) + [self.library_output()]
+        return super().get_outputs(include_bytecode) + [self.library_output()] + [
+            os.path.join(self.build_lib, "fliplab", "web", n) for n in WEB_FILES]
 
 
 class Distribution(_Distribution):

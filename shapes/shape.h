@@ -102,6 +102,18 @@ int shape_support(const shape *k, geom_point p, geom_point q);
 int shape_circumscribe(const shape *k, geom_point a, geom_point b, geom_point c, int contact[3],
                        int *corner);
 
+/* The circumscribing shape of the anticlockwise triangle ABC, to draw it:
+** a homothet t + sK of polygon K as its k->n vertices (anticlockwise), or
+** an ellipse homothet as max points on it (max >= 3), written to out[]
+** (room for max points and for SHAPE_MAX_VERTICES);
+** returns their count; 0 with *corner when it is the rounding shape of that
+** corner (an unbounded region, not drawn); -1 when ABC is flat or no
+** contact triple was found.  The contact edges (or the corner) are
+** shape_circumscribe's, exact; the points are rounded (a drawing, not a
+** decision).  shapes/shape_sweep.c. */
+int shape_circumscribe_draw(const shape *k, geom_point a, geom_point b, geom_point c,
+                            geom_point *out, int max, int *corner);
+
 /* Calls that needed the exact (GMP) fallback, over the process (diagnostics). */
 unsigned long shape_exact_calls(void);
 

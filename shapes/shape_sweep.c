@@ -82,3 +82,69 @@ int shape_circumscribe(const shape *k, geom_point a, geom_point b, geom_point c,
   const geom_point p[3] = {a, b, c};
   return shape_contacts(k, sup, p, contact) != 0 ? 1 : -1;
 }
+
+/* ---- drawing the circumscribing shape (shape_circumscribe_draw) ----
+** Rounded arithmetic on purpose: the contact edges are exact, the picture
+** is not a decision.  O(n) for a polygon, O(max) for an ellipse. */
+
+/* Homothet t + sK with A, B, C on the contact edges e[]: edge i (v_i to
+** v_i+1, outward normal n_i = (dy, -dx), offset c_i = n_i.v_i) of the
+** homothet is n_i.X = n_i.t + s c_i; three such rows, by Cramer's rule. */
+static int shape_draw_polygon(const shape *k, const geom_point p[3], const int e[3],
+                              geom_point *out) {
+  double m[3][4];
+  for (int j = 0; j < 3; j++) {
+    geom_point u = k->v[e[j]], w = k->v[(e[j] + 1) % k->n];
+    double nx = w.y - u.y, ny = u.x - w.x;
+    m[j][0] = nx;
+    m[j][1] = ny;
+    m[j][2] = nx * u.x + ny * u.y;
+    m[j][3] = nx * p[j].x + ny * p[j].y;
+  }
+#define SHAPE_DET3(c0, c1, c2) \
+  (m[0][c0] * (m[1][c1] * m[2][c2] - m[2][c1] * m[1][c2]) - \
+   m[1][c0] * (m[0][c1] * m[2][c2] - m[2][c1] * m[0][c2]) + \
+   m[2][c0] * (m[0][c1] * m[1][c2] - m[1][c1] * m[0][c2]))
+  double d = SHAPE_DET3(0, 1, 2);
+  if (d == 0) return -1;
+  double tx = SHAPE_DET3(3, 1, 2) / d, ty = SHAPE_DET3(0, 3, 2) / d;
+  double s = SHAPE_DET3(0, 1, 3) / d;
+#undef SHAPE_DET3
+  for (int i = 0; i < k->n; i++) out[i] = (geom_point){tx + s * k->v[i].x, ty + s * k->v[i].y};
+  return k->n;
+}
+
+/* The ellipse {X : X^T Q X <= 1} is the unit disc under L, Q = L^T L with L
+** upper triangular (Cholesky): the homothet through A, B, C is L^-1 of the
+** circumcircle of LA, LB, LC. */
+static int shape_draw_ellipse(const shape *k, const geom_point p[3], geom_point *out, int max) {
+  double l11 = sqrt(k->q11), l12 = k->q12 / l11, l22 = sqrt(k->q22 - l12 * l12);
+  double u[3][2];
+  for (int j = 0; j < 3; j++) {
+    u[j][0] = l11 * p[j].x + l12 * p[j].y;
+    u[j][1] = l22 * p[j].y;
+  }
+  double bx = u[1][0] - u[0][0], by = u[1][1] - u[0][1];
+  double cx = u[2][0] - u[0][0], cy = u[2][1] - u[0][1];
+  double d = 2 * (bx * cy - by * cx);
+  if (d == 0 || !(l22 > 0)) return -1;
+  double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  double mx = (cy * b2 - by * c2) / d, my = (bx * c2 - cx * b2) / d;
+  double r = sqrt(mx * mx + my * my);
+  for (int i = 0; i < max; i++) {
+    double a = 2 * 3.14159265358979323846 * i / max;
+    double y = (u[0][1] + my + r * sin(a)) / l22;
+    out[i] = (geom_point){(u[0][0] + mx + r * cos(a) - l12 * y) / l11, y};
+  }
+  return max;
+}
+
+int shape_circumscribe_draw(const shape *k, geom_point a, geom_point b, geom_point c,
+                            geom_point *out, int max, int *corner) {
+  const geom_point p[3] = {a, b, c};
+  if (geom_orient(a, b, c) <= 0) return -1;
+  if (k->kind == SHAPE_ELLIPSE) return max >= 3 ? shape_draw_ellipse(k, p, out, max) : -1;
+  int e[3];
+  int r = shape_circumscribe(k, a, b, c, e, corner);
+  return r == 1 ? shape_draw_polygon(k, p, e, out) : r == 0 ? 0 : -1;
+}

@@ -146,6 +146,9 @@ import sys, fliplab
 p = fliplab.samplers.points(100, "uniform", 1)
 t = fliplab.lot(p, "P_1", check=True)
 assert t.status == "converged" and len(t.triangles) == 2 * 100 - len(t.hull) - 2
+from fliplab import explorer
+import os
+assert explorer.web_dir() == os.path.join(os.path.dirname(fliplab.__file__), "web")
 print(fliplab.__file__, fliplab.library_path, sep="\n")') > "$tmp/py.txt" ||
     fail "the installed Python package does not load"
   sed -n 1p "$tmp/py.txt" | grep -q "^$site/fliplab/" || fail "Python loaded fliplab from elsewhere: $(cat "$tmp/py.txt")"

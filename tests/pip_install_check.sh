@@ -63,6 +63,8 @@ pkg = os.path.dirname(fliplab.__file__)
 assert pkg.startswith(sys.prefix + os.sep), "fliplab imported from %s, not the venv" % pkg
 assert fliplab.library_path == os.path.join(pkg, fliplab._lib.SONAME), fliplab.library_path
 assert os.path.isfile(os.path.join(pkg, "py.typed")), "no py.typed"
+from fliplab import explorer
+assert explorer.web_dir() == os.path.join(pkg, "web"), explorer.web_dir()
 assert md.version("fliplab") == fliplab.__version__, (md.version("fliplab"), fliplab.__version__)
 t = fliplab.lot(fliplab.samplers.points(100, "uniform", seed=1), "P_1", check=True)
 assert t.status == "converged" and len(t.triangles) == 2 * 100 - len(t.hull) - 2
@@ -79,7 +81,7 @@ want = "fliplab-%s-py3-none-" % fliplab.__version__
 assert name.startswith(want) and name.endswith(".whl") and "linux" in name, name
 names = zipfile.ZipFile(os.path.join(sys.argv[1], name)).namelist()
 for f in ("fliplab/__init__.py", "fliplab/_lib.py", "fliplab/py.typed",
-          "fliplab/" + fliplab._lib.SONAME):
+          "fliplab/" + fliplab._lib.SONAME, "fliplab/web/index.html", "fliplab/web/explorer.js"):
     assert f in names, (f, name)
 assert not any(n.startswith(("tests/", "fliplab/tests/")) for n in names), names
 EOF

@@ -3,7 +3,7 @@
 ** empty-shape decision: the four triangle choices agree, exact relations
 ** (square and diamond, axis-aligned ellipses and DT), homothety and scale
 ** invariance, a brute-force rational oracle, the rounding shapes' branch,
-** and regular n-gons approaching DT.
+** regular n-gons approaching DT, and the drawn circumscribing shapes.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -461,6 +461,66 @@ static void test_homothety(void **state) {
     shape_free(k2);
     shape_free(k);
   }
+}
+
+/* The least signed distance of P to the sides of the anticlockwise polygon
+** out[0..n-1] (>= 0 inside, 0 on it), for the drawn homothets. */
+static double tshape_side_dist(const geom_point *out, int n, geom_point p) {
+  double best = INFINITY;
+  for (int i = 0; i < n; i++) {
+    geom_point u = out[i], w = out[(i + 1) % n];
+    double dx = w.x - u.x, dy = w.y - u.y;
+    best = fmin(best, (dx * (p.y - u.y) - dy * (p.x - u.x)) / hypot(dx, dy));
+  }
+  return best;
+}
+
+/* shape_circumscribe_draw: A, B and C lie on the drawn shape (to rounding),
+** and a D far enough from it is inside exactly when the exact decision of
+** ABCD says BD (D inside the circumscribing shape of ABC); a corner's
+** rounding shape draws nothing and names shape_circumscribe's corner.  The
+** ellipse's 256 points are a polygon inscribed in it, so that check is on
+** D's side only beyond the chord error (1 - cos(pi/256) of its size). */
+static void test_circumscribe_draw(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "triangle", "hexagon", "ngon:7",
+                                      "poly:0 0;3 1;4 4;1 3", "ellipse:2 1 0.5"};
+  testutil_rng rng = {11};
+  geom_point out[256];
+  for (size_t s = 0; s < sizeof specs / sizeof specs[0]; s++) {
+    shape *k = tshape_get(specs[s]);
+    int drawn = 0;
+    for (int i = 0; i < 3000; i++) {
+      geom_point q[4];
+      testutil_convex_quad(&rng, q);
+      int corner = -1, e[3], c2 = -1;
+      int n = shape_circumscribe_draw(k, q[0], q[1], q[2], out, 256, &corner);
+      if (k->kind == SHAPE_POLYGON) {
+        int r = shape_circumscribe(k, q[0], q[1], q[2], e, &c2);
+        assert_int_equal(n == 0, r == 0);
+        if (r == 0) assert_int_equal(corner, c2);
+      }
+      if (n <= 0) continue;
+      drawn++;
+      double size = fabs(out[0].x - out[n / 2].x) + fabs(out[0].y - out[n / 2].y);
+      double tol = 1e-9 * size + (n == 256 ? size * 1e-4 : 0);
+      for (int j = 0; j < 3; j++) assert_true(fabs(tshape_side_dist(out, n, q[j])) <= tol);
+      double dd = tshape_side_dist(out, n, q[3]);
+      shape_choice c = shape_decide(k, q[0], q[1], q[2], q[3], NULL);
+      if (dd > tol) assert_int_equal(c, SHAPE_BD);
+      if (dd < -tol) assert_int_equal(c, SHAPE_AC);
+    }
+    assert_true(drawn > 1000);
+    shape_free(k);
+  }
+  shape *k = tshape_get("square");
+  assert_int_equal(shape_circumscribe_draw(k, (geom_point){0, 0}, (geom_point){1, 1},
+                                           (geom_point){2, 2}, out, 256, NULL), -1);
+  shape_free(k);
+  k = tshape_get("ellipse:2 1");
+  assert_int_equal(shape_circumscribe_draw(k, (geom_point){0, 0}, (geom_point){1, 0},
+                                           (geom_point){0, 1}, out, 2, NULL), -1);
+  shape_free(k);
 }
 
 /* Regular n-gons approach the circle: their rules disagree with DT on
@@ -1156,6 +1216,7 @@ int main(int argc, char **argv) {
     cmocka_unit_test(test_square_diamond),
     cmocka_unit_test(test_ellipse_dt),
     cmocka_unit_test(test_homothety),
+    cmocka_unit_test(test_circumscribe_draw),
     cmocka_unit_test(test_ngon_to_dt),
     cmocka_unit_test(test_named),
     cmocka_unit_test(test_support),

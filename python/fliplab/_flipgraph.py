@@ -46,6 +46,10 @@ class FlipGraph:
         Flips the rule decides either way (no direction).
     flip_quads : ndarray of int32, shape (E + K, 4)
         Each flip's quadrilateral A B C D (anticlockwise, A the smallest site).
+    flips : ndarray of int32, shape (E + K, 3)
+        Each flip, row for row with flip_quads: the triangulation with
+        diagonal AC, the one with BD, and the rule's decision (AC, BD or
+        EITHER).
     sinks, sources : ndarray of int32
     dt : int
         The Delaunay triangulation, -1 when not unique.
@@ -70,11 +74,12 @@ class FlipGraph:
         tv = np.array([list(G.tri_v[t]) for t in range(G.ntris)], dtype=np.int32).reshape(-1, 3)
         nt = np.ctypeslib.as_array(G.node_tri, shape=(N * per,)).copy()
         self.nodes = tv[nt].reshape(N, per, 3)
-        edges, ties, quads = [], [], []
+        edges, ties, quads, flips = [], [], [], []
         for e in range(G.nedges):
             ed = G.edge[e]
             d = dec[ed.quad]
             quads.append(list(G.quad[ed.quad].v))
+            flips.append((ed.ac, ed.bd, d))
             if d == 0:
                 edges.append((ed.bd, ed.ac))      # AC preferred: the flip leads to ac
             elif d == 1:
@@ -84,6 +89,7 @@ class FlipGraph:
         self.edges = np.array(edges, dtype=np.int32).reshape(-1, 2)
         self.ties = np.array(ties, dtype=np.int32).reshape(-1, 2)
         self.flip_quads = np.array(quads, dtype=np.int32).reshape(-1, 4)
+        self.flips = np.array(flips, dtype=np.int32).reshape(-1, 3)
         self.sinks = np.array(sinks[:res.nsinks], dtype=np.int32)
         indeg = np.zeros(N, dtype=int)
         np.add.at(indeg, self.edges[:, 1], 1)

@@ -24,10 +24,10 @@ import ctypes
 import os
 
 from ._args import MAX_THREADS
-from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, Measure, Point_p,
-                       ProgressFn, ReportCensusMeta, ReportCensusRow, ReportMeta, ReportPoly,
-                       ReportRow, Rule, Rule_p, RuleQuad, SamplerPentagons, SamplerRng,
-                       SiteflipCounts, SiteflipGraph_p, SiteflipResult, c_double_p, c_int32_p,
+from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, LotDiff, Measure,
+                       Point, Point_p, ProgressFn, ReportCensusMeta, ReportCensusRow,
+                       ReportMeta, ReportPoly, ReportRow, Rule, Rule_p, RuleQuad,
+                       SamplerPentagons, SamplerRng, SiteflipCounts, SiteflipGraph_p, SiteflipResult, c_double_p, c_int32_p,
                        c_uint32_p, RULE_TRIANGLE)
 
 SONAME = "libfliplab.so.0.1"
@@ -95,6 +95,7 @@ _PROTOS = {
     "rule_list_triangle": (_int, [_int_p, _int, Rule_p, _int]),
     "rule_is_shape": (_int, [Rule_p]),
     "rule_shape": (_void_p, [Rule_p]),
+    "shape_circumscribe_draw": (_int, [_void_p, Point, Point, Point, Point_p, _int, _int_p]),
     "measure_count": (_int, []),
     "measure_get": (ctypes.POINTER(Measure), [_int]),
     "measure_find": (_int, [_char_p]),
@@ -159,6 +160,7 @@ _PROTOS = {
                                      Rule_p, _void_p]),
     "lot_cdf_extract": (_int, [Point_p, c_uint32_p, _size, _void_p, ctypes.POINTER(LotCdf)]),
     "lot_cdf_free": (None, [ctypes.POINTER(LotCdf)]),
+    "lot_compare": (_int, [c_uint32_p, _size, c_uint32_p, _size, ctypes.POINTER(LotDiff)]),
     # got/got.h
     "got_options_new": (_void_p, []),
     "got_options_free": (None, [_void_p]),

@@ -16,6 +16,7 @@ import numpy.typing as npt
 from . import _lib, _scipy
 from ._args import choice, u64
 from ._arrays import as_coords, as_indices, cstr, frozen, points_ptr, ptr
+from ._mirrors import LotDiff
 from ._rules import Rule, as_rule, _raise_user_errors
 
 lib = _lib.lib
@@ -391,6 +392,40 @@ class Triangulation:
                              % self.rule.name)
         b = np.ascontiguousarray(self.badness)
         return lib.rule_total_key(ctypes.byref(self.rule._c), ptr(b, ctypes.c_double), len(b))
+
+    def compare(self, other: Triangulation) -> dict[str, int]:
+        """The edges and triangles this triangulation shares with another of
+        the same points, as the program's compare DT line counts them
+        (lot_compare).
+
+        Parameters
+        ----------
+        other : Triangulation
+            A triangulation of the same points (lot()'s result).
+
+        Returns
+        -------
+        dict
+            edges_a, edges_b, edges_common, triangles_a, triangles_b,
+            triangles_common (a: this one, b: other).
+
+        Raises
+        ------
+        ValueError
+            other is of other points.
+        MemoryError
+            Out of memory.
+        """
+        if not isinstance(other, Triangulation) or not np.array_equal(self.points,
+                                                                      other.points):
+            raise ValueError("compare: expected a triangulation of the same points")
+        a = np.ascontiguousarray(self.triangles, dtype=np.uint32)
+        b = np.ascontiguousarray(other.triangles, dtype=np.uint32)
+        d = LotDiff()
+        if lib.lot_compare(ptr(a, ctypes.c_uint32), len(a), ptr(b, ctypes.c_uint32), len(b),
+                           ctypes.byref(d)) != 0:
+            raise MemoryError("compare: out of memory")
+        return {n: int(getattr(d, n)) for n, _ in LotDiff._fields_}
 
     def check(self) -> Check:
         """Re-verify from scratch, as the program's check does.

@@ -109,6 +109,13 @@ class LotCdf(ctypes.Structure):
                 ("rounded", ctypes.c_size_t), ("conflicts", ctypes.c_size_t)]
 
 
+class LotDiff(ctypes.Structure):
+    """lot_diff (lot/lot.h): lot_compare's edges and triangles of two triangulations."""
+    _fields_ = [(n, ctypes.c_size_t) for n in ("edges_a", "edges_b", "edges_common",
+                                                "triangles_a", "triangles_b",
+                                                "triangles_common")]
+
+
 class FlipgraphCounts(ctypes.Structure):
     """flipgraph_counts (classify/flipgraph.h): one per rule, and in report_row."""
     _fields_ = [("samples", ctypes.c_uint64), ("type", ctypes.c_uint64 * 5),

@@ -20,6 +20,7 @@ AC, BD, EITHER, UNDECIDED = 0, 1, 2, -1
 # The forms of a rule name (docs/rules.md): every docstring taking a rule
 # names them (python/tests/test_package.py).
 RULE_FORMS = ("DT", "MEASURE_JOINT", "ES:SHAPE")
+SHAPE_MAX_VERTICES = 1024          # shapes/shape.h: a polygon's vertices at most
 SIGNS = ("any", ">= 0", "<= 0")     # a measure's sign, as measures() and measure() name it
 _SIGN_OF = {0: "any", 1: ">= 0", -1: "<= 0"}
 
@@ -135,6 +136,48 @@ class Rule:
         if not self.is_triangle:
             raise ValueError("rule %s is a quadrilateral rule: no triangle badness" % self.name)
         return _badness_id(self._c.measure, triangles)
+
+    def circumscribe(self, triangle: npt.ArrayLike,
+                     points: int = 128) -> tuple[npt.NDArray[np.float64] | None, int | None]:
+        """The circumscribing shape of a triangle under an empty-shape rule
+        ES:SHAPE, to draw it (shape_circumscribe_draw; docs/emptyshape.md).
+
+        Parameters
+        ----------
+        triangle : array_like, shape (3, 2)
+            Its vertices, in any order.
+        points : int
+            How many points trace an ellipse (3 to 4096).
+
+        Returns
+        -------
+        tuple (outline, corner)
+            The homothet's outline, an ndarray of float64 (a polygon's
+            vertices or an ellipse's points, anticlockwise), and None; or
+            None and the corner (a vertex index of the shape) whose rounding
+            shape it is.  The contact edges are exact, the outline rounded.
+
+        Raises
+        ------
+        ValueError
+            Not an empty-shape rule, a flat triangle, points out of range.
+        """
+        if not lib.rule_is_shape(ctypes.byref(self._c)):
+            raise ValueError("rule %s is not an empty-shape rule ES:SHAPE" % self.name)
+        if not isinstance(points, int) or not 3 <= points <= 4096:
+            raise ValueError("points: expected an integer in 3..4096, got %r" % (points,))
+        t = as_coords(triangle, "triangle", (3, 2))
+        k = lib.rule_shape(ctypes.byref(self._c))
+        out = (_lib.Point * max(points, SHAPE_MAX_VERTICES))()
+        corner = ctypes.c_int(-1)
+        for a, b, c in ((0, 1, 2), (0, 2, 1)):
+            n = lib.shape_circumscribe_draw(k, _lib.Point(*t[a]), _lib.Point(*t[b]),
+                                            _lib.Point(*t[c]), out, points, ctypes.byref(corner))
+            if n > 0:
+                return np.array([(p.x, p.y) for p in out[:n]]), None
+            if n == 0:
+                return None, corner.value
+        raise ValueError("circumscribe: the triangle is flat")
 
     def decide(self, quads: npt.ArrayLike, values: bool = False) -> Any:
         """The rule's decision on quadrilaterals: decide(quads, self, values).

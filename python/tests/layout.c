@@ -75,6 +75,8 @@ static void layout_lot(void) {
   F(lot_check_result, segments_missing); F(lot_check_result, missing_segment);
   Z(lot_cdf); F(lot_cdf, triangles); F(lot_cdf, tri); F(lot_cdf, edges); F(lot_cdf, edge);
   F(lot_cdf, rounded); F(lot_cdf, conflicts);
+  Z(lot_diff); F(lot_diff, edges_a); F(lot_diff, edges_b); F(lot_diff, edges_common);
+  F(lot_diff, triangles_a); F(lot_diff, triangles_b); F(lot_diff, triangles_common);
   Z(report_row); F(report_row, measure); F(report_row, joint); F(report_row, rule);
   F(report_row, c);
   Z(report_run); F(report_run, known); F(report_run, seed); F(report_run, tie_eps);

@@ -40,6 +40,7 @@ MIRRORS = {
     "_mirrors.SamplerRng": ("sampler_rng", True, {}),
     "_mirrors.ReportPoly": ("report_poly", True, {}),
     "_mirrors.LotCdf": ("lot_cdf", True, {}),
+    "_mirrors.LotDiff": ("lot_diff", True, {}),
     "_mirrors.FlipgraphCounts": ("flipgraph_counts", True, {}),
     "_mirrors.FlipgraphRun": ("flipgraph_run", True, {}),
     "_mirrors.SiteflipCounts": ("siteflip_counts", True, {}),

@@ -2,7 +2,8 @@
 
 - fliplab, fliplab.samplers and fliplab.plot are the public modules (real
   submodules: `import fliplab.samplers` and `from fliplab.samplers import
-  points` work); every other module is private (a leading underscore);
+  points` work); fliplab.explorer is a program (python3 -m fliplab.explorer,
+  the page's server), no API; every other module is private (a leading underscore);
   each public module's __all__ lists its public API and nothing else of
   the package is reachable under a public name.
 - Every public function, class and method carries type hints and a
@@ -36,6 +37,7 @@ from fliplab.samplers import points
 
 PKG = os.path.dirname(fliplab.__file__)
 PUBLIC_MODULES = (fliplab, fliplab.samplers, fliplab.plot)
+PROGRAMS = {"explorer"}         # run with python3 -m, not imported as API
 
 
 def _sources():
@@ -61,7 +63,7 @@ def test_public_submodules_import():
 def test_every_other_module_private():
     names = {m.name for m in pkgutil.iter_modules(fliplab.__path__)}
     assert {"samplers", "plot"} <= names
-    assert all(n.startswith("_") for n in names - {"samplers", "plot"}), names
+    assert all(n.startswith("_") for n in names - {"samplers", "plot"} - PROGRAMS), names
 
 
 def _ours(obj):
@@ -75,7 +77,7 @@ def test_all_is_the_public_api(mod):
     for name in mod.__all__:
         assert not name.startswith("_") and hasattr(mod, name), name
     for name, obj in vars(mod).items():
-        if name.startswith("_") or name in mod.__all__:
+        if name.startswith("_") or name in mod.__all__ or name in PROGRAMS:
             continue
         # imports of other libraries (np, ctypes, typing's names) are no API
         assert not _ours(obj), "%s.%s is reachable but not in __all__" % (mod.__name__, name)

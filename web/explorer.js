@@ -1,0 +1,501 @@
+/* explorer.js: the flip-graph explorer's page logic (docs/explorer.md).  It
+** draws and asks: every decision, badness, flip, sink and count comes from the
+** server (python3 -m fliplab.explorer, the library's verbs); the page only
+** looks them up.  Plain JavaScript and SVG, nothing fetched from elsewhere. */
+"use strict";
+
+const SVGNS = "http://www.w3.org/2000/svg";
+const S = {
+  names: null,          /* /api/names */
+  sites: [],            /* [[x, y], ...] */
+  view: null,           /* world -> screen: {x0, y0, k} */
+  graph: null,          /* /api/graph's answer for sites + rule */
+  node: 0,              /* the current triangulation, a node of graph */
+  lotOnly: null,        /* /api/lot of the sites when the graph is too large */
+  pending: false, again: false, drag: null, dragEnd: 0, lastLot: null,
+};
+const $ = (id) => document.getElementById(id);
+
+function el(tag, attrs, parent) {
+  const e = document.createElementNS(SVGNS, tag);
+  for (const k in attrs) e.setAttribute(k, attrs[k]);
+  if (parent) parent.appendChild(e);
+  return e;
+}
+
+function say(text, ok) {
+  $("message").textContent = text || "";
+  $("message").className = ok ? "ok" : "";
+}
+
+async function api(path, body) {
+  const r = await fetch(path, body === undefined ? {} : {
+    method: "POST", headers: {"Content-Type": "application/json"}, body: JSON.stringify(body)});
+  let data;
+  try { data = await r.json(); } catch (e) { throw new Error(path + ": HTTP " + r.status); }
+  if (!r.ok) throw new Error(data.error || ("HTTP " + r.status));
+  return data;
+}
+
+function ruleBody(extra) {
+  const b = Object.assign({rule: $("rule").value.trim()}, extra);
+  const d = $("define").value.trim();
+  if (d) b.define = d;
+  return b;
+}
+
+/* ---- the world-to-screen map of the sites panel ---- */
+
+function fit(points, size) {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const [x, y] of points) {
+    x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+  }
+  if (!isFinite(x0)) { x0 = 0; y0 = 0; x1 = 1; y1 = 1; }
+  const span = Math.max(x1 - x0, y1 - y0, 1e-9), pad = 0.08 * span;
+  return {x0: x0 - pad, y0: y0 - pad, k: size / (span + 2 * pad), size: size};
+}
+const sx = (v, p) => (p[0] - v.x0) * v.k;
+const sy = (v, p) => v.size - (p[1] - v.y0) * v.k;
+const world = (v, X, Y) => [v.x0 + X / v.k, v.y0 + (v.size - Y) / v.k];
+
+function colour(b, lo, hi) {
+  const sc = S.names.scale;
+  if (b === null || !(hi > lo)) return b === null ? "#dddddd" : sc[0];
+  return sc[Math.round((sc.length - 1) * (b - lo) / (hi - lo))];
+}
+
+/* ---- the triangulation: triangles shaded by badness, edges to hover and flip ---- */
+
+function currentTriangles() {
+  const g = S.graph;
+  if (g && !g.too_large) return g.nodes[S.node].map((t) => g.triangles[t]);
+  if (S.lotOnly) {
+    const b = S.lotOnly.badness;
+    return S.lotOnly.triangles.map((v, i) => ({v: v, badness: b ? b[i] : null}));
+  }
+  return [];
+}
+
+/* The flips at the current node: diagonal "i-j" -> {flip, here: "AC"|"BD", to}. */
+function flipsHere() {
+  const out = new Map(), g = S.graph;
+  if (!g || g.too_large) return out;
+  g.flips.forEach((f, k) => {
+    if (f.ac !== S.node && f.bd !== S.node) return;
+    const here = f.ac === S.node ? "AC" : "BD", q = f.quad;
+    const d = here === "AC" ? [q[0], q[2]] : [q[1], q[3]];
+    out.set(Math.min(...d) + "-" + Math.max(...d),
+            {k: k, f: f, here: here, to: here === "AC" ? f.bd : f.ac});
+  });
+  return out;
+}
+
+function drawSites() {
+  const svg = $("sites");
+  svg.replaceChildren();
+  const v = S.view, tris = currentTriangles();
+  const bs = tris.map((t) => t.badness).filter((b) => b !== null);
+  const lo = Math.min(...bs), hi = Math.max(...bs);
+  const layer = el("g", {id: "tri-layer"}, svg);
+  for (const t of tris) {
+    const pts = t.v.map((i) => sx(v, S.sites[i]) + "," + sy(v, S.sites[i])).join(" ");
+    const p = el("polygon", {points: pts, class: "tri", fill: colour(t.badness, lo, hi)}, layer);
+    p.addEventListener("mouseenter", () => showTriangle(t));
+  }
+  drawEdges(svg, tris);
+  S.sites.forEach((p, i) => {
+    const c = el("circle", {cx: sx(v, p), cy: sy(v, p), r: 6, class: "site",
+                            "data-index": i}, svg);
+    const t = el("title", {}, c);
+    t.textContent = "site " + (i + 1) + ": " + p[0] + ", " + p[1];
+    c.addEventListener("mousedown", (e) => startDrag(e, i));
+    c.addEventListener("contextmenu", (e) => { e.preventDefault(); deleteSite(i); });
+    const n = el("text", {x: sx(v, p) + 7, y: sy(v, p) - 7, class: "label"}, svg);
+    n.textContent = i + 1;
+  });
+}
+
+function drawEdges(svg, tris) {
+  const seen = new Map(), v = S.view, here = flipsHere();
+  for (const t of tris) {
+    for (let k = 0; k < 3; k++) {
+      const a = Math.min(t.v[k], t.v[(k + 1) % 3]), b = Math.max(t.v[k], t.v[(k + 1) % 3]);
+      seen.set(a + "-" + b, (seen.get(a + "-" + b) || 0) + 1);
+    }
+  }
+  for (const [key, count] of seen) {
+    const [a, b] = key.split("-").map(Number);
+    const xy = {x1: sx(v, S.sites[a]), y1: sy(v, S.sites[a]),
+                x2: sx(v, S.sites[b]), y2: sy(v, S.sites[b])};
+    el("line", Object.assign({class: "edge"}, xy), svg);
+    if (count < 2) continue;                      /* a hull edge */
+    const fl = here.get(key);
+    const hit = el("line", Object.assign({class: "edge-hit" + (fl ? " flippable" : ""),
+                                          "data-edge": key}, xy), svg);
+    hit.addEventListener("mouseenter", () => showEdge(key, fl));
+    hit.addEventListener("click", () => { if (fl) goTo(fl.to); });
+  }
+}
+
+function fmt(x) { return x === null || x === undefined ? "-" : Number(x).toPrecision(10); }
+
+function showTriangle(t) {
+  const v = t.v.map((i) => i + 1).join(" ");
+  let text = "triangle (" + v + "): badness " +
+    (t.badness === null ? "- (" + S.graph?.rule + " is not triangle-based)" : fmt(t.badness));
+  const old = document.getElementById("homothet");
+  if (old) old.remove();
+  if (t.shape && t.shape.outline) {
+    const pts = t.shape.outline.map((p) => sx(S.view, p) + "," + sy(S.view, p)).join(" ");
+    el("polygon", {id: "homothet", class: "homothet", points: pts}, $("tri-layer"));
+    text += "\ncircumscribing homothet of the shape (dashed)";
+  } else if (t.shape) {
+    text += "\ncircumscribing shape: the rounding shape of the shape's corner " + t.shape.corner +
+      " (unbounded, not drawn)";
+  }
+  $("info").textContent = text;
+}
+
+function showEdge(key, fl) {
+  const [a, b] = key.split("-").map((i) => Number(i) + 1);
+  if (!fl) {
+    $("info").textContent = "edge " + a + "-" + b +
+      ": not flippable (its quadrilateral is not strictly convex)";
+    return;
+  }
+  const f = fl.f, q = f.quad.map((i) => i + 1);
+  const keep = f.decision === "either" ? "either diagonal (a tie)"
+    : f.decision === fl.here ? "keep " + a + "-" + b : "flip " + a + "-" + b;
+  $("info").textContent = "quadrilateral " + q.join(" ") + "\n" +
+    "diagonal " + q[0] + "-" + q[2] + " (AC): " + fmt(f.ac_value) + "   diagonal " +
+    q[1] + "-" + q[3] + " (BD): " + fmt(f.bd_value) + "\n" +
+    "the rule prefers " + f.decision + ": " + keep;
+  $("info").dataset.decision = f.decision === "either" ? "either"
+    : f.decision === fl.here ? "keep" : "flip";
+}
+
+/* ---- the directed flip graph ---- */
+
+function drawGraph() {
+  const svg = $("graph"), g = S.graph;
+  svg.replaceChildren();
+  if (!g || g.too_large) return;
+  const W = 520, P = 16, at = (u) => [P + (W - 2 * P) * g.layout[u][0],
+                                       P + (W - 2 * P) * (1 - g.layout[u][1])];
+  const defs = el("defs", {}, svg);
+  const r = g.nodes.length > 500 ? 2.5 : g.nodes.length > 60 ? 4 : 7;
+  const m = el("marker", {id: "arrow", viewBox: "0 0 10 10", refX: 10 + 10 * r / 8, refY: 5,
+                          markerUnits: "userSpaceOnUse", markerWidth: 8, markerHeight: 8,
+                          orient: "auto"}, defs);
+  el("path", {d: "M0,0 L10,5 L0,10 z", fill: "#555"}, m);
+  for (const f of g.flips) {
+    const [from, to] = f.decision === "AC" ? [f.bd, f.ac] : [f.ac, f.bd];
+    const [x1, y1] = at(from), [x2, y2] = at(to);
+    const attrs = {x1: x1, y1: y1, x2: x2, y2: y2, class: "arc" +
+                   (f.decision === "either" ? " tie" : "")};
+    if (f.decision !== "either" && g.nodes.length <= 500) attrs["marker-end"] = "url(#arrow)";
+    el("line", attrs, svg);
+  }
+  const sinks = new Set(g.sinks);
+  g.nodes.forEach((_, u) => {
+    const [x, y] = at(u);
+    const c = el("circle", {cx: x, cy: y, r: r, "data-node": u, class: "node" +
+      (sinks.has(u) ? " sink" : "") + (u === S.node ? " current" : "")}, svg);
+    el("title", {}, c).textContent = "T" + (u + 1) + (sinks.has(u) ? " (sink)" : "");
+    c.addEventListener("click", () => goTo(u));
+    const tag = (u === g.dt ? "DT " : "") + (u === g.got ? "GOT" : "");
+    if (tag) el("text", {x: x + r + 2, y: y - r, class: "label"}, svg).textContent = tag;
+  });
+}
+
+function drawCounts() {
+  const g = S.graph, c = g && !g.too_large ? g.census : null;
+  const put = (id, v) => { $(id).textContent = v === null || v === undefined ? "-" : v; };
+  put("count-triangulations", g ? (c ? c.triangulations : g.triangulations) : null);
+  put("count-flips", c && c.flips);
+  put("count-sinks", c && c.sinks);
+  put("count-ties", c && c.ties);
+  put("count-type", c && c.type);
+  put("count-sinkdt", c ? (c.sink_dt === null ? "-" : c.sink_dt ? "yes" : "no") : null);
+  put("count-got", c && fmt(c.got_total));
+  put("count-gap", c && fmt(c.worst_gap));
+  put("count-current", c ? "T" + (S.node + 1) + (g.sinks.includes(S.node) ? " (sink)" : "")
+                         : S.lotOnly ? "the LOT" : null);
+  put("count-rule", g && g.rule);
+}
+
+function redraw() { drawSites(); drawGraph(); drawCounts(); }
+
+function goTo(u) { S.node = u; $("info").textContent = "T" + (u + 1); redraw(); }
+
+/* ---- asking the server: the graph of the sites under the rule ---- */
+
+async function refresh() {
+  if (S.pending) { S.again = true; return; }
+  S.pending = true;
+  try {
+    do {
+      S.again = false;
+      await refreshOnce();
+    } while (S.again);
+  } finally { S.pending = false; }
+}
+
+async function refreshOnce() {
+  const sites = S.sites.map((p) => p.slice());
+  if (sites.length < 3) {
+    S.graph = null; S.lotOnly = null; redraw();
+    say(sites.length ? "place at least 3 sites" : "click to place sites (3 to 12)", true);
+    return;
+  }
+  const old = S.graph && !S.graph.too_large ? currentTriangles().map((t) => t.v + "") : null;
+  try {
+    const g = await api("/api/graph", ruleBody({sites: sites}));
+    S.graph = g; S.lotOnly = null; S.node = 0;
+    if (g.too_large) {
+      S.lotOnly = await api("/api/lot", ruleBody({sites: sites}));
+      say(g.message, false);
+    } else {
+      keepNode(old);
+      say(g.census.triangulations + " triangulations under " + g.rule, true);
+    }
+  } catch (e) {
+    S.graph = null; S.lotOnly = null;
+    say(e.message, false);
+  }
+  redraw();
+}
+
+/* After an edit, stay on the triangulation with the same triangles if there is one. */
+function keepNode(old) {
+  if (!old) return;
+  const want = old.slice().sort().join(";"), g = S.graph;
+  for (let u = 0; u < g.nodes.length; u++) {
+    if (g.nodes[u].map((t) => g.triangles[t].v + "").sort().join(";") === want) {
+      S.node = u; return;
+    }
+  }
+}
+
+/* ---- the flip algorithm: the first flip out of the current node, in the library's order */
+
+function nextFlip() {
+  const g = S.graph;
+  if (!g || g.too_large) return -1;
+  for (const f of g.flips) {
+    if (f.decision === "AC" && f.bd === S.node) return f.ac;
+    if (f.decision === "BD" && f.ac === S.node) return f.bd;
+  }
+  return -1;
+}
+
+function step() {
+  const to = nextFlip();
+  if (to < 0) { say(S.graph ? "T" + (S.node + 1) + " is a sink: no flip improves it" : "", true); return false; }
+  goTo(to);
+  return true;
+}
+
+function runToSink() {
+  let n = 0;
+  while (n <= (S.graph ? S.graph.nodes.length : 0) && nextFlip() >= 0) { S.node = nextFlip(); n++; }
+  redraw();
+  say(S.graph && !S.graph.too_large ? n + " flips to the sink T" + (S.node + 1) : "", true);
+}
+
+/* ---- editing the sites ---- */
+
+function setSites(pts, refit) {
+  S.sites = pts.map((p) => [Number(p[0]), Number(p[1])]);
+  if (refit || !S.view) S.view = fit(S.sites, 520);
+  refresh();
+}
+
+function addSite(e) {
+  if (e.target.tagName !== "svg" && !e.target.classList.contains("tri")) return;
+  if (e.shiftKey || Date.now() - S.dragEnd < 400) return;   /* the click ending a drag */
+  const lim = S.names.limits;
+  if (S.sites.length >= lim.sites_max) { say("at most " + lim.sites_max + " sites"); return; }
+  const r = $("sites").getBoundingClientRect();
+  const p = world(S.view, e.clientX - r.left, e.clientY - r.top);
+  S.sites.push([Number(p[0].toPrecision(6)), Number(p[1].toPrecision(6))]);
+  refresh();
+}
+
+function deleteSite(i) { S.sites.splice(i, 1); refresh(); }
+
+function startDrag(e, i) {
+  e.preventDefault();
+  e.stopPropagation();
+  if (e.shiftKey) { deleteSite(i); return; }
+  S.drag = {i: i, moved: false};
+}
+
+function moveDrag(e) {
+  if (!S.drag) return;
+  const r = $("sites").getBoundingClientRect();
+  const p = world(S.view, e.clientX - r.left, e.clientY - r.top);
+  S.sites[S.drag.i] = [Number(p[0].toPrecision(6)), Number(p[1].toPrecision(6))];
+  S.drag.moved = true;
+  drawSites();
+  refresh();
+}
+
+function endDrag() {
+  if (S.drag && S.drag.moved) S.dragEnd = Date.now();
+  S.drag = null;
+}
+
+function parseCsv(text) {
+  const out = [];
+  text.split(/\r?\n/).forEach((line, k) => {
+    const s = line.trim();
+    if (!s || /^x\s*,\s*y$/i.test(s)) return;
+    const f = s.split(/[,\s]+/);
+    const x = Number(f[0]), y = Number(f[1]);
+    if (f.length !== 2 || !isFinite(x) || !isFinite(y) || f[0] === "" || f[1] === "")
+      throw new Error("line " + (k + 1) + ": expected x,y");
+    out.push([x, y]);
+  });
+  const lim = S.names.limits;
+  if (out.length < lim.sites_min || out.length > lim.sites_max)
+    throw new Error(out.length + " sites: the flip graph takes " + lim.sites_min + " to " +
+                    lim.sites_max + " (the LOT panel takes more)");
+  return out;
+}
+
+function useText(text) {
+  try { setSites(parseCsv(text), true); } catch (e) { say(e.message); }
+}
+
+/* ---- the LOT panel ---- */
+
+function drawTriangulation(svg, pts, tris, badness) {
+  svg.replaceChildren();
+  const v = fit(pts, 420);
+  if (badness) {
+    const ok = badness.filter((b) => b !== null), lo = Math.min(...ok), hi = Math.max(...ok);
+    tris.forEach((t, k) => el("polygon", {class: "tri", fill: colour(badness[k], lo, hi),
+      points: t.map((i) => sx(v, pts[i]) + "," + sy(v, pts[i])).join(" ")}, svg));
+  }
+  const d = [];
+  for (const t of tris) {
+    d.push("M" + t.map((i) => sx(v, pts[i]).toFixed(1) + "," + sy(v, pts[i]).toFixed(1))
+      .join("L") + "Z");
+  }
+  el("path", {d: d.join(""), fill: "none", stroke: "#1f4e79", "stroke-width": 0.4}, svg);
+}
+
+async function lot(body) {
+  say("computing the LOT...", true);
+  try {
+    const r = await api("/api/lot", ruleBody(body));
+    S.lastLot = body;
+    drawTriangulation($("lot-svg"), r.points, r.triangles, r.badness);
+    drawTriangulation($("dt-svg"), r.points, r.dt, null);
+    const c = r.compare;
+    $("lot-figures").textContent = "LOT(" + r.rule + ") left, DT right: " + r.points.length +
+      " points, " + r.triangles.length + " triangles, " + r.flips + " flips, " + r.status +
+      "; compare DT: " + c.edges_common + " of " + c.edges_b + " edges and " +
+      c.triangles_common + " of " + c.triangles_b + " triangles shared (" +
+      (100 * c.triangles_common / Math.max(1, c.triangles_b)).toFixed(2) + "% of triangles)";
+    say("", true);
+  } catch (e) { say(e.message); }
+}
+
+/* ---- export ---- */
+
+function download(name, type, text) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(new Blob([text], {type: type}));
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+}
+
+function svgText(id) {
+  const s = $(id).cloneNode(true);
+  s.setAttribute("xmlns", SVGNS);
+  return '<?xml version="1.0" encoding="UTF-8"?>\n' + s.outerHTML + "\n";
+}
+
+async function exportCommand() {
+  try {
+    const r = await api("/api/export", ruleBody(S.lastLot && S.lastLot.random &&
+      S.sites.length < 3 ? S.lastLot : {sites: S.sites}));
+    $("command").textContent = (r.csv ? "# sites.csv:\n" + r.csv : "") + r.commands.join("\n");
+    return r;
+  } catch (e) { say(e.message); return null; }
+}
+
+/* ---- start ---- */
+
+function fillNames(n) {
+  const opts = ["DT"].concat(n.shapes);
+  for (const j of n.joints) for (const m of n.measures) opts.push(m.name + "_" + j);
+  $("rule-names").replaceChildren(...opts.map((o) => {
+    const e = document.createElement("option"); e.value = o; return e;
+  }));
+  const add = (sel, list) => list.forEach((k) => {
+    const o = document.createElement("option"); o.value = o.textContent = k; sel.appendChild(o);
+  });
+  add($("sampler"), n.site_samplers.concat(n.point_samplers));
+  add($("lot-sampler"), n.point_samplers);
+  add($("preset"), Object.keys(n.presets));
+}
+
+function wire() {
+  const svg = $("sites");
+  svg.addEventListener("click", addSite);
+  window.addEventListener("mousemove", moveDrag);
+  window.addEventListener("mouseup", endDrag);
+  $("apply").onclick = refresh;
+  $("rule").addEventListener("change", refresh);
+  $("define").addEventListener("change", refresh);
+  $("step").onclick = step;
+  $("run").onclick = runToSink;
+  $("to-node0").onclick = () => goTo(0);
+  $("clear").onclick = () => setSites([], true);
+  $("preset").onchange = () => {
+    const p = S.names.presets[$("preset").value];
+    if (!p) return;
+    $("rule").value = p.rule; $("define").value = p.define || "";
+    setSites(p.sites, true);
+  };
+  $("sample").onclick = async () => {
+    try {
+      const r = await api("/api/sample", {kind: $("sampler").value,
+        n: Number($("sample-n").value), seed: Number($("sample-seed").value)});
+      setSites(r.sites, true);
+    } catch (e) { say(e.message); }
+  };
+  $("paste-open").onclick = () => { $("paste-box").hidden = !$("paste-box").hidden; };
+  $("paste-go").onclick = () => useText($("paste-text").value);
+  $("csv-file").onchange = async () => {
+    const f = $("csv-file").files[0];
+    if (f) useText(await f.text());
+  };
+  $("lot-go").onclick = () => lot({random: {n: Number($("lot-n").value),
+    sampler: $("lot-sampler").value, seed: Number($("lot-seed").value)}});
+  $("lot-sites").onclick = () => lot({sites: S.sites});
+  $("export-svg").onclick = () => download("triangulation.svg", "image/svg+xml", svgText("sites"));
+  $("export-graph").onclick = () => download("flipgraph.svg", "image/svg+xml", svgText("graph"));
+  $("export-csv").onclick = async () => {
+    const r = await exportCommand();
+    if (r && r.csv) download("sites.csv", "text/csv", r.csv);
+  };
+  $("export-cmd").onclick = exportCommand;
+}
+
+async function start() {
+  try {
+    S.names = await api("/api/names");
+  } catch (e) { say("the explorer's server does not answer: " + e.message); return; }
+  fillNames(S.names);
+  wire();
+  setSites([], true);
+}
+
+start();
