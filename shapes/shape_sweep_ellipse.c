@@ -180,5 +180,5 @@ static int shape_ell_above(const void *ctx, geom_point A, geom_point B, geom_poi
 
 void shape_sweep_ellipse(const shape_sweep_conic *q, shape_sweep *s) {
   *s = (shape_sweep){"ellipse", q, shape_sweep_closes, shape_ell_key_bounds,
-                     shape_sweep_conic_key_cmp, shape_ell_above, NULL};
+                     shape_sweep_conic_key_cmp, shape_ell_above, NULL, NULL, NULL, NULL};
 }

@@ -19,10 +19,27 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <gmp.h>
 #include "fliplab_config.h"
 #include "predicates.h"
 #include "shape.h"
+
+/* An event's key in exact integers, made once when the event is scheduled
+** and compared many times (the circle's, shape_sweep_circle.c: grids and
+** integer inputs send most heap comparisons here): a.x, d, s nx and N =
+** nlo + 2^64 nhi over the run's frame, the unit and origin in which every
+** site is a small integer. */
+typedef struct shape_sweep_ikey {
+  int64_t ax, d, snx;
+  uint64_t nlo, nhi;
+} shape_sweep_ikey;
+
+typedef struct shape_sweep_frame {
+  double scale;             /* 1/u0: every coordinate times it is an integer */
+  int64_t lo[2];            /* the smallest of those integers, x and y */
+  int shift;                /* the unit is 2^shift u0 */
+} shape_sweep_frame;
 
 typedef struct shape_sweep {
   const char *name;
@@ -48,6 +65,13 @@ typedef struct shape_sweep {
   ** equal keys of events that share two sites, which only a tie-break
   ** could order. */
   size_t *ties;
+  /* Optional (NULL: none): the integer keys.  frame: 1 and *f when every
+  ** one of the n sites fits one; ikey: the key of t (t == NULL: the site
+  ** key x) in frame f; ikey_cmp: the exact sign of key(a) - key(b), or 2
+  ** when key_cmp must decide. */
+  int (*frame)(const geom_point *p, size_t n, shape_sweep_frame *f);
+  void (*ikey)(const shape_sweep_frame *f, const geom_point *t, double x, shape_sweep_ikey *k);
+  int (*ikey_cmp)(const shape_sweep_ikey *a, const shape_sweep_ikey *b);
 } shape_sweep;
 
 /* The circle: the sweepline Delaunay triangulation (ctx unused). */
@@ -128,6 +152,17 @@ static inline int shape_sweep_conic_side(geom_point A, geom_point B, geom_point 
   if (o > 0 && lower) return 1;
   if (o < 0 && !lower) return 0;
   return 2;
+}
+
+/* The trailing zero bits of x != 0 (the integer stages' common unit). */
+static inline int shape_sweep_ctz(uint64_t x) {
+#if defined(__GNUC__)
+  return __builtin_ctzll(x);
+#else
+  int m = 0;
+  for (; (x & 1) == 0; x >>= 1) m++;
+  return m;
+#endif
 }
 
 /* ---- certified floating-point intervals -------------------------------- */

@@ -522,5 +522,5 @@ void shape_sweep_polygon(shape_sweep_poly *P, const shape *k, size_t *special,
       P->right = c;
   P->xr = k->v[P->right].x;
   *s = (shape_sweep){"polygon", P, shape_sweep_closes, shape_poly_key_bounds, shape_poly_key_cmp,
-                     shape_poly_above, special};
+                     shape_poly_above, special, NULL, NULL, NULL};
 }
