@@ -6,6 +6,7 @@
 ** circumscribing shape of a triangle, a homothet with its contact edges or
 ** a corner's rounding shape (shape_sweep_polygon.c's keys).
 */
+#include <stdatomic.h>
 #include "shape.h"
 #include "shape_internal.h"
 #include "shape_sweep_internal.h"
@@ -20,6 +21,16 @@ void shape_sweep_make(const shape *k, shape_sweep_ctx *c, size_t *special, shape
     shape_sweep_polygon(&c->poly, k, special, s);
     return;
   }
+}
+
+static atomic_ulong shape_sweep_gmp_count;
+
+unsigned long shape_sweep_gmp_calls(void) {
+  return atomic_load_explicit(&shape_sweep_gmp_count, memory_order_relaxed);
+}
+
+void shape_sweep_note_gmp(void) {
+  atomic_fetch_add_explicit(&shape_sweep_gmp_count, 1, memory_order_relaxed);
 }
 
 /* Consecutive a, b, c (bottom to top) close an event when c is strictly

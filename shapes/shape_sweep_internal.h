@@ -116,6 +116,11 @@ FLIPLAB_INTERNAL void shape_sweep_make(const shape *k, shape_sweep_ctx *c, size_
 
 /* ---- shared by the shapes' primitives -------------------------------- */
 
+/* Calls of the sweep's primitives that GMP decided, over the process (the
+** tests' guard on grids: none there for the circle); shape_sweep.c. */
+FLIPLAB_INTERNAL unsigned long shape_sweep_gmp_calls(void);
+FLIPLAB_INTERNAL void shape_sweep_note_gmp(void);
+
 /* Consecutive a, b, c (bottom to top) close an event when c is strictly
 ** right of a -> b: then the arcs' breakpoints converge (the circumscribing
 ** shape lies behind b).  The same for every shape. */

@@ -419,6 +419,7 @@ static int shape_poly_key_cmp(const void *ctx, const geom_point *t, double tx,
                               const geom_point *u, double ux) {
   const shape_sweep_poly *P = ctx;
   if (t == NULL && u == NULL) return (tx > ux) - (tx < ux);
+  shape_sweep_note_gmp();
   mpq_t q1, r1, q2, r2;
   mpq_inits(q1, r1, q2, r2, NULL);
   shape_poly_ev e1, e2;
@@ -451,6 +452,7 @@ static int shape_poly_round_top(const shape_sweep_poly *P, int c, geom_point p, 
   shape_poly_centre_iv(a, b, &hx, &hy);
   int s = shape_iv_sign(shape_iv_sub(shape_iv_mul(u[0], hx), shape_iv_mul(v[0], hy)));
   if (s != 2) return s;
+  shape_sweep_note_gmp();
   shape_mpq Q;
   shape_mpq_init(&Q);
   mpq_ptr uq[2], vq[2], aq[2], bq[2], hxq, hyq, d;
