@@ -279,11 +279,12 @@ static int sw_shared(const lot_sweep *S, const sw_event *a, const sw_event *b) {
 ** shape's comparison), then creation order. */
 static int sw_before_exact(const lot_sweep *S, const sw_event *a, const sw_event *b) {
   int c = S->framed ? S->s->ikey_cmp(&S->ik[a->node], &S->ik[b->node]) : 2;
-  if (c != 2) return c != 0 ? c < 0 : a->seq < b->seq;
-  geom_point ta[3], tb[3];
-  sw_points(S, a, ta);
-  sw_points(S, b, tb);
-  c = S->s->key_cmp(S->s->ctx, ta, 0, tb, 0);
+  if (c == 2) {
+    geom_point ta[3], tb[3];
+    sw_points(S, a, ta);
+    sw_points(S, b, tb);
+    c = S->s->key_cmp(S->s->ctx, ta, 0, tb, 0);
+  }
   if (c == 0 && S->s->ties != NULL && sw_shared(S, a, b) == 2) ++*S->s->ties;
   return c != 0 ? c < 0 : a->seq < b->seq;
 }
@@ -301,7 +302,7 @@ static int sw_before_site(const lot_sweep *S, const sw_event *e, double x) {
   if (e->lo > x) return 0;
   if (S->framed) {
     shape_sweep_ikey k;
-    S->s->ikey(&S->fr, NULL, x, &k);
+    S->s->ikey(S->s->ctx, &S->fr, NULL, x, &k);
     int c = S->s->ikey_cmp(&S->ik[e->node], &k);
     if (c != 2) return c <= 0;
   }
@@ -370,7 +371,7 @@ static int sw_schedule(lot_sweep *S, uint32_t b) {
   const geom_point t[3] = {nd[a].pt, nd[b].pt, nd[c].pt};
   if (!S->s->closes(S->s->ctx, t[0], t[1], t[2])) return 0;
   S->s->key_bounds(S->s->ctx, t, &e.lo, &e.hi);
-  if (S->framed) S->s->ikey(&S->fr, t, 0, &S->ik[b]);
+  if (S->framed) S->s->ikey(S->s->ctx, &S->fr, t, 0, &S->ik[b]);
   return sw_push(S, &e);
 }
 
@@ -546,7 +547,7 @@ int lot_sweep_run(lot_mesh *m, const shape_sweep *s, size_t *duplicates) {
   S.rng = GEOM_STATE_LOT_SWEEP;
   *duplicates = 0;
   m->nt = 0;
-  S.framed = s->frame != NULL && s->frame(m->p, m->np, &S.fr);
+  S.framed = s->frame != NULL && s->frame(s->ctx, m->p, m->np, &S.fr);
   int rc = -1;
   if (sw_hints_init(&S) != 0 || sw_node_new(&S, SW_NONE) != SW_HEAD) goto done;
   S.nd[SW_HEAD].h = SW_LEVELS;

@@ -123,13 +123,13 @@ static void shape_circle_key_bounds(const void *ctx, const geom_point t[3], doub
 /* The key of a's x (integer, in the unit) and the triangle of differences
 ** z[0..3] = b'x, b'y, c'x, c'y (z == NULL: a site's key). */
 static shape_sweep_ikey shape_circle_ik(int64_t ax, const int64_t *z) {
-  if (z == NULL) return (shape_sweep_ikey){ax, 1, 0, 0, 0};
+  if (z == NULL) return (shape_sweep_ikey){ax, 1, 0, 0, 0, 1};
   geom_i128 bx = z[0], by = z[1], cx = z[2], cy = z[3];
   geom_i128 D = 2 * (bx * cy - by * cx), bb = bx * bx + by * by, cc = cx * cx + cy * cy;
   geom_i128 nx = bb * cy - cc * by, ny = cc * bx - bb * cx;
   geom_u128 n = (geom_u128)(nx * nx + ny * ny);
   return (shape_sweep_ikey){ax, (int64_t)(D < 0 ? -D : D), (int64_t)(D < 0 ? -nx : nx),
-                            (uint64_t)n, (uint64_t)(n >> 64)};
+                            (uint64_t)n, (uint64_t)(n >> 64), 1};
 }
 
 static geom_u256 shape_circle_u256(geom_u128 a, geom_u128 b) {
@@ -200,56 +200,18 @@ static int shape_circle_key_int(const geom_point *t, double tx, const geom_point
   return shape_circle_ik_cmp(&k1, &k2);
 }
 
-/* The run's frame: 1/u (geom_int_scale of every coordinate) and the
-** smallest coordinates over u, then the common trailing zeros m of the
-** sites' offsets from them: every site is then an integer in [0, 2^20)
-** in the unit 2^m u, or the frame is refused (0).  O(n). */
-static int shape_circle_frame(const geom_point *p, size_t n, shape_sweep_frame *f) {
-  double big = 0;
-  for (size_t k = 0; k < n; k++) {
-    big = fabs(p[k].x) > big ? fabs(p[k].x) : big;
-    big = fabs(p[k].y) > big ? fabs(p[k].y) : big;
-  }
-  double s = geom_int_scale(&big, 1);
-  int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN}, c[2];
-  for (size_t k = 0; k < n; k++) {
-    const double v[2] = {p[k].x, p[k].y};
-    if (!geom_ints(v, 2, s, 0x1p62, c)) return 0;
-    for (int i = 0; i < 2; i++) {
-      lo[i] = c[i] < lo[i] ? c[i] : lo[i];
-      hi[i] = c[i] > hi[i] ? c[i] : hi[i];
-    }
-  }
-  uint64_t bits = 0;
-  for (size_t k = 0; k < n; k++) {
-    const double v[2] = {p[k].x, p[k].y};
-    geom_ints(v, 2, s, 0x1p62, c);
-    bits |= (uint64_t)(c[0] - lo[0]) | (uint64_t)(c[1] - lo[1]);
-  }
-  int m = bits != 0 ? shape_sweep_ctz(bits) : 0;
-  *f = (shape_sweep_frame){s, {lo[0], lo[1]}, m};
-  return (uint64_t)(hi[0] - lo[0]) >> m < (1u << 20) && (uint64_t)(hi[1] - lo[1]) >> m < (1u << 20);
-}
-
-/* Site p in the frame (one of the run's sites, or a site's x with y = lo). */
-static void shape_circle_in_frame(const shape_sweep_frame *f, geom_point p, int64_t z[2]) {
-  const double v[2] = {p.x, p.y};
-  geom_ints(v, 2, f->scale, 0x1p62, z);
-  z[0] = (int64_t)((uint64_t)(z[0] - f->lo[0]) >> f->shift);
-  z[1] = (int64_t)((uint64_t)(z[1] - f->lo[1]) >> f->shift);
-}
-
 /* t's key (t == NULL: the site key x) in the frame. */
-static void shape_circle_ikey(const shape_sweep_frame *f, const geom_point *t, double x,
-                              shape_sweep_ikey *k) {
+static void shape_circle_ikey(const void *ctx, const shape_sweep_frame *f, const geom_point *t,
+                              double x, shape_sweep_ikey *k) {
+  (void)ctx;
   int64_t a[2], b[2], c[2];
-  shape_circle_in_frame(f, t != NULL ? t[0] : (geom_point){x, 0}, a);
+  shape_sweep_in_frame(f, t != NULL ? t[0] : (geom_point){x, 0}, a);
   if (t == NULL) {
     *k = shape_circle_ik(a[0], NULL);
     return;
   }
-  shape_circle_in_frame(f, t[1], b);
-  shape_circle_in_frame(f, t[2], c);
+  shape_sweep_in_frame(f, t[1], b);
+  shape_sweep_in_frame(f, t[2], c);
   const int64_t z[4] = {b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]};
   *k = shape_circle_ik(a[0], z);
 }
@@ -336,7 +298,7 @@ const shape_sweep shape_sweep_circle = {"circle", NULL, shape_sweep_closes,
                                         shape_circle_key_bounds, shape_circle_key_cmp,
                                         shape_circle_above, NULL,
 #if GEOM_HAVE_INT128
-                                        shape_circle_frame, shape_circle_ikey,
+                                        shape_sweep_frame_make, shape_circle_ikey,
                                         shape_circle_ik_cmp
 #else
                                         NULL, NULL, NULL

@@ -61,10 +61,10 @@ static void ti_cmp(const geom_point *t, double tx, const geom_point *u, double u
     if (p == NULL) pts[n++] = (geom_point){k ? ux : tx, 0};
   }
   shape_sweep_frame f;
-  if (!s->frame(pts, n, &f)) return;
+  if (!s->frame(s->ctx, pts, n, &f)) return;
   shape_sweep_ikey a, b;
-  s->ikey(&f, t, tx, &a);
-  s->ikey(&f, u, ux, &b);
+  s->ikey(s->ctx, &f, t, tx, &a);
+  s->ikey(s->ctx, &f, u, ux, &b);
   int c = s->ikey_cmp(&a, &b);
   if (c != 2 && c != want) fail_msg("ikey_cmp %d, GMP %d", c, want);
   ti_frame_cmps += c != 2;
