@@ -10,7 +10,8 @@
 **    ones, translates (equal keys), triangles of one circle through many
 **    integer points (equal keys with other centres' formulas), circles of
 **    different centres and radii with equal keys, against sites' x, all
-**    scaled by powers of two, by 3, and moved far from the origin.
+**    scaled by powers of two, by 3, and moved far from the origin.  A
+**    polygon's integer keys (K with integer corners) against its key_cmp.
 ** 2. The sweep's triangles equal the incremental algorithm's, index for
 **    index, for DT and a shape of every kind (square, diamond, hexagon,
 **    triangle, pentagon, rectangle, ellipse): many small seeded sets
@@ -18,8 +19,9 @@
 **    duplicate-heavy draws from small grids) and a few medium ones.
 ** 3. Guards: the DT sweep of the 100 x 100 grid makes no GMP call (neither
 **    the sweep's primitives nor the predicates) and no flip after the
-**    sweep; the CDT of a rotated grid (sampler_pslg_grid) makes no GMP
-**    call.
+**    sweep, nor do the sweeps of four polygons with integer corners on the
+**    30 x 30 grid; the CDT of a rotated grid (sampler_pslg_grid) makes no
+**    GMP call.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -35,6 +37,7 @@
 #include "lot.h"
 #include "rule.h"
 #include "sampler.h"
+#include "shape.h"
 #include "shape_sweep_internal.h"
 #include "testutil.h"
 
@@ -155,6 +158,51 @@ static void test_equal_keys(void **state) {
   ti_pair_scaled(r5, r4);
   ti_pair_scaled(r4, r1);
   ti_pair_scaled(r5, r1);
+}
+
+/* A polygon's integer keys (homothets of K with integer corners, over
+** the frame of the six sites) against its key_cmp (GMP), on random
+** integer triangles and their translates, for four polygons. */
+static void test_polygon_keys(void **state) {
+  (void)state;
+  static const char *const specs[] = {"square", "diamond", "triangle", "poly:0 0;2 0;2 1;0 1"};
+  sampler_rng g;
+  sampler_seed(&g, 36, 0);
+  size_t known = 0, all = 0;
+  for (size_t i = 0; i < sizeof specs / sizeof *specs; i++) {
+    shape *k;
+    char err[256];
+    if (shape_parse(specs[i], &k, err, sizeof err) != 0) fail_msg("%s: %s", specs[i], err);
+    shape_sweep_ctx c;
+    size_t special = 0;
+    shape_sweep s;
+    shape_sweep_make(k, &c, &special, &s);
+    assert_non_null(s.frame);
+    for (int n = 0; n < 2000; n++) {
+      geom_point pts[6];
+      int64_t r = n % 2 ? 3 : 40;
+      for (int j = 0; j < 6; j++) pts[j] = (geom_point){ti_int(&g, r), ti_int(&g, r)};
+      if (n % 3 == 0)
+        for (int j = 3; j < 6; j++) pts[j] = (geom_point){pts[j - 3].x, pts[j - 3].y + 5};
+      if (!s.closes(s.ctx, pts[0], pts[1], pts[2]) || !s.closes(s.ctx, pts[3], pts[4], pts[5]))
+        continue;
+      shape_sweep_frame f;
+      assert_true(s.frame(s.ctx, pts, 6, &f));
+      shape_sweep_ikey a, b;
+      s.ikey(s.ctx, &f, pts, 0, &a);
+      s.ikey(s.ctx, &f, pts + 3, 0, &b);
+      int want = s.key_cmp(s.ctx, pts, 0, pts + 3, 0), got = s.ikey_cmp(&a, &b);
+      all++;
+      if (got == 2) continue;
+      known++;
+      if (got != want) fail_msg("%s: ikey_cmp %d, key_cmp %d", specs[i], got, want);
+      s.ikey(s.ctx, &f, NULL, pts[4].x, &b);
+      assert_int_equal(s.ikey_cmp(&a, &b), s.key_cmp(s.ctx, pts, 0, NULL, pts[4].x));
+    }
+    shape_free(k);
+  }
+  printf("polygon keys: %zu of %zu pairs compared in integers\n", known, all);
+  assert_true(known > all / 2);
 }
 
 /* ---- 2. the sweep against the incremental algorithm -------------------- */
@@ -297,6 +345,25 @@ static void test_grid_guard(void **state) {
   free(p);
 }
 
+/* Polygons with integer corners on the 30 x 30 grid: the sweep's own
+** primitives (keys, "above" tests) make no GMP call; the shapes' contact
+** tests are shapes/'s, not counted here. */
+static void test_polygon_guard(void **state) {
+  (void)state;
+  geom_point p[900];
+  sampler_points(SAMPLER_GRID, 1, 900, p);
+  static const char *const names[] = {"ES:square", "ES:diamond", "ES:triangle",
+                                      "ES:poly:0 0;2 0;2 1;0 1"};
+  for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
+    unsigned long g0 = shape_sweep_gmp_calls();
+    size_t nt;
+    free(ti_build(names[i], p, 900, LOT_SWEEP, &nt, NULL));
+    printf("30 x 30 grid, %s sweep: %lu GMP calls of the sweep\n", names[i],
+           shape_sweep_gmp_calls() - g0);
+    assert_int_equal(shape_sweep_gmp_calls() - g0, 0);
+  }
+}
+
 /* The CDT of a rotated grid with segments along its rows and columns: no
 ** GMP call either (the predicates' integer stage decides). */
 static void test_cdt_grid_guard(void **state) {
@@ -326,8 +393,10 @@ static void test_cdt_grid_guard(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_random_keys),  cmocka_unit_test(test_equal_keys),
+    cmocka_unit_test(test_polygon_keys),
     cmocka_unit_test(test_small_sets),   cmocka_unit_test(test_medium_sets),
-    cmocka_unit_test(test_grid_guard),   cmocka_unit_test(test_cdt_grid_guard),
+    cmocka_unit_test(test_grid_guard),   cmocka_unit_test(test_polygon_guard),
+    cmocka_unit_test(test_cdt_grid_guard),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
