@@ -31,9 +31,9 @@
 ** nlo + 2^64 nhi over the run's frame, the unit and origin in which every
 ** site is a small integer. */
 typedef struct shape_sweep_ikey {
-  int64_t ax, d, snx;       /* a polygon's homothet: a.x, D, 0 */
-  uint64_t nlo, nhi;        /* a polygon's homothet: its numerator, two's complement */
-  int known;                /* 0: a key the record cannot compare (a polygon's corner) */
+  int64_t ax, d, snx;       /* a polygon's integer key: a.x, D, 0 (shape_sweep_polygon.c) */
+  uint64_t nlo, nhi;        /* a polygon's integer key: its numerator, two's complement */
+  int known;                /* 1; a polygon's translate record 2 (d, snx, nlo: its words) */
 } shape_sweep_ikey;
 
 typedef struct shape_sweep_frame {

@@ -353,9 +353,15 @@ static void shape_poly_corner_q(const shape_sweep_poly *P, const shape_poly_ev *
 ** the numerator N = det Mx + xr det Ms < 2^68 (__int128).  Two keys then
 ** compare as (ax1 - ax2) D1 D2 + N1 D2 - N2 D1 times the sign of D1 D2,
 ** below 2^20 2^92 + 2 2^114 < 2^116.  A site's key x is N = 0, D = 1.
-** Corners' and infinite keys are left to key_cmp (known = 0).  The
-** sweep makes each event's record once (ikey) and compares records
-** (ikey_cmp) before it compares points. */
+** Other keys (corners', infinite ones, every key of a K with other
+** corners: the hexagon's are irrational numbers rounded) get a translate
+** record (known = 2): the kind, the contact edges or corner, and the
+** triangle's differences over the frame.  Keys are functions of those and
+** of a.x alone (the exact classification and keys are translation
+** invariant), so two equal records differ by a1.x - a2.x: the grid's
+** columns of equal keys, compared without GMP; other pairs are left to
+** key_cmp.  The sweep makes each event's record once (ikey) and compares
+** records (ikey_cmp) before it compares points. */
 #if GEOM_HAVE_INT128
 static geom_i128 shape_poly_det3_i(geom_i128 m[3][3]) {
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
@@ -401,11 +407,24 @@ static void shape_poly_ikey(const void *ctx, const shape_sweep_frame *f, const g
   }
   shape_poly_ev ev;
   shape_poly_classify(P, t, &ev);   /* key_bounds's, from the memo */
-  *k = ev.kind == SHAPE_PK_HOMOTHET ? shape_poly_hom_i(P, f, &ev) : (shape_sweep_ikey){0};
+  if (P->ints && ev.kind == SHAPE_PK_HOMOTHET) {
+    *k = shape_poly_hom_i(P, f, &ev);
+    return;
+  }
+  int64_t z[3][2];   /* in t's order: the same differences for translates */
+  for (int r = 0; r < 3; r++) shape_sweep_in_frame(f, t[r], z[r]);
+  uint64_t tag = (uint64_t)ev.kind;
+  const int idx[4] = {ev.e[0], ev.e[1], ev.e[2], ev.corner};
+  for (int i = 0; i < 4; i++) tag = tag << 12 | ((uint64_t)idx[i] & 0xfff);
+  uint64_t d1 = (uint64_t)(z[1][0] - z[0][0]) << 32 | (uint32_t)(z[1][1] - z[0][1]);
+  uint64_t d2 = (uint64_t)(z[2][0] - z[0][0]) << 32 | (uint32_t)(z[2][1] - z[0][1]);
+  *k = (shape_sweep_ikey){z[0][0], (int64_t)tag, (int64_t)d1, d2, 0, 2};
 }
 
 static int shape_poly_ikey_cmp(const shape_sweep_ikey *a, const shape_sweep_ikey *b) {
-  if (!a->known || !b->known) return 2;
+  if (a->known == 2 && b->known == 2 && a->d == b->d && a->snx == b->snx && a->nlo == b->nlo)
+    return (a->ax > b->ax) - (a->ax < b->ax);   /* translates */
+  if (a->known != 1 || b->known != 1) return 2;
   geom_i128 na = (geom_i128)((geom_u128)a->nhi << 64 | a->nlo);
   geom_i128 nb = (geom_i128)((geom_u128)b->nhi << 64 | b->nlo);
   geom_i128 v = (geom_i128)(a->ax - b->ax) * a->d * b->d + na * b->d - nb * a->d;
@@ -413,12 +432,6 @@ static int shape_poly_ikey_cmp(const shape_sweep_ikey *a, const shape_sweep_ikey
   return (a->d < 0) != (b->d < 0) ? -s : s;
 }
 
-/* The integer keys need K's corners integers within 2^10. */
-static int shape_poly_frame(const void *ctx, const geom_point *p, size_t n,
-                            shape_sweep_frame *f) {
-  const shape_sweep_poly *P = ctx;
-  return P->ints && shape_sweep_frame_make(ctx, p, n, f);
-}
 #endif
 
 static int shape_poly_int_corners(const shape *k) {
@@ -637,7 +650,7 @@ void shape_sweep_polygon(shape_sweep_poly *P, const shape *k, size_t *special,
   *s = (shape_sweep){"polygon", P, shape_sweep_closes, shape_poly_key_bounds, shape_poly_key_cmp,
                      shape_poly_above, special,
 #if GEOM_HAVE_INT128
-                     shape_poly_frame, shape_poly_ikey, shape_poly_ikey_cmp
+                     shape_sweep_frame_make, shape_poly_ikey, shape_poly_ikey_cmp
 #else
                      NULL, NULL, NULL
 #endif
