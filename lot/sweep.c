@@ -41,6 +41,11 @@
 ** a true status), and this one is fixed, so cocircular sites give one
 ** reproducible valid triangulation.  The "above" test and the closing test
 ** are exact (shapes/shape_sweep_*.c), so every decision is the exact one.
+** Grids make most keys that meet in the heap exactly equal: when the shape
+** has integer keys and every site fits its frame (integers in one unit,
+** found in O(n) at the start), each event's key is also made once as an
+** integer record (ik, per node beside hpos) and records are compared
+** before points, so those comparisons never reach GMP.
 **
 ** Adjacency: every edge made (by a site event, or as the new edge AC of a
 ** circumshape event) has a record with two slots, one per side; a boundary

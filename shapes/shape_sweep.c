@@ -43,6 +43,7 @@ void shape_sweep_note_gmp(void) {
 int shape_sweep_frame_make(const void *ctx, const geom_point *p, size_t n,
                            shape_sweep_frame *f) {
   (void)ctx;
+  if (n == 0) return 0;
   double big = 0;
   for (size_t k = 0; k < n; k++) {
     big = fabs(p[k].x) > big ? fabs(p[k].x) : big;
