@@ -12,7 +12,11 @@
 ** shared machine the paired ratios, and the CPU ones above all, are the
 ** steady figures).  Times cover lot_build only (validation, ordering,
 ** triangulation, flips).  Rules are separated by commas, so a shape's
-** numbers take blanks (ES:ellipse:2 1 0.3).
+** numbers take blanks (ES:ellipse:2 1 0.3).  With a sampler other than
+** uniform, each pair is joined by the sweep of N uniform points (the same
+** seed), and a third row gives the sweep's time on the sampler's points
+** over its time on uniform ones (paired, median): issue 35's measure of
+** special position (a grid within 3 times uniform).
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,12 +44,19 @@ static void bench_build(const geom_point *p, size_t n, const rule *r, lot_algori
   lot_free(L);
 }
 
-/* RUNS paired runs of rule r; one table row per algorithm. */
-static void bench_rule(const geom_point *p, size_t n, const rule *r, int runs) {
-  double iw[16], ic[16], sw[16], sc[16], rw[16], rc[16];
+/* RUNS paired runs of rule r on p; one table row per algorithm, and one
+** for the sweep on the uniform points u (NULL: none). */
+static void bench_rule(const geom_point *p, const geom_point *u, size_t n, const rule *r,
+                       int runs) {
+  double iw[16], ic[16], sw[16], sc[16], rw[16], rc[16], uw[16], uc[16], vw[16], vc[16];
   for (int k = 0; k < runs; k++) {
     bench_build(p, n, r, LOT_INCREMENTAL, &iw[k], &ic[k]);
     bench_build(p, n, r, LOT_SWEEP, &sw[k], &sc[k]);
+    if (u != NULL) {
+      bench_build(u, n, r, LOT_SWEEP, &uw[k], &uc[k]);
+      vw[k] = sw[k] / uw[k];
+      vc[k] = sc[k] / uc[k];
+    }
     rw[k] = sw[k] / iw[k];
     rc[k] = sc[k] / ic[k];
   }
@@ -54,6 +65,10 @@ static void bench_rule(const geom_point *p, size_t n, const rule *r, int runs) {
   printf("| %s | sweep | %.3f | %.3f | wall %.2f, CPU %.2f |\n", rule_name(r),
          bench_median(sw, runs), bench_median(sc, runs), bench_median(rw, runs),
          bench_median(rc, runs));
+  if (u != NULL)   /* the sweep on uniform points, and these points' time over it */
+    printf("| %s | sweep, uniform points | %.3f | %.3f | these points / uniform: wall %.2f, "
+           "CPU %.2f |\n", rule_name(r), bench_median(uw, runs), bench_median(uc, runs),
+           bench_median(vw, runs), bench_median(vc, runs));
   fflush(stdout);
 }
 
@@ -67,9 +82,13 @@ int main(int argc, char **argv) {
     fprintf(stderr, "usage: bench_lot_sweep [N >= 3 [RUNS 1..15 [SEED [SAMPLER [RULES]]]]]\n");
     return 2;
   }
-  geom_point *p = malloc(n * sizeof *p);
+  geom_point *p = malloc(n * sizeof *p), *u = NULL;
   if (p == NULL) return 1;
   sampler_points((sampler_points_kind)kind, seed, n, p);
+  if (kind != SAMPLER_UNIFORM) {
+    if ((u = malloc(n * sizeof *u)) == NULL) return 1;
+    sampler_points(SAMPLER_UNIFORM, seed, n, u);
+  }
   printf("# bench_lot_sweep: %zu %s points (seed %llu), %d paired runs\n", n,
          sampler_points_name((sampler_points_kind)kind), (unsigned long long)seed, runs);
   printf("(load average at start: %.2f on %ld cores)\n\n", bench_load(),
@@ -86,10 +105,11 @@ int main(int argc, char **argv) {
       fprintf(stderr, "bench_lot_sweep: %s\n", err);
       return 2;
     }
-    bench_rule(p, n, &r, runs);
+    bench_rule(p, u, n, &r, runs);
     s += len + (comma != NULL);
   }
   printf("(load average at end: %.2f)\n", bench_load());
   free(p);
+  free(u);
   return 0;
 }

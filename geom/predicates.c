@@ -35,6 +35,7 @@
 #include <gmp.h>
 #include "fliplab_config.h"
 #include "predicates.h"
+#include "geom_int_internal.h"
 
 /* GEOM_EPS, and why tiny differences skip the filter: see predicates.h. */
 
@@ -184,17 +185,13 @@ static int geom_lifted_sign_q(geom_point a, geom_point b, geom_point c, geom_poi
 ** at least 2^-732, normal, or overflows to infinity, which the bound test
 ** refuses.  Where the compiler has no __int128 the stage is skipped and the
 ** expansions decide. */
-#if defined(__SIZEOF_INT128__)
-#define GEOM_HAVE_INT128 1
-__extension__ typedef __int128 geom_i128;
-#else
-#define GEOM_HAVE_INT128 0
-#endif
+/* geom_i128, geom_u128 and geom_u256 where the compiler has __int128:
+** geom_int_internal.h. */
 
 /* 1/u = 2^(62 - e) for the n values v (1 when all are 0), e read off the
 ** exponent field of the largest (a normal double: 2^(e-1) <= m < 2^e for
 ** the biased exponent e + 1022), 1/u made from its own exponent field. */
-static double geom_int_scale(const double *v, int n) {
+double geom_int_scale(const double *v, int n) {
   double m = 0;
   for (int i = 0; i < n; i++) m = fabs(v[i]) > m ? fabs(v[i]) : m;
   if (m == 0) return 1;
@@ -208,7 +205,7 @@ static double geom_int_scale(const double *v, int n) {
 
 /* z[i] = v[i] s for i < n when every one is an integer of magnitude below
 ** lim (<= 2^62): 1; else 0. */
-static int geom_ints(const double *v, int n, double s, double lim, int64_t *z) {
+int geom_ints(const double *v, int n, double s, double lim, int64_t *z) {
   for (int i = 0; i < n; i++) {
     double t = v[i] * s;
     if (!(fabs(t) < lim) || t != (double)(int64_t)t) return 0;
@@ -235,17 +232,13 @@ static int geom_orient_int(const double d[4], int *sign) {
 }
 
 #if GEOM_HAVE_INT128
-/* Unsigned 256-bit numbers, the magnitudes of the lifted determinant's
-** products: four 64-bit limbs, the lowest first. */
-__extension__ typedef unsigned __int128 geom_u128;
-typedef struct geom_u256 {
-  uint64_t w[4];
-} geom_u256;
+/* geom_u256: the magnitudes of the lifted determinant's products
+** (geom_int_internal.h). */
 
 /* r += a b, for a, b below 2^127 whose products, summed into r, stay below
 ** 2^256 (the caller's bound): the four 64 x 64-bit partial products,
 ** added with their carries. */
-static void geom_u256_addmul(geom_u256 *r, geom_u128 a, geom_u128 b) {
+void geom_u256_addmul(geom_u256 *r, geom_u128 a, geom_u128 b) {
   uint64_t a0 = (uint64_t)a, a1 = (uint64_t)(a >> 64), b0 = (uint64_t)b, b1 = (uint64_t)(b >> 64);
   geom_u128 p00 = (geom_u128)a0 * b0, p01 = (geom_u128)a0 * b1;
   geom_u128 p10 = (geom_u128)a1 * b0, p11 = (geom_u128)a1 * b1;
@@ -261,7 +254,7 @@ static void geom_u256_addmul(geom_u256 *r, geom_u128 a, geom_u128 b) {
 }
 
 /* The sign of a - b. */
-static int geom_u256_cmp(const geom_u256 *a, const geom_u256 *b) {
+int geom_u256_cmp(const geom_u256 *a, const geom_u256 *b) {
   for (int i = 3; i >= 0; i--)
     if (a->w[i] != b->w[i]) return a->w[i] > b->w[i] ? 1 : -1;
   return 0;

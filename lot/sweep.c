@@ -41,6 +41,11 @@
 ** a true status), and this one is fixed, so cocircular sites give one
 ** reproducible valid triangulation.  The "above" test and the closing test
 ** are exact (shapes/shape_sweep_*.c), so every decision is the exact one.
+** Grids make most keys that meet in the heap exactly equal: when the shape
+** has integer keys and every site fits its frame (integers in one unit,
+** found in O(n) at the start), each event's key is also made once as an
+** integer record (ik, per node beside hpos) and records are compared
+** before points, so those comparisons never reach GMP.
 **
 ** Adjacency: every edge made (by a site event, or as the new edge AC of a
 ** circumshape event) has a record with two slots, one per side; a boundary
@@ -96,6 +101,10 @@ typedef struct lot_sweep {
   size_t nh, hcap;
   uint32_t *hpos;           /* per node: its event's place in hp (SW_NONE: none) */
   size_t hposcap;
+  shape_sweep_ikey *ik;     /* per node: its event's integer key (framed runs) */
+  size_t ikcap;
+  shape_sweep_frame fr;
+  int framed;               /* every site fits the shape's integer frame */
   uint32_t seq;
   uint64_t rng;
   sw_hint *hint;            /* per band of y: a node lately seen there */
@@ -124,7 +133,8 @@ static uint32_t sw_node_new(lot_sweep *S, uint32_t v) {
   } else {
     size_t cap = S->ndcap;
     if (sw_grow((void **)&S->nd, &cap, (size_t)S->nnd + 1, sizeof *S->nd) != 0
-        || sw_grow((void **)&S->hpos, &S->hposcap, (size_t)S->nnd + 1, sizeof *S->hpos) != 0)
+        || sw_grow((void **)&S->hpos, &S->hposcap, (size_t)S->nnd + 1, sizeof *S->hpos) != 0
+        || (S->framed && sw_grow((void **)&S->ik, &S->ikcap, (size_t)S->nnd + 1, sizeof *S->ik)))
       return SW_NONE;
     S->ndcap = (uint32_t)cap;
     x = S->nnd++;
@@ -269,13 +279,17 @@ static int sw_shared(const lot_sweep *S, const sw_event *a, const sw_event *b) {
   return n;
 }
 
-/* Does event a come before b, their bounds overlapping?  Exact keys, then
-** creation order. */
+/* Does event a come before b, their bounds overlapping?  Exact keys (the
+** integer keys made when the events were, in a framed run, else the
+** shape's comparison), then creation order. */
 static int sw_before_exact(const lot_sweep *S, const sw_event *a, const sw_event *b) {
-  geom_point ta[3], tb[3];
-  sw_points(S, a, ta);
-  sw_points(S, b, tb);
-  int c = S->s->key_cmp(S->s->ctx, ta, 0, tb, 0);
+  int c = S->framed ? S->s->ikey_cmp(&S->ik[a->node], &S->ik[b->node]) : 2;
+  if (c == 2) {
+    geom_point ta[3], tb[3];
+    sw_points(S, a, ta);
+    sw_points(S, b, tb);
+    c = S->s->key_cmp(S->s->ctx, ta, 0, tb, 0);
+  }
   if (c == 0 && S->s->ties != NULL && sw_shared(S, a, b) == 2) ++*S->s->ties;
   return c != 0 ? c < 0 : a->seq < b->seq;
 }
@@ -291,6 +305,12 @@ static int sw_before(const lot_sweep *S, const sw_event *a, const sw_event *b) {
 static int sw_before_site(const lot_sweep *S, const sw_event *e, double x) {
   if (e->hi < x) return 1;
   if (e->lo > x) return 0;
+  if (S->framed) {
+    shape_sweep_ikey k;
+    S->s->ikey(S->s->ctx, &S->fr, NULL, x, &k);
+    int c = S->s->ikey_cmp(&S->ik[e->node], &k);
+    if (c != 2) return c <= 0;
+  }
   geom_point t[3];
   sw_points(S, e, t);
   return S->s->key_cmp(S->s->ctx, t, 0, NULL, x) <= 0;
@@ -356,6 +376,7 @@ static int sw_schedule(lot_sweep *S, uint32_t b) {
   const geom_point t[3] = {nd[a].pt, nd[b].pt, nd[c].pt};
   if (!S->s->closes(S->s->ctx, t[0], t[1], t[2])) return 0;
   S->s->key_bounds(S->s->ctx, t, &e.lo, &e.hi);
+  if (S->framed) S->s->ikey(S->s->ctx, &S->fr, t, 0, &S->ik[b]);
   return sw_push(S, &e);
 }
 
@@ -531,6 +552,7 @@ int lot_sweep_run(lot_mesh *m, const shape_sweep *s, size_t *duplicates) {
   S.rng = GEOM_STATE_LOT_SWEEP;
   *duplicates = 0;
   m->nt = 0;
+  S.framed = s->frame != NULL && s->frame(s->ctx, m->p, m->np, &S.fr);
   int rc = -1;
   if (sw_hints_init(&S) != 0 || sw_node_new(&S, SW_NONE) != SW_HEAD) goto done;
   S.nd[SW_HEAD].h = SW_LEVELS;
@@ -546,6 +568,7 @@ done:
   free(S.ec);
   free(S.hp);
   free(S.hpos);
+  free(S.ik);
   free(S.hint);
   return rc;
 }

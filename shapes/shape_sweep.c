@@ -6,6 +6,10 @@
 ** circumscribing shape of a triangle, a homothet with its contact edges or
 ** a corner's rounding shape (shape_sweep_polygon.c's keys).
 */
+#include <math.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include "geom_int_internal.h"
 #include "shape.h"
 #include "shape_internal.h"
 #include "shape_sweep_internal.h"
@@ -20,6 +24,60 @@ void shape_sweep_make(const shape *k, shape_sweep_ctx *c, size_t *special, shape
     shape_sweep_polygon(&c->poly, k, special, s);
     return;
   }
+}
+
+static atomic_ulong shape_sweep_gmp_count;
+
+unsigned long shape_sweep_gmp_calls(void) {
+  return atomic_load_explicit(&shape_sweep_gmp_count, memory_order_relaxed);
+}
+
+void shape_sweep_note_gmp(void) {
+  atomic_fetch_add_explicit(&shape_sweep_gmp_count, 1, memory_order_relaxed);
+}
+
+/* The run's frame: 1/u (geom_int_scale of every coordinate) and the
+** smallest coordinates over u, then the common trailing zeros m of the
+** sites' offsets from them: every site is then an integer in [0, 2^20)
+** in the unit 2^m u, or the frame is refused (0).  O(n). */
+int shape_sweep_frame_make(const void *ctx, const geom_point *p, size_t n,
+                           shape_sweep_frame *f) {
+  (void)ctx;
+  if (n == 0) return 0;
+  double big = 0;
+  for (size_t k = 0; k < n; k++) {
+    big = fabs(p[k].x) > big ? fabs(p[k].x) : big;
+    big = fabs(p[k].y) > big ? fabs(p[k].y) : big;
+  }
+  double s = geom_int_scale(&big, 1);
+  int64_t lo[2] = {INT64_MAX, INT64_MAX}, hi[2] = {INT64_MIN, INT64_MIN}, c[2];
+  for (size_t k = 0; k < n; k++) {
+    const double v[2] = {p[k].x, p[k].y};
+    if (!geom_ints(v, 2, s, 0x1p62, c)) return 0;
+    for (int i = 0; i < 2; i++) {
+      lo[i] = c[i] < lo[i] ? c[i] : lo[i];
+      hi[i] = c[i] > hi[i] ? c[i] : hi[i];
+    }
+  }
+  uint64_t bits = 0;
+  for (size_t k = 0; k < n; k++) {
+    const double v[2] = {p[k].x, p[k].y};
+    geom_ints(v, 2, s, 0x1p62, c);
+    bits |= (uint64_t)(c[0] - lo[0]) | (uint64_t)(c[1] - lo[1]);
+  }
+  int m = bits != 0 ? shape_sweep_ctz(bits) : 0;
+  *f = (shape_sweep_frame){s, {lo[0], lo[1]}, m};
+  uint64_t w = (uint64_t)(hi[0] - lo[0]) | (uint64_t)(hi[1] - lo[1]);
+  return (w >> m) < (1u << 20);
+}
+
+/* Site p in the frame (one of the run's sites, or a site's x with y = 0,
+** whose z[1] is then meaningless). */
+void shape_sweep_in_frame(const shape_sweep_frame *f, geom_point p, int64_t z[2]) {
+  const double v[2] = {p.x, p.y};
+  geom_ints(v, 2, f->scale, 0x1p62, z);
+  z[0] = (int64_t)((uint64_t)(z[0] - f->lo[0]) >> f->shift);
+  z[1] = (int64_t)((uint64_t)(z[1] - f->lo[1]) >> f->shift);
 }
 
 /* Consecutive a, b, c (bottom to top) close an event when c is strictly

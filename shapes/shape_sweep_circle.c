@@ -11,6 +11,8 @@
 ** circle's form x^2 + y^2.
 */
 #include <math.h>
+#include <stdint.h>
+#include "geom_int_internal.h"
 #include "shape_sweep_internal.h"
 
 static const shape_sweep_conic shape_circle_form = {1, 0, 1};
@@ -88,13 +90,147 @@ static void shape_circle_key_bounds(const void *ctx, const geom_point t[3], doub
   shape_iv_bounds(k, lo, hi);
 }
 
-/* Exact: both keys as q + sqrt(r2), compared by shape_sweep_sqrt_cmp, in
-** the ellipses' arithmetic with the circle's form (the circumcentre is the
-** centre formula with |.|^2 for Q).  The sweep calls it only when the
-** certified bounds of the two keys overlap. */
+/* ---- the integer stage of the key comparison --------------------------
+**
+** Grids and integer coordinates make many keys exactly equal (every unit
+** square of a grid's column has its column's key), which no bound can
+** separate: in GMP they took nearly all of a grid's sweep.  With sites
+** a, b, c of an event, s the sign and d = |D| of D = 2 (b'x c'y - b'y c'x),
+** nx, ny as above and N = nx^2 + ny^2, the key is a.x + (s nx + sqrt N) / d,
+** so for two keys (a site's key x: d = 1, nx = N = 0, a.x = x)
+**   d1 d2 (key1 - key2) = P + sqrt A - sqrt B,
+**   P = d1 d2 (a1.x - a2.x) + d2 s1 nx1 - d1 s2 nx2,  A = d2^2 N1,  B = d1^2 N2.
+** When the coordinates are integers in one unit u (a power of two), each
+** triangle's differences b - a, c - a below 2^20 and a1.x - a2.x below 2^40
+** in it, all of it is exact in integers: |D| < 2^42, |nx|, |ny| < 2^62
+** (|b'|^2 < 2^41 times a difference), N < 2^125, d^2 < 2^84, so A, B <
+** 2^209 (geom_u256); |P| < 2^124 + 2^105 < 2^125 (__int128).  The sign of
+** P + sqrt A - sqrt B is then P's when A - B has the same sign or is 0,
+** A - B's when P = 0 (equal keys: both 0), and with a site's key (A or B
+** 0) one squaring settles the rest: sign(A - P^2) or sign(P^2 - B) (P^2 <
+** 2^250).  Two events whose signs differ need a second squaring (2^420):
+** that rare case, and inputs beyond the bounds, go to GMP.  Scaling every
+** coordinate by 1/u multiplies both keys by it, and translating them
+** moves both alike, so the sign is the same.
+**
+** The unit comes either from the two keys' own coordinates (key_cmp,
+** geom_int_internal.h's unit coarsened by the common trailing zeros of the
+** differences), or once for the whole run (the frame: every site an
+** integer below 2^20 in one unit, relative to the smallest coordinates),
+** and then each event's key is made once in integers (shape_sweep_ikey)
+** and compared many times. */
+#if GEOM_HAVE_INT128
+/* The key of a's x (integer, in the unit) and the triangle of differences
+** z[0..3] = b'x, b'y, c'x, c'y (z == NULL: a site's key). */
+static shape_sweep_ikey shape_circle_ik(int64_t ax, const int64_t *z) {
+  if (z == NULL) return (shape_sweep_ikey){ax, 1, 0, 0, 0, 1};
+  geom_i128 bx = z[0], by = z[1], cx = z[2], cy = z[3];
+  geom_i128 D = 2 * (bx * cy - by * cx), bb = bx * bx + by * by, cc = cx * cx + cy * cy;
+  geom_i128 nx = bb * cy - cc * by, ny = cc * bx - bb * cx;
+  geom_u128 n = (geom_u128)(nx * nx + ny * ny);
+  return (shape_sweep_ikey){ax, (int64_t)(D < 0 ? -D : D), (int64_t)(D < 0 ? -nx : nx),
+                            (uint64_t)n, (uint64_t)(n >> 64), 1};
+}
+
+static geom_u256 shape_circle_u256(geom_u128 a, geom_u128 b) {
+  geom_u256 r = {{0, 0, 0, 0}};
+  geom_u256_addmul(&r, a, b);
+  return r;
+}
+
+/* The sign of key(a) - key(b), or 2 when it needs the second squaring. */
+static int shape_circle_ik_cmp(const shape_sweep_ikey *a, const shape_sweep_ikey *b) {
+  if (a->d == b->d && a->snx == b->snx && a->nlo == b->nlo && a->nhi == b->nhi)
+    return (a->ax > b->ax) - (a->ax < b->ax);   /* translates along x: the common case */
+  geom_i128 P = (geom_i128)a->d * b->d * (a->ax - b->ax) + (geom_i128)b->d * a->snx
+              - (geom_i128)a->d * b->snx;
+  geom_u128 na = (geom_u128)a->nhi << 64 | a->nlo, nb = (geom_u128)b->nhi << 64 | b->nlo;
+  geom_u256 A = shape_circle_u256((geom_u128)b->d * (geom_u128)b->d, na);
+  geom_u256 B = shape_circle_u256((geom_u128)a->d * (geom_u128)a->d, nb);
+  int sp = (P > 0) - (P < 0), sr = geom_u256_cmp(&A, &B);
+  if (sp == 0 || sr == 0 || sp == sr) return sp != 0 ? sp : sr;
+  geom_u128 ap = (geom_u128)(P < 0 ? -P : P);
+  geom_u256 pp = shape_circle_u256(ap, ap);
+  if (nb == 0) return geom_u256_cmp(&A, &pp);    /* P < 0 < A: sign(A - P^2) */
+  if (na == 0) return geom_u256_cmp(&pp, &B);    /* B > 0 < P: sign(P^2 - B) */
+  return 2;
+}
+
+/* The coordinates of t (six) or the site's x, then u's: 1 and the
+** differences over one unit (z[0..3], z[4..7] the triangles' b - a, c - a,
+** z[8] a1.x - a2.x) when they are integers within the bounds above. */
+static int shape_circle_idiffs(const geom_point *t, double tx, const geom_point *u, double ux,
+                               int64_t z[9]) {
+  double v[12];
+  int n = 0;
+  for (int k = 0; k < 2; k++) {
+    const geom_point *p = k ? u : t;
+    for (int i = 0; p != NULL && i < 3; i++) {
+      v[n++] = p[i].x;
+      v[n++] = p[i].y;
+    }
+    if (p == NULL) v[n++] = k ? ux : tx;
+  }
+  int64_t c[12];
+  if (!geom_ints(v, n, geom_int_scale(v, n), 0x1p62, c)) return 0;
+  int nt = t != NULL ? 6 : 1;
+  for (int k = 0; k < 2; k++) {   /* |c| < 2^62: every difference fits int64_t */
+    const int64_t *q = c + (k ? nt : 0);
+    for (int i = 0; i < 4; i++) z[4 * k + i] = (k ? u : t) != NULL ? q[2 + i] - q[i % 2] : 0;
+  }
+  z[8] = c[0] - c[nt];
+  uint64_t bits = 0, mag[9], tri = 0;
+  for (int i = 0; i < 9; i++) bits |= mag[i] = (uint64_t)(z[i] < 0 ? -z[i] : z[i]);
+  int m = bits != 0 ? shape_sweep_ctz(bits) : 0;
+  for (int i = 0; i < 9; i++) {   /* exact: every z[i] is a multiple of 2^m */
+    mag[i] >>= m;
+    z[i] = z[i] < 0 ? -(int64_t)mag[i] : (int64_t)mag[i];
+    tri |= i < 8 ? mag[i] : 0;
+  }
+  return tri < (1u << 20) && mag[8] < ((uint64_t)1 << 40);
+}
+
+/* The sign of key(t) - key(u) in integers (t == NULL: the site key tx, u
+** == NULL: ux), or 2 when this stage cannot tell. */
+static int shape_circle_key_int(const geom_point *t, double tx, const geom_point *u, double ux) {
+  int64_t z[9];
+  if (!shape_circle_idiffs(t, tx, u, ux, z)) return 2;
+  shape_sweep_ikey k1 = shape_circle_ik(z[8], t != NULL ? z : NULL);
+  shape_sweep_ikey k2 = shape_circle_ik(0, u != NULL ? z + 4 : NULL);
+  return shape_circle_ik_cmp(&k1, &k2);
+}
+
+/* t's key (t == NULL: the site key x) in the frame. */
+static void shape_circle_ikey(const void *ctx, const shape_sweep_frame *f, const geom_point *t,
+                              double x, shape_sweep_ikey *k) {
+  (void)ctx;
+  int64_t a[2], b[2], c[2];
+  shape_sweep_in_frame(f, t != NULL ? t[0] : (geom_point){x, 0}, a);
+  if (t == NULL) {
+    *k = shape_circle_ik(a[0], NULL);
+    return;
+  }
+  shape_sweep_in_frame(f, t[1], b);
+  shape_sweep_in_frame(f, t[2], c);
+  const int64_t z[4] = {b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]};
+  *k = shape_circle_ik(a[0], z);
+}
+#endif
+
+/* Exact: the integer stage above when it applies, else both keys as q +
+** sqrt(r2), compared by shape_sweep_sqrt_cmp, in the ellipses' arithmetic
+** with the circle's form (the circumcentre is the centre formula with
+** |.|^2 for Q).  The sweep calls it only when the certified bounds of the
+** two keys overlap. */
 static int shape_circle_key_cmp(const void *ctx, const geom_point *t, double tx,
                                 const geom_point *u, double ux) {
   (void)ctx;
+#if GEOM_HAVE_INT128
+  if (t != NULL || u != NULL) {
+    int s = shape_circle_key_int(t, tx, u, ux);
+    if (s != 2) return s;
+  }
+#endif
   return shape_sweep_conic_key_cmp(&shape_circle_form, t, tx, u, ux);
 }
 
@@ -160,4 +296,11 @@ static int shape_circle_above(const void *ctx, geom_point A, geom_point B, geom_
 
 const shape_sweep shape_sweep_circle = {"circle", NULL, shape_sweep_closes,
                                         shape_circle_key_bounds, shape_circle_key_cmp,
-                                        shape_circle_above, NULL};
+                                        shape_circle_above, NULL,
+#if GEOM_HAVE_INT128
+                                        shape_sweep_frame_make, shape_circle_ikey,
+                                        shape_circle_ik_cmp
+#else
+                                        NULL, NULL, NULL
+#endif
+};

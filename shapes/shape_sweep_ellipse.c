@@ -114,6 +114,7 @@ static void shape_ell_key_q(shape_mpq *P, const shape_sweep_conic *q, const geom
 int shape_sweep_conic_key_cmp(const void *ctx, const geom_point *t, double tx,
                               const geom_point *u, double ux) {
   if (t == NULL && u == NULL) return (tx > ux) - (tx < ux);
+  shape_sweep_note_gmp();
   shape_mpq P;
   shape_mpq_init(&P);
   mpq_ptr q1, r1, q2, r2;
@@ -139,6 +140,7 @@ static int shape_ell_column_sign(const shape_sweep_conic *q, geom_point A, geom_
 
 int shape_sweep_conic_column(const shape_sweep_conic *q, geom_point A, geom_point B,
                              geom_point X) {
+  shape_sweep_note_gmp();
   shape_mpq P;
   shape_mpq_init(&P);
   mpq_ptr dy = shape_mpq_diff(&P, X.y, A.y);   /* 2 X.y - A.y - B.y */
@@ -161,6 +163,7 @@ static int shape_ell_lift_sign(const shape_sweep_conic *q, geom_point A, geom_po
 
 int shape_sweep_conic_lift(const shape_sweep_conic *q, geom_point A, geom_point B,
                            geom_point X) {
+  shape_sweep_note_gmp();
   shape_mpq P;
   shape_mpq_init(&P);
   mpq_ptr ax = shape_mpq_diff(&P, A.x, X.x), ay = shape_mpq_diff(&P, A.y, X.y);
@@ -180,5 +183,5 @@ static int shape_ell_above(const void *ctx, geom_point A, geom_point B, geom_poi
 
 void shape_sweep_ellipse(const shape_sweep_conic *q, shape_sweep *s) {
   *s = (shape_sweep){"ellipse", q, shape_sweep_closes, shape_ell_key_bounds,
-                     shape_sweep_conic_key_cmp, shape_ell_above, NULL};
+                     shape_sweep_conic_key_cmp, shape_ell_above, NULL, NULL, NULL, NULL};
 }

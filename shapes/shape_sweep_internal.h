@@ -19,10 +19,28 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <gmp.h>
 #include "fliplab_config.h"
 #include "predicates.h"
 #include "shape.h"
+
+/* An event's key in exact integers, made once when the event is scheduled
+** and compared many times (the circle's, shape_sweep_circle.c: grids and
+** integer inputs send most heap comparisons here): a.x, d, s nx and N =
+** nlo + 2^64 nhi over the run's frame, the unit and origin in which every
+** site is a small integer. */
+typedef struct shape_sweep_ikey {
+  int64_t ax, d, snx;       /* a polygon's integer key: a.x, D, 0 (shape_sweep_polygon.c) */
+  uint64_t nlo, nhi;        /* a polygon's integer key: its numerator, two's complement */
+  int known;                /* 1; a polygon's translate record 2 (d, snx, nlo: its words) */
+} shape_sweep_ikey;
+
+typedef struct shape_sweep_frame {
+  double scale;             /* 1/u0: every coordinate times it is an integer */
+  int64_t lo[2];            /* the smallest of those integers, x and y */
+  int shift;                /* the unit is 2^shift u0 */
+} shape_sweep_frame;
 
 typedef struct shape_sweep {
   const char *name;
@@ -48,6 +66,14 @@ typedef struct shape_sweep {
   ** equal keys of events that share two sites, which only a tie-break
   ** could order. */
   size_t *ties;
+  /* Optional (NULL: none): the integer keys.  frame: 1 and *f when every
+  ** one of the n sites fits one; ikey: the key of t (t == NULL: the site
+  ** key x) in frame f; ikey_cmp: the exact sign of key(a) - key(b), or 2
+  ** when key_cmp must decide. */
+  int (*frame)(const void *ctx, const geom_point *p, size_t n, shape_sweep_frame *f);
+  void (*ikey)(const void *ctx, const shape_sweep_frame *f, const geom_point *t, double x,
+               shape_sweep_ikey *k);
+  int (*ikey_cmp)(const shape_sweep_ikey *a, const shape_sweep_ikey *b);
 } shape_sweep;
 
 /* The circle: the sweepline Delaunay triangulation (ctx unused). */
@@ -63,11 +89,23 @@ typedef struct shape_sweep_conic {
 /* A convex polygon K: its rightmost corner (the tie-break's) and that
 ** corner's x, and where every tie the sweep would need the rule's
 ** tie-break for is counted. */
+/* The last triangle a polygon's table classified (its circumscribing
+** shape: kind, contact edges or corner), which the next primitive on the
+** same triangle reuses: scheduling an event asks for its key bounds and
+** its integer key in a row, and each classification costs exact tests of
+** the shape in special position. */
+typedef struct shape_sweep_poly_memo {
+  geom_point t[3];
+  int ok, kind, e[3], corner;
+} shape_sweep_poly_memo;
+
 typedef struct shape_sweep_poly {
   const shape *k;
   int right;
   double xr;
   size_t *special;
+  int ints;                 /* K's corners are integers within 2^10: integer keys */
+  shape_sweep_poly_memo *memo, last;   /* memo = &last */
 } shape_sweep_poly;
 
 /* The tables of an ellipse (shape_sweep_ellipse.c), reading *q, and of a
@@ -91,6 +129,21 @@ FLIPLAB_INTERNAL void shape_sweep_make(const shape *k, shape_sweep_ctx *c, size_
                                        shape_sweep *s);
 
 /* ---- shared by the shapes' primitives -------------------------------- */
+
+/* The frame of the n sites p (the frame primitive of every table that has
+** integer keys, ctx unused): 1 and *f when every site is an integer in
+** [0, 2^20) in one unit (a power of two) relative to the smallest
+** coordinates, else 0.  O(n).  shape_sweep_in_frame: site p's integers
+** (p one of those sites, or (x, 0) for a site's x: z[0] only). */
+FLIPLAB_INTERNAL int shape_sweep_frame_make(const void *ctx, const geom_point *p, size_t n,
+                                            shape_sweep_frame *f);
+FLIPLAB_INTERNAL void shape_sweep_in_frame(const shape_sweep_frame *f, geom_point p,
+                                           int64_t z[2]);
+
+/* Calls of the sweep's primitives that GMP decided, over the process (the
+** tests' guard on grids: none there for the circle); shape_sweep.c. */
+FLIPLAB_INTERNAL unsigned long shape_sweep_gmp_calls(void);
+FLIPLAB_INTERNAL void shape_sweep_note_gmp(void);
 
 /* Consecutive a, b, c (bottom to top) close an event when c is strictly
 ** right of a -> b: then the arcs' breakpoints converge (the circumscribing
@@ -128,6 +181,17 @@ static inline int shape_sweep_conic_side(geom_point A, geom_point B, geom_point 
   if (o > 0 && lower) return 1;
   if (o < 0 && !lower) return 0;
   return 2;
+}
+
+/* The trailing zero bits of x != 0 (the integer stages' common unit). */
+static inline int shape_sweep_ctz(uint64_t x) {
+#if defined(__GNUC__)
+  return __builtin_ctzll(x);
+#else
+  int m = 0;
+  for (; (x & 1) == 0; x >>= 1) m++;
+  return m;
+#endif
 }
 
 /* ---- certified floating-point intervals -------------------------------- */

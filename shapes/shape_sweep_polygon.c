@@ -45,6 +45,8 @@
 ** the events commute.
 */
 #include <math.h>
+#include <stdint.h>
+#include "geom_int_internal.h"
 #include "shape_internal.h"
 #include "shape_sweep_internal.h"
 
@@ -60,17 +62,33 @@ typedef struct shape_poly_ev {
   int e[3], corner;
 } shape_poly_ev;
 
+static int shape_poly_same(const geom_point a[3], const geom_point b[3]) {
+  return a[0].x == b[0].x && a[0].y == b[0].y && a[1].x == b[1].x && a[1].y == b[1].y
+      && a[2].x == b[2].x && a[2].y == b[2].y;
+}
+
+/* Triangle t's circumscribing shape, from the memo when t was the last
+** one classified (a special position, r < 0, is counted once). */
 static void shape_poly_classify(const shape_sweep_poly *P, const geom_point t[3],
                                 shape_poly_ev *ev) {
   /* t: bottom to top on the boundary, turning clockwise; a c b is anticlockwise. */
   ev->p[0] = t[0];
   ev->p[1] = t[2];
   ev->p[2] = t[1];
+  shape_sweep_poly_memo *m = P->memo;
+  if (m->ok && shape_poly_same(m->t, t)) {
+    ev->kind = (shape_poly_kind)m->kind;
+    ev->e[0] = m->e[0], ev->e[1] = m->e[1], ev->e[2] = m->e[2];
+    ev->corner = m->corner;
+    return;
+  }
   int r = shape_circumscribe(P->k, ev->p[0], ev->p[1], ev->p[2], ev->e, &ev->corner);
   if (r < 0) ++*P->special;
   ev->kind = r != 0                    ? SHAPE_PK_HOMOTHET
            : ev->corner == P->right ? SHAPE_PK_CORNER
                                     : SHAPE_PK_INFINITE;
+  *m = (shape_sweep_poly_memo){{t[0], t[1], t[2]}, 1, ev->kind, {ev->e[0], ev->e[1], ev->e[2]},
+                               ev->corner};
 }
 
 /* ---- intervals ------------------------------------------------------- */
@@ -322,6 +340,109 @@ static void shape_poly_corner_q(const shape_sweep_poly *P, const shape_poly_ev *
   shape_mpq_clear(&Q);
 }
 
+/* ---- integer keys ------------------------------------------------------
+**
+** A homothet's key A.x + (det Mx + xr det Ms) / det M is rational, and on
+** grids many are equal (the squares of a grid column), which the bounds
+** cannot separate.  When K's corners are integers within 2^10 (square,
+** diamond, triangle, integer polygons: P->ints) and the run's sites fit
+** its frame (integers in [0, 2^20), shape_sweep_frame_make), every entry
+** is an integer: an edge's n = (b.y - a.y, a.x - b.x) within 2^11, h =
+** a.x b.y - a.y b.x within 2^21, w = n.(P - A) within 2^32, so |det M| <
+** 6 2^43 < 2^46, |det Mx| < 6 2^64 < 2^67, |det Ms| < 6 2^54 < 2^57 and
+** the numerator N = det Mx + xr det Ms < 2^68 (__int128).  Two keys then
+** compare as (ax1 - ax2) D1 D2 + N1 D2 - N2 D1 times the sign of D1 D2,
+** below 2^20 2^92 + 2 2^114 < 2^116.  A site's key x is N = 0, D = 1.
+** Other keys (corners', infinite ones, every key of a K with other
+** corners: the hexagon's are irrational numbers rounded) get a translate
+** record (known = 2): the kind, the contact edges or corner, and the
+** triangle's differences over the frame.  Keys are functions of those and
+** of a.x alone (the exact classification and keys are translation
+** invariant), so two equal records differ by a1.x - a2.x: the grid's
+** columns of equal keys, compared without GMP; other pairs are left to
+** key_cmp.  The sweep makes each event's record once (ikey) and compares
+** records (ikey_cmp) before it compares points. */
+#if GEOM_HAVE_INT128
+static geom_i128 shape_poly_det3_i(geom_i128 m[3][3]) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+       - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+       + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/* The homothet's key of ev over the frame: a.x, D, N (shape_poly_hom_q's
+** formula, in integers). */
+static shape_sweep_ikey shape_poly_hom_i(const shape_sweep_poly *P, const shape_sweep_frame *f,
+                                         const shape_poly_ev *ev) {
+  const geom_point *v = P->k->v;
+  int n = P->k->n;
+  int64_t z[3][2];
+  for (int r = 0; r < 3; r++) shape_sweep_in_frame(f, ev->p[r], z[r]);
+  geom_i128 m[3][3], mx[3][3], ms[3][3], w[3];
+  for (int r = 0; r < 3; r++) {
+    geom_point a = v[ev->e[r]], b = v[(ev->e[r] + 1) % n];
+    m[r][0] = (geom_i128)(b.y - a.y);
+    m[r][1] = (geom_i128)(a.x - b.x);
+    m[r][2] = (geom_i128)(a.x * b.y - a.y * b.x);   /* exact: integers within 2^21 */
+    w[r] = m[r][0] * (z[r][0] - z[0][0]) + m[r][1] * (z[r][1] - z[0][1]);
+  }
+  for (int r = 0; r < 3; r++)
+    for (int c = 0; c < 3; c++) {
+      mx[r][c] = c == 0 ? w[r] : m[r][c];
+      ms[r][c] = c == 2 ? w[r] : m[r][c];
+    }
+  geom_i128 N = shape_poly_det3_i(mx) + (geom_i128)P->xr * shape_poly_det3_i(ms);
+  geom_u128 un = (geom_u128)N;
+  return (shape_sweep_ikey){z[0][0], (int64_t)shape_poly_det3_i(m), 0, (uint64_t)un,
+                            (uint64_t)(un >> 64), 1};
+}
+
+static void shape_poly_ikey(const void *ctx, const shape_sweep_frame *f, const geom_point *t,
+                            double x, shape_sweep_ikey *k) {
+  const shape_sweep_poly *P = ctx;
+  if (t == NULL) {
+    int64_t z[2];
+    shape_sweep_in_frame(f, (geom_point){x, 0}, z);
+    *k = (shape_sweep_ikey){z[0], 1, 0, 0, 0, 1};
+    return;
+  }
+  shape_poly_ev ev;
+  shape_poly_classify(P, t, &ev);   /* key_bounds's, from the memo */
+  if (P->ints && ev.kind == SHAPE_PK_HOMOTHET) {
+    *k = shape_poly_hom_i(P, f, &ev);
+    return;
+  }
+  int64_t z[3][2];   /* in t's order: the same differences for translates */
+  for (int r = 0; r < 3; r++) shape_sweep_in_frame(f, t[r], z[r]);
+  uint64_t tag = (uint64_t)ev.kind;
+  const int idx[4] = {ev.e[0], ev.e[1], ev.e[2], ev.corner};
+  for (int i = 0; i < 4; i++) tag = tag << 12 | ((uint64_t)idx[i] & 0xfff);
+  uint64_t d1 = (uint64_t)(z[1][0] - z[0][0]) << 32 | (uint32_t)(z[1][1] - z[0][1]);
+  uint64_t d2 = (uint64_t)(z[2][0] - z[0][0]) << 32 | (uint32_t)(z[2][1] - z[0][1]);
+  *k = (shape_sweep_ikey){z[0][0], (int64_t)tag, (int64_t)d1, d2, 0, 2};
+}
+
+static int shape_poly_ikey_cmp(const shape_sweep_ikey *a, const shape_sweep_ikey *b) {
+  if (a->known == 2 && b->known == 2 && a->d == b->d && a->snx == b->snx && a->nlo == b->nlo)
+    return (a->ax > b->ax) - (a->ax < b->ax);   /* translates */
+  if (a->known != 1 || b->known != 1) return 2;
+  geom_i128 na = (geom_i128)((geom_u128)a->nhi << 64 | a->nlo);
+  geom_i128 nb = (geom_i128)((geom_u128)b->nhi << 64 | b->nlo);
+  geom_i128 v = (geom_i128)(a->ax - b->ax) * a->d * b->d + na * b->d - nb * a->d;
+  int s = (v > 0) - (v < 0);
+  return (a->d < 0) != (b->d < 0) ? -s : s;
+}
+
+#endif
+
+static int shape_poly_int_corners(const shape *k) {
+  for (int c = 0; c < k->n; c++)
+    for (int i = 0; i < 2; i++) {
+      double v = i ? k->v[c].y : k->v[c].x;
+      if (!(fabs(v) <= 0x1p10) || v != floor(v)) return 0;
+    }
+  return 1;
+}
+
 /* ---- infinite keys ----------------------------------------------------- */
 
 /* The rounding shape of corner c != J is the limit of homothets t + sK' of
@@ -419,6 +540,7 @@ static int shape_poly_key_cmp(const void *ctx, const geom_point *t, double tx,
                               const geom_point *u, double ux) {
   const shape_sweep_poly *P = ctx;
   if (t == NULL && u == NULL) return (tx > ux) - (tx < ux);
+  shape_sweep_note_gmp();
   mpq_t q1, r1, q2, r2;
   mpq_inits(q1, r1, q2, r2, NULL);
   shape_poly_ev e1, e2;
@@ -451,6 +573,7 @@ static int shape_poly_round_top(const shape_sweep_poly *P, int c, geom_point p, 
   shape_poly_centre_iv(a, b, &hx, &hy);
   int s = shape_iv_sign(shape_iv_sub(shape_iv_mul(u[0], hx), shape_iv_mul(v[0], hy)));
   if (s != 2) return s;
+  shape_sweep_note_gmp();
   shape_mpq Q;
   shape_mpq_init(&Q);
   mpq_ptr uq[2], vq[2], aq[2], bq[2], hxq, hyq, d;
@@ -521,6 +644,15 @@ void shape_sweep_polygon(shape_sweep_poly *P, const shape *k, size_t *special,
         shape_poly_leftward(k->v[c], k->v[(c + n - 1) % n]))
       P->right = c;
   P->xr = k->v[P->right].x;
+  P->ints = shape_poly_int_corners(k);
+  P->memo = &P->last;
+  P->last.ok = 0;
   *s = (shape_sweep){"polygon", P, shape_sweep_closes, shape_poly_key_bounds, shape_poly_key_cmp,
-                     shape_poly_above, special};
+                     shape_poly_above, special,
+#if GEOM_HAVE_INT128
+                     shape_sweep_frame_make, shape_poly_ikey, shape_poly_ikey_cmp
+#else
+                     NULL, NULL, NULL
+#endif
+  };
 }
