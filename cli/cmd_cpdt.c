@@ -99,8 +99,16 @@ static int cli_cpdt_algorithms(const char *s, int *alg) {
   }
 }
 
+/* The sizes and algorithms of a run. */
+typedef struct cli_cpdt_run {
+  const uint64_t *sizes;
+  size_t nsizes;
+  const int *algorithms;
+  size_t nalgorithms;
+} cli_cpdt_run;
+
 /* The summary: the mean of the measure per size and algorithm, slopes. */
-static void cli_cpdt_print(const cli_cpdt_opts *o, const study_cpdt_opts *s,
+static void cli_cpdt_print(const cli_cpdt_opts *o, const cli_cpdt_run *s,
                            const study_cpdt_cell *cells) {
   printf("# fliplab cpdt: sampler %s, %zu sizes, %llu trials each, seed %llu; mean %s\n",
          study_cpdt_sampler_name(o->sampler), s->nsizes, (unsigned long long)o->trials,
@@ -124,7 +132,7 @@ static void cli_cpdt_print(const cli_cpdt_opts *o, const study_cpdt_opts *s,
   printf("\n");
 }
 
-static int cli_cpdt_write(const cli_cpdt_opts *o, const study_cpdt_opts *s,
+static int cli_cpdt_write(const cli_cpdt_opts *o, const cli_cpdt_run *s,
                           const study_cpdt_cell *cells) {
   size_t nc = s->nsizes * s->nalgorithms;
   if (o->out != NULL) {
@@ -159,11 +167,12 @@ int cli_cmd_cpdt(int argc, char **argv) {
     const char *why = study_cpdt_sampler_limit(o.sampler, (size_t)sizes[i]);
     if (why != NULL) return cli_error(CMD, "--sizes: %llu: %s", (unsigned long long)sizes[i], why);
   }
-  study_cpdt_opts s = {sizes, (size_t)ns, alg, (size_t)na, o.trials, o.seed, o.sampler};
+  cli_cpdt_run s = {sizes, (size_t)ns, alg, (size_t)na};
   study_cpdt_cell *cells = malloc((size_t)ns * (size_t)na * sizeof *cells);
   if (cells == NULL) return cli_error(CMD, "out of memory"), 1;
   char err[256];
-  int rc = study_cpdt_run(&s, cells, err, sizeof err);
+  int rc = study_cpdt_run(sizes, s.nsizes, alg, s.nalgorithms, o.trials, o.seed, o.sampler, cells,
+                          err, sizeof err);
   if (rc != 0) {
     free(cells);
     return cli_error(CMD, "%s", err), rc == -1 ? 2 : 1;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cpdt_internal.h"
+#include "geom_field_internal.h"
 #include "predicates.h"
 #include "splitmix.h"
 
@@ -140,4 +141,35 @@ uint64_t cpdt_circum_cost(const uint32_t *tri, size_t n) {
   uint64_t sum = 0;
   for (size_t t = 0; t + 2 < n; t++) sum += tri[3 * t + 2] - tri[3 * t] - 1;
   return sum;
+}
+
+/* ---- the counts by name ---- */
+
+#define F(M, T) GEOM_FIELD(cpdt_counts, M, GEOM_FIELD_##T)
+static const geom_field cpdt_counts_fields[] = {
+  F(scanned, U64), F(incircle, U64), F(orient, U64), F(flips, U64), F(merges, U64),
+  F(cross_sum, U64), F(cross_max, U64), F(added, U64), F(deleted, U64), F(depth, U64),
+  F(memory, U64), F(index_length, DOUBLE)};
+#undef F
+#define CPDT_NFIELDS (sizeof cpdt_counts_fields / sizeof *cpdt_counts_fields)
+
+cpdt_counts *cpdt_counts_new(void) { return calloc(1, sizeof(cpdt_counts)); }
+
+void cpdt_counts_delete(cpdt_counts *c) { free(c); }
+
+const char *cpdt_counts_field(size_t i) {
+  return i < CPDT_NFIELDS ? cpdt_counts_fields[i].name : NULL;
+}
+
+int cpdt_counts_get_u64(const cpdt_counts *c, const char *name, uint64_t *out) {
+  return geom_field_u64(c, geom_field_find(cpdt_counts_fields, CPDT_NFIELDS, name), 0, out);
+}
+
+int cpdt_counts_get_double(const cpdt_counts *c, const char *name, double *out) {
+  const geom_field *f = geom_field_find(cpdt_counts_fields, CPDT_NFIELDS, name);
+  uint64_t u;
+  if (geom_field_double(c, f, out) == 0) return 0;
+  if (geom_field_u64(c, f, 0, &u) != 0) return -1;
+  *out = (double)u;
+  return 0;
 }

@@ -66,6 +66,16 @@ typedef struct cpdt_counts {
   double index_length;
 } cpdt_counts;
 
+/* The counts by name, for bindings that mirror no layout: a heap copy
+** (cpdt_counts_new: zeroed, NULL when memory ran out), the names in order
+** (cpdt_counts_field(i), NULL past the last), a field as an integer (the
+** counts) or a double (any): 0, or -1 for an unknown name. */
+cpdt_counts *cpdt_counts_new(void);
+void cpdt_counts_delete(cpdt_counts *c);
+const char *cpdt_counts_field(size_t i);
+int cpdt_counts_get_u64(const cpdt_counts *c, const char *name, uint64_t *out);
+int cpdt_counts_get_double(const cpdt_counts *c, const char *name, double *out);
+
 /* Names ("circum", "circum-random", ...), a line about each, and back. */
 const char *cpdt_algorithm_name(int algorithm);
 const char *cpdt_algorithm_about(int algorithm);

@@ -11,6 +11,16 @@
 #include "sampler.h"
 #include "study_cpdt.h"
 
+/* A run's arguments (study_cpdt_run). */
+typedef struct study_cpdt_opts {
+  const uint64_t *sizes;
+  size_t nsizes;
+  const int *algorithms;
+  size_t nalgorithms;
+  uint64_t trials, seed;
+  int sampler;
+} study_cpdt_opts;
+
 typedef struct study_cpdt_sampler {
   const char *name;
   size_t max_n;     /* 0: no limit */
@@ -151,7 +161,11 @@ static int study_cpdt_trial(const study_cpdt_opts *o, size_t n, uint64_t trial, 
 }
 
 /* Cost: for each size n, trials x (the sampler + each algorithm's cost). */
-int study_cpdt_run(const study_cpdt_opts *o, study_cpdt_cell *cells, char *err, size_t errlen) {
+int study_cpdt_run(const uint64_t *sizes, size_t nsizes, const int *algorithms,
+                   size_t nalgorithms, uint64_t trials, uint64_t seed, int sampler,
+                   study_cpdt_cell *cells, char *err, size_t errlen) {
+  const study_cpdt_opts opts = {sizes, nsizes, algorithms, nalgorithms, trials, seed, sampler};
+  const study_cpdt_opts *o = &opts;
   if (study_cpdt_check_opts(o, err, errlen) != 0) return -1;
   int rc = 0;
   for (size_t s = 0; s < o->nsizes && rc == 0; s++) {
@@ -189,4 +203,18 @@ double study_cpdt_slope(const study_cpdt_cell *cells, size_t ncells, int algorit
   }
   double d = (double)m * sxx - sx * sx;
   return m >= 2 && d > 0 ? ((double)m * sxy - sx * sy) / d : NAN;
+}
+
+study_cpdt_cell *study_cpdt_cells_new(size_t ncells) {
+  return calloc(ncells > 0 ? ncells : 1, sizeof(study_cpdt_cell));
+}
+
+void study_cpdt_cells_delete(study_cpdt_cell *cells) { free(cells); }
+
+int study_cpdt_cell_get(const study_cpdt_cell *cells, size_t i, int count, double *mean,
+                        double *half) {
+  if (count < 0 || count >= STUDY_CPDT_NCOUNTS) return -1;
+  *mean = cells[i].mean[count];
+  *half = cells[i].half[count];
+  return 0;
 }

@@ -45,20 +45,21 @@ typedef struct study_cpdt_cell {
   double mean[STUDY_CPDT_NCOUNTS], half[STUDY_CPDT_NCOUNTS];
 } study_cpdt_cell;
 
-typedef struct study_cpdt_opts {
-  const uint64_t *sizes;
-  size_t nsizes;
-  const int *algorithms;
-  size_t nalgorithms;
-  uint64_t trials, seed;
-  int sampler;
-} study_cpdt_opts;
+/* cells[s * nalgorithms + a] for sizes[s] and algorithms[a], over trials
+** polygons of each size from `sampler`.  Every polygon is checked
+** (cpdt_check) and its triangulation by each algorithm compared with the
+** first algorithm's.  0; -1 with a one-line message in err for bad
+** arguments, a sampler's failure or a disagreement; -2 out of memory. */
+int study_cpdt_run(const uint64_t *sizes, size_t nsizes, const int *algorithms,
+                   size_t nalgorithms, uint64_t trials, uint64_t seed, int sampler,
+                   study_cpdt_cell *cells, char *err, size_t errlen);
 
-/* cells[s * nalgorithms + a] for size s and algorithm a.  Every polygon is
-** checked (cpdt_check) and its triangulation by each algorithm compared with
-** the first algorithm's.  0; -1 with a one-line message in err for bad
-** options, a sampler's failure or a disagreement; -2 out of memory. */
-int study_cpdt_run(const study_cpdt_opts *o, study_cpdt_cell *cells, char *err, size_t errlen);
+/* For bindings: cells on the heap (zeroed; NULL when memory ran out), and
+** cell i's mean and half-width of one quantity (0, or -1 for a bad count). */
+study_cpdt_cell *study_cpdt_cells_new(size_t ncells);
+void study_cpdt_cells_delete(study_cpdt_cell *cells);
+int study_cpdt_cell_get(const study_cpdt_cell *cells, size_t i, int count, double *mean,
+                        double *half);
 
 /* The least-squares slope of log(mean[count]) against log(n) over the cells
 ** of `algorithm` whose mean is positive; NaN with fewer than two. */

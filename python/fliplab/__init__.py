@@ -25,6 +25,8 @@ from ._classify import classify
 from ._studies import compare_got, verdicts, wilson
 from ._cdf import Cdf, cdf
 from ._scipy import from_shapely, lot_polygon
+from ._cpdt import (CPDT_ALGORITHMS, CPDT_COUNTS, CPDT_SAMPLERS, convex_dt,
+                    convex_dt_experiment)
 
 __version__ = "0.1.0"
 library_path: str = _lib.path
@@ -35,4 +37,5 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "samplers", "plot", "library_path", "FORMATS", "Counts", "census", "table34", "Got",
            "got", "FlipGraph", "flipgraph", "measure", "quantities", "classify", "verdicts",
            "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
-           "compare_got"]
+           "compare_got", "CPDT_ALGORITHMS", "CPDT_COUNTS", "CPDT_SAMPLERS", "convex_dt",
+           "convex_dt_experiment"]

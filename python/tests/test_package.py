@@ -179,6 +179,8 @@ CHOICES = {
     ("fliplab.census", "sampler"): fliplab.samplers.SITE_SETS,
     ("fliplab.Counts.to_csv", "format"): fliplab.FORMATS,
     ("fliplab.measure", "sign"): fliplab.SIGNS,
+    ("fliplab.convex_dt", "algorithm"): fliplab.CPDT_ALGORITHMS,
+    ("fliplab.convex_dt_experiment", "sampler"): fliplab.CPDT_SAMPLERS,
     ("fliplab.Rule", "name"): _rules.RULE_FORMS,
     ("*", "rule"): _rules.RULE_FORMS,
     ("*", "rules"): _rules.RULE_FORMS,
