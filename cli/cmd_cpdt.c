@@ -31,7 +31,7 @@ static const cli_option cli_cpdt_table[] = {
    .bad = "unknown sampler '%s' (valid: vector, circle, iteration)"},
   CLI_OPT_STRING("--algorithms", "A,A,...", "all",
                  "circum, circum-random, circum-walk, divide, incremental,\n"
-                 "                     random, flip", T, algorithms),
+                 "                     random, flip, corners", T, algorithms),
   CLI_OPT_SEED("polygons and the randomised algorithms' choices", T, seed),
   CLI_OPT_FILE("--out", "FILE.csv", "none", "csv",
                "the table: each size and algorithm, every count's mean and interval", T, out),
@@ -89,7 +89,7 @@ static int cli_cpdt_algorithms(const char *s, int *alg) {
     int a = len < 31 ? cpdt_algorithm_find(name) : -1;
     if (a < 0)
       return cli_error(CMD, "--algorithms: unknown algorithm '%.40s' (valid: circum, "
-                            "circum-random, circum-walk, divide, incremental, random, flip)",
+                            "circum-random, circum-walk, divide, incremental, random, flip, corners)",
                        name), -1;
     for (int k = 0; k < n; k++)
       if (alg[k] == a) return cli_error(CMD, "--algorithms: '%s' given twice", name), -1;

@@ -25,6 +25,7 @@ static const cpdt_entry cpdt_table[CPDT_ALGORITHM_COUNT] = {
   [CPDT_INCREMENTAL] = {"incremental", "incremental, input order (5.4.3)", cpdt_incremental},
   [CPDT_RANDOM] = {"random", "incremental, random order (Chew)", cpdt_random_incremental},
   [CPDT_FLIP] = {"flip", "fan from vertex 0, then Lawson's flips", cpdt_flip},
+  [CPDT_CORNERS] = {"corners", "corners cut, smallest circle first (2.5.4)", cpdt_corners},
 };
 
 const char *cpdt_algorithm_name(int a) {

@@ -28,6 +28,10 @@
 **                  in random order (each remembers its neighbours), then
 **                  inserted back; expected O(n)
 **   flip           the fan from vertex 0, then Lawson's flips
+**   corners        the thesis's sweepline simplified for monotone polygons
+**                  (2.5.4-2.5.5): corners cut off, the smallest circumcircle
+**                  first, then Lawson's flips where the floating-point keys
+**                  erred; O(n log n)
 */
 #ifndef FLIPLAB_CPDT_H
 #define FLIPLAB_CPDT_H
@@ -38,7 +42,7 @@
 
 typedef enum cpdt_algorithm {
   CPDT_CIRCUM, CPDT_CIRCUM_RANDOM, CPDT_CIRCUM_WALK, CPDT_DIVIDE, CPDT_INCREMENTAL,
-  CPDT_RANDOM, CPDT_FLIP, CPDT_ALGORITHM_COUNT
+  CPDT_RANDOM, CPDT_FLIP, CPDT_CORNERS, CPDT_ALGORITHM_COUNT
 } cpdt_algorithm;
 
 /* At most this many vertices (indices are 32-bit, half-edges twice that). */
@@ -49,7 +53,7 @@ typedef enum cpdt_algorithm {
 **                piece of m vertices looks at m - 2)
 **   incircle     incircle tests (geom_incircle calls)
 **   orient       orientation tests (ties of four cocircular vertices)
-**   flips        edge flips (incremental, random, flip)
+**   flips        edge flips (incremental, random, flip; corners: its repairs)
 **   merges       merges of divide and conquer; cross_sum and cross_max: the
 **                cross edges a merge adds that are diagonals of the merged
 **                piece (the thesis's a), summed and largest; added and

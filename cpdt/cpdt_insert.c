@@ -145,8 +145,9 @@ static int cpdt_is_side(uint32_t a, uint32_t b, size_t n) {
   return d == 1 || d == n - 1;
 }
 
-/* Lawson's flips from a queue of diagonals, each queued at most once. */
-static void cpdt_lawson(cpdt_mesh *m, cpdt_run *r, uint32_t *queue, unsigned char *queued) {
+/* Lawson's flips from a queue of diagonals, each queued at most once
+** (cpdt_internal.h). */
+void cpdt_lawson(cpdt_mesh *m, cpdt_run *r, uint32_t *queue, unsigned char *queued) {
   size_t n = r->n, cap = m->used, head = 0, count = 0;
   for (uint32_t e = 0; e < m->used; e++)
     if (!cpdt_is_side(m->to[2 * e], m->to[2 * e + 1], n)) {

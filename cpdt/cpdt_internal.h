@@ -37,6 +37,7 @@ FLIPLAB_INTERNAL int cpdt_divide(cpdt_run *r);
 FLIPLAB_INTERNAL int cpdt_incremental(cpdt_run *r);
 FLIPLAB_INTERNAL int cpdt_random_incremental(cpdt_run *r);
 FLIPLAB_INTERNAL int cpdt_flip(cpdt_run *r);
+FLIPLAB_INTERNAL int cpdt_corners(cpdt_run *r);
 
 /* ---- the half-edge mesh (cpdt_mesh.c) -----------------------------------
 **
@@ -64,6 +65,11 @@ FLIPLAB_INTERNAL void cpdt_mesh_delete(cpdt_mesh *m, uint32_t h);
 FLIPLAB_INTERNAL uint32_t cpdt_mesh_flip(cpdt_mesh *m, uint32_t h);
 /* The half-edge a->b, or CPDT_NONE (a walk round a's ring). */
 FLIPLAB_INTERNAL uint32_t cpdt_mesh_find(const cpdt_mesh *m, uint32_t a, uint32_t b);
+/* Lawson's flips with cpdt_incircle until every diagonal is locally
+** Delaunay, starting from every diagonal of m (queue: 2n edges, queued:
+** 2n zeroed flags); counts the flips. */
+FLIPLAB_INTERNAL void cpdt_lawson(cpdt_mesh *m, cpdt_run *r, uint32_t *queue,
+                                  unsigned char *queued);
 /* Every face into r's output. */
 FLIPLAB_INTERNAL void cpdt_mesh_emit(const cpdt_mesh *m, cpdt_run *r);
 

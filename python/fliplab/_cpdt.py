@@ -44,7 +44,7 @@ def convex_dt(polygon: npt.ArrayLike, algorithm: str = "divide",
         The vertices, anticlockwise (a clockwise polygon is refused).
     algorithm : str
         One of CPDT_ALGORITHMS: "circum", "circum-random", "circum-walk",
-        "divide", "incremental", "random", "flip".  All give the same
+        "divide", "incremental", "random", "flip", "corners".  All give the same
         triangles: lot's Delaunay triangulation, cocircular ties included.
     seed : int
         For the randomised algorithms: same seed, same counts.
