@@ -89,8 +89,8 @@ static int cli_cpdt_algorithms(const char *s, int *alg) {
     int a = len < 31 ? cpdt_algorithm_find(name) : -1;
     if (a < 0)
       return cli_error(CMD, "--algorithms: unknown algorithm '%.40s' (valid: circum, "
-                            "circum-random, circum-walk, divide, incremental, random, flip, corners)",
-                       name), -1;
+                            "circum-random, circum-walk, divide, incremental, random, flip, "
+                            "corners)", name), -1;
     for (int k = 0; k < n; k++)
       if (alg[k] == a) return cli_error(CMD, "--algorithms: '%s' given twice", name), -1;
     alg[n++] = a;
@@ -114,7 +114,8 @@ static void cli_cpdt_print(const cli_cpdt_opts *o, const cli_cpdt_run *s,
          study_cpdt_sampler_name(o->sampler), s->nsizes, (unsigned long long)o->trials,
          (unsigned long long)o->seed, study_cpdt_count_name(o->measure));
   printf("%8s", "n");
-  for (size_t a = 0; a < s->nalgorithms; a++) printf(" %14s", cpdt_algorithm_name(s->algorithms[a]));
+  for (size_t a = 0; a < s->nalgorithms; a++)
+    printf(" %14s", cpdt_algorithm_name(s->algorithms[a]));
   printf("\n");
   for (size_t i = 0; i < s->nsizes; i++) {
     printf("%8llu", (unsigned long long)s->sizes[i]);

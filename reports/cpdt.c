@@ -69,10 +69,10 @@ static cp_axes cp_range(const study_cpdt_cell *cells, size_t ncells, int count) 
 
 static void cp_frame(FILE *f, const cp_axes *a, const char *title, const char *ylabel) {
   fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-             "font-family=\"sans-serif\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
-          CP_W, CP_H);
-  fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"black\"/>\n",
-          CP_X0, CP_Y0, CP_PW, CP_PH);
+             "font-family=\"sans-serif\">\n"
+             "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n", CP_W, CP_H);
+  fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
+             "stroke=\"black\"/>\n", CP_X0, CP_Y0, CP_PW, CP_PH);
   char lab[32];
   for (double e = a->x0; e <= a->x1; e++) {
     double x = CP_X0 + (e - a->x0) / (a->x1 - a->x0) * CP_PW;

@@ -106,7 +106,8 @@ static void test_random_polygons(void **state) {
         geom_point *p = tc_vector(1000 * s + (uint64_t)k, sizes[s], circle);
         uint64_t repairs;
         tc_all_flips(p, sizes[s], (uint64_t)k, &repairs);
-        if (!circle && repairs != 0) fail_msg("corners repaired %llu edges (n = %zu, k = %d)", (unsigned long long)repairs,
+        if (!circle && repairs != 0)
+          fail_msg("corners repaired %llu edges (n = %zu, k = %d)", (unsigned long long)repairs,
                    sizes[s], k);
         free(p);
       }
