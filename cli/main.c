@@ -24,6 +24,7 @@ static const cli_command cli_commands[] = {
   {"flipgraph", cli_cmd_flipgraph, "every triangulation of a small site set, directed by a rule"},
   {"census",   cli_cmd_census,   "table 3.4 for any n: flip graphs of random site sets"},
   {"averages", cli_cmd_averages, "chapter 5's exact averages over all triangulations"},
+  {"cpdt",     cli_cmd_cpdt,     "chapter 5: Delaunay triangulations of convex polygons, counted"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

@@ -70,6 +70,13 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **   GEOM_STREAM_SEGMENTS    "segments": the segments sampler_segments draws
 **                           on a point set drawn from GEOM_STREAM_POINTS
 **                           (`sample --sampler segments`, the benchmark).
+**   GEOM_STREAM_CPDT        "cpdt": xored into the seed of the randomised
+**                           convex-polygon Delaunay algorithms (cpdt/: the
+**                           random sides, the random insertion order).
+**   GEOM_STREAM_CPDT_GON(n, t) "cpdtgon": polygon t of size n of the
+**                           experiment of `fliplab cpdt` (studies/), the
+**                           size times the 64-bit golden ratio xored in
+**                           (above 2^62 for every n and t it takes).
 ** One run never draws two of these from one seed under the same number:
 ** lot draws its points, then one order, and no samples; "points" (about
 ** 1.2e14) lies above every sample index anyway; got draws only its polygon
@@ -94,6 +101,9 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 #define GEOM_STREAM_RANDOM_ORDER 0x72616e64ull        /* "rand" */
 #define GEOM_STREAM_PSLG 0x70736c6772617068ull        /* "pslgraph" */
 #define GEOM_STREAM_SEGMENTS 0x7365676d656e7473ull    /* "segments" */
+#define GEOM_STREAM_CPDT 0x63706474ull                /* "cpdt" */
+#define GEOM_STREAM_CPDT_GON(n, t) \
+  ((0x63706474676f6eull << 8) ^ ((uint64_t)(n) * 0x9e3779b97f4a7c15ull >> 2) ^ (uint64_t)(t))
 #define GEOM_STATE_FORMULA_SIGNS 0x5EED5167ull
 #define GEOM_STATE_LOT_WALK 0x9e3779b97f4a7c15ull
 #define GEOM_STATE_LOT_SWEEP 0x5357454550ull                /* "SWEEP" */

@@ -24,6 +24,7 @@
 #include "got.h"
 #include "lot.h"
 #include "siteflip.h"
+#include "study_cpdt.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
@@ -364,5 +365,16 @@ typedef struct report_lot_panel {
 ** shared by all panels.  0, or -1 on a write error. */
 int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
                    int npanels, int shade, const char *title);
+
+/* ---- fliplab cpdt (reports/cpdt.c) ----
+** The experiment's table: a row per size and algorithm (sampler, n,
+** algorithm, trials, then each quantity of study_cpdt_count_name and its
+** interval's half-width NAME_half), %.10g.  The log-log plot of one quantity's
+** means against n, a line per algorithm, its fitted slope in the legend
+** (study_cpdt_slope).  0, or -1 on a write error. */
+int report_cpdt_csv(FILE *f, const char *sampler, uint64_t trials, const study_cpdt_cell *cells,
+                    size_t ncells);
+int report_cpdt_svg(FILE *f, const char *title, const study_cpdt_cell *cells, size_t ncells,
+                    const int *algorithms, size_t nalgorithms, int count);
 
 #endif

@@ -26,6 +26,8 @@ from ._studies import compare_got, verdicts, wilson
 from ._averages import CH5_METHODS, CH5_QUANTITIES, ch5_averages, ch5_measure
 from ._cdf import Cdf, cdf
 from ._scipy import from_shapely, lot_polygon
+from ._cpdt import (CPDT_ALGORITHMS, CPDT_COUNTS, CPDT_SAMPLERS, convex_dt,
+                    convex_dt_experiment)
 
 __version__ = "0.1.0"
 library_path: str = _lib.path
@@ -36,5 +38,5 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "samplers", "plot", "library_path", "FORMATS", "Counts", "census", "table34", "Got",
            "got", "FlipGraph", "flipgraph", "measure", "quantities", "classify", "verdicts",
            "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
-           "compare_got", "ch5_averages", "ch5_measure",
-           "CH5_METHODS", "CH5_QUANTITIES"]
+           "compare_got", "ch5_averages", "ch5_measure", "CH5_METHODS", "CH5_QUANTITIES",
+           "CPDT_ALGORITHMS", "CPDT_COUNTS", "CPDT_SAMPLERS", "convex_dt", "convex_dt_experiment"]

@@ -182,6 +182,8 @@ CHOICES = {
     ("fliplab.Counts.to_csv", "format"): fliplab.FORMATS,
     ("fliplab.measure", "sign"): fliplab.SIGNS,
     ("fliplab.ch5_averages", "method"): fliplab.CH5_METHODS,
+    ("fliplab.convex_dt", "algorithm"): fliplab.CPDT_ALGORITHMS,
+    ("fliplab.convex_dt_experiment", "sampler"): fliplab.CPDT_SAMPLERS,
     ("fliplab.Rule", "name"): _rules.RULE_FORMS,
     ("*", "rule"): _rules.RULE_FORMS,
     ("*", "rules"): _rules.RULE_FORMS,
