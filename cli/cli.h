@@ -25,6 +25,7 @@ int cli_cmd_rule(int argc, char **argv);
 int cli_cmd_lot(int argc, char **argv);
 int cli_cmd_flipgraph(int argc, char **argv);
 int cli_cmd_census(int argc, char **argv);
+int cli_cmd_convex(int argc, char **argv);
 
 /* Print "fliplab CMD: message" ("fliplab: message" when cmd is NULL) on
 ** stderr, as one line of at most about 1000 bytes (control characters

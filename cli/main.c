@@ -23,6 +23,7 @@ static const cli_command cli_commands[] = {
   {"lot",      cli_cmd_lot,      "locally optimal triangulation of a point set, any rule"},
   {"flipgraph", cli_cmd_flipgraph, "every triangulation of a small site set, directed by a rule"},
   {"census",   cli_cmd_census,   "table 3.4 for any n: flip graphs of random site sets"},
+  {"convex",   cli_cmd_convex,   "random convex n-gons (chapter 6): CSV, SVG, statistics"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

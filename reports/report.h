@@ -365,4 +365,12 @@ typedef struct report_lot_panel {
 int report_lot_svg(FILE *f, const geom_point *p, size_t n, const report_lot_panel *panels,
                    int npanels, int shade, const char *title);
 
+/* ---- random convex polygons (reports/svg_convex.c) ---- */
+
+/* count polygons of n vertices each (xy[k n .. k n + n)), panels in rows
+** of four at one common scale, titled with index[k] and, when log_weight
+** is not NULL, the log weight.  0, or -1 once the stream has an error. */
+int report_convex_svg(FILE *f, const geom_point *xy, size_t n, size_t count,
+                      const uint64_t *index, const double *log_weight);
+
 #endif
