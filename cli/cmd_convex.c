@@ -39,9 +39,10 @@ static int cli_convex_region(const char *cmd, const cli_option *o, const char *v
 
 #define T cli_convex_opts
 static const cli_option cli_convex_table[] = {
-  CLI_OPT_STRING("--sampler", "S", "rejection",
-                 "rejection, naive, iteration, valtr, vector, circle, ...\n"
-                 "                     (docs/sampling.md)", T, sampler),
+  {.name = "--sampler", .arg = "S",
+   .help = "rejection, naive, iteration, valtr, vector, circle, ...\n"
+           "                     (docs/sampling.md)",
+   .kind = CLI_STRING, .off = CLI_AT(T, sampler, const char *), .sdef = "rejection"},
   {.name = "--region", .arg = "R", .dflt = "square",
    .help = "square [0,1]^2, disc (unit), triangle (0,0),(1,0),(0,1)", .kind = CLI_CALL,
    .off = CLI_AT(T, region, int), .call = cli_convex_region},
