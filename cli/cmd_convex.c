@@ -76,21 +76,14 @@ static const cli_spec cli_convex_spec = {
   "and minimum-perimeter enclosing rectangles differ (docs/sampling.md).\n",
   cli_convex_table, CLI_NOPTS(cli_convex_table), NULL};
 
-/* The sampler and its region; 0, or 2 after the one-line error. */
+/* The sampler and its region (sampler_gon_check's words); 0, or 2 after
+** the one-line error. */
 static int cli_convex_check(const cli_convex_opts *o, uint64_t given, const sampler_gon **s) {
+  char err[512];
+  int region = cli_option_given(&cli_convex_spec, given, "--region") ? o->region : -1;
   *s = sampler_gon_find(o->sampler);
-  if (*s == NULL)
-    return cli_error(CMD, "unknown sampler '%s' (valid: %s)", o->sampler, sampler_gon_names());
-  int gave_region = cli_option_given(&cli_convex_spec, given, "--region");
-  if ((*s)->regions == 0 && gave_region)
-    return cli_error(CMD, "--region does not apply to --sampler %s (it draws no points from "
-                     "a region)", o->sampler);
-  if ((*s)->regions != 0 && !((*s)->regions & (1u << o->region)))
-    return cli_error(CMD, "--sampler %s does not draw in the %s (--region square)", o->sampler,
-                     sampler_region_name(o->region));
-  if (strcmp(o->sampler, "naive") == 0 && o->n > 10)
-    return cli_error(CMD, "--sampler naive takes --n up to 10 (it draws about 1 / P(convex) "
-                     "points a polygon); use rejection or valtr");
+  if (sampler_gon_check(o->sampler, region, (size_t)o->n, err, sizeof err) != 0)
+    return cli_error(CMD, "%s", err);
   if (o->law != 0 && strcmp(o->sampler, "iteration") != 0)
     return cli_error(CMD, "--law applies to --sampler iteration only");
   if (o->svg != NULL && o->n > 100000)

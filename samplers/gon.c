@@ -95,6 +95,28 @@ const char *sampler_gon_names(void) {
   return buf;
 }
 
+int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t errlen) {
+  const sampler_gon *s = sampler_gon_find(name);
+  if (s == NULL)
+    snprintf(err, errlen, "unknown sampler '%s' (valid: %s)", name, sampler_gon_names());
+  else if (s->regions == 0 && region >= 0)
+    snprintf(err, errlen, "sampler %s draws no points from a region (give none)", name);
+  else if (region >= SAMPLER_REGION_COUNT)
+    snprintf(err, errlen, "region %d: valid are 0 .. %d (%s)", region, SAMPLER_REGION_COUNT - 1,
+             sampler_region_names);
+  else if (s->regions != 0 && region >= 0 && !(s->regions & (1u << region)))
+    snprintf(err, errlen, "sampler %s does not draw in the %s (valid: square)", name,
+             sampler_region_name(region));
+  else if (n < 3)
+    snprintf(err, errlen, "n = %zu: a polygon has at least 3 vertices", n);
+  else if (s->draw == sampler_gon_naive && n > SAMPLER_NAIVE_MAX)
+    snprintf(err, errlen, "sampler naive takes n up to %d (it draws about 1 / P(convex) "
+             "points a polygon); use rejection or valtr", SAMPLER_NAIVE_MAX);
+  else
+    return 0;
+  return -1;
+}
+
 int sampler_gon_draw(const sampler_gon *s, const sampler_gon_params *p, uint64_t seed,
                      uint64_t index, size_t n, geom_point *out, sampler_gon_info *info) {
   *info = (sampler_gon_info){0};

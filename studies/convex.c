@@ -194,6 +194,21 @@ double study_convex_acc_ess(const study_convex_acc *a) {
   return a->w2 > 0 ? a->w * a->w / a->w2 : 0;
 }
 
+void study_convex_summary(const double *stats, const double *log_weight, size_t count,
+                          double *mean, double *half, double *ess) {
+  study_convex_acc a;
+  study_convex_acc_init(&a);
+  for (size_t i = 0; i < count; i++)
+    study_convex_acc_add(&a, log_weight != NULL ? log_weight[i] : 0,
+                         stats + i * STUDY_CONVEX_NSTATS);
+  for (int k = 0; k < STUDY_CONVEX_NSTATS; k++) study_convex_acc_mean(&a, k, &mean[k], &half[k]);
+  *ess = study_convex_acc_ess(&a);
+}
+
+const char *study_convex_stat_name(int k) {
+  return k >= 0 && k < STUDY_CONVEX_NSTATS ? study_convex_stat_names[k] : NULL;
+}
+
 /* ---- drawing many polygons ---------------------------------------------- */
 
 int study_convex_draw(const study_convex_run *run, uint64_t first, uint64_t count,

@@ -235,6 +235,12 @@ void study_convex_acc_add(study_convex_acc *a, double log_weight,
                           const double x[STUDY_CONVEX_NSTATS]);
 void study_convex_acc_mean(const study_convex_acc *a, int k, double *mean, double *half);
 double study_convex_acc_ess(const study_convex_acc *a);
+/* The same over arrays (count rows of STUDY_CONVEX_NSTATS statistics, their
+** log weights, NULL: equal): means, half-widths, the effective sample size. */
+void study_convex_summary(const double *stats, const double *log_weight, size_t count,
+                          double *mean, double *half, double *ess);
+/* Statistic k's name ("area", ...), NULL past the last (for front ends). */
+const char *study_convex_stat_name(int k);
 
 /* Polygons first .. first + count - 1 of a sampler (samplers/sampler.h's
 ** registry) on threads (0: all cores): polygon i into xy[i n .. i n + n),

@@ -39,12 +39,12 @@ static void test_errors(void **state) {
   says("convex --sampler bogus", "unknown sampler 'bogus' (valid: rejection, naive");
   says("convex --region moon", "unknown region 'moon' (valid: square, disc, triangle)");
   says("convex --sampler valtr --region disc", "does not draw in the disc");
-  says("convex --sampler vector --region disc", "--region does not apply");
+  says("convex --sampler vector --region disc", "draws no points from a region");
   says("convex --n 2", "--n 2 is out of range");
   says("convex --n 1e8", "out of range");
   says("convex --count 0", "--count 0 is out of range");
   says("convex --seed -1", "--seed");
-  says("convex --sampler naive --n 11", "naive takes --n up to 10");
+  says("convex --sampler naive --n 11", "naive takes n up to 10");
   says("convex --law 1", "--law applies to --sampler iteration only");
   testutil_tmppath(path, sizeof path, "convex_fail.csv");
   unlink(path);

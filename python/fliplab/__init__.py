@@ -24,6 +24,7 @@ from ._pymeasure import measure, quantities
 from ._classify import classify
 from ._studies import compare_got, verdicts, wilson
 from ._cdf import Cdf, cdf
+from ._convex import CONVEX_SAMPLERS, REGIONS, ConvexPolygons, convex_polygons
 from ._scipy import from_shapely, lot_polygon
 
 __version__ = "0.1.0"
@@ -35,4 +36,5 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "samplers", "plot", "library_path", "FORMATS", "Counts", "census", "table34", "Got",
            "got", "FlipGraph", "flipgraph", "measure", "quantities", "classify", "verdicts",
            "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
-           "compare_got"]
+           "compare_got", "CONVEX_SAMPLERS", "REGIONS",
+           "ConvexPolygons", "convex_polygons"]
