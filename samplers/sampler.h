@@ -11,7 +11,9 @@
 ** uniform in the unit disc, kept when in convex position).
 **
 ** For large n: the vector method (section 6.4) and points on a circle.
-** The methods and the streams: docs/sampling.md.
+** Random convex n-gons of every method of chapter 6, by name: the section
+** "random convex n-gons" below.  The methods and the streams:
+** docs/sampling.md.
 */
 #ifndef FLIPLAB_SAMPLER_H
 #define FLIPLAB_SAMPLER_H
@@ -194,7 +196,9 @@ typedef struct sampler_gon {
 } sampler_gon;
 extern const sampler_gon sampler_gons[];
 extern const size_t sampler_gons_count;
-/* The entry named s, or NULL; the names, comma-separated, for messages. */
+/* The entry named s, or NULL; the names, comma-separated, for messages
+** (a static string built on the first call: make that call before starting
+** threads that may make it too). */
 const sampler_gon *sampler_gon_find(const char *s);
 const char *sampler_gon_names(void);
 /* The region named s ("square", "disc", "triangle"), or -1; its name. */
