@@ -114,8 +114,9 @@ static double sampler_arc(geom_point e, geom_point f) {
 /* Area of the convex polygon c intersected with the unit disc: the polygon
 ** q of its inside vertices and boundary crossings, plus a segment for each
 ** arc from a leaving crossing to the next entering one.  The crossings
-** follow the vertices' inside test (|p|^2 < 1), clamped onto their edge, so
-** that entries and exits alternate even for a vertex on the circle. */
+** follow the vertices' inside test (|p|^2 < 1) and sampler_dips, clamped
+** onto their edge, so that entries and exits alternate even for vertices
+** on the circle. */
 typedef struct sampler_arcs {
   sampler_clip q;
   geom_point out;
@@ -135,18 +136,27 @@ static void sampler_arcs_exit(sampler_arcs *s, geom_point x) {
   s->q.v[s->q.n++] = x;
 }
 
+/* Does the segment p r, both ends outside, pass inside the disc?  Its
+** point nearest the centre (the roots' midpoint, clamped to the segment) is
+** inside: a chord whose ends lie on the circle (the cap polygon's) counts,
+** which a test of the roots against (0, 1) can miss by rounding. */
+static int sampler_dips(geom_point p, geom_point r, const double t[2]) {
+  geom_point m = sampler_lerp(p, r, (t[0] + t[1]) / 2);
+  return m.x * m.x + m.y * m.y < 1;
+}
+
 static double sampler_disc_area(const sampler_clip *c) {
   sampler_arcs s = {.have_out = 0, .first_entry = -1, .seg = 0};
   s.q.n = 0;
   for (int i = 0; i < c->n && s.q.n + 2 < SAMPLER_CLIP_MAX; i++) {
     geom_point p = c->v[i], r = c->v[(i + 1) % c->n];
     int pin = p.x * p.x + p.y * p.y < 1, rin = r.x * r.x + r.y * r.y < 1;
-    double t[2] = {0, 1};
+    double t[2] = {1, 0};   /* no root (a tangent, by rounding): cross at the inside end */
     int m = sampler_circle_cross(p, r, t);
     if (pin) s.q.v[s.q.n++] = p;
-    if (pin && !rin) sampler_arcs_exit(&s, sampler_lerp(p, r, m ? t[1] : 1));
-    if (!pin && rin) sampler_arcs_entry(&s, sampler_lerp(p, r, m ? t[0] : 0));
-    if (!pin && !rin && m && t[0] > 0 && t[1] < 1 && t[0] < t[1]) {
+    if (pin && !rin) sampler_arcs_exit(&s, sampler_lerp(p, r, t[1]));
+    if (!pin && rin) sampler_arcs_entry(&s, sampler_lerp(p, r, t[0]));
+    if (!pin && !rin && m && sampler_dips(p, r, t)) {
       sampler_arcs_entry(&s, sampler_lerp(p, r, t[0]));
       sampler_arcs_exit(&s, sampler_lerp(p, r, t[1]));
     }
