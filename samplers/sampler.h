@@ -207,8 +207,9 @@ const char *sampler_region_name(int r);
 extern const char sampler_region_names[];
 
 /* Can sampler `name` draw n-gons in region (-1: none given, which means
-** the square for the samplers that take one; vector and circle take none)?  0, or -1 with a one-line message
-** (unknown sampler, region, n below 3 or beyond naive rejection's 10). */
+** the square for the samplers that take one; vector and circle take none)?
+** 0, or -1 with a one-line message (unknown sampler, region, n below 3 or
+** beyond naive rejection's 10). */
 int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t errlen);
 
 /* Polygon `index` of stream `seed` from s (its own stream, GEOM_STREAM_SAMPLE
