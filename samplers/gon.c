@@ -41,22 +41,27 @@ int sampler_gon_naive(sampler_rng *g, size_t n, const sampler_gon_params *p, geo
   return 0;
 }
 
+/* A polygon sampler of its own signature, its output rotated to start at
+** the lexicographically smallest vertex (the draws are its own). */
+static int sampler_gon_plain(int (*fn)(sampler_rng *, size_t, geom_point *), sampler_rng *g,
+                             size_t n, geom_point *out) {
+  int rc = fn(g, n, out);
+  if (rc == 0) sampler_lexfirst(out, n);
+  return rc;
+}
+
 static int sampler_gon_vector(sampler_rng *g, size_t n, const sampler_gon_params *p,
                               geom_point *out, sampler_gon_info *info) {
   (void)p;
   (void)info;
-  int rc = sampler_vector(g, n, out);
-  if (rc == 0) sampler_lexfirst(out, n);
-  return rc;
+  return sampler_gon_plain(sampler_vector, g, n, out);
 }
 
 static int sampler_gon_circle(sampler_rng *g, size_t n, const sampler_gon_params *p,
                               geom_point *out, sampler_gon_info *info) {
   (void)p;
   (void)info;
-  int rc = sampler_circle(g, n, out);
-  if (rc == 0) sampler_lexfirst(out, n);
-  return rc;
+  return sampler_gon_plain(sampler_circle, g, n, out);
 }
 
 #define ALL ((1u << SAMPLER_REGION_COUNT) - 1)
