@@ -25,6 +25,7 @@ static const cli_command cli_commands[] = {
   {"census",   cli_cmd_census,   "table 3.4 for any n: flip graphs of random site sets"},
   {"averages", cli_cmd_averages, "chapter 5's exact averages over all triangulations"},
   {"cpdt",     cli_cmd_cpdt,     "chapter 5: Delaunay triangulations of convex polygons, counted"},
+  {"convex",   cli_cmd_convex,   "random convex n-gons (chapter 6): CSV, SVG, statistics"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])
 

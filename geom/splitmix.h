@@ -51,7 +51,8 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **   GEOM_STREAM_SAMPLE(i)   sample i of a census or table: pentagon i of
 **                           every pentagon sampler (table34, rule,
 **                           classify's inputs via sample), site set i of
-**                           every site sampler (census, rule --sites); so
+**                           every site sampler (census, rule --sites),
+**                           polygon i of `convex` (every n-gon sampler); so
 **                           sample i depends on (seed, i) alone, whatever
 **                           the threads and shards.  Indices run from 0 up
 **                           to the 2^40 samples a run may ask for.

@@ -376,5 +376,12 @@ int report_cpdt_csv(FILE *f, const char *sampler, uint64_t trials, const study_c
                     size_t ncells);
 int report_cpdt_svg(FILE *f, const char *title, const study_cpdt_cell *cells, size_t ncells,
                     const int *algorithms, size_t nalgorithms, int count);
+/* ---- random convex polygons (reports/svg_convex.c) ---- */
+
+/* count polygons of n vertices each (xy[k n .. k n + n)), panels in rows
+** of four at one common scale, titled with index[k] and, when log_weight
+** is not NULL, the log weight.  0, or -1 once the stream has an error. */
+int report_convex_svg(FILE *f, const geom_point *xy, size_t n, size_t count,
+                      const uint64_t *index, const double *log_weight);
 
 #endif

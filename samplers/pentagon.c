@@ -21,6 +21,7 @@
 #include <string.h>
 #include "sampler.h"
 #include "splitmix.h"
+#include "gon_internal.h"
 
 static inline uint64_t sampler_rotl(uint64_t x, int k) {
   return (x << k) | (x >> (64 - k));
@@ -145,32 +146,57 @@ static int sampler_hull_insert(geom_point *h, int n, geom_point p) {
 
 /* Add p to the strictly convex anticlockwise hull h[0..n-1] (h has room
 ** for n + 1 points; n < SAMPLER_HULL_MAX) and return the new size.  Not in sampler.h:
-** exposed for test_sampler's degenerate cases, which declare it; hidden from
-** the shared library's symbols like an *_internal.h function. */
-FLIPLAB_INTERNAL int sampler_hull_add(geom_point *h, int n, geom_point p);
+** declared in gon_internal.h (naive rejection uses it) and by test_sampler
+** for its degenerate cases. */
 int sampler_hull_add(geom_point *h, int n, geom_point p) {
   return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
 }
 
-/* v = h rotated to start at the lexicographically smallest vertex, so the
-** labelling v0..v{n-1} does not depend on the order the hull was built in. */
-static void sampler_lexfirst(const geom_point *h, int n, geom_point *v) {
-  int s = 0;
-  for (int k = 1; k < n; k++)
-    if (geom_lexless(h[k], h[s])) s = k;
-  for (int k = 0; k < n; k++) v[k] = h[(s + k) % n];
+static void sampler_reverse(geom_point *v, size_t lo, size_t hi) {
+  for (; lo + 1 < hi; lo++, hi--) {
+    geom_point t = v[lo];
+    v[lo] = v[hi - 1];
+    v[hi - 1] = t;
+  }
+}
+
+/* v rotated in place (three reversals, O(n)) to start at its
+** lexicographically smallest vertex, so the labelling v0..v{n-1} does not
+** depend on the order the hull was built in. */
+void sampler_lexfirst(geom_point *v, size_t n) {
+  size_t s = 0;
+  for (size_t k = 1; k < n; k++)
+    if (geom_lexless(v[k], v[s])) s = k;
+  if (s == 0) return;
+  sampler_reverse(v, 0, s);
+  sampler_reverse(v, s, n);
+  sampler_reverse(v, 0, n);
+}
+
+/* Did the hull change?  The new hull holds p exactly when p was outside
+** (or extended a segment of collinear points); compared whole, it is O(n). */
+static int sampler_hull_changed(const geom_point *a, int na, const geom_point *b, int nb) {
+  return na != nb || memcmp(a, b, (size_t)na * sizeof *a) != 0;
+}
+
+void sampler_convex_rng(sampler_rng *g, int n, geom_point *v, uint64_t *changes) {
+  geom_point h[SAMPLER_HULL_MAX], old[SAMPLER_HULL_MAX];
+  int m = 0;
+  while (m != n) {
+    geom_point p = sampler_disc(g);
+    int was = m;
+    if (changes != NULL) memcpy(old, h, (size_t)m * sizeof *h);
+    m = sampler_hull_add(h, m, p);
+    if (changes != NULL) *changes += (uint64_t)sampler_hull_changed(old, was, h, m);
+  }
+  memcpy(v, h, (size_t)n * sizeof *v);
+  sampler_lexfirst(v, (size_t)n);
 }
 
 void sampler_convex(uint64_t seed, uint64_t index, int n, geom_point *v) {
   sampler_rng g;
   sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
-  geom_point h[SAMPLER_HULL_MAX];
-  int m = 0;
-  while (m != n) {
-    geom_point p = sampler_disc(&g);
-    m = sampler_hull_add(h, m, p);
-  }
-  sampler_lexfirst(h, n, v);
+  sampler_convex_rng(&g, n, v, NULL);
 }
 
 void sampler_pentagon(uint64_t seed, uint64_t index, geom_point v[5]) {
@@ -232,7 +258,8 @@ static int sampler_pentagon_polygon(uint64_t seed, uint64_t index, geom_point v[
   sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));
   while ((rc = draw(&g, 5, h)) == -1) {}
   if (rc != 0) return rc;
-  sampler_lexfirst(h, 5, v);
+  memcpy(v, h, sizeof h);
+  sampler_lexfirst(v, 5);
   return 0;
 }
 
@@ -255,7 +282,8 @@ static int sampler_pentagon_dischull(uint64_t seed, uint64_t index, geom_point v
     m = 0;
     for (int k = 0; k < 5; k++) m = sampler_hull_add(h, m, sampler_disc(&g));
   } while (m != 5);
-  sampler_lexfirst(h, 5, v);
+  memcpy(v, h, 5 * sizeof *v);
+  sampler_lexfirst(v, 5);
   return 0;
 }
 

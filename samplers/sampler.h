@@ -11,7 +11,9 @@
 ** uniform in the unit disc, kept when in convex position).
 **
 ** For large n: the vector method (section 6.4) and points on a circle.
-** The methods and the streams: docs/sampling.md.
+** Random convex n-gons of every method of chapter 6, by name: the section
+** "random convex n-gons" below.  The methods and the streams:
+** docs/sampling.md.
 */
 #ifndef FLIPLAB_SAMPLER_H
 #define FLIPLAB_SAMPLER_H
@@ -153,5 +155,87 @@ int sampler_segments(sampler_rng *g, const geom_point *p, size_t n, size_t m, ui
 ** 0, SAMPLER_ENOMEM, or -1 (n below 3 or above SAMPLER_PSLG_MAX_GRID). */
 #define SAMPLER_PSLG_MAX_GRID 0x3fffffffu
 int sampler_pslg_grid(sampler_rng *g, size_t n, geom_pslg *out);
+
+/* ---- random convex n-gons, chapter 6 (samplers/gon.c, docs/sampling.md) ----
+**
+** Every method of the thesis's chapter 6 (and Valtr's direct one) behind
+** one signature, and a registry of them by name.  The regions the points of
+** the point-based methods are drawn from: the unit square [0, 1]^2, the
+** unit disc (centre 0, radius 1), the triangle (0, 0), (1, 0), (0, 1). */
+typedef enum sampler_region {
+  SAMPLER_REGION_SQUARE, SAMPLER_REGION_DISC, SAMPLER_REGION_TRIANGLE, SAMPLER_REGION_COUNT
+} sampler_region;
+
+typedef struct sampler_gon_params {
+  sampler_region region;
+  int law;              /* a method's variant, e.g. the bounce law; 0 = default */
+  const char *inner;    /* the dual's inner method, NULL = default */
+} sampler_gon_params;
+
+typedef struct sampler_gon_info {
+  double log_weight;      /* ln of the bias-correcting weight (0 when unweighted) */
+  uint64_t hull_changes;  /* h of the iteration method, else 0 */
+  uint64_t draws;         /* random points drawn or events processed */
+} sampler_gon_info;
+
+/* out: n vertices, strictly convex (checked exactly), anticlockwise from the
+** lexicographically smallest; returns 0, SAMPLER_ENOMEM, or -1 with no
+** polygon (e.g. n beyond what doubles can realise). */
+typedef int (*sampler_gon_fn)(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
+
+/* The registry: name, function, cost, law (one line each, for help and
+** docs), whether the output carries a weight, and the regions it takes
+** (a bit mask of 1 << sampler_region; 0: it draws no points from one). */
+typedef struct sampler_gon {
+  const char *name;
+  sampler_gon_fn draw;
+  const char *cost, *law;
+  int weighted;
+  unsigned regions;
+} sampler_gon;
+extern const sampler_gon sampler_gons[];
+extern const size_t sampler_gons_count;
+/* The entry named s, or NULL; the names, comma-separated, for messages
+** (a static string built on the first call: make that call before starting
+** threads that may make it too). */
+const sampler_gon *sampler_gon_find(const char *s);
+const char *sampler_gon_names(void);
+/* The region named s ("square", "disc", "triangle"), or -1; its name. */
+int sampler_region_find(const char *s);
+const char *sampler_region_name(int r);
+extern const char sampler_region_names[];
+
+/* Can sampler `name` draw n-gons in region (-1: none given, which means
+** the square for the samplers that take one; vector and circle take none)?
+** 0, or -1 with a one-line message (unknown sampler, region, n below 3 or
+** beyond naive rejection's 10). */
+int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t errlen);
+
+/* Polygon `index` of stream `seed` from s (its own stream, GEOM_STREAM_SAMPLE
+** (index): any thread count gives the same polygons): s->draw, then the
+** exact check that out is strictly convex and anticlockwise (-1 if not).
+** 0, SAMPLER_ENOMEM, or -1 (n < 3, a region s does not take, or s failed). */
+int sampler_gon_draw(const sampler_gon *s, const sampler_gon_params *p, uint64_t seed,
+                     uint64_t index, size_t n, geom_point *out, sampler_gon_info *info);
+
+/* The methods (each a sampler_gon_fn; docs/sampling.md gives the laws):
+**   rejection   6.2: n iid points of the region conditioned on convex
+**               position, drawn point by point in the acceptance regions
+**               with the weight exp(log_weight); O(n log n)
+**   naive       n iid points drawn again until in convex position (exact,
+**               unweighted; affordable for small n only)
+**   iteration   6.3: points of the region until their hull has n vertices,
+**               drawing only outside the hull; O(h log n) for h hull changes
+**   valtr       Valtr's direct uniform convex n-gon in the square: the law
+**               of rejection in the square, unweighted; O(n log n) */
+int sampler_gon_rejection(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                          geom_point *out, sampler_gon_info *info);
+int sampler_gon_naive(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                      sampler_gon_info *info);
+int sampler_gon_iteration(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                          geom_point *out, sampler_gon_info *info);
+int sampler_gon_valtr(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                      sampler_gon_info *info);
 
 #endif

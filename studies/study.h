@@ -208,4 +208,55 @@ const char *study_gotcheck_get_text(const study_gotcheck *c, const char *name);
 const uint32_t *study_gotcheck_triangles(const study_gotcheck *c);
 const got_result *study_gotcheck_got(const study_gotcheck *c);
 
+/* ---- random convex polygons (studies/convex.c, docs/sampling.md) --------
+** Per polygon: area, perimeter, the iteration method's hull changes h,
+** unimodality (1 when from every vertex the distances to the others, round
+** the boundary, rise then fall; NaN above STUDY_CONVEX_UNIMODAL_MAX
+** vertices, the test being O(n^2)), and 1 when the minimum-area and the
+** minimum-perimeter enclosing rectangles differ (rotating calipers, O(n)).
+** Near-equal squared distances, areas and perimeters (relative 1e-12)
+** count as equal. */
+enum { STUDY_CONVEX_AREA, STUDY_CONVEX_PERIMETER, STUDY_CONVEX_H, STUDY_CONVEX_UNIMODAL,
+       STUDY_CONVEX_RECT_DIFFER, STUDY_CONVEX_NSTATS };
+#define STUDY_CONVEX_UNIMODAL_MAX 2000
+extern const char *const study_convex_stat_names[STUDY_CONVEX_NSTATS];
+void study_convex_measure(const geom_point *v, size_t n, uint64_t h,
+                          double out[STUDY_CONVEX_NSTATS]);
+
+/* Weighted means of the statistics over polygons added in index order, and
+** 95% intervals (self-normalised importance sampling; studies/convex.c). */
+typedef struct study_convex_acc {
+  uint64_t count, missing[STUDY_CONVEX_NSTATS];
+  double ref;                     /* the log weight the sums are relative to */
+  double w, w2, wx[STUDY_CONVEX_NSTATS], w2x[STUDY_CONVEX_NSTATS], w2xx[STUDY_CONVEX_NSTATS];
+} study_convex_acc;
+void study_convex_acc_init(study_convex_acc *a);
+void study_convex_acc_add(study_convex_acc *a, double log_weight,
+                          const double x[STUDY_CONVEX_NSTATS]);
+void study_convex_acc_mean(const study_convex_acc *a, int k, double *mean, double *half);
+double study_convex_acc_ess(const study_convex_acc *a);
+/* The same over arrays (count rows of STUDY_CONVEX_NSTATS statistics, their
+** log weights, NULL: equal): means, half-widths, the effective sample size. */
+void study_convex_summary(const double *stats, const double *log_weight, size_t count,
+                          double *mean, double *half, double *ess);
+/* Statistic k's name ("area", ...), NULL past the last (for front ends). */
+const char *study_convex_stat_name(int k);
+
+/* Polygons first .. first + count - 1 of a sampler (samplers/sampler.h's
+** registry) on threads (0: all cores): polygon i into xy[i n .. i n + n),
+** its log weight and h, and its STUDY_CONVEX_NSTATS statistics at stats[i
+** STUDY_CONVEX_NSTATS ...] (study_convex_measure; these three may be
+** NULL).  The same output for any
+** thread count.  0; or the first failing polygon's code (-1, or
+** SAMPLER_ENOMEM) with its index in *failed; -1 for an unknown sampler. */
+typedef struct study_convex_run {
+  const char *sampler;
+  int region, law, threads;
+  size_t n;
+  uint64_t seed;
+} study_convex_run;
+int study_convex_draw(const study_convex_run *run, uint64_t first, uint64_t count,
+                      geom_point *xy, double *log_weight, uint64_t *h, double *stats,
+                      uint64_t *failed);
+
 #endif

@@ -27,8 +27,9 @@ from ._args import MAX_THREADS
 from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, LotDiff, Measure,
                        Point, Point_p, ProgressFn, ReportCensusMeta, ReportCensusRow,
                        ReportMeta, ReportPoly, ReportRow, Rule, Rule_p, RuleQuad,
-                       SamplerPentagons, SamplerRng, SiteflipCounts, SiteflipGraph_p, SiteflipResult, c_double_p, c_int32_p,
-                       c_uint32_p, RULE_TRIANGLE)
+                       SamplerPentagons, SamplerRng, SiteflipCounts, SiteflipGraph_p,
+                       SiteflipResult, StudyConvexRun, c_double_p, c_int32_p, c_uint32_p,
+                       RULE_TRIANGLE)
 
 SONAME = "libfliplab.so.0.1"
 
@@ -196,6 +197,10 @@ _PROTOS = {
     "sampler_sites_find": (_int, [_char_p]),
     "sampler_sites": (_int, [_int, _u64, _u64, _int, Point_p]),
     "sampler_quad": (None, [_u64, _u64, Point_p]),
+    "sampler_gon_check": (_int, [_char_p, _int, _size, _char_p, _size]),
+    "sampler_region_find": (_int, [_char_p]),
+    "sampler_region_name": (_char_p, [_int]),
+    "sampler_gon_names": (_char_p, []),
     "sampler_seed": (None, [_rng_p, _u64, _u64]),
     "sampler_vector": (_int, [_rng_p, _size, Point_p]),
     "sampler_circle": (_int, [_rng_p, _size, Point_p]),
@@ -235,6 +240,11 @@ _PROTOS = {
     "study_cpdt_slope": (_double, [_void_p, _size, _int, _int]),
     # studies/study.h: the studies, their results through verbs (_studies.py)
     "study_wilson": (None, [_u64, _u64, c_double_p, c_double_p]),
+    "study_convex_draw": (_int, [ctypes.POINTER(StudyConvexRun), _u64, _u64, Point_p, c_double_p,
+                                 _u64_p, c_double_p, _u64_p]),
+    "study_convex_summary": (None, [c_double_p, c_double_p, _size, c_double_p, c_double_p,
+                                    c_double_p]),
+    "study_convex_stat_name": (_char_p, [_int]),
     "study_pentagons": (_int, [Rule_p, _int, ctypes.POINTER(FlipgraphRun), _int, _void_p]),
     "study_quads": (_int, [Rule_p, _u64, _u64, _int, _void_p, _char_p, _size]),
     "study_sites": (_int, [Rule_p, _int, _int, _u64, _u64, _double, _int, _void_p, _char_p,

@@ -131,6 +131,12 @@ class FlipgraphRun(ctypes.Structure):
                 ("each_ctx", ctypes.c_void_p), ("sampler", PentagonFn)]
 
 
+class StudyConvexRun(ctypes.Structure):
+    """study_convex_run (studies/study.h)."""
+    _fields_ = [("sampler", ctypes.c_char_p), ("region", ctypes.c_int), ("law", ctypes.c_int),
+                ("threads", ctypes.c_int), ("n", ctypes.c_size_t), ("seed", ctypes.c_uint64)]
+
+
 SITEFLIP_COUNTS = ("samples", "tie", "no_sink", "one_sink", "multi_sink", "sink_dt", "sinks",
                    "max_sinks", "gap_units")
 

@@ -21,6 +21,7 @@
 #include "siteflip.h"
 #include "got.h"
 #include "report.h"
+#include "study.h"
 
 #define Z(S) printf("%s sizeof %zu\n", #S, sizeof(S))
 #define F(S, m) printf("%s %s %zu %zu\n", #S, #m, offsetof(S, m), sizeof(((S *)0)->m))
@@ -146,5 +147,8 @@ int main(void) {
   layout_census();
   layout_siteflip();
   layout_got();
+  Z(study_convex_run); F(study_convex_run, sampler); F(study_convex_run, region);
+  F(study_convex_run, law); F(study_convex_run, threads); F(study_convex_run, n);
+  F(study_convex_run, seed);
   return fflush(stdout) != 0 || ferror(stdout) ? 1 : 0;
 }

@@ -43,6 +43,7 @@ MIRRORS = {
     "_mirrors.LotDiff": ("lot_diff", True, {}),
     "_mirrors.FlipgraphCounts": ("flipgraph_counts", True, {}),
     "_mirrors.FlipgraphRun": ("flipgraph_run", True, {}),
+    "_mirrors.StudyConvexRun": ("study_convex_run", True, {}),
     "_mirrors.SiteflipCounts": ("siteflip_counts", True, {}),
     "_mirrors.SiteflipQuad": ("siteflip_quad", True, {}),
     "_mirrors.SiteflipEdge": ("siteflip_edge", True, {}),

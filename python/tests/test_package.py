@@ -179,6 +179,8 @@ CHOICES = {
     ("fliplab.samplers.polygon", "sampler"): fliplab.samplers.POLYGONS,
     ("fliplab.table34", "sampler"): fliplab.samplers.PENTAGON_SAMPLERS,
     ("fliplab.census", "sampler"): fliplab.samplers.SITE_SETS,
+    ("fliplab.convex_polygons", "sampler"): fliplab.CONVEX_SAMPLERS,
+    ("fliplab.convex_polygons", "region"): fliplab.REGIONS,
     ("fliplab.Counts.to_csv", "format"): fliplab.FORMATS,
     ("fliplab.measure", "sign"): fliplab.SIGNS,
     ("fliplab.ch5_averages", "method"): fliplab.CH5_METHODS,
