@@ -139,6 +139,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     shape_free(k);
     return NULL;
   }
+  k->impl->moderate = shape_xp_moderate(k);
   shape_variant v = SHAPE_V_POLYGON;
   if (shape_square_is(k)) v = SHAPE_V_SQUARE;
   if (k->impl->hexa != NULL) v = SHAPE_V_HEXAGON;
@@ -247,6 +248,7 @@ static shape *shape_parse_ellipse(const char *spec, const char *s, char *err, si
     shape_free(k);
     return NULL;
   }
+  k->impl->moderate = shape_xp_moderate(k);
   return k;
 }
 

@@ -1,14 +1,16 @@
 /*
 ** shape_arith.c: the shape predicates (shape_internal.h) as programs over a
-** register file that runs either on doubles with an error bound or on
-** exact rationals, and the driver that runs the first and, when it cannot
-** decide, the second.
+** register file that runs on doubles with an error bound, on exact
+** floating-point expansions or on exact rationals, and the driver that
+** runs the first and, when it cannot decide, the second when the inputs
+** allow it, else the third.
 */
 #include <math.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <gmp.h>
 #include "fliplab_config.h"
+#include "geom_exact_internal.h"
 #include "shape_internal.h"
 
 /* ---- why the double run's sign can be trusted -------------------------
@@ -45,9 +47,27 @@
 ** predicate far from both: inputs are 0 or in [2^-100, 2^100], degrees at
 ** most 8.
 **
-** The exact run repeats the program on mpq_t registers (every double is a
-** rational) of the pool of shape_mpq.c, so both runs are the same program:
-** one place to get right. */
+** The exact run repeats the program on exact registers, so every run is
+** the same program: one place to get right.  Those registers are GMP
+** rationals (every double is a rational; the pool of shape_mpq.c), or,
+** first, floating-point expansions (the pool of shape_xp.c: +, - and *
+** carried out exactly by the error-free transformations of
+** geom_exact_internal.h), tens of times cheaper, when no step can
+** overflow or underflow.  That holds when every input (site coordinate,
+** polygon vertex coordinate, ellipse form entry) is 0 or of magnitude in
+** [2^-80, 2^80] (shape_xp_may): each leaf of a program (an input or the
+** difference of two) is then a multiple of g = 2^-132 (the last bit of a
+** double of magnitude at least 2^-80) of magnitude at most 2^81.  A
+** program's terms are products of at most 8 leaves (the corner's rows
+** (X Y, X, Y) with X, Y of degree 2), so every product the expansions
+** form, and every component of every sum (two_sum and two_product keep
+** multiples of their operands' granularities), is a multiple of g^8 =
+** 2^-1056, above the smallest subnormal 2^-1074: nothing is lost below.
+** Above, every value is at most 2^(8 * 81) times the number of terms (far
+** below 2^300), so Dekker's split (which multiplies by 2^27 + 1) and every
+** sum stay far below overflow.  A run that outgrows its pool gives up and
+** GMP decides; geom_exact_gmp_only (the tests' reference mode) sends every
+** exact run to GMP. */
 
 /* A program's value: in the double run the value v, its twin t and its
 ** rounding count k (plain numbers: a double run inlines into straight-line
@@ -61,13 +81,22 @@ typedef struct shape_num {
 typedef struct shape_ar {
   int exact;               /* 0: the double run, 1: the exact run */
   int poison;              /* a product underflowed: the double run decides nothing */
-  shape_mpq *P;            /* the registers (exact run) */
+  shape_mpq *P;            /* the registers (exact run on rationals) */
+  shape_xp *X;             /* the registers (exact run on expansions), or NULL */
 } shape_ar;
 
-static atomic_ulong shape_exact_count;
+/* The exact runs by program and deciding stage. */
+static atomic_ulong shape_exact_count[SHAPE_PROG_COUNT][GEOM_STAGE_COUNT];
+
+unsigned long shape_exact_stage_calls(shape_prog p, geom_stage s) {
+  return atomic_load_explicit(&shape_exact_count[p][s], memory_order_relaxed);
+}
 
 unsigned long shape_exact_calls(void) {
-  return atomic_load_explicit(&shape_exact_count, memory_order_relaxed);
+  unsigned long n = 0;
+  for (int p = 0; p < SHAPE_PROG_COUNT; p++)
+    for (int s = 0; s < GEOM_STAGE_COUNT; s++) n += shape_exact_stage_calls(p, s);
+  return n;
 }
 
 /* The exact run's rational of value i, and a new register of it.  The
@@ -84,6 +113,7 @@ static shape_num shape_reg(shape_ar *a) {
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_in(shape_ar *a, double x) {
   if (!a->exact) return (shape_num){x, fabs(x), 0, 0};
+  if (a->X) return (shape_num){.q = shape_xp_d(a->X, x)};
   shape_mpq_d(a->P, x);
   return (shape_num){.q = a->P->n - 1};
 }
@@ -91,6 +121,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_in(shape_ar *a, double x) {
 /* x - y of two inputs, one rounded leaf (the bound's argument). */
 static FLIPLAB_ALWAYS_INLINE shape_num shape_dif(shape_ar *a, double x, double y) {
   if (!a->exact) return (shape_num){x - y, fabs(x - y), 1, 0};
+  if (a->X) return (shape_num){.q = shape_xp_diff(a->X, x, y)};
   shape_mpq_diff(a->P, x, y);
   return (shape_num){.q = a->P->n - 1};
 }
@@ -101,6 +132,7 @@ static FLIPLAB_ALWAYS_INLINE int shape_kmax(shape_num i, shape_num j) {
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_add(shape_ar *a, shape_num i, shape_num j) {
   if (!a->exact) return (shape_num){i.v + j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
+  if (a->X) return (shape_num){.q = shape_xp_add(a->X, i.q, j.q, 0)};
   shape_num r = shape_reg(a);
   mpq_add(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
@@ -108,6 +140,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_add(shape_ar *a, shape_num i, shape
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_sub(shape_ar *a, shape_num i, shape_num j) {
   if (!a->exact) return (shape_num){i.v - j.v, i.t + j.t, shape_kmax(i, j) + 1, 0};
+  if (a->X) return (shape_num){.q = shape_xp_add(a->X, i.q, j.q, 1)};
   shape_num r = shape_reg(a);
   mpq_sub(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
@@ -115,6 +148,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_sub(shape_ar *a, shape_num i, shape
 
 static FLIPLAB_ALWAYS_INLINE shape_num shape_neg(shape_ar *a, shape_num i) {
   if (!a->exact) return (shape_num){-i.v, i.t, i.k, 0};
+  if (a->X) return (shape_num){.q = shape_xp_neg(a->X, i.q)};
   shape_num r = shape_reg(a);
   mpq_neg(shape_q(a, r), shape_q(a, i));
   return r;
@@ -126,6 +160,7 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_mul(shape_ar *a, shape_num i, shape
     a->poison |= (r.t < 0x1p-1000) & (i.t != 0) & (j.t != 0);
     return r;
   }
+  if (a->X) return (shape_num){.q = shape_xp_mul(a->X, i.q, j.q)};
   shape_num r = shape_reg(a);
   mpq_mul(shape_q(a, r), shape_q(a, i), shape_q(a, j));
   return r;
@@ -521,9 +556,45 @@ int shape_det3h_sign(const shape *K, const int e[3]) {
   return shape_sign(SHAPE_PROG_DET3H, &g);
 }
 
-/* The exact run: the same program on rationals. */
+/* The range of the expansion run's inputs (the argument at the top). */
+static int shape_xp_in(double x) {
+  return geom_moderate(x, 0x1p-80, 0x1p80);
+}
+
+int shape_xp_moderate(const shape *K) {
+  int ok = 1;
+  for (int i = 0; i < K->n; i++) ok &= shape_xp_in(K->v[i].x) & shape_xp_in(K->v[i].y);
+  if (K->kind == SHAPE_ELLIPSE)
+    ok &= shape_xp_in(K->q11) & shape_xp_in(2 * K->q12) & shape_xp_in(K->q22);
+  return ok;
+}
+
+/* The expansion run may decide g: K and every site the program reads in
+** range (unused sites are {0, 0}), and GMP not forced. */
+static int shape_xp_may(const shape_args *g) {
+  int ok = g->K->impl->moderate & shape_xp_in(g->o.x) & shape_xp_in(g->o.y);
+  for (int r = 0; r < 4; r++) ok &= shape_xp_in(g->p[r].x) & shape_xp_in(g->p[r].y);
+  return ok && !geom_exact_gmp_forced();
+}
+
+static void shape_exact_note(shape_prog p, geom_stage s) {
+  atomic_fetch_add_explicit(&shape_exact_count[p][s], 1, memory_order_relaxed);
+}
+
+/* The exact run: the same program on expansions, or when they may not
+** decide it, on rationals. */
 static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
-  atomic_fetch_add_explicit(&shape_exact_count, 1, memory_order_relaxed);
+  if (shape_xp_may(g)) {
+    shape_xp X;
+    shape_xp_init(&X);
+    shape_ar a = {.exact = 1, .X = &X};
+    int r = shape_progs[p](&a, g).q;
+    if (!X.full) {
+      shape_exact_note(p, GEOM_STAGE_EXPANSION);
+      return shape_xp_sign(&X, r);
+    }
+  }
+  shape_exact_note(p, GEOM_STAGE_GMP);
   shape_mpq P;
   shape_mpq_init(&P);
   shape_ar a = {.exact = 1, .P = &P};

@@ -3,15 +3,17 @@
 ** variant, chosen once when it is made, with that variant's decisions and
 ** tables), and the filtered arithmetic behind the shape predicates
 ** (shape_arith.c): one program per predicate, run first on doubles with a
-** proven error bound, then, when the bound cannot tell the sign, on exact
-** GMP rationals (from one pool, shape_mpq.c).  Private to shapes/ (not
-** installed).
+** proven error bound, then, when the bound cannot tell the sign, exactly:
+** on floating-point expansions (from one pool, shape_xp.c) when the inputs
+** allow it, else on GMP rationals (from another, shape_mpq.c).  Private to
+** shapes/ (not installed).
 */
 #ifndef FLIPLAB_SHAPE_INTERNAL_H
 #define FLIPLAB_SHAPE_INTERNAL_H
 
 #include <gmp.h>
 #include "fliplab_config.h"
+#include "predicates.h"   /* geom_stage */
 #include "shape.h"
 
 /* ---- variants -------------------------------------------------------------
@@ -51,6 +53,7 @@ struct shape_impl {
   struct shape_memo *memo;   /* shape-only determinants (shape_arith.c) */
   struct shape_quick *quick; /* the quick decision's table (shape_quick.c) */
   struct shape_hex *hexa;    /* an affinely regular hexagon's slabs (shape_hex.c) */
+  int moderate;              /* every coordinate (form entry) in the expansions' range */
 };
 
 static inline shape_variant shape_variant_of(const shape *k) {
@@ -84,7 +87,7 @@ typedef enum shape_prog {
   SHAPE_PROG_ELLIPSE, SHAPE_PROG_COUNT
 } shape_prog;
 
-/* The exact sign of a program's value (filter, then GMP). */
+/* The exact sign of a program's value (filter, then expansions, then GMP). */
 FLIPLAB_INTERNAL int shape_sign(shape_prog p, const shape_args *g);
 /* The sign under the perturbation: the value's sign, or when it is 0 the
 ** sign of the eps coefficient; *level (may be NULL) gets 0 or 1, or 2
@@ -92,7 +95,9 @@ FLIPLAB_INTERNAL int shape_sign(shape_prog p, const shape_args *g);
 FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
 
 /* Tests: 1 makes every sign skip the double run and take the exact one
-** (so a decision can be compared with its purely exact twin); 0 restores. */
+** (so a decision can be compared with its purely exact twin); 0 restores.
+** The exact run's stage is the expansions' unless geom_exact_gmp_only
+** (predicates.h) sends it to GMP. */
 FLIPLAB_INTERNAL void shape_set_exact_only(int on);
 FLIPLAB_INTERNAL int shape_only_exact;   /* the mode (shape_arith.c); read inline: */
 static inline int shape_exact_only(void) {   /* every decision asks */
@@ -179,6 +184,14 @@ FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_p
 /* The certain sign of SHAPE_PROG_CORNER of corner c, p[0..2] about o = p[3]
 ** (shape_polygon.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
+
+/* The exact runs of program p decided by stage s (GEOM_STAGE_EXPANSION or
+** GEOM_STAGE_GMP) over the process; shape_exact_calls is their total. */
+FLIPLAB_INTERNAL unsigned long shape_exact_stage_calls(shape_prog p, geom_stage s);
+/* 1 when every coordinate of polygon K (every entry of an ellipse's form)
+** lies in the expansion run's range (shape_arith.c): kept in K's moderate
+** when K is made. */
+FLIPLAB_INTERNAL int shape_xp_moderate(const shape *k);
 
 /* 1 when a - b is a double, exactly (GMP: for building a shape's tables);
 ** *d = fl(a - b) either way. */
@@ -269,6 +282,32 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
   }                                                                                             \
   const shape_ops shape_ops_##NAME = {shape_##NAME##_variant_decide,                            \
                                       shape_##NAME##_variant_hinted, WANTS}
+
+/* ---- exact expansions -----------------------------------------------------
+**
+** A pool of floating-point expansions (shape_xp.c): registers in one arena,
+** register 0 the value 0.  The expansion run of shape_arith.c takes its
+** registers here; a run that outgrows the arena or the register count
+** marks the pool full, every later verb answers register 0, and the run's
+** result is not read (GMP decides).  The verbs mirror the rationals' below:
+** a double, a - b of two doubles, i + j (i - j when neg), -i, i j, and the
+** sign of register i. */
+#define SHAPE_XP_REGS 320
+#define SHAPE_XP_ROOM 4096
+typedef struct shape_xp {
+  int n, used;              /* registers handed out, arena doubles used */
+  int full;                 /* 1: out of room; nothing computed since is exact */
+  int off[SHAPE_XP_REGS], len[SHAPE_XP_REGS];
+  double d[SHAPE_XP_ROOM];
+} shape_xp;
+
+FLIPLAB_INTERNAL void shape_xp_init(shape_xp *X);
+FLIPLAB_INTERNAL int shape_xp_d(shape_xp *X, double a);
+FLIPLAB_INTERNAL int shape_xp_diff(shape_xp *X, double a, double b);
+FLIPLAB_INTERNAL int shape_xp_add(shape_xp *X, int i, int j, int neg);
+FLIPLAB_INTERNAL int shape_xp_neg(shape_xp *X, int i);
+FLIPLAB_INTERNAL int shape_xp_mul(shape_xp *X, int i, int j);
+FLIPLAB_INTERNAL int shape_xp_sign(const shape_xp *X, int i);
 
 /* ---- exact rationals ------------------------------------------------------
 **

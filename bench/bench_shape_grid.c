@@ -1,0 +1,131 @@
+/*
+** bench_shape_grid.c: each empty-shape rule's LOT on the integer grid
+** beside uniform points of the same size, and which exact stages its
+** predicates fall to.
+**
+**   bench_shape_grid [N [RUNS [RULES [gmp]]]]
+**   (defaults 99856, 3, ES:square,ES:diamond,ES:hexagon,PENTAGON,ES:ellipse:2 1;
+**    PENTAGON is ES:poly:1 0;0.309 0.951;-0.809 0.588;-0.809 -0.588;0.309 -0.951)
+**
+** For each rule of the comma list: the median wall time of RUNS incremental
+** LOTs (lot_build, default options, seed 1) of the uniform and of the grid
+** sampler, their ratio (the issue's target: 3 at most), and for the grid
+** the exact runs of one LOT per predicate program and deciding stage
+** (expansions / GMP: shape_exact_stage_calls); with `gmp`, the grid's LOT
+** once more with every exact run sent to GMP (geom_exact_gmp_only): what
+** the expansion stage saves.  docs/performance.md, "Grids and integer
+** coordinates", has the table and the command.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "benchutil.h"
+#include "lot.h"
+#include "rule.h"
+#include "sampler.h"
+#include "shape_internal.h"
+
+#define BENCH_PENTAGON "ES:poly:1 0;0.309 0.951;-0.809 0.588;-0.809 -0.588;0.309 -0.951"
+
+/* One LOT of rule r on p: wall seconds. */
+static double bench_sg_lot(const rule *r, const geom_point *p, size_t n) {
+  lot_options o;
+  lot_options_init(&o, r);
+  lot *L;
+  char err[256];
+  double t0 = bench_wall();
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_shape_grid: %s\n", err);
+    exit(1);
+  }
+  double t = bench_wall() - t0;
+  lot_free(L);
+  return t;
+}
+
+static double bench_sg_median(const rule *r, const geom_point *p, size_t n, int runs) {
+  double t[16];
+  for (int i = 0; i < runs; i++) t[i] = bench_sg_lot(r, p, n);
+  return bench_median(t, runs);
+}
+
+static void bench_sg_snapshot(unsigned long c[SHAPE_PROG_COUNT][2]) {
+  for (int q = 0; q < SHAPE_PROG_COUNT; q++) {
+    c[q][0] = shape_exact_stage_calls(q, GEOM_STAGE_EXPANSION);
+    c[q][1] = shape_exact_stage_calls(q, GEOM_STAGE_GMP);
+  }
+}
+
+/* The exact runs since `since`, "exp/GMP" per program that had any. */
+static void bench_sg_counts(unsigned long since[SHAPE_PROG_COUNT][2], char *out,
+                            size_t size) {
+  static const char *const names[SHAPE_PROG_COUNT] = {"cross", "det3h", "det3w", "det4",
+                                                      "corner", "ellipse"};
+  unsigned long now[SHAPE_PROG_COUNT][2];
+  bench_sg_snapshot(now);
+  size_t used = 0;
+  out[0] = 0;
+  for (int q = 0; q < SHAPE_PROG_COUNT && used < size; q++) {
+    unsigned long x = now[q][0] - since[q][0], g = now[q][1] - since[q][1];
+    if (x + g > 0)
+      used += (size_t)snprintf(out + used, size - used, "%s%s %lu/%lu", used ? ", " : "",
+                               names[q], x, g);
+  }
+  if (used == 0) snprintf(out, size, "none");
+}
+
+/* One table row: rule `name` on uniform and grid points. */
+static int bench_sg_row(const char *name, const geom_point *u, const geom_point *g, size_t n,
+                        int runs, int gmp) {
+  rule r;
+  char err[256], counts[512], slow[32] = "";
+  if (rule_parse(name, &r, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_shape_grid: %s\n", err);
+    return 1;
+  }
+  double tu = bench_sg_median(&r, u, n, runs);
+  unsigned long since[SHAPE_PROG_COUNT][2];
+  bench_sg_snapshot(since);
+  bench_sg_lot(&r, g, n);
+  bench_sg_counts(since, counts, sizeof counts);
+  double tg = bench_sg_median(&r, g, n, runs);
+  if (gmp) {
+    int was = geom_exact_gmp_only(1);
+    snprintf(slow, sizeof slow, " %.3f |", bench_sg_lot(&r, g, n));
+    geom_exact_gmp_only(was);
+  }
+  printf("| %s | %.3f | %.3f | %.2f | %s |%s\n", name, tu, tg, tg / tu, counts, slow);
+  fflush(stdout);
+  return 0;
+}
+
+int main(int argc, char **argv) {
+  size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 99856;
+  int runs = argc > 2 ? atoi(argv[2]) : 3;
+  const char *rules = argc > 3 ? argv[3]
+                               : "ES:square,ES:diamond,ES:hexagon," BENCH_PENTAGON
+                                 ",ES:ellipse:2 1";
+  int gmp = argc > 4 && strcmp(argv[4], "gmp") == 0;
+  if (n < 3 || n > 20000000 || runs < 1 || runs > 15) {
+    fprintf(stderr, "usage: bench_shape_grid [N 3..2e7 [RUNS 1..15 [RULES [gmp]]]]\n");
+    return 2;
+  }
+  geom_point *u = malloc(n * sizeof *u), *g = malloc(n * sizeof *g);
+  char *list = strdup(rules);
+  if (u == NULL || g == NULL || list == NULL) return 1;
+  sampler_points(SAMPLER_UNIFORM, 1, n, u);
+  sampler_points(SAMPLER_GRID, 1, n, g);
+  printf("# bench_shape_grid: %zu points (seed 1), medians of %d runs; load average %.2f\n\n"
+         "| rule | uniform (s) | grid (s) | grid / uniform | grid's exact runs: "
+         "expansions/GMP |%s\n|---|---:|---:|---:|---|%s\n",
+         n, runs, bench_load(), gmp ? " grid, GMP only (s) |" : "", gmp ? "---:|" : "");
+  int rc = 0;
+  char *save = NULL;
+  for (char *s = strtok_r(list, ",", &save); s && rc == 0; s = strtok_r(NULL, ",", &save))
+    rc = bench_sg_row(s, u, g, n, runs, gmp);
+  printf("\n(load average at end: %.2f)\n", bench_load());
+  free(list);
+  free(u);
+  free(g);
+  return rc;
+}
