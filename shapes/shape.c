@@ -55,6 +55,7 @@ static void shape_impl_set(shape *k, shape_variant v) {
   switch (v) {
   case SHAPE_V_POLYGON: ops = &shape_ops_polygon; break;
   case SHAPE_V_SQUARE: ops = &shape_ops_square; break;
+  case SHAPE_V_DIAMOND: ops = &shape_ops_diamond; break;
   case SHAPE_V_HEXAGON: ops = &shape_ops_hexagon; break;
   case SHAPE_V_ELLIPSE: ops = &shape_ops_ellipse; break;
   }
@@ -113,7 +114,8 @@ static void shape_halves(shape *k) {
 ** the coordinate contract (so the predicates' bound holds), anticlockwise
 ** (a clockwise list is reversed, keeping its first vertex); then its
 ** tables, and its variant: a square or a hexagon with a decision of its
-** own (shape_square_is, shape_hex_build), else the general polygon. */
+** own (shape_square_is, shape_diamond_is, shape_hex_build), else the
+** general polygon. */
 static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *err,
                             size_t errlen) {
   shape *k = shape_new(SHAPE_POLYGON, n);
@@ -142,6 +144,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
   k->impl->moderate = shape_xp_moderate(k);
   shape_variant v = SHAPE_V_POLYGON;
   if (shape_square_is(k)) v = SHAPE_V_SQUARE;
+  if (shape_diamond_is(k)) v = SHAPE_V_DIAMOND;
   if (k->impl->hexa != NULL) v = SHAPE_V_HEXAGON;
   shape_impl_set(k, v);
   return k;

@@ -20,13 +20,14 @@
 **
 ** Every shape is one variant, each with a decision of its own, told apart
 ** once when the shape is made (shape.c, shape_impl_set, one exhaustive
-** switch): an axis-parallel square (bounding boxes, shape_square.c), an
+** switch): an axis-parallel square (bounding boxes, shape_square.c), a
+** square turned by pi/4 (the same in a turned frame, shape_square.c), an
 ** affinely regular hexagon (slabs, shape_hex.c), every other polygon
 ** (supports and homothets, shape_polygon.c) and an ellipse (one determinant,
 ** shape_ellipse.c).  A variant is its table of decisions, shape_ops; the public
 ** verbs call through it and test no flag. */
 typedef enum shape_variant {
-  SHAPE_V_POLYGON, SHAPE_V_SQUARE, SHAPE_V_HEXAGON, SHAPE_V_ELLIPSE
+  SHAPE_V_POLYGON, SHAPE_V_SQUARE, SHAPE_V_DIAMOND, SHAPE_V_HEXAGON, SHAPE_V_ELLIPSE
 } shape_variant;
 
 /* A variant's answers to shape_decide (the sites finite, *tr cleared or tr
@@ -41,8 +42,8 @@ typedef struct shape_ops {
   int (*wants_hints)(const shape *k);
 } shape_ops;
 
-FLIPLAB_INTERNAL const shape_ops shape_ops_polygon, shape_ops_square, shape_ops_hexagon,
-  shape_ops_ellipse;
+FLIPLAB_INTERNAL const shape_ops shape_ops_polygon, shape_ops_square, shape_ops_diamond,
+  shape_ops_hexagon, shape_ops_ellipse;
 
 /* The private part of a shape (k->impl), owned by it.  A polygon's tables
 ** are built once it is checked; those it does not have stay NULL. */
@@ -204,6 +205,11 @@ FLIPLAB_INTERNAL int shape_exact_diff(double a, double b, double *d);
 ** (special position, or D on the square): shape_decide's answer. */
 FLIPLAB_INTERNAL int shape_square_is(const shape *k);
 FLIPLAB_INTERNAL int shape_square_decide(const geom_point p[4]);
+/* The same for a square turned by pi/4 (the diamond, the L_1 ball: its
+** vertices' frames (x + y, y - x) exact and an axis-parallel square), on
+** the sites' frames: -1 also when a site's frame is not exact. */
+FLIPLAB_INTERNAL int shape_diamond_is(const shape *k);
+FLIPLAB_INTERNAL int shape_diamond_decide(const geom_point p[4]);
 /* The empty-hexagon rule of an affinely regular hexagon (shape_hex.c): for
 ** a polygon K that is one (a centrally symmetric hexagon with e1 = e0 + e2,
 ** every edge an exact difference of its vertices) its slabs into its
