@@ -136,12 +136,12 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
+  k->impl->moderate = shape_xp_moderate(k);   /* before the tables: memo reads it */
   if (shape_hex_build(k) != 0 || shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
     return NULL;
   }
-  k->impl->moderate = shape_xp_moderate(k);
   shape_variant v = SHAPE_V_POLYGON;
   if (shape_square_is(k)) v = SHAPE_V_SQUARE;
   if (shape_diamond_is(k)) v = SHAPE_V_DIAMOND;

@@ -296,8 +296,8 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
 ** registers here; a run that outgrows the arena or the register count
 ** marks the pool full, every later verb answers register 0, and the run's
 ** result is not read (GMP decides).  The verbs mirror the rationals' below:
-** a double, a - b of two doubles, i + j (i - j when neg), -i, i j, and the
-** sign of register i. */
+** a double, an expansion of len components (copied), a - b of two
+** doubles, i + j (i - j when neg), -i, i j, and the sign of register i. */
 #define SHAPE_XP_REGS 320
 #define SHAPE_XP_ROOM 4096
 typedef struct shape_xp {
@@ -309,6 +309,7 @@ typedef struct shape_xp {
 
 FLIPLAB_INTERNAL void shape_xp_init(shape_xp *X);
 FLIPLAB_INTERNAL int shape_xp_d(shape_xp *X, double a);
+FLIPLAB_INTERNAL int shape_xp_put(shape_xp *X, const double *e, int len);
 FLIPLAB_INTERNAL int shape_xp_diff(shape_xp *X, double a, double b);
 FLIPLAB_INTERNAL int shape_xp_add(shape_xp *X, int i, int j, int neg);
 FLIPLAB_INTERNAL int shape_xp_neg(shape_xp *X, int i);

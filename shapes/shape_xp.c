@@ -43,6 +43,13 @@ int shape_xp_d(shape_xp *X, double a) {
   return shape_xp_keep(X, 1);
 }
 
+int shape_xp_put(shape_xp *X, const double *e, int len) {
+  double *h = shape_xp_room(X, len);
+  if (h == NULL) return 0;
+  memcpy(h, e, (size_t)len * sizeof *h);
+  return shape_xp_keep(X, len);
+}
+
 /* a - b as its rounded value and that rounding's error (geom_two_diff). */
 int shape_xp_diff(shape_xp *X, double a, double b) {
   double *h = shape_xp_room(X, 2), x, y;
