@@ -79,6 +79,9 @@ FLIPLAB_INTERNAL int geom_expansion_sum(int n, const double *e, int m, const dou
                                         double *h);
 /* h = e b: at most 2 n components.  Cost O(n). */
 FLIPLAB_INTERNAL int geom_scale_expansion(int n, const double *e, double b, double *h);
+/* e in place, the same value in as few components as it needs (at most
+** n).  Cost O(n). */
+FLIPLAB_INTERNAL int geom_expansion_compress(int n, double *e);
 /* h = e f: at most 2 n m components, with scratch room for 2 n + 2 n m
 ** doubles.  Cost O(n m^2). */
 FLIPLAB_INTERNAL int geom_expansion_product(int n, const double *e, int m, const double *f,

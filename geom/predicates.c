@@ -405,6 +405,37 @@ int geom_scale_expansion(int n, const double *e, double b, double *h) {
   return k;
 }
 
+/* e (n components) in place as an expansion of as few components as its
+** value allows, at most n (Shewchuk's compress, section 2.8): a sweep
+** from the largest component down gathers each run of components that sum
+** exactly into one, then a sweep up splits the sums back into
+** nonoverlapping parts.  Each step is a fast two-sum, exact when the first
+** operand is at least the second in magnitude, which the nonoverlapping
+** order gives.  The value is unchanged; the length, which every later
+** product multiplies, rarely exceeds what the value's bits need (a few
+** components for a polynomial of degree 8 in doubles).  Cost O(n). */
+int geom_expansion_compress(int n, double *e) {
+  int bottom = n - 1;
+  double q = e[bottom];
+  for (int i = n - 2; i >= 0; i--) {
+    double x = q + e[i], lo = e[i] - (x - q);
+    if (lo != 0) {
+      e[bottom--] = x;
+      q = lo;
+    } else {
+      q = x;
+    }
+  }
+  int top = 0;
+  for (int i = bottom + 1; i < n; i++) {
+    double x = e[i] + q, lo = q - (x - e[i]);
+    if (lo != 0) e[top++] = lo;
+    q = x;
+  }
+  e[top] = q;
+  return top + 1;
+}
+
 /* The largest products the lifted determinant forms (geom_lifted_term): a
 ** lift of at most 5 components times a minor of at most 4. */
 #define GEOM_LIFT_MAX 5

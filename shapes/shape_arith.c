@@ -236,7 +236,15 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_p_cross(shape_ar *a, const shape_ar
 ** and poison) is kept for every triple of a polygon of at most
 ** SHAPE_MEMO_MAX edges (shape_memo_build), and a double run reads the kept
 ** value instead of repeating the program: the very numbers the program
-** would give, so the filter's argument and its verdicts are unchanged.
+** would give, so the filter's argument and its verdicts are unchanged;
+** but for a det3h that is exactly 0 (two rows of one edge, or three
+** edges whose lines meet in a point), kept as the input 0 (twin 0, count
+** 0: an exact leaf of the argument), so that a term w M of such an M adds
+** nothing to a tree's twin.  On grids that matters: a slack of a site
+** against the edge line of its own contact edge (a site pair parallel to
+** an edge) is then a tree whose every other term has a kept 0, whose
+** twin is 0 when the slack is 0, and the filter sees the exact 0 at once
+** instead of sending it to the exact run.
 ** Their exact values are kept too, as expansions (for a shape whose
 ** coordinates the expansion run takes, shape_xp_moderate), and the
 ** expansion run reads those: det4's exact run then only forms its four
@@ -340,13 +348,14 @@ int shape_memo_build(shape *K) {
         shape_ar a = {.exact = 0};
         shape_num x = shape_cof3_run(&a, K, i, j, k);
         size_t at = ((size_t)i * (size_t)n + (size_t)j) * (size_t)n + (size_t)k;
+        shape_args g = {.K = K, .e = {i, j, k}};
+        sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* memo is not yet set */
+        if (sgn[at] == 0) x = (shape_num){0, 0, 0, 0}, a.poison = 0;   /* exact: an input 0 */
         cof[at] = (shape_memo_entry){x, a.poison};
         val[at] = x.v;
         twin[at] = x.t;
         mm->kmax = x.k > mm->kmax ? x.k : mm->kmax;
         mm->poisoned |= a.poison;
-        shape_args g = {.K = K, .e = {i, j, k}};
-        sgn[at] = (signed char)shape_sign(SHAPE_PROG_DET3H, &g);   /* memo is not yet set */
       }
   if (K->impl->moderate && shape_memo_exact(K, mm) != 0) {
     K->impl->memo = mm;   /* freed with what it holds */

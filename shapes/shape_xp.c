@@ -4,8 +4,11 @@
 ** the stage between the double run and GMP.  Each register is an
 ** expansion (geom_exact_internal.h: a sum of nonoverlapping doubles, kept
 ** exactly) in one arena; a run that would outgrow the arena is marked full
-** and decides nothing (GMP then does).  shape_arith.c has the argument for
-** when the expansions are exact.
+** and decides nothing (GMP then does).  Sums and products of more than two
+** components are compressed (geom_expansion_compress): without it lengths
+** multiply down a program's tree (a det3h of 53-bit coordinates grew to
+** hundreds of components), with it they stay near what the value's bits
+** need.  shape_arith.c has the argument for when the expansions are exact.
 */
 #include <string.h>
 #include "geom_exact_internal.h"
@@ -77,7 +80,8 @@ int shape_xp_add(shape_xp *X, int i, int j, int neg) {
     for (int c = 0; c < lj; c++) t[c] = -f[c];
     f = t;
   }
-  return shape_xp_keep(X, geom_expansion_sum(li, X->d + X->off[i], lj, f, h));
+  int k = geom_expansion_sum(li, X->d + X->off[i], lj, f, h);
+  return shape_xp_keep(X, k > 2 ? geom_expansion_compress(k, h) : k);
 }
 
 int shape_xp_neg(shape_xp *X, int i) {
@@ -103,7 +107,7 @@ int shape_xp_mul(shape_xp *X, int i, int j) {
   double *h = shape_xp_room(X, 2 * n * m + 2 * n + 2 * n * m);
   if (h == NULL) return 0;
   int k = geom_expansion_product(n, X->d + X->off[i], m, X->d + X->off[j], h, h + 2 * n * m);
-  return shape_xp_keep(X, k);
+  return shape_xp_keep(X, k > 2 ? geom_expansion_compress(k, h) : k);
 }
 
 int shape_xp_sign(const shape_xp *X, int i) {
