@@ -10,8 +10,9 @@
 ** For each rule of the comma list: the median wall time of RUNS incremental
 ** LOTs (lot_build, default options, seed 1) of the uniform and of the grid
 ** sampler, their ratio (the issue's target: 3 at most), and for the grid
-** the exact runs of one LOT per predicate program and deciding stage
-** (expansions / GMP: shape_exact_stage_calls); with `gmp`, the grid's LOT
+** the exact signs of one LOT per predicate program: runs by deciding stage
+** (expansions, GMP: shape_exact_stage_calls) and signs found kept
+** (shape_seen_hits), and the supports and decisions found kept; with `gmp`, the grid's LOT
 ** once more with every exact run sent to GMP (geom_exact_gmp_only): what
 ** the expansion stage saves.  docs/performance.md, "Grids and integer
 ** coordinates", has the table and the command.
@@ -49,27 +50,31 @@ static double bench_sg_median(const rule *r, const geom_point *p, size_t n, int 
   return bench_median(t, runs);
 }
 
-static void bench_sg_snapshot(unsigned long c[SHAPE_PROG_COUNT][2]) {
-  for (int q = 0; q < SHAPE_PROG_COUNT; q++) {
-    c[q][0] = shape_exact_stage_calls(q, GEOM_STAGE_EXPANSION);
-    c[q][1] = shape_exact_stage_calls(q, GEOM_STAGE_GMP);
+static void bench_sg_snapshot(unsigned long c[SHAPE_SEEN_WHATS][3]) {
+  for (int q = 0; q < SHAPE_SEEN_WHATS; q++) {
+    c[q][0] = q < SHAPE_PROG_COUNT ? shape_exact_stage_calls(q, GEOM_STAGE_EXPANSION) : 0;
+    c[q][1] = q < SHAPE_PROG_COUNT ? shape_exact_stage_calls(q, GEOM_STAGE_GMP) : 0;
+    c[q][2] = shape_seen_hits(q);
   }
 }
 
-/* The exact runs since `since`, "exp/GMP" per program that had any. */
-static void bench_sg_counts(unsigned long since[SHAPE_PROG_COUNT][2], char *out,
+/* The exact signs since `since`, "expansions/GMP/reused" per program that
+** had any. */
+static void bench_sg_counts(unsigned long since[SHAPE_SEEN_WHATS][3], char *out,
                             size_t size) {
-  static const char *const names[SHAPE_PROG_COUNT] = {"cross", "det3h", "det3w", "det4",
-                                                      "corner", "ellipse"};
-  unsigned long now[SHAPE_PROG_COUNT][2];
+  static const char *const names[SHAPE_SEEN_WHATS] = {"cross", "det3h", "det3w", "det4",
+                                                      "corner", "ellipse", "support",
+                                                      "decision"};
+  unsigned long now[SHAPE_SEEN_WHATS][3];
   bench_sg_snapshot(now);
   size_t used = 0;
   out[0] = 0;
-  for (int q = 0; q < SHAPE_PROG_COUNT && used < size; q++) {
+  for (int q = 0; q < SHAPE_SEEN_WHATS && used < size; q++) {
     unsigned long x = now[q][0] - since[q][0], g = now[q][1] - since[q][1];
-    if (x + g > 0)
-      used += (size_t)snprintf(out + used, size - used, "%s%s %lu/%lu", used ? ", " : "",
-                               names[q], x, g);
+    unsigned long re = now[q][2] - since[q][2];
+    if (x + g + re > 0)
+      used += (size_t)snprintf(out + used, size - used, "%s%s %lu/%lu/%lu", used ? ", " : "",
+                               names[q], x, g, re);
   }
   if (used == 0) snprintf(out, size, "none");
 }
@@ -84,7 +89,7 @@ static int bench_sg_row(const char *name, const geom_point *u, const geom_point 
     return 1;
   }
   double tu = bench_sg_median(&r, u, n, runs);
-  unsigned long since[SHAPE_PROG_COUNT][2];
+  unsigned long since[SHAPE_SEEN_WHATS][3];
   bench_sg_snapshot(since);
   bench_sg_lot(&r, g, n);
   bench_sg_counts(since, counts, sizeof counts);
@@ -116,8 +121,8 @@ int main(int argc, char **argv) {
   sampler_points(SAMPLER_UNIFORM, 1, n, u);
   sampler_points(SAMPLER_GRID, 1, n, g);
   printf("# bench_shape_grid: %zu points (seed 1), medians of %d runs; load average %.2f\n\n"
-         "| rule | uniform (s) | grid (s) | grid / uniform | grid's exact runs: "
-         "expansions/GMP |%s\n|---|---:|---:|---:|---|%s\n",
+         "| rule | uniform (s) | grid (s) | grid / uniform | grid's exact signs: "
+         "expansions/GMP/reused |%s\n|---|---:|---:|---:|---|%s\n",
          n, runs, bench_load(), gmp ? " grid, GMP only (s) |" : "", gmp ? "---:|" : "");
   int rc = 0;
   char *save = NULL;

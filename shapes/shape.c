@@ -7,6 +7,7 @@
 ** docs/emptyshape.md has the definitions and the special-position rule.
 */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,14 +17,19 @@
 
 /* ---- shapes and their variants ------------------------------------------ */
 
+/* Shapes made so far: each one's serial number, which no other shape of
+** the process shares (the exact signs kept per thread are keyed by it). */
+static atomic_ulong shape_made;
+
 /* A shape of kind kind and n vertices (none: an ellipse), its private part
-** empty: NULL out of memory. */
+** empty but for its serial number: NULL out of memory. */
 static shape *shape_new(shape_kind kind, int n) {
   shape *k = calloc(1, sizeof *k);
   if (k == NULL) return NULL;
   k->kind = kind;
   k->n = n;
   k->impl = calloc(1, sizeof *k->impl);
+  if (k->impl != NULL) k->impl->serial = atomic_fetch_add(&shape_made, 1) + 1;
   if (n > 0 && k->impl != NULL) {
     k->v = calloc((size_t)n, sizeof *k->v);
     k->impl->half = calloc((size_t)n, 1);

@@ -7,6 +7,7 @@
 */
 #include <math.h>
 #include <stdatomic.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <gmp.h>
@@ -643,9 +644,22 @@ static void shape_exact_note(shape_prog p, geom_stage s) {
   atomic_fetch_add_explicit(&shape_exact_count[p][s], 1, memory_order_relaxed);
 }
 
+/* The key of g's exact sign among the signs kept per thread (shape_seen.c):
+** the program, deriv, the corner, the edges and the differences of the
+** rows the program reads (the others stay 0) to its origin (o, or p[0] for
+** cross, which reads no o); 1, or 0 when some difference is not exact. */
+static int shape_seen_key_of(shape_prog p, const shape_args *g, shape_seen_key *k) {
+  static const int rows[SHAPE_PROG_COUNT] = {
+    [SHAPE_PROG_CROSS] = 2, [SHAPE_PROG_DET3H] = 0,  [SHAPE_PROG_DET3W] = 3,
+    [SHAPE_PROG_DET4] = 4,  [SHAPE_PROG_CORNER] = 3, [SHAPE_PROG_ELLIPSE] = 3};
+  const int n[6] = {g->deriv, g->corner, g->e[0], g->e[1], g->e[2], g->e[3]};
+  shape_seen_start(k, g->K, (int)p, n, 6);
+  return shape_seen_diffs(k, g->p, rows[p], p == SHAPE_PROG_CROSS ? g->p[0] : g->o);
+}
+
 /* The exact run: the same program on expansions, or when they may not
 ** decide it, on rationals. */
-static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
+static int shape_exact_run(shape_prog p, const shape_args *g) {
   if (shape_xp_may(g)) {
     shape_xp X;
     shape_xp_init(&X);
@@ -661,6 +675,20 @@ static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
   shape_mpq_init(&P);
   shape_ar a = {.exact = 1, .P = &P};
   return shape_mpq_done(&P, shape_q(&a, shape_progs[p](&a, g)));
+}
+
+/* The exact sign: kept from an earlier run of the same quantity
+** (shape_seen.c), or run.  Every program is translation-invariant (it
+** reads the sites as differences), so on a grid the same few quantities
+** come back at many places. */
+static FLIPLAB_COLD int shape_exact(shape_prog p, const shape_args *g) {
+  shape_seen_key k;
+  int s;
+  if (!shape_seen_on() || !shape_seen_key_of(p, g, &k)) return shape_exact_run(p, g);
+  if (shape_seen_find(&k, &s)) return s;
+  s = shape_exact_run(p, g);
+  shape_seen_keep(&k, s);
+  return s;
 }
 
 int shape_exact_diff(double a, double b, double *d) {

@@ -12,6 +12,7 @@
 #define FLIPLAB_SHAPE_INTERNAL_H
 
 #include <gmp.h>
+#include <stdint.h>
 #include "fliplab_config.h"
 #include "predicates.h"   /* geom_stage */
 #include "shape.h"
@@ -55,6 +56,7 @@ struct shape_impl {
   struct shape_quick *quick; /* the quick decision's table (shape_quick.c) */
   struct shape_hex *hexa;    /* an affinely regular hexagon's slabs (shape_hex.c) */
   int moderate;              /* every coordinate (form entry) in the expansions' range */
+  uint64_t serial;           /* this shape's number: the n-th shape made (shape.c) */
 };
 
 static inline shape_variant shape_variant_of(const shape *k) {
@@ -189,6 +191,39 @@ FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point 
 /* The exact runs of program p decided by stage s (GEOM_STAGE_EXPANSION or
 ** GEOM_STAGE_GMP) over the process; shape_exact_calls is their total. */
 FLIPLAB_INTERNAL unsigned long shape_exact_stage_calls(shape_prog p, geom_stage s);
+
+/* ---- answers asked again --------------------------------------------------
+**
+** Exact answers kept per thread (shape_seen.c, which has the argument),
+** keyed by the shape's serial number, what was asked (a program, or
+** SHAPE_SEEN_SUPPORT, SHAPE_SEEN_DECIDE: a polygon's support and its
+** general path's decision, shape_polygon.c), up to 7 small integers and the
+** exact differences of up to 4 sites to an origin.  shape_seen_start
+** clears a key and sets its shape, what and integers; shape_seen_diffs
+** sets the differences of p[0..rows) to o, 1 when all are exact (else the
+** key may not be used).  shape_seen_find: 1 and *v when the key's answer is
+** kept; shape_seen_keep keeps it.  shape_seen_on: 0 in the tests'
+** reference modes, which must compute everything.  shape_seen_hits: the
+** answers of kind what found kept, over the process. */
+#define SHAPE_SEEN_SUPPORT SHAPE_PROG_COUNT
+#define SHAPE_SEEN_DECIDE (SHAPE_PROG_COUNT + 1)
+#define SHAPE_SEEN_WHATS (SHAPE_PROG_COUNT + 2)
+typedef struct shape_seen_key {
+  uint64_t serial;
+  int what, n[7];
+  double d[8];
+} shape_seen_key;
+_Static_assert(sizeof(shape_seen_key) == 13 * 8, "a key has no padding (compared as bytes)");
+
+FLIPLAB_INTERNAL int shape_seen_on(void);
+FLIPLAB_INTERNAL void shape_seen_start(shape_seen_key *k, const shape *K, int what, const int *n,
+                                       int cnt);
+FLIPLAB_INTERNAL int shape_seen_diffs(shape_seen_key *k, const geom_point *p, int rows,
+                                      geom_point o);
+FLIPLAB_INTERNAL int shape_seen_find(const shape_seen_key *k, int *v);
+FLIPLAB_INTERNAL void shape_seen_keep(const shape_seen_key *k, int v);
+FLIPLAB_INTERNAL unsigned long shape_seen_hits(int what);
+
 /* 1 when every coordinate of polygon K (every entry of an ellipse's form)
 ** lies in the expansion run's range (shape_arith.c): kept in K's moderate
 ** when K is made. */
@@ -234,6 +269,12 @@ FLIPLAB_INTERNAL int shape_hex_at(const shape *k, const int t[3], const geom_poi
 FLIPLAB_INTERNAL shape_choice shape_polygon_decide(const shape *k, const geom_point p[4],
                                                    int quick, shape_trace *tr, shape_hint *h);
 
+/* The general path's decision of p when t is the contact triple of
+** p[0..2] (a homothet's hint: no supports, no contact search), exact
+** whatever the sites (shape_polygon.c). */
+FLIPLAB_INTERNAL shape_choice shape_polygon_at(const shape *k, const int t[3],
+                                               const geom_point p[4]);
+
 /* A polygon variant's own decision, tried where the quick path may be
 ** asked: the answer (it may fill *h), or -1 for the general path; and its
 ** answer for a homothet's hint, the contact edges t of p[0..2], or -1. */
@@ -246,7 +287,10 @@ typedef int (*shape_at_fn)(const shape *k, const int t[3], const geom_point p[4]
 ** shape_hex.c): an own answer is the general path's (their files have the
 ** arguments), so it is taken first; a homothet's hint (lot's commonest
 ** call) is tried before anything else, with the quick path's shape_quick_at
-** after at; when nothing certain is found the general path decides. */
+** after at, and when neither is certain the general path decides from the
+** hint's triple (on a grid, where ties make the quick answers give up,
+** that skips the supports and the contact search of most decisions); with
+** no hint, the own decision, then the general path. */
 static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_decide(const shape *k,
                                                                const geom_point p[4],
                                                                shape_trace *tr, shape_own_fn own) {
@@ -264,7 +308,7 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
     const int t[3] = {h->e[0], h->e[1], h->e[2]};
     int ans = at != NULL ? at(k, t, p) : -1;
     if (ans < 0) ans = shape_quick_at(k, t, p);
-    if (ans >= 0) return (shape_choice)ans;
+    return ans >= 0 ? (shape_choice)ans : shape_polygon_at(k, t, p);
   }
   int ans = quick && own != NULL ? own(k, p, h) : -1;
   return ans >= 0 ? (shape_choice)ans : shape_polygon_decide(k, p, quick, NULL, h);
