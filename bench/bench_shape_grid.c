@@ -7,14 +7,15 @@
 **   (defaults 99856, 3, ES:square,ES:diamond,ES:hexagon,PENTAGON,ES:ellipse:2 1;
 **    PENTAGON is ES:poly:1 0;0.309 0.951;-0.809 0.588;-0.809 -0.588;0.309 -0.951)
 **
-** For each rule of the comma list: the median wall time of RUNS incremental
-** LOTs (lot_build, default options, seed 1) of the uniform and of the grid
-** sampler, their ratio (the issue's target: 3 at most), and for the grid
+** For each rule of the comma list: the run of median wall time of RUNS
+** incremental LOTs (lot_build, default options, seed 1) of the uniform and
+** of the grid sampler, its CPU time beside it (steadier on loaded cores),
+** their ratios (the issue's target: 3 at most), and for the grid
 ** the exact signs of one LOT per predicate program: runs by deciding stage
 ** (expansions, GMP: shape_exact_stage_calls) and signs found kept
 ** (shape_seen_hits), and the supports and decisions found kept; with `gmp`, the grid's LOT
-** once more with every exact run sent to GMP (geom_exact_gmp_only): what
-** the expansion stage saves.  docs/performance.md, "Grids and integer
+** once more with every exact run sent to GMP (geom_exact_gmp_only: no
+** expansions and nothing kept, CPU seconds): what those save.  docs/performance.md, "Grids and integer
 ** coordinates", has the table and the command.
 */
 #include <stdio.h>
@@ -28,26 +29,27 @@
 
 #define BENCH_PENTAGON "ES:poly:1 0;0.309 0.951;-0.809 0.588;-0.809 -0.588;0.309 -0.951"
 
-/* One LOT of rule r on p: wall seconds. */
-static double bench_sg_lot(const rule *r, const geom_point *p, size_t n) {
+/* One LOT of rule r on p: wall and CPU seconds. */
+static bench_time bench_sg_lot(const rule *r, const geom_point *p, size_t n) {
   lot_options o;
   lot_options_init(&o, r);
   lot *L;
   char err[256];
-  double t0 = bench_wall();
+  double c0 = bench_cpu(), t0 = bench_wall();
   if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
     fprintf(stderr, "bench_shape_grid: %s\n", err);
     exit(1);
   }
-  double t = bench_wall() - t0;
+  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
   lot_free(L);
   return t;
 }
 
-static double bench_sg_median(const rule *r, const geom_point *p, size_t n, int runs) {
-  double t[16];
+/* The run of median wall time of runs. */
+static bench_time bench_sg_median(const rule *r, const geom_point *p, size_t n, int runs) {
+  bench_time t[16];
   for (int i = 0; i < runs; i++) t[i] = bench_sg_lot(r, p, n);
-  return bench_median(t, runs);
+  return bench_median_time(t, runs);
 }
 
 static void bench_sg_snapshot(unsigned long c[SHAPE_SEEN_WHATS][3]) {
@@ -88,18 +90,19 @@ static int bench_sg_row(const char *name, const geom_point *u, const geom_point 
     fprintf(stderr, "bench_shape_grid: %s\n", err);
     return 1;
   }
-  double tu = bench_sg_median(&r, u, n, runs);
+  bench_time tu = bench_sg_median(&r, u, n, runs);
   unsigned long since[SHAPE_SEEN_WHATS][3];
   bench_sg_snapshot(since);
   bench_sg_lot(&r, g, n);
   bench_sg_counts(since, counts, sizeof counts);
-  double tg = bench_sg_median(&r, g, n, runs);
+  bench_time tg = bench_sg_median(&r, g, n, runs);
   if (gmp) {
     int was = geom_exact_gmp_only(1);
-    snprintf(slow, sizeof slow, " %.3f |", bench_sg_lot(&r, g, n));
+    snprintf(slow, sizeof slow, " %.3f |", bench_sg_lot(&r, g, n).cpu);
     geom_exact_gmp_only(was);
   }
-  printf("| %s | %.3f | %.3f | %.2f | %s |%s\n", name, tu, tg, tg / tu, counts, slow);
+  printf("| %s | %.3f (CPU %.3f) | %.3f (CPU %.3f) | %.2f (CPU %.2f) | %s |%s\n", name, tu.wall,
+         tu.cpu, tg.wall, tg.cpu, tg.wall / tu.wall, tg.cpu / tu.cpu, counts, slow);
   fflush(stdout);
   return 0;
 }
@@ -123,7 +126,7 @@ int main(int argc, char **argv) {
   printf("# bench_shape_grid: %zu points (seed 1), medians of %d runs; load average %.2f\n\n"
          "| rule | uniform (s) | grid (s) | grid / uniform | grid's exact signs: "
          "expansions/GMP/reused |%s\n|---|---:|---:|---:|---|%s\n",
-         n, runs, bench_load(), gmp ? " grid, GMP only (s) |" : "", gmp ? "---:|" : "");
+         n, runs, bench_load(), gmp ? " grid, GMP only (CPU s) |" : "", gmp ? "---:|" : "");
   int rc = 0;
   char *save = NULL;
   for (char *s = strtok_r(list, ",", &save); s && rc == 0; s = strtok_r(NULL, ",", &save))

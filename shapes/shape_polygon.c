@@ -321,8 +321,9 @@ static shape_choice shape_polygon_seen(const shape *k, const geom_point p[4], in
     shape_seen_keep(&key, v);
   }
   if (h != NULL && (v >> 2 & 3) != SHAPE_HINT_NONE)
-    *h = (shape_hint){(unsigned char)(v >> 2 & 3),
-                      {(unsigned char)(v >> 4), (unsigned char)(v >> 12), (unsigned char)(v >> 20)}};
+    *h = (shape_hint){(unsigned char)(v >> 2 & 3), {(unsigned char)(v >> 4),
+                                                     (unsigned char)(v >> 12),
+                                                     (unsigned char)(v >> 20)}};
   return (shape_choice)(v & 3);
 }
 

@@ -62,8 +62,9 @@
 ** on the square (four sites on one square of every small turn) answers
 ** either, as the general path does; any other second-order tie (a site on
 ** a corner's cone of every small turn, or two equal sites) goes to the
-** general path; so every answer here is its answer, the rule of the turned square (tests/test_shape_exact.c checks
-** it against the purely exact decision on grids and lattices). */
+** general path.  So every answer here is its answer, the rule of the
+** turned square (tests/test_shape_exact.c checks it against the purely
+** exact decision on grids and lattices). */
 
 /* The sign of a - b for two doubles as two exact doubles (geom_two_diff)
 ** against c - d likewise. */

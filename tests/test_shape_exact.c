@@ -291,7 +291,8 @@ static void test_own(void **state) {
       int own = i < 3 ? shape_diamond_decide(q) : shape_square_decide(q);
       int want = (int)texact_reference(k, q, NULL);
       if (own >= 0 && own != want)
-        fail_msg("%s: own %d, exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", spec, own, want, q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y);
+        fail_msg("%s: own %d, exact %d on (%a,%a) (%a,%a) (%a,%a) (%a,%a)", spec, own, want,
+                 q[0].x, q[0].y, q[1].x, q[1].y, q[2].x, q[2].y, q[3].x, q[3].y);
       answered += own >= 0;
       asked++;
       texact_same(k, q);
