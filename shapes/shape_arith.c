@@ -54,8 +54,9 @@
 ** rationals (every double is a rational; the pool of shape_mpq.c), or,
 ** first, floating-point expansions (the pool of shape_xp.c: +, - and *
 ** carried out exactly by the error-free transformations of
-** geom_exact_internal.h), tens of times cheaper, when no step can
-** overflow or underflow.  That holds when every input (site coordinate,
+** geom_exact_internal.h), about ten times cheaper (the LOT of the
+** 100 x 100 grid for ES:square took 0.24 s against 2.46 s on GMP alone),
+** when no step can overflow or underflow.  That holds when every input (site coordinate,
 ** polygon vertex coordinate, ellipse form entry) is 0 or of magnitude in
 ** [2^-80, 2^80] (shape_xp_may): each leaf of a program (an input or the
 ** difference of two) is then a multiple of g = 2^-132 (the last bit of a
@@ -249,8 +250,9 @@ static FLIPLAB_ALWAYS_INLINE shape_num shape_p_cross(shape_ar *a, const shape_ar
 ** Their exact values are kept too, as expansions (for a shape whose
 ** coordinates the expansion run takes, shape_xp_moderate), and the
 ** expansion run reads those: det4's exact run then only forms its four
-** products w M (on a grid, det4's exact runs cost a fifth as much).  The
-** run on rationals always computes. */
+** products w M (the hexagon's LOT of the 316 x 316 grid took 0.92 s
+** against 1.25 s when each run formed its M).  The run on rationals always
+** computes. */
 
 #define SHAPE_MEMO_MAX 16
 

@@ -26,7 +26,7 @@
 ** would.  It is per thread (_Thread_local): no locks, and the same answers
 ** whatever the thread count.  The tests' reference modes (exact only, GMP
 ** only) neither read nor fill it, so comparing with them checks it too.
-** Cost: a hash of the key's 14 words and one comparison; a slot is
+** Cost: a hash of the key's 13 words and one comparison; a slot is
 ** overwritten by the next key that falls on it. */
 
 #define SHAPE_SEEN_SLOTS 1024
@@ -51,7 +51,7 @@ void shape_seen_start(shape_seen_key *k, const shape *K, int what, const int *n,
   memset(k, 0, sizeof *k);   /* keys are compared as bytes */
   k->serial = K->impl->serial;
   k->what = what;
-  memcpy(k->n, n, (size_t)cnt * sizeof *n);
+  for (int i = 0; i < cnt; i++) k->n[i] = n[i];
 }
 
 int shape_seen_diffs(shape_seen_key *k, const geom_point *p, int rows, geom_point o) {

@@ -69,7 +69,7 @@ static int shape_xp_zero(const shape_xp *X, int i) {
 }
 
 /* i + j, or i - j when neg: j's components negated into scratch above the
-** result's room first. */
+** result's room first.  Cost O(li + lj). */
 int shape_xp_add(shape_xp *X, int i, int j, int neg) {
   int li = X->len[i], lj = X->len[j];
   double *h = shape_xp_room(X, 2 * (li + lj));
