@@ -13,10 +13,11 @@
 ** their ratios (the issue's target: 3 at most), and for the grid
 ** the exact signs of one LOT per predicate program: runs by deciding stage
 ** (expansions, GMP: shape_exact_stage_calls) and signs found kept
-** (shape_seen_hits), and the supports and decisions found kept; with `gmp`, the grid's LOT
-** once more with every exact run sent to GMP (geom_exact_gmp_only: no
-** expansions and nothing kept, CPU seconds): what those save.  docs/performance.md, "Grids and integer
-** coordinates", has the table and the command.
+** (shape_seen_hits), and the supports and decisions found kept; with
+** `gmp`, the grid's LOT once more with every exact run sent to GMP
+** (geom_exact_gmp_only: no expansions and nothing kept, CPU seconds):
+** what those save.  docs/performance.md, "Empty-shape rules on grids",
+** has the table and the command.
 */
 #include <stdio.h>
 #include <stdlib.h>

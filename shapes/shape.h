@@ -86,9 +86,8 @@ typedef struct shape_hint {
 shape_choice shape_decide_hinted(const shape *k, geom_point a, geom_point b, geom_point c,
                                  geom_point d, shape_hint *h);
 /* 1 when keeping hints saves K's decisions work: polygons of 3 to 255
-** vertices, but for an axis-parallel square and a square turned by pi/4
-** (the diamond), whose bounding-box decision (shapes/shape_square.c) needs
-** none and leaves *h as it is; else 0. */
+** vertices, but for an axis-parallel square, whose bounding-box decision
+** (shapes/shape_square.c) needs none and leaves *h as it is; else 0. */
 int shape_wants_hints(const shape *k);
 /* The vertex of polygon K extremal in the right-hand normal direction of
 ** PQ (P != Q), ties (PQ parallel to an edge) broken by the perturbation:

@@ -263,10 +263,50 @@ static shape_choice shape_corner_hinted(const shape *k, int c, const geom_point 
   return shape_corner_decide(k, c, p, quick, tr);
 }
 
+/* The circumscribing homothet of A, B, C by the contact search, and D's
+** test against it: the general path's slow end. */
+static shape_choice shape_homothet_found(const shape *k, const int sup[3], const geom_point p[4],
+                                         shape_trace *tr, shape_hint *h) {
+  int t[3], d3 = shape_contacts(k, sup, p, t);
+  if (d3 == 0) {
+    if (tr) tr->failed = 1;
+    return SHAPE_EITHER;
+  }
+  if (tr) memcpy(tr->contact, t, sizeof t);
+  shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
+  return shape_homothet_decide(k, t, d3, p, tr);
+}
+
+/* The same, kept per thread (shape_seen.c) under the differences B - A,
+** C - A, D - A: the answer and the contact triple are functions of K and
+** those alone (every sign the search and the test read is exact and
+** translation-invariant, and so are the supports), so a grid's
+** configurations, which come back everywhere, are searched once.  Kept as
+** one int: the choice in bits 0-1, bit 2 set when a triple was found, its
+** edges in bits 4-11, 12-19, 20-27 (at most 255 edges).  Asked only where
+** the quick path gave up, so uniform sites pay nothing for it. */
+static shape_choice shape_homothet_seen(const shape *k, const int sup[3], const geom_point p[4],
+                                        shape_hint *h) {
+  shape_seen_key key;
+  shape_seen_start(&key, k, SHAPE_SEEN_DECIDE, NULL, 0);
+  if (!shape_seen_diffs(&key, p, 4, p[0])) return shape_homothet_found(k, sup, p, NULL, h);
+  int v;
+  if (!shape_seen_find(&key, &v)) {
+    shape_hint left = {0};
+    shape_choice c = shape_homothet_found(k, sup, p, NULL, &left);
+    v = (int)c | (left.how == SHAPE_HINT_HOMOTHET) << 2 | left.e[0] << 4 | left.e[1] << 12 |
+        left.e[2] << 20;
+    shape_seen_keep(&key, v);
+  }
+  const int t[3] = {v >> 4 & 255, v >> 12 & 255, v >> 20 & 255};
+  if (v >> 2 & 1) shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
+  return (shape_choice)(v & 3);
+}
+
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
-static shape_choice shape_polygon_run(const shape *k, const geom_point p[4], int quick,
-                                      shape_trace *tr, shape_hint *h) {
+shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
+                                  shape_trace *tr, shape_hint *h) {
   int sup[3], t[3], hinted = shape_hint_decide(k, p, quick, h);
   if (hinted >= 0) return (shape_choice)hinted;
   if (!quick || shape_quick_supports(k, p, sup) != 0) {
@@ -284,14 +324,9 @@ static shape_choice shape_polygon_run(const shape *k, const geom_point p[4], int
     shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
     return (shape_choice)ans;
   }
-  int d3 = shape_contacts(k, sup, p, t);
-  if (d3 == 0) {
-    if (tr) tr->failed = 1;
-    return SHAPE_EITHER;
-  }
-  if (tr) memcpy(tr->contact, t, sizeof t);
-  shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
-  return shape_homothet_decide(k, t, d3, p, tr);
+  if (tr == NULL && quick && k->n <= 255 && shape_seen_on())
+    return shape_homothet_seen(k, sup, p, h);
+  return shape_homothet_found(k, sup, p, tr, h);
 }
 
 /* A homothet's hint names the contact triple of A, B, C (shape.h: filled
@@ -299,41 +334,6 @@ static shape_choice shape_polygon_run(const shape *k, const geom_point p[4], int
 ** sign and the arc. */
 shape_choice shape_polygon_at(const shape *k, const int t[3], const geom_point p[4]) {
   return shape_homothet_decide(k, t, shape_det3h_sign(k, t), p, NULL);
-}
-
-/* The decision and the hint it leaves, kept per thread (shape_seen.c)
-** under the differences B - A, C - A, D - A: both are functions of K and
-** those alone (every sign the path reads is exact and translation-
-** invariant; the hint names the circumscribing shape of A, B, C).  A hint
-** it finds is always set (at most 255 vertices: shape_hint_set), so the
-** one kept is the one the run leaves.  Kept as one int: the choice in bits
-** 0-1, the hint's how in bits 2-3, its edges in 4-11, 12-19, 20-27. */
-static shape_choice shape_polygon_seen(const shape *k, const geom_point p[4], int quick,
-                                       shape_hint *h) {
-  shape_seen_key key;
-  shape_seen_start(&key, k, SHAPE_SEEN_DECIDE, NULL, 0);
-  if (!shape_seen_diffs(&key, p, 4, p[0])) return shape_polygon_run(k, p, quick, NULL, h);
-  int v;
-  if (!shape_seen_find(&key, &v)) {
-    shape_hint left = h != NULL ? *h : (shape_hint){0};
-    shape_choice c = shape_polygon_run(k, p, quick, NULL, &left);
-    v = (int)c | left.how << 2 | left.e[0] << 4 | left.e[1] << 12 | left.e[2] << 20;
-    shape_seen_keep(&key, v);
-  }
-  if (h != NULL && (v >> 2 & 3) != SHAPE_HINT_NONE)
-    *h = (shape_hint){(unsigned char)(v >> 2 & 3), {(unsigned char)(v >> 4),
-                                                     (unsigned char)(v >> 12),
-                                                     (unsigned char)(v >> 20)}};
-  return (shape_choice)(v & 3);
-}
-
-/* Decisions without a trace, in the quick mode, of polygons whose hints
-** fit a byte are kept (above); the others run. */
-shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
-                                  shape_trace *tr, shape_hint *h) {
-  if (tr == NULL && quick && k->n <= 255 && shape_seen_on())
-    return shape_polygon_seen(k, p, quick, h);
-  return shape_polygon_run(k, p, quick, tr, h);
 }
 
 /* ---- the general polygon's variant (shape_internal.h) -------------------- */

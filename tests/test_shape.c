@@ -1084,7 +1084,7 @@ static void test_quick_octants(void **state) {
 /* Every shape is one variant, chosen when it is made, and the public verbs
 ** answer through its table: each spec below is the variant named, wants
 ** hints as shape.h says (polygons of 3 to 255 vertices but the
-** axis-parallel square and the diamond; no ellipse) and gives through the table, with a
+** axis-parallel square; no ellipse) and gives through the table, with a
 ** trace, hinted (an empty hint, then the one it left) or not, the purely
 ** exact decision of the general path, in every rotation. */
 typedef struct tvariant {
@@ -1096,7 +1096,7 @@ typedef struct tvariant {
 static const tvariant tvariants[] = {
     {"square", SHAPE_V_SQUARE, 0},    {"poly:3 -1;-2 -1;-2 4;3 4", SHAPE_V_SQUARE, 0},
     {"hexagon", SHAPE_V_HEXAGON, 1},  {"poly:0 0;-1 1;0 2;2 2;3 1;2 0", SHAPE_V_HEXAGON, 1},
-    {"diamond", SHAPE_V_DIAMOND, 0},  {"triangle", SHAPE_V_POLYGON, 1},
+    {"diamond", SHAPE_V_DIAMOND, 1},  {"triangle", SHAPE_V_POLYGON, 1},
     {"octagon", SHAPE_V_POLYGON, 1},  {"ngon:255", SHAPE_V_POLYGON, 1},
     {"ngon:256", SHAPE_V_POLYGON, 0}, {"ellipse:2 1 0.5", SHAPE_V_ELLIPSE, 0},
     {"ellipse:1 1", SHAPE_V_ELLIPSE, 0}};
