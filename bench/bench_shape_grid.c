@@ -67,7 +67,7 @@ static void bench_sg_counts(unsigned long since[SHAPE_SEEN_WHATS][3], char *out,
                             size_t size) {
   static const char *const names[SHAPE_SEEN_WHATS] = {"cross", "det3h", "det3w", "det4",
                                                       "corner", "ellipse", "support",
-                                                      "decision"};
+                                                      "search", "decision"};
   unsigned long now[SHAPE_SEEN_WHATS][3];
   bench_sg_snapshot(now);
   size_t used = 0;

@@ -196,8 +196,9 @@ FLIPLAB_INTERNAL unsigned long shape_exact_stage_calls(shape_prog p, geom_stage 
 **
 ** Exact answers kept per thread (shape_seen.c, which has the argument),
 ** keyed by the shape's serial number, what was asked (a program, or
-** SHAPE_SEEN_SUPPORT, SHAPE_SEEN_DECIDE: a polygon's support and its
-** general path's decision, shape_polygon.c), up to 7 small integers and the
+** SHAPE_SEEN_SUPPORT, SHAPE_SEEN_DECIDE, SHAPE_SEEN_WHOLE: a polygon's
+** support, its general path's contact search and D's test, and its whole
+** general path, shape_polygon.c), up to 7 small integers and the
 ** exact differences of up to 4 sites to an origin.  shape_seen_start
 ** clears a key and sets its shape, what and integers; shape_seen_diffs
 ** sets the differences of p[0..rows) to o, 1 when all are exact (else the
@@ -207,7 +208,8 @@ FLIPLAB_INTERNAL unsigned long shape_exact_stage_calls(shape_prog p, geom_stage 
 ** answers of kind what found kept, over the process. */
 #define SHAPE_SEEN_SUPPORT SHAPE_PROG_COUNT
 #define SHAPE_SEEN_DECIDE (SHAPE_PROG_COUNT + 1)
-#define SHAPE_SEEN_WHATS (SHAPE_PROG_COUNT + 2)
+#define SHAPE_SEEN_WHOLE (SHAPE_PROG_COUNT + 2)
+#define SHAPE_SEEN_WHATS (SHAPE_PROG_COUNT + 3)
 typedef struct shape_seen_key {
   uint64_t serial;
   int what, n[7];
@@ -269,6 +271,12 @@ FLIPLAB_INTERNAL int shape_hex_at(const shape *k, const int t[3], const geom_poi
 FLIPLAB_INTERNAL shape_choice shape_polygon_decide(const shape *k, const geom_point p[4],
                                                    int quick, shape_trace *tr, shape_hint *h);
 
+/* shape_polygon_decide without a trace, its answers and hints kept per
+** thread (shape_seen.c): the fallback of the variants with a decision of
+** their own, where the general path runs only at ties (shape_polygon.c). */
+FLIPLAB_INTERNAL shape_choice shape_polygon_kept(const shape *k, const geom_point p[4], int quick,
+                                                 shape_hint *h);
+
 /* The general path's decision of p when t is the contact triple of
 ** p[0..2] (a homothet's hint: no supports, no contact search), exact
 ** whatever the sites (shape_polygon.c). */
@@ -290,7 +298,11 @@ typedef int (*shape_at_fn)(const shape *k, const int t[3], const geom_point p[4]
 ** after at, and when neither is certain the general path decides from the
 ** hint's triple (on a grid, where ties make the quick answers give up,
 ** that skips the supports and the contact search of most decisions); with
-** no hint, the own decision, then the general path. */
+** no hint, the own decision, then the general path (its answers kept,
+** shape_polygon_kept, when keep is set: for an own decision that gives up
+** at ties only, so that the general path's configurations come back;
+** the square's and the diamond's give up on staircases too, common on
+** uniform sites, where keeping costs more than it saves). */
 static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_decide(const shape *k,
                                                                const geom_point p[4],
                                                                shape_trace *tr, shape_own_fn own) {
@@ -302,7 +314,7 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_decide(const shape *k,
 static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
                                                                const geom_point p[4],
                                                                shape_hint *h, shape_own_fn own,
-                                                               shape_at_fn at) {
+                                                               shape_at_fn at, int keep) {
   int quick = shape_quick_on(k);
   if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {
     const int t[3] = {h->e[0], h->e[1], h->e[2]};
@@ -311,13 +323,15 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
     return ans >= 0 ? (shape_choice)ans : shape_polygon_at(k, t, p);
   }
   int ans = quick && own != NULL ? own(k, p, h) : -1;
-  return ans >= 0 ? (shape_choice)ans : shape_polygon_decide(k, p, quick, NULL, h);
+  if (ans >= 0) return (shape_choice)ans;
+  return keep ? shape_polygon_kept(k, p, quick, h) : shape_polygon_decide(k, p, quick, NULL, h);
 }
 
 /* The table shape_ops_NAME of a polygon variant whose own decisions are OWN
-** and AT (NULL: none) and whose shape_wants_hints is WANTS: the two
-** decisions above with OWN and AT inlined, the sites taken as values. */
-#define SHAPE_VARIANT_OPS(NAME, OWN, AT, WANTS)                                                \
+** and AT (NULL: none), whose shape_wants_hints is WANTS and whose general
+** path's answers are kept when KEEP is 1: the two decisions above with
+** OWN, AT and KEEP inlined, the sites taken as values. */
+#define SHAPE_VARIANT_OPS(NAME, OWN, AT, WANTS, KEEP)                                          \
   static shape_choice shape_##NAME##_variant_decide(const shape *k, geom_point a, geom_point b, \
                                                     geom_point c, geom_point d,                 \
                                                     shape_trace *tr) {                          \
@@ -328,7 +342,7 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
                                                     geom_point c, geom_point d,                 \
                                                     shape_hint *h) {                            \
     const geom_point p[4] = {a, b, c, d};                                                       \
-    return shape_variant_hinted(k, p, h, OWN, AT);                                              \
+    return shape_variant_hinted(k, p, h, OWN, AT, KEEP);                                        \
   }                                                                                             \
   const shape_ops shape_ops_##NAME = {shape_##NAME##_variant_decide,                            \
                                       shape_##NAME##_variant_hinted, WANTS}

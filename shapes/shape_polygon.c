@@ -336,6 +336,31 @@ shape_choice shape_polygon_at(const shape *k, const int t[3], const geom_point p
   return shape_homothet_decide(k, t, shape_det3h_sign(k, t), p, NULL);
 }
 
+/* The whole decision and the hint it leaves, kept per thread (as
+** shape_homothet_seen keeps its end, under B - A, C - A, D - A): for the
+** variants with a decision of their own, whose general path runs only
+** where that gave up (the hexagon's, at a tie); there the supports and
+** the quick path's attempts are skipped too.  Kept as one int: the choice in bits 0-1, the
+** hint's how in bits 2-3, its edges in bits 4-11, 12-19, 20-27. */
+shape_choice shape_polygon_kept(const shape *k, const geom_point p[4], int quick, shape_hint *h) {
+  shape_seen_key key;
+  if (!quick || k->n > 255 || !shape_seen_on()) return shape_polygon_decide(k, p, quick, NULL, h);
+  shape_seen_start(&key, k, SHAPE_SEEN_WHOLE, NULL, 0);
+  if (!shape_seen_diffs(&key, p, 4, p[0])) return shape_polygon_decide(k, p, quick, NULL, h);
+  int v;
+  if (!shape_seen_find(&key, &v)) {
+    shape_hint left = h != NULL ? *h : (shape_hint){0};
+    shape_choice c = shape_polygon_decide(k, p, quick, NULL, &left);
+    v = (int)c | left.how << 2 | left.e[0] << 4 | left.e[1] << 12 | left.e[2] << 20;
+    shape_seen_keep(&key, v);
+  }
+  if (h != NULL && (v >> 2 & 3) != SHAPE_HINT_NONE)
+    *h = (shape_hint){(unsigned char)(v >> 2 & 3), {(unsigned char)(v >> 4),
+                                                     (unsigned char)(v >> 12),
+                                                     (unsigned char)(v >> 20)}};
+  return (shape_choice)(v & 3);
+}
+
 /* ---- the general polygon's variant (shape_internal.h) -------------------- */
 
 /* A hint holds edge and corner indices in bytes. */
@@ -343,4 +368,4 @@ static int shape_polygon_wants_hints(const shape *k) {
   return k->n <= 255;
 }
 
-SHAPE_VARIANT_OPS(polygon, NULL, NULL, shape_polygon_wants_hints);
+SHAPE_VARIANT_OPS(polygon, NULL, NULL, shape_polygon_wants_hints, 0);

@@ -290,7 +290,7 @@ static int shape_square_wants_hints(const shape *k) {
   return 0;
 }
 
-SHAPE_VARIANT_OPS(square, shape_square_own, NULL, shape_square_wants_hints);
+SHAPE_VARIANT_OPS(square, shape_square_own, NULL, shape_square_wants_hints, 0);
 
 /* ---- the diamond's variant: the square's in its frame -------------------- */
 
@@ -308,4 +308,4 @@ static int shape_diamond_wants_hints(const shape *k) {
   return 1;
 }
 
-SHAPE_VARIANT_OPS(diamond, shape_diamond_own, NULL, shape_diamond_wants_hints);
+SHAPE_VARIANT_OPS(diamond, shape_diamond_own, NULL, shape_diamond_wants_hints, 0);
