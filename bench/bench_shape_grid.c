@@ -32,18 +32,7 @@
 
 /* One LOT of rule r on p: wall and CPU seconds. */
 static bench_time bench_sg_lot(const rule *r, const geom_point *p, size_t n) {
-  lot_options o;
-  lot_options_init(&o, r);
-  lot *L;
-  char err[256];
-  double c0 = bench_cpu(), t0 = bench_wall();
-  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
-    fprintf(stderr, "bench_shape_grid: %s\n", err);
-    exit(1);
-  }
-  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
-  lot_free(L);
-  return t;
+  return bench_lot_time("bench_shape_grid", r, p, n);
 }
 
 /* The run of median wall time of runs. */
