@@ -33,7 +33,7 @@
 /* One DT build: wall and CPU seconds. */
 static bench_time bench_grid_dt(const geom_point *p, size_t n) {
   rule dt = rule_delaunay();
-  return bench_lot_time("bench_grid", &dt, p, n);
+  return bench_lot_time("bench_grid", &dt, p, n, NULL);
 }
 
 /* The exact calls of predicate q since `since` (a snapshot), by stage. */

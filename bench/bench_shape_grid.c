@@ -32,7 +32,7 @@
 
 /* One LOT of rule r on p: wall and CPU seconds. */
 static bench_time bench_sg_lot(const rule *r, const geom_point *p, size_t n) {
-  return bench_lot_time("bench_shape_grid", r, p, n);
+  return bench_lot_time("bench_shape_grid", r, p, n, NULL);
 }
 
 /* The run of median wall time of runs. */

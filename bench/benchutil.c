@@ -77,7 +77,8 @@ void bench_sibling(const char *argv0, const char *name, const char *args, double
   pclose(f);
 }
 
-bench_time bench_lot_time(const char *prog, const struct rule *r, const geom_point *p, size_t n) {
+bench_time bench_lot_time(const char *prog, const struct rule *r, const geom_point *p, size_t n,
+                          struct lot_stats *stats) {
   lot_options o;
   lot_options_init(&o, r);
   lot *L;
@@ -88,6 +89,7 @@ bench_time bench_lot_time(const char *prog, const struct rule *r, const geom_poi
     exit(1);
   }
   bench_time t = {bench_wall() - t0, bench_cpu() - c0};
+  if (stats != NULL) *stats = *lot_get_stats(L);
   lot_free(L);
   return t;
 }
