@@ -33,18 +33,7 @@
 /* One DT build: wall and CPU seconds. */
 static bench_time bench_grid_dt(const geom_point *p, size_t n) {
   rule dt = rule_delaunay();
-  lot_options o;
-  lot_options_init(&o, &dt);
-  lot *L;
-  char err[256];
-  double c0 = bench_cpu(), t0 = bench_wall();
-  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
-    fprintf(stderr, "bench_grid: %s\n", err);
-    exit(1);
-  }
-  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
-  lot_free(L);
-  return t;
+  return bench_lot_time("bench_grid", &dt, p, n, NULL);
 }
 
 /* The exact calls of predicate q since `since` (a snapshot), by stage. */

@@ -39,20 +39,12 @@
 /* One build: wall and CPU seconds, flips, status. */
 static void bench_once(const geom_point *p, size_t n, const rule *r, double *wall, double *cpu,
                        uint64_t *flips, lot_status *status) {
-  lot_options o;
-  lot_options_init(&o, r);
-  lot *L;
-  char err[256];
-  double c0 = bench_cpu(), t0 = bench_wall();
-  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
-    fprintf(stderr, "bench_lot: %s\n", err);
-    exit(1);
-  }
-  *wall = bench_wall() - t0;
-  *cpu = bench_cpu() - c0;
-  *flips = lot_get_stats(L)->flips;
-  *status = lot_get_stats(L)->status;
-  lot_free(L);
+  lot_stats st;
+  bench_time t = bench_lot_time("bench_lot", r, p, n, &st);
+  *wall = t.wall;
+  *cpu = t.cpu;
+  *flips = st.flips;
+  *status = st.status;
 }
 
 /* Median wall time of `runs` builds of rule r (*cpu: median CPU time),

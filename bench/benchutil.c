@@ -8,6 +8,7 @@
 #include <string.h>
 #include <time.h>
 #include "benchutil.h"
+#include "lot.h"
 
 static double bench_clock(clockid_t id) {
   struct timespec ts;
@@ -74,4 +75,21 @@ void bench_sibling(const char *argv0, const char *name, const char *args, double
     sscanf(line, "cgal_cpu_seconds %lf", cpu);
   }
   pclose(f);
+}
+
+bench_time bench_lot_time(const char *prog, const struct rule *r, const geom_point *p, size_t n,
+                          struct lot_stats *stats) {
+  lot_options o;
+  lot_options_init(&o, r);
+  lot *L;
+  char err[256];
+  double c0 = bench_cpu(), t0 = bench_wall();
+  if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
+    fprintf(stderr, "%s: %s\n", prog, err);
+    exit(1);
+  }
+  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
+  if (stats != NULL) *stats = *lot_get_stats(L);
+  lot_free(L);
+  return t;
 }

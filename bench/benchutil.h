@@ -33,6 +33,14 @@ double bench_load(void);
 void bench_sibling(const char *argv0, const char *name, const char *args, double *wall,
                    double *cpu);
 
+/* One LOT of rule r on the n points p with default options (lot_build):
+** its wall and CPU seconds, and its statistics into *stats (may be NULL);
+** exits with a message naming prog if it fails. */
+struct rule;
+struct lot_stats;
+bench_time bench_lot_time(const char *prog, const struct rule *r, const geom_point *p, size_t n,
+                          struct lot_stats *stats);
+
 /* A polygon sampler of samplers/sampler.h (sampler_vector, sampler_star...). */
 typedef int (*bench_sampler)(sampler_rng *g, size_t n, geom_point *out);
 /* n vertices from fn with seed 1 (malloc'd); exits with a message naming

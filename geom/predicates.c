@@ -36,6 +36,7 @@
 #include "fliplab_config.h"
 #include "predicates.h"
 #include "geom_int_internal.h"
+#include "geom_exact_internal.h"
 
 /* GEOM_EPS, and why tiny differences skip the filter: see predicates.h. */
 
@@ -63,6 +64,10 @@ int geom_exact_gmp_only(int on) {
   return atomic_exchange_explicit(&geom_gmp_only, on != 0, memory_order_relaxed);
 }
 
+int geom_exact_gmp_forced(void) {
+  return atomic_load_explicit(&geom_gmp_only, memory_order_relaxed);
+}
+
 /* NaN and infinities have no rational value (mpq_set_d would abort): the
 ** predicates answer 0 for them; callers validate input beforehand. */
 static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) {
@@ -70,20 +75,13 @@ static int geom_finite4(geom_point a, geom_point b, geom_point c, geom_point d) 
       && isfinite(c.x) && isfinite(c.y) && isfinite(d.x) && isfinite(d.y);
 }
 
-/* The ranges within which the first two stages are exact (their arguments
-** below): coordinates 0 or of magnitude in [2^-200, 2^200], weights 0 or
-** in [2^-400, 2^400] (a weight is a squared length).  NaN and infinities
-** fail both.  Combined with & rather than &&: every test of a call is
-** evaluated, and nothing branches on the data. */
-static int geom_moderate(double x, double lo, double hi) {
-  double m = fabs(x);
-  return (m == 0) | ((m >= lo) & (m <= hi));
-}
-
 /* The first two stages may run: not in GMP-only mode, and the n points (and
-** their weights, w != NULL) moderate. */
+** their weights, w != NULL) moderate: coordinates 0 or of magnitude in
+** [2^-200, 2^200], weights 0 or in [2^-400, 2^400] (a weight is a squared
+** length), the ranges within which those stages are exact (their arguments
+** below). */
 static int geom_fast_ok(const geom_point *p, int n, const double *w) {
-  int ok = !atomic_load_explicit(&geom_gmp_only, memory_order_relaxed);
+  int ok = !geom_exact_gmp_forced();
   for (int i = 0; i < n; i++)
     ok &= geom_moderate(p[i].x, 0x1p-200, 0x1p200) & geom_moderate(p[i].y, 0x1p-200, 0x1p200);
   for (int i = 0; w != NULL && i < n; i++) ok &= geom_moderate(w[i], 0x1p-400, 0x1p400);
@@ -337,9 +335,10 @@ static int geom_lifted_int(const double x[3], const double y[3], const double *W
 **
 ** An expansion (Shewchuk 1997, section 2) is a sum of doubles,
 ** nonoverlapping and increasing in magnitude, whose sign is the sign of
-** its largest component.  The error-free transformations below (the sum,
-** difference and product of two doubles as two doubles) and the
-** operations built on them keep every value exact; they need round to
+** its largest component.  The error-free transformations (the sum,
+** difference and product of two doubles as two doubles,
+** geom_exact_internal.h) and the operations built on them below keep every
+** value exact; they need round to
 ** nearest even, no contraction into FMA (fliplab_config.h), and neither
 ** overflow nor underflow.  With moderate coordinates every difference term
 ** is a multiple of 2^-252 below 2^201 in magnitude, so every term of a
@@ -348,40 +347,9 @@ static int geom_lifted_int(const double x[3], const double y[3], const double *W
 ** value above 2^405 by 2^27 + 1; weight terms (moderate weights: multiples
 ** of 2^-452 below 2^401) stay within the same ranges. */
 
-/* x + y = a + b exactly, x = fl(a + b). */
-static inline void geom_two_sum(double a, double b, double *x, double *y) {
-  double s = a + b, bv = s - a, av = s - bv;
-  *x = s;
-  *y = (a - av) + (b - bv);
-}
-
-/* x + y = a - b exactly, x = fl(a - b). */
-static inline void geom_two_diff(double a, double b, double *x, double *y) {
-  double d = a - b, bv = a - d, av = d + bv;
-  *x = d;
-  *y = (a - av) + (bv - b);
-}
-
-/* hi + lo = a, each with at most 26 significant bits (Dekker). */
-static inline void geom_split(double a, double *hi, double *lo) {
-  double c = 134217729.0 * a, big = c - a;
-  *hi = c - big;
-  *lo = a - *hi;
-}
-
-/* x + y = a * b exactly, x = fl(a * b). */
-static inline void geom_two_product(double a, double b, double *x, double *y) {
-  double p = a * b, ahi, alo, bhi, blo;
-  geom_split(a, &ahi, &alo);
-  geom_split(b, &bhi, &blo);
-  double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
-  *x = p;
-  *y = alo * blo - err;
-}
-
 /* h = e + b (e has n components; h gets at most n + 1, zeros dropped, at
 ** least one).  Returns h's length.  h may not alias e. */
-static int geom_grow_expansion(int n, const double *e, double b, double *h) {
+int geom_grow_expansion(int n, const double *e, double b, double *h) {
   int k = 0;
   double q = b;
   for (int i = 0; i < n; i++) {
@@ -398,7 +366,7 @@ static int geom_grow_expansion(int n, const double *e, double b, double *h) {
 ** error kept as a component (Shewchuk's fast expansion sum, section 2.6,
 ** nonoverlapping under round to nearest even).  At most n + m components,
 ** zeros dropped, at least one.  Cost O(n + m).  h may not alias e or f. */
-static int geom_expansion_sum(int n, const double *e, int m, const double *f, double *h) {
+int geom_expansion_sum(int n, const double *e, int m, const double *f, double *h) {
   int i = 0, j = 0, k = 0;
   double q = 0;
   while (i < n || j < m) {
@@ -414,7 +382,7 @@ static int geom_expansion_sum(int n, const double *e, int m, const double *f, do
 ** running sum (Shewchuk's scale expansion, section 2.7, nonoverlapping
 ** under round to nearest even).  At most 2n components, zeros dropped, at
 ** least one.  Cost O(n).  h may not alias e. */
-static int geom_scale_expansion(int n, const double *e, double b, double *h) {
+int geom_scale_expansion(int n, const double *e, double b, double *h) {
   double q, hh, p, t, s;
   int k = 0;
   geom_two_product(e[0], b, &q, &hh);
@@ -430,17 +398,48 @@ static int geom_scale_expansion(int n, const double *e, double b, double *h) {
   return k;
 }
 
+/* e (n components) in place as an expansion of as few components as its
+** value allows, at most n (Shewchuk's compress, section 2.8): a sweep
+** from the largest component down gathers each run of components that sum
+** exactly into one, then a sweep up splits the sums back into
+** nonoverlapping parts.  Each step is a fast two-sum, exact when the first
+** operand is at least the second in magnitude, which the nonoverlapping
+** order gives.  The value is unchanged; the length, which every later
+** product multiplies, rarely exceeds what the value's bits need (a few
+** components for a polynomial of degree 8 in doubles).  Cost O(n). */
+int geom_expansion_compress(int n, double *e) {
+  int bottom = n - 1;
+  double q = e[bottom];
+  for (int i = n - 2; i >= 0; i--) {
+    double x = q + e[i], lo = e[i] - (x - q);
+    if (lo != 0) {
+      e[bottom--] = x;
+      q = lo;
+    } else {
+      q = x;
+    }
+  }
+  int top = 0;
+  for (int i = bottom + 1; i < n; i++) {
+    double x = e[i] + q, lo = q - (x - e[i]);
+    if (lo != 0) e[top++] = lo;
+    q = x;
+  }
+  e[top] = q;
+  return top + 1;
+}
+
 /* The largest products the lifted determinant forms (geom_lifted_term): a
 ** lift of at most 5 components times a minor of at most 4. */
 #define GEOM_LIFT_MAX 5
 #define GEOM_MINOR_MAX 4
 #define GEOM_TERM_MAX (2 * GEOM_LIFT_MAX * GEOM_MINOR_MAX)
 
-/* h = e f (n <= GEOM_LIFT_MAX, m <= GEOM_MINOR_MAX components): e scaled by
-** each component of f, the parts summed.  At most 2nm components; cost
-** O(n m^2). */
-static int geom_expansion_product(int n, const double *e, int m, const double *f, double *h) {
-  double part[2 * GEOM_LIFT_MAX], acc[GEOM_TERM_MAX];
+/* h = e f (geom_exact_internal.h): e scaled by each component of f, the
+** parts summed, in scratch (part: 2 n, acc: 2 n m).  Cost O(n m^2). */
+int geom_expansion_product(int n, const double *e, int m, const double *f, double *h,
+                           double *scratch) {
+  double *part = scratch, *acc = scratch + 2 * n;
   int k = geom_scale_expansion(n, e, f[0], h);
   for (int j = 1; j < m; j++) {
     int np = geom_scale_expansion(n, e, f[j], part);
@@ -521,6 +520,7 @@ static int geom_lifted_term(const double x[3], const double y[3], const double *
                             double *h) {
   int j = (i + 1) % 3, k = (i + 2) % 3;
   double sx[2], sy[2], u[2], v[2], sq[4], lift[GEOM_LIFT_MAX], minor[GEOM_MINOR_MAX];
+  double scratch[2 * GEOM_LIFT_MAX + GEOM_TERM_MAX];
   geom_two_product(x[i], x[i], &sx[1], &sx[0]);
   geom_two_product(y[i], y[i], &sy[1], &sy[0]);
   int nl = geom_expansion_sum(2, sx, 2, sy, W == NULL ? lift : sq);
@@ -528,7 +528,7 @@ static int geom_lifted_term(const double x[3], const double y[3], const double *
   geom_two_product(x[j], y[k], &u[1], &u[0]);
   geom_two_product(-x[k], y[j], &v[1], &v[0]);
   int nm = geom_expansion_sum(2, u, 2, v, minor);
-  return geom_expansion_product(nl, lift, nm, minor, h);
+  return geom_expansion_product(nl, lift, nm, minor, h, scratch);
 }
 
 /* The sign of the lifted determinant of exact differences, summed as an

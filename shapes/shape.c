@@ -7,6 +7,7 @@
 ** docs/emptyshape.md has the definitions and the special-position rule.
 */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,14 +17,19 @@
 
 /* ---- shapes and their variants ------------------------------------------ */
 
+/* Shapes made so far: each one's serial number, which no other shape of
+** the process shares (the exact signs kept per thread are keyed by it). */
+static atomic_ulong shape_made;
+
 /* A shape of kind kind and n vertices (none: an ellipse), its private part
-** empty: NULL out of memory. */
+** empty but for its serial number: NULL out of memory. */
 static shape *shape_new(shape_kind kind, int n) {
   shape *k = calloc(1, sizeof *k);
   if (k == NULL) return NULL;
   k->kind = kind;
   k->n = n;
   k->impl = calloc(1, sizeof *k->impl);
+  if (k->impl != NULL) k->impl->serial = atomic_fetch_add(&shape_made, 1) + 1;
   if (n > 0 && k->impl != NULL) {
     k->v = calloc((size_t)n, sizeof *k->v);
     k->impl->half = calloc((size_t)n, 1);
@@ -55,6 +61,7 @@ static void shape_impl_set(shape *k, shape_variant v) {
   switch (v) {
   case SHAPE_V_POLYGON: ops = &shape_ops_polygon; break;
   case SHAPE_V_SQUARE: ops = &shape_ops_square; break;
+  case SHAPE_V_DIAMOND: ops = &shape_ops_diamond; break;
   case SHAPE_V_HEXAGON: ops = &shape_ops_hexagon; break;
   case SHAPE_V_ELLIPSE: ops = &shape_ops_ellipse; break;
   }
@@ -113,7 +120,8 @@ static void shape_halves(shape *k) {
 ** the coordinate contract (so the predicates' bound holds), anticlockwise
 ** (a clockwise list is reversed, keeping its first vertex); then its
 ** tables, and its variant: a square or a hexagon with a decision of its
-** own (shape_square_is, shape_hex_build), else the general polygon. */
+** own (shape_square_is, shape_diamond_is, shape_hex_build), else the
+** general polygon. */
 static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *err,
                             size_t errlen) {
   shape *k = shape_new(SHAPE_POLYGON, n);
@@ -134,6 +142,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
     return NULL;
   }
   shape_halves(k);
+  k->impl->moderate = shape_xp_moderate(k);   /* before the tables: memo reads it */
   if (shape_hex_build(k) != 0 || shape_memo_build(k) != 0 || shape_quick_build(k) != 0) {
     snprintf(err, errlen, "shape '%.60s': out of memory", spec);
     shape_free(k);
@@ -141,6 +150,7 @@ static shape *shape_polygon(const geom_point *p, int n, const char *spec, char *
   }
   shape_variant v = SHAPE_V_POLYGON;
   if (shape_square_is(k)) v = SHAPE_V_SQUARE;
+  if (shape_diamond_is(k)) v = SHAPE_V_DIAMOND;
   if (k->impl->hexa != NULL) v = SHAPE_V_HEXAGON;
   shape_impl_set(k, v);
   return k;
@@ -247,6 +257,7 @@ static shape *shape_parse_ellipse(const char *spec, const char *s, char *err, si
     shape_free(k);
     return NULL;
   }
+  k->impl->moderate = shape_xp_moderate(k);
   return k;
 }
 

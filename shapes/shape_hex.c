@@ -390,4 +390,6 @@ static int shape_hex_wants_hints(const shape *k) {
   return 1;
 }
 
-SHAPE_VARIANT_OPS(hexagon, shape_hex_decide, shape_hex_at, shape_hex_wants_hints);
+/* Its slabs give up at ties only: on a grid a third of its decisions, whose
+** configurations come back, are kept (shape_polygon_kept). */
+SHAPE_VARIANT_OPS(hexagon, shape_hex_decide, shape_hex_at, shape_hex_wants_hints, 1);

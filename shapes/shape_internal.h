@@ -3,28 +3,32 @@
 ** variant, chosen once when it is made, with that variant's decisions and
 ** tables), and the filtered arithmetic behind the shape predicates
 ** (shape_arith.c): one program per predicate, run first on doubles with a
-** proven error bound, then, when the bound cannot tell the sign, on exact
-** GMP rationals (from one pool, shape_mpq.c).  Private to shapes/ (not
-** installed).
+** proven error bound, then, when the bound cannot tell the sign, exactly:
+** on floating-point expansions (from one pool, shape_xp.c) when the inputs
+** allow it, else on GMP rationals (from another, shape_mpq.c).  Private to
+** shapes/ (not installed).
 */
 #ifndef FLIPLAB_SHAPE_INTERNAL_H
 #define FLIPLAB_SHAPE_INTERNAL_H
 
 #include <gmp.h>
+#include <stdint.h>
 #include "fliplab_config.h"
+#include "predicates.h"   /* geom_stage */
 #include "shape.h"
 
 /* ---- variants -------------------------------------------------------------
 **
 ** Every shape is one variant, each with a decision of its own, told apart
 ** once when the shape is made (shape.c, shape_impl_set, one exhaustive
-** switch): an axis-parallel square (bounding boxes, shape_square.c), an
+** switch): an axis-parallel square (bounding boxes, shape_square.c), a
+** square turned by pi/4 (the same in a turned frame, shape_square.c), an
 ** affinely regular hexagon (slabs, shape_hex.c), every other polygon
 ** (supports and homothets, shape_polygon.c) and an ellipse (one determinant,
 ** shape_ellipse.c).  A variant is its table of decisions, shape_ops; the public
 ** verbs call through it and test no flag. */
 typedef enum shape_variant {
-  SHAPE_V_POLYGON, SHAPE_V_SQUARE, SHAPE_V_HEXAGON, SHAPE_V_ELLIPSE
+  SHAPE_V_POLYGON, SHAPE_V_SQUARE, SHAPE_V_DIAMOND, SHAPE_V_HEXAGON, SHAPE_V_ELLIPSE
 } shape_variant;
 
 /* A variant's answers to shape_decide (the sites finite, *tr cleared or tr
@@ -39,8 +43,8 @@ typedef struct shape_ops {
   int (*wants_hints)(const shape *k);
 } shape_ops;
 
-FLIPLAB_INTERNAL const shape_ops shape_ops_polygon, shape_ops_square, shape_ops_hexagon,
-  shape_ops_ellipse;
+FLIPLAB_INTERNAL const shape_ops shape_ops_polygon, shape_ops_square, shape_ops_diamond,
+  shape_ops_hexagon, shape_ops_ellipse;
 
 /* The private part of a shape (k->impl), owned by it.  A polygon's tables
 ** are built once it is checked; those it does not have stay NULL. */
@@ -51,6 +55,8 @@ struct shape_impl {
   struct shape_memo *memo;   /* shape-only determinants (shape_arith.c) */
   struct shape_quick *quick; /* the quick decision's table (shape_quick.c) */
   struct shape_hex *hexa;    /* an affinely regular hexagon's slabs (shape_hex.c) */
+  int moderate;              /* every coordinate (form entry) in the expansions' range */
+  uint64_t serial;           /* this shape's number: the n-th shape made (shape.c) */
 };
 
 static inline shape_variant shape_variant_of(const shape *k) {
@@ -84,7 +90,7 @@ typedef enum shape_prog {
   SHAPE_PROG_ELLIPSE, SHAPE_PROG_COUNT
 } shape_prog;
 
-/* The exact sign of a program's value (filter, then GMP). */
+/* The exact sign of a program's value (filter, then expansions, then GMP). */
 FLIPLAB_INTERNAL int shape_sign(shape_prog p, const shape_args *g);
 /* The sign under the perturbation: the value's sign, or when it is 0 the
 ** sign of the eps coefficient; *level (may be NULL) gets 0 or 1, or 2
@@ -92,7 +98,9 @@ FLIPLAB_INTERNAL int shape_sign(shape_prog p, const shape_args *g);
 FLIPLAB_INTERNAL int shape_eps_sign(shape_prog p, shape_args g, int *level);
 
 /* Tests: 1 makes every sign skip the double run and take the exact one
-** (so a decision can be compared with its purely exact twin); 0 restores. */
+** (so a decision can be compared with its purely exact twin); 0 restores.
+** The exact run's stage is the expansions' unless geom_exact_gmp_only
+** (predicates.h) sends it to GMP. */
 FLIPLAB_INTERNAL void shape_set_exact_only(int on);
 FLIPLAB_INTERNAL int shape_only_exact;   /* the mode (shape_arith.c); read inline: */
 static inline int shape_exact_only(void) {   /* every decision asks */
@@ -180,6 +188,49 @@ FLIPLAB_INTERNAL int shape_quick_at(const shape *k, const int t[3], const geom_p
 ** (shape_polygon.c's rounding-shape test), or 2. */
 FLIPLAB_INTERNAL int shape_quick_corner(const shape *k, int c, const geom_point p[4]);
 
+/* The exact runs of program p decided by stage s (GEOM_STAGE_EXPANSION or
+** GEOM_STAGE_GMP) over the process; shape_exact_calls is their total. */
+FLIPLAB_INTERNAL unsigned long shape_exact_stage_calls(shape_prog p, geom_stage s);
+
+/* ---- answers asked again --------------------------------------------------
+**
+** Exact answers kept per thread (shape_seen.c, which has the argument),
+** keyed by the shape's serial number, what was asked (a program, or
+** SHAPE_SEEN_SUPPORT, SHAPE_SEEN_DECIDE, SHAPE_SEEN_WHOLE: a polygon's
+** support, its general path's contact search and D's test, and its whole
+** general path, shape_polygon.c), up to 7 small integers and the
+** exact differences of up to 4 sites to an origin.  shape_seen_start
+** clears a key and sets its shape, what and integers; shape_seen_diffs
+** sets the differences of p[0..rows) to o, 1 when all are exact (else the
+** key may not be used).  shape_seen_find: 1 and *v when the key's answer is
+** kept; shape_seen_keep keeps it.  shape_seen_on: 0 in the tests'
+** reference modes, which must compute everything.  shape_seen_hits: the
+** answers of kind what found kept, over the process. */
+#define SHAPE_SEEN_SUPPORT SHAPE_PROG_COUNT
+#define SHAPE_SEEN_DECIDE (SHAPE_PROG_COUNT + 1)
+#define SHAPE_SEEN_WHOLE (SHAPE_PROG_COUNT + 2)
+#define SHAPE_SEEN_WHATS (SHAPE_PROG_COUNT + 3)
+typedef struct shape_seen_key {
+  uint64_t serial;
+  int what, n[7];
+  double d[8];
+} shape_seen_key;
+_Static_assert(sizeof(shape_seen_key) == 13 * 8, "a key has no padding (compared as bytes)");
+
+FLIPLAB_INTERNAL int shape_seen_on(void);
+FLIPLAB_INTERNAL void shape_seen_start(shape_seen_key *k, const shape *K, int what, const int *n,
+                                       int cnt);
+FLIPLAB_INTERNAL int shape_seen_diffs(shape_seen_key *k, const geom_point *p, int rows,
+                                      geom_point o);
+FLIPLAB_INTERNAL int shape_seen_find(const shape_seen_key *k, int *v);
+FLIPLAB_INTERNAL void shape_seen_keep(const shape_seen_key *k, int v);
+FLIPLAB_INTERNAL unsigned long shape_seen_hits(int what);
+
+/* 1 when every coordinate of polygon K (every entry of an ellipse's form)
+** lies in the expansion run's range (shape_arith.c): kept in K's moderate
+** when K is made. */
+FLIPLAB_INTERNAL int shape_xp_moderate(const shape *k);
+
 /* 1 when a - b is a double, exactly (GMP: for building a shape's tables);
 ** *d = fl(a - b) either way. */
 FLIPLAB_INTERNAL int shape_exact_diff(double a, double b, double *d);
@@ -191,6 +242,11 @@ FLIPLAB_INTERNAL int shape_exact_diff(double a, double b, double *d);
 ** (special position, or D on the square): shape_decide's answer. */
 FLIPLAB_INTERNAL int shape_square_is(const shape *k);
 FLIPLAB_INTERNAL int shape_square_decide(const geom_point p[4]);
+/* The same for a square turned by pi/4 (the diamond, the L_1 ball: its
+** vertices' frames (x + y, y - x) exact and an axis-parallel square), on
+** the sites' frames: -1 also when a site's frame is not exact. */
+FLIPLAB_INTERNAL int shape_diamond_is(const shape *k);
+FLIPLAB_INTERNAL int shape_diamond_decide(const geom_point p[4]);
 /* The empty-hexagon rule of an affinely regular hexagon (shape_hex.c): for
 ** a polygon K that is one (a centrally symmetric hexagon with e1 = e0 + e2,
 ** every edge an exact difference of its vertices) its slabs into its
@@ -215,6 +271,18 @@ FLIPLAB_INTERNAL int shape_hex_at(const shape *k, const int t[3], const geom_poi
 FLIPLAB_INTERNAL shape_choice shape_polygon_decide(const shape *k, const geom_point p[4],
                                                    int quick, shape_trace *tr, shape_hint *h);
 
+/* shape_polygon_decide without a trace, its answers and hints kept per
+** thread (shape_seen.c): the fallback of the variants with a decision of
+** their own, where the general path runs only at ties (shape_polygon.c). */
+FLIPLAB_INTERNAL shape_choice shape_polygon_kept(const shape *k, const geom_point p[4], int quick,
+                                                 shape_hint *h);
+
+/* The general path's decision of p when t is the contact triple of
+** p[0..2] (a homothet's hint: no supports, no contact search), exact
+** whatever the sites (shape_polygon.c). */
+FLIPLAB_INTERNAL shape_choice shape_polygon_at(const shape *k, const int t[3],
+                                               const geom_point p[4]);
+
 /* A polygon variant's own decision, tried where the quick path may be
 ** asked: the answer (it may fill *h), or -1 for the general path; and its
 ** answer for a homothet's hint, the contact edges t of p[0..2], or -1. */
@@ -227,7 +295,14 @@ typedef int (*shape_at_fn)(const shape *k, const int t[3], const geom_point p[4]
 ** shape_hex.c): an own answer is the general path's (their files have the
 ** arguments), so it is taken first; a homothet's hint (lot's commonest
 ** call) is tried before anything else, with the quick path's shape_quick_at
-** after at; when nothing certain is found the general path decides. */
+** after at, and when neither is certain the general path decides from the
+** hint's triple (on a grid, where ties make the quick answers give up,
+** that skips the supports and the contact search of most decisions); with
+** no hint, the own decision, then the general path (its answers kept,
+** shape_polygon_kept, when keep is set: for an own decision that gives up
+** at ties only, so that the general path's configurations come back;
+** the square's and the diamond's give up on staircases too, common on
+** uniform sites, where keeping costs more than it saves). */
 static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_decide(const shape *k,
                                                                const geom_point p[4],
                                                                shape_trace *tr, shape_own_fn own) {
@@ -239,22 +314,24 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_decide(const shape *k,
 static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
                                                                const geom_point p[4],
                                                                shape_hint *h, shape_own_fn own,
-                                                               shape_at_fn at) {
+                                                               shape_at_fn at, int keep) {
   int quick = shape_quick_on(k);
   if (quick && h != NULL && h->how == SHAPE_HINT_HOMOTHET) {
     const int t[3] = {h->e[0], h->e[1], h->e[2]};
     int ans = at != NULL ? at(k, t, p) : -1;
     if (ans < 0) ans = shape_quick_at(k, t, p);
-    if (ans >= 0) return (shape_choice)ans;
+    return ans >= 0 ? (shape_choice)ans : shape_polygon_at(k, t, p);
   }
   int ans = quick && own != NULL ? own(k, p, h) : -1;
-  return ans >= 0 ? (shape_choice)ans : shape_polygon_decide(k, p, quick, NULL, h);
+  if (ans >= 0) return (shape_choice)ans;
+  return keep ? shape_polygon_kept(k, p, quick, h) : shape_polygon_decide(k, p, quick, NULL, h);
 }
 
 /* The table shape_ops_NAME of a polygon variant whose own decisions are OWN
-** and AT (NULL: none) and whose shape_wants_hints is WANTS: the two
-** decisions above with OWN and AT inlined, the sites taken as values. */
-#define SHAPE_VARIANT_OPS(NAME, OWN, AT, WANTS)                                                \
+** and AT (NULL: none), whose shape_wants_hints is WANTS and whose general
+** path's answers are kept when KEEP is 1: the two decisions above with
+** OWN, AT and KEEP inlined, the sites taken as values. */
+#define SHAPE_VARIANT_OPS(NAME, OWN, AT, WANTS, KEEP)                                          \
   static shape_choice shape_##NAME##_variant_decide(const shape *k, geom_point a, geom_point b, \
                                                     geom_point c, geom_point d,                 \
                                                     shape_trace *tr) {                          \
@@ -265,10 +342,37 @@ static FLIPLAB_ALWAYS_INLINE shape_choice shape_variant_hinted(const shape *k,
                                                     geom_point c, geom_point d,                 \
                                                     shape_hint *h) {                            \
     const geom_point p[4] = {a, b, c, d};                                                       \
-    return shape_variant_hinted(k, p, h, OWN, AT);                                              \
+    return shape_variant_hinted(k, p, h, OWN, AT, KEEP);                                        \
   }                                                                                             \
   const shape_ops shape_ops_##NAME = {shape_##NAME##_variant_decide,                            \
                                       shape_##NAME##_variant_hinted, WANTS}
+
+/* ---- exact expansions -----------------------------------------------------
+**
+** A pool of floating-point expansions (shape_xp.c): registers in one arena,
+** register 0 the value 0.  The expansion run of shape_arith.c takes its
+** registers here; a run that outgrows the arena or the register count
+** marks the pool full, every later verb answers register 0, and the run's
+** result is not read (GMP decides).  The verbs mirror the rationals' below:
+** a double, an expansion of len components (copied), a - b of two
+** doubles, i + j (i - j when neg), -i, i j, and the sign of register i. */
+#define SHAPE_XP_REGS 320
+#define SHAPE_XP_ROOM 4096
+typedef struct shape_xp {
+  int n, used;              /* registers handed out, arena doubles used */
+  int full;                 /* 1: out of room; nothing computed since is exact */
+  int off[SHAPE_XP_REGS], len[SHAPE_XP_REGS];
+  double d[SHAPE_XP_ROOM];
+} shape_xp;
+
+FLIPLAB_INTERNAL void shape_xp_init(shape_xp *X);
+FLIPLAB_INTERNAL int shape_xp_d(shape_xp *X, double a);
+FLIPLAB_INTERNAL int shape_xp_put(shape_xp *X, const double *e, int len);
+FLIPLAB_INTERNAL int shape_xp_diff(shape_xp *X, double a, double b);
+FLIPLAB_INTERNAL int shape_xp_add(shape_xp *X, int i, int j, int neg);
+FLIPLAB_INTERNAL int shape_xp_neg(shape_xp *X, int i);
+FLIPLAB_INTERNAL int shape_xp_mul(shape_xp *X, int i, int j);
+FLIPLAB_INTERNAL int shape_xp_sign(const shape_xp *X, int i);
 
 /* ---- exact rationals ------------------------------------------------------
 **

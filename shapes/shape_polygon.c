@@ -41,7 +41,7 @@ static int shape_before(const shape *k, int j, geom_point p, geom_point q, int h
 /* The edges before Q - P form a prefix 0..s-1 of the edge list (edge
 ** directions turn monotonically): the support vertex is s, the start of
 ** the first edge not before Q - P, found by binary search (s = n: 0). */
-int shape_support(const shape *k, geom_point p, geom_point q) {
+static int shape_support_run(const shape *k, geom_point p, geom_point q) {
   int hw = shape_cross_eps(k, 0, p, q) > 0 ? 0 : 1;
   int lo = 1, hi = k->n;   /* edge 0 is always before: its angle is 0 */
   while (lo < hi) {
@@ -50,6 +50,22 @@ int shape_support(const shape *k, geom_point p, geom_point q) {
     else hi = mid;
   }
   return lo % k->n;
+}
+
+/* The support depends on K and Q - P alone, so on a grid, where a few
+** short directions come back everywhere, it is kept per thread
+** (shape_seen.c) under Q - P when that difference is exact. */
+int shape_support(const shape *k, geom_point p, geom_point q) {
+  shape_seen_key key;
+  const geom_point pq[2] = {p, q};
+  int v;
+  if (!shape_seen_on()) return shape_support_run(k, p, q);
+  shape_seen_start(&key, k, SHAPE_SEEN_SUPPORT, NULL, 0);
+  if (!shape_seen_diffs(&key, pq, 2, p)) return shape_support_run(k, p, q);
+  if (shape_seen_find(&key, &v)) return v;
+  v = shape_support_run(k, p, q);
+  shape_seen_keep(&key, v);
+  return v;
 }
 
 /* ---- the circumscribing homothet of a polygon ------------------------------
@@ -247,6 +263,46 @@ static shape_choice shape_corner_hinted(const shape *k, int c, const geom_point 
   return shape_corner_decide(k, c, p, quick, tr);
 }
 
+/* The circumscribing homothet of A, B, C by the contact search, and D's
+** test against it: the general path's slow end. */
+static shape_choice shape_homothet_found(const shape *k, const int sup[3], const geom_point p[4],
+                                         shape_trace *tr, shape_hint *h) {
+  int t[3], d3 = shape_contacts(k, sup, p, t);
+  if (d3 == 0) {
+    if (tr) tr->failed = 1;
+    return SHAPE_EITHER;
+  }
+  if (tr) memcpy(tr->contact, t, sizeof t);
+  shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
+  return shape_homothet_decide(k, t, d3, p, tr);
+}
+
+/* The same, kept per thread (shape_seen.c) under the differences B - A,
+** C - A, D - A: the answer and the contact triple are functions of K and
+** those alone (every sign the search and the test read is exact and
+** translation-invariant, and so are the supports), so a grid's
+** configurations, which come back everywhere, are searched once.  Kept as
+** one int: the choice in bits 0-1, bit 2 set when a triple was found, its
+** edges in bits 4-11, 12-19, 20-27 (at most 255 edges).  Asked only where
+** the quick path gave up, so uniform sites pay nothing for it. */
+static shape_choice shape_homothet_seen(const shape *k, const int sup[3], const geom_point p[4],
+                                        shape_hint *h) {
+  shape_seen_key key;
+  shape_seen_start(&key, k, SHAPE_SEEN_DECIDE, NULL, 0);
+  if (!shape_seen_diffs(&key, p, 4, p[0])) return shape_homothet_found(k, sup, p, NULL, h);
+  int v;
+  if (!shape_seen_find(&key, &v)) {
+    shape_hint left = {0};
+    shape_choice c = shape_homothet_found(k, sup, p, NULL, &left);
+    v = (int)c | (left.how == SHAPE_HINT_HOMOTHET) << 2 | left.e[0] << 4 | left.e[1] << 12 |
+        left.e[2] << 20;
+    shape_seen_keep(&key, v);
+  }
+  const int t[3] = {v >> 4 & 255, v >> 12 & 255, v >> 20 & 255};
+  if (v >> 2 & 1) shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
+  return (shape_choice)(v & 3);
+}
+
 /* The quick path (shape_quick.c) answers first where its signs are
 ** certain, with this path's answer (the argument is there). */
 shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int quick,
@@ -268,14 +324,41 @@ shape_choice shape_polygon_decide(const shape *k, const geom_point p[4], int qui
     shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
     return (shape_choice)ans;
   }
-  int d3 = shape_contacts(k, sup, p, t);
-  if (d3 == 0) {
-    if (tr) tr->failed = 1;
-    return SHAPE_EITHER;
+  if (tr == NULL && quick && k->n <= 255 && shape_seen_on())
+    return shape_homothet_seen(k, sup, p, h);
+  return shape_homothet_found(k, sup, p, tr, h);
+}
+
+/* A homothet's hint names the contact triple of A, B, C (shape.h: filled
+** by a decision of the same K, A, B, C), so D's test needs only det3's
+** sign and the arc. */
+shape_choice shape_polygon_at(const shape *k, const int t[3], const geom_point p[4]) {
+  return shape_homothet_decide(k, t, shape_det3h_sign(k, t), p, NULL);
+}
+
+/* The whole decision and the hint it leaves, kept per thread (as
+** shape_homothet_seen keeps its end, under B - A, C - A, D - A): for the
+** variants with a decision of their own, whose general path runs only
+** where that gave up (the hexagon's, at a tie); there the supports and
+** the quick path's attempts are skipped too.  Kept as one int: the choice in bits 0-1, the
+** hint's how in bits 2-3, its edges in bits 4-11, 12-19, 20-27. */
+shape_choice shape_polygon_kept(const shape *k, const geom_point p[4], int quick, shape_hint *h) {
+  shape_seen_key key;
+  if (!quick || k->n > 255 || !shape_seen_on()) return shape_polygon_decide(k, p, quick, NULL, h);
+  shape_seen_start(&key, k, SHAPE_SEEN_WHOLE, NULL, 0);
+  if (!shape_seen_diffs(&key, p, 4, p[0])) return shape_polygon_decide(k, p, quick, NULL, h);
+  int v;
+  if (!shape_seen_find(&key, &v)) {
+    shape_hint left = h != NULL ? *h : (shape_hint){0};
+    shape_choice c = shape_polygon_decide(k, p, quick, NULL, &left);
+    v = (int)c | left.how << 2 | left.e[0] << 4 | left.e[1] << 12 | left.e[2] << 20;
+    shape_seen_keep(&key, v);
   }
-  if (tr) memcpy(tr->contact, t, sizeof t);
-  shape_hint_set(h, SHAPE_HINT_HOMOTHET, t, k->n);
-  return shape_homothet_decide(k, t, d3, p, tr);
+  if (h != NULL && (v >> 2 & 3) != SHAPE_HINT_NONE)
+    *h = (shape_hint){(unsigned char)(v >> 2 & 3), {(unsigned char)(v >> 4),
+                                                     (unsigned char)(v >> 12),
+                                                     (unsigned char)(v >> 20)}};
+  return (shape_choice)(v & 3);
 }
 
 /* ---- the general polygon's variant (shape_internal.h) -------------------- */
@@ -285,4 +368,4 @@ static int shape_polygon_wants_hints(const shape *k) {
   return k->n <= 255;
 }
 
-SHAPE_VARIANT_OPS(polygon, NULL, NULL, shape_polygon_wants_hints);
+SHAPE_VARIANT_OPS(polygon, NULL, NULL, shape_polygon_wants_hints, 0);

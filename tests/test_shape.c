@@ -1156,7 +1156,7 @@ typedef struct tvariant {
 static const tvariant tvariants[] = {
     {"square", SHAPE_V_SQUARE, 0},    {"poly:3 -1;-2 -1;-2 4;3 4", SHAPE_V_SQUARE, 0},
     {"hexagon", SHAPE_V_HEXAGON, 1},  {"poly:0 0;-1 1;0 2;2 2;3 1;2 0", SHAPE_V_HEXAGON, 1},
-    {"diamond", SHAPE_V_POLYGON, 1},  {"triangle", SHAPE_V_POLYGON, 1},
+    {"diamond", SHAPE_V_DIAMOND, 1},  {"triangle", SHAPE_V_POLYGON, 1},
     {"octagon", SHAPE_V_POLYGON, 1},  {"ngon:255", SHAPE_V_POLYGON, 1},
     {"ngon:256", SHAPE_V_POLYGON, 0}, {"ellipse:2 1 0.5", SHAPE_V_ELLIPSE, 0},
     {"ellipse:1 1", SHAPE_V_ELLIPSE, 0}};
