@@ -14,13 +14,15 @@
 ** For each size, family and rule: the median of K lot_build runs (default
 ** options; the CDT keeps the hull, as bench_cdt), the ratio to the same
 ** rule on the uniform family of the same size (uniform is run first, added
-** when the list lacks it), and the exact fallbacks of the first run
+** when the list lacks it; each run is paired with a uniform run just
+** before it, and the ratio is the median of the pairs'), and the exact
+** fallbacks of the first run
 ** (geom_exact_calls: orientation, incircle and area determinants the
 ** filters left; shape_exact_calls: empty-shape decisions sent to GMP).
 ** Beside DT, CGAL's Delaunay_triangulation_2 (bench_lot_cgal N 1 SEED
 ** FAMILY); beside the CDT, CGAL's Constrained_Delaunay_triangulation_2
 ** (bench_cdt_cgal N M 1 SEED FAMILY), each run alternating with fliplab's
-** so that both see the same load; built when CGAL is found.  A run longer
+** (the ratio: the median of the pairs'); built when CGAL is found.  A run longer
 ** than --cap seconds (default 120) is not repeated: its cell is marked *.
 ** A cell whose time t at the previous size n' predicts more than the cap
 ** at n, by t (n / n')^1.5, is not run: "skipped" (sizes run in the order
@@ -50,10 +52,11 @@ typedef struct fam_args {
   char families[512], rules[512];
 } fam_args;
 
-/* One cell: the median time, whether it was capped or failed, the exact
-** fallbacks of its first run, CGAL's median time (NAN: none). */
+/* One cell: the median time and the median ratio to uniform points (paired
+** runs), whether it was capped, failed or skipped, the exact fallbacks of
+** its first run, CGAL's median time and the median ratio to it (NAN: none). */
 typedef struct fam_cell {
-  double t, cgal;
+  double t, ratio, cgal, cgal_ratio;
   int capped, failed, skipped;
   unsigned long geom_exact, shape_exact;
 } fam_cell;
@@ -177,29 +180,38 @@ static double fam_cgal(const char *argv0, const fam_input *in, const char *name,
   return cpu ? c : w;
 }
 
-/* Runs one cell: K runs (one past the cap), alternating with CGAL's. */
-static fam_cell fam_measure(const char *argv0, const fam_input *in, const char *name,
-                            const rule *r, const fam_args *a) {
-  fam_cell cell = {NAN, NAN, 0, 0, 0, 0, 0};
-  double t[FAM_MAX_RUNS], c[FAM_MAX_RUNS];
+/* Runs one cell: K runs (one past the cap); before each, the same rule on
+** the uniform points ref (NULL: in is uniform), after each, CGAL's run.
+** The ratios are the medians of the runs' pairs, which the load's drift
+** from minute to minute hardly moves (both members see the same load). */
+static fam_cell fam_measure(const char *argv0, const fam_input *in, const fam_input *ref,
+                            const char *name, const rule *r, const fam_args *a) {
+  fam_cell cell = {NAN, NAN, NAN, NAN, 0, 0, 0, 0, 0};
+  double t[FAM_MAX_RUNS], c[FAM_MAX_RUNS], qu[FAM_MAX_RUNS], qc[FAM_MAX_RUNS];
   int runs = 0, cgal_runs = 0;
-  unsigned long g0 = geom_exact_calls(), s0 = shape_exact_calls();
   while (runs < a->runs) {
+    double tu = ref != NULL ? fam_build(ref, name, r, a->cpu) : NAN;
+    unsigned long g0 = geom_exact_calls(), s0 = shape_exact_calls();
     t[runs] = fam_build(in, name, r, a->cpu);
     if (runs == 0) {
       cell.geom_exact = geom_exact_calls() - g0;
       cell.shape_exact = shape_exact_calls() - s0;
     }
-    c[cgal_runs] = fam_cgal(argv0, in, name, a->seed, a->cpu);
-    cgal_runs += !isnan(c[cgal_runs]);
     if (isnan(t[runs])) return cell.failed = 1, cell;
+    qu[runs] = ref != NULL ? t[runs] / tu : 1;
+    c[cgal_runs] = fam_cgal(argv0, in, name, a->seed, a->cpu);
+    if (!isnan(c[cgal_runs])) qc[cgal_runs] = t[runs] / c[cgal_runs], cgal_runs++;
     if (t[runs++] > a->cap) {
       cell.capped = 1;
       break;
     }
   }
   cell.t = bench_median(t, runs);
-  if (cgal_runs > 0) cell.cgal = bench_median(c, cgal_runs);
+  cell.ratio = bench_median(qu, runs);
+  if (cgal_runs > 0) {
+    cell.cgal = bench_median(c, cgal_runs);
+    cell.cgal_ratio = bench_median(qc, cgal_runs);
+  }
   return cell;
 }
 
@@ -234,13 +246,13 @@ static void fam_headers(const fam_args *a, const char **rules, int nr, int exact
 }
 
 /* "0.123 (1.05)": the time and its ratio to ref. */
-static void fam_fmt(char *out, size_t size, double t, int capped, double ref) {
-  snprintf(out, size, "%.3f%s (%.2f)", t, capped ? "*" : "", t / ref);
+static void fam_fmt(char *out, size_t size, double t, int capped, double ratio) {
+  snprintf(out, size, "%.3f%s (%.2f)", t, capped ? "*" : "", ratio);
 }
 
-/* One family's row of the time table (uniform's cells: u). */
+/* One family's row of the time table. */
 static void fam_time_row(const fam_args *a, const char *family, size_t n, const char **rules,
-                         int nr, const fam_cell *c, const fam_cell *u) {
+                         int nr, const fam_cell *c) {
   static char buf[2 * FAM_MAX_RULES + 2][64];
   const char *cells[2 * FAM_MAX_RULES + 2] = {family, buf[0]};
   snprintf(buf[0], sizeof buf[0], "%zu", n);
@@ -248,11 +260,11 @@ static void fam_time_row(const fam_args *a, const char *family, size_t n, const 
   for (int j = 0; j < nr; j++) {
     if (c[j].failed) snprintf(buf[k], sizeof buf[k], "error");
     else if (c[j].skipped) snprintf(buf[k], sizeof buf[k], "skipped");
-    else fam_fmt(buf[k], sizeof buf[k], c[j].t, c[j].capped, u[j].t);
+    else fam_fmt(buf[k], sizeof buf[k], c[j].t, c[j].capped, c[j].ratio);
     cells[k] = buf[k], k++;
     if (strcmp(rules[j], "DT") != 0 && !fam_is_cdt(rules[j])) continue;
     if (isnan(c[j].cgal)) snprintf(buf[k], sizeof buf[k], "n/a");
-    else snprintf(buf[k], sizeof buf[k], "%.3f (%.2f)", c[j].cgal, c[j].t / c[j].cgal);
+    else fam_fmt(buf[k], sizeof buf[k], c[j].cgal, 0, c[j].cgal_ratio);
     cells[k] = buf[k], k++;
   }
   fam_row(a->markdown, cells, k);
@@ -293,22 +305,24 @@ static void fam_size(const char *argv0, const fam_args *a, size_t n, const char 
                      const char **names, const rule *rules, int nr,
                      fam_cell (*c)[FAM_MAX_RULES], fam_cell (*prev)[FAM_MAX_RULES],
                      size_t nprev) {
+  fam_input uni, in;
+  fam_input_make(&uni, fams[0], n, a->seed);   /* uniform, the reference */
   for (int f = 0; f < nf; f++) {
-    fam_input in;
-    fam_input_make(&in, fams[f], n, a->seed);
+    if (f > 0) fam_input_make(&in, fams[f], n, a->seed);
     for (int j = 0; j < nr; j++) {
       if (fam_hopeless(prev ? &prev[f][j] : NULL, nprev, n, a->cap)) {
-        c[f][j] = (fam_cell){NAN, NAN, 0, 0, 1, 0, 0};
+        c[f][j] = (fam_cell){NAN, NAN, NAN, NAN, 0, 0, 1, 0, 0};
         continue;
       }
-      c[f][j] = fam_measure(argv0, &in, names[j], &rules[j], a);
+      c[f][j] = fam_measure(argv0, f ? &in : &uni, f ? &uni : NULL, names[j], &rules[j], a);
       fprintf(stderr, "bench_families: %s, %zu, %s: %.3f s\n", fams[f], n, names[j], c[f][j].t);
     }
-    fam_input_free(&in);
+    if (f > 0) fam_input_free(&in);
   }
+  fam_input_free(&uni);
   printf("\n");
   fam_headers(a, names, nr, 0);
-  for (int f = 0; f < nf; f++) fam_time_row(a, fams[f], n, names, nr, c[f], c[0]);
+  for (int f = 0; f < nf; f++) fam_time_row(a, fams[f], n, names, nr, c[f]);
   printf("\nExact fallbacks of one run (geom_exact_calls / shape_exact_calls):\n\n");
   fam_headers(a, names, nr, 1);
   for (int f = 0; f < nf; f++) fam_exact_row(a, fams[f], n, nr, c[f]);
