@@ -93,7 +93,8 @@ static const cli_option cli_lot_opts[] = {
    .kind = CLI_U64, .off = CLI_AT(T, random, uint64_t), .lo = 3, .hi = CLI_LOT_MAX_N},
   {.name = "--sampler", .arg = "NAME", .dflt = "uniform",
    .help = "uniform (unit square), normal, disc, grid (integer grid,\n"
-           "                     row by row), parabola ((i, i^2), i = N..1), circle",
+           "                     row by row), parabola ((i, i^2), i = N..1), circle,\n"
+           "                     clustered, jittered, lines, dups (docs/sampling.md)",
    .kind = CLI_CALL, .off = CLI_AT(T, sampler, int), .call = cli_lot_sampler},
   CLI_OPT_SEED("the sampler's and the random order's seed", T, seed),
   {.name = "--algorithm", .arg = "A",

@@ -105,11 +105,35 @@ int sampler_monotone(sampler_rng *g, size_t n, geom_point *out);
 **   parabola  (i, i^2) for i = n, n-1, ..., 1 in that order (theorem 6's
 **             worst case for the incremental algorithm)
 **   circle    random angles on the unit circle (cocircular up to rounding)
+**   clustered SAMPLER_CLUSTER_COUNT Gaussian clusters: centres uniform in
+**             the unit square, each point in a cluster drawn uniformly, offset
+**             by independent normals of deviation SAMPLER_CLUSTER_SIGMA
+**   jittered  the grid's points, each coordinate moved by an independent
+**             uniform offset in [-SAMPLER_JITTER, SAMPLER_JITTER)
+**   lines     exact integer points on L = SAMPLER_LINE_COUNT random lines:
+**             point i on line i mod L, at m = ceil(n / L) points a line; line k is
+**             a_k + t d_k with a_k uniform in [-64m, 64m)^2 and d_k uniform
+**             in [-8, 8]^2 minus (0, 0), all integers; point i's t is
+**             16 (i div L) + r - 8m with r uniform in [0, 16) (distinct and
+**             increasing along the line); all coordinates are integers of
+**             magnitude at most 128 m, so collinearity is exact.  A draw
+**             with all points on one line (small n) is replaced by the next
+**             draw of the stream.
+**   dups      duplicate-heavy: a pool of m = max(3, ceil(n / 4)) points (the
+**             uniform family's first m, or all n when n < 3), then n - m
+**             copies of pool points drawn uniformly: each pool point is
+**             repeated 1 + Binomial(n - m, 1 / m) times (mean about 4)
 ** The same (kind, seed, n) always gives the same points, bit for bit. */
 typedef enum sampler_points_kind {
   SAMPLER_UNIFORM, SAMPLER_NORMAL, SAMPLER_DISC, SAMPLER_GRID, SAMPLER_PARABOLA,
-  SAMPLER_CIRCLE, SAMPLER_POINTS_COUNT
+  SAMPLER_CIRCLE, SAMPLER_CLUSTERED, SAMPLER_JITTERED, SAMPLER_LINES, SAMPLER_DUPS,
+  SAMPLER_POINTS_COUNT
 } sampler_points_kind;
+#define SAMPLER_CLUSTER_COUNT 20
+#define SAMPLER_CLUSTER_SIGMA 0.01
+#define SAMPLER_JITTER 0x1p-10
+#define SAMPLER_LINE_COUNT 8
+#define SAMPLER_DUPS_SHARE 4   /* n points, n / 4 distinct */
 
 /* The kind named s, or -1; the names, comma-separated, for messages. */
 int sampler_points_find(const char *s);

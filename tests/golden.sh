@@ -77,7 +77,7 @@ run census_merge merge c1.csv c2.csv
 # lot: rules, samplers, both algorithms, orders, compare, check, SVG
 for r in DT P_1 R_inf -alpha_inf sigma_2 -r2/A_0 beta_-1 gamma_1 lambda_1; do
   f=$(echo "$r" | tr '/' 'o')
-  for s in uniform normal disc grid parabola circle; do
+  for s in uniform normal disc grid parabola circle clustered jittered lines dups; do
     run lot_${f}_$s lot --rule "$r" --random 700 --sampler $s --seed 3 --out l.csv
     keep lot_${f}_$s.csv l.csv
   done

@@ -19,7 +19,8 @@ from ._mirrors import SamplerRng as _SamplerRng
 __all__ = ["POINT_SETS", "PENTAGON_SAMPLERS", "SITE_SETS", "POLYGONS", "points", "pentagons",
            "site_sets", "convex_polygons", "polygon", "quads"]
 
-POINT_SETS = ("uniform", "normal", "disc", "grid", "parabola", "circle")
+POINT_SETS = ("uniform", "normal", "disc", "grid", "parabola", "circle", "clustered", "jittered",
+              "lines", "dups")
 PENTAGON_SAMPLERS = ("iteration", "vector", "circle", "disc-hull")
 SITE_SETS = ("convex", "disc", "square", "normal")
 POLYGONS = ("vector", "circle", "star", "monotone")
@@ -42,7 +43,11 @@ def points(n: int, kind: str = "uniform", seed: int = 1) -> npt.NDArray[np.float
         How many, 1 .. 2^40.
     kind : str
         "uniform" (the unit square), "normal", "disc", "grid" (the integer
-        grid, row by row), "parabola" ((i, i^2), i = n .. 1) or "circle".
+        grid, row by row), "parabola" ((i, i^2), i = n .. 1), "circle",
+        "clustered" (20 Gaussian clusters, sigma 0.01), "jittered" (the
+        grid, each coordinate moved by up to 2^-10), "lines" (integer
+        points on 8 random lines, exactly collinear) or "dups" (a quarter
+        of the points distinct, the rest copies of them): docs/sampling.md.
     seed : int
         The stream, in [0, 2^64).
 

@@ -65,3 +65,26 @@ def test_bad_sampler_args():
         fliplab.samplers.site_sets(2, 10)
     with pytest.raises(ValueError, match="seed"):
         fliplab.samplers.pentagons(3, seed=-2)
+
+
+@pytest.mark.parametrize("kind", ["clustered", "jittered", "lines", "dups"])
+def test_input_families(kind):
+    # The benchmark families through the package: their stated laws, and a
+    # triangulation of each that lot's own check accepts.
+    n = 4000
+    p = fliplab.samplers.points(n, kind, seed=2)
+    assert np.array_equal(p, fliplab.samplers.points(n, kind, seed=2))
+    if kind == "jittered":
+        g = fliplab.samplers.points(n, "grid")
+        assert np.abs(p - g).max() <= 2.0 ** -10
+    elif kind == "lines":                # integers; line k holds points k, k + 8, ...
+        assert (p == np.floor(p)).all()
+        for k in range(8):
+            d = p[k::8] - p[k]
+            assert (d[:, 0] * d[1, 1] - d[:, 1] * d[1, 0] == 0).all()    # exact: small ints
+    elif kind == "dups":
+        assert len(np.unique(p, axis=0)) == n // 4
+        assert np.array_equal(p[:n // 4], fliplab.samplers.points(n // 4, "uniform", seed=2))
+    t = fliplab.lot(p, "DT")
+    assert t.check()
+    assert len(t.triangles) > 0
