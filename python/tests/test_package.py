@@ -186,6 +186,7 @@ CHOICES = {
     ("fliplab.ch5_averages", "method"): fliplab.CH5_METHODS,
     ("fliplab.convex_dt", "algorithm"): fliplab.CPDT_ALGORITHMS,
     ("fliplab.convex_dt_experiment", "sampler"): fliplab.CPDT_SAMPLERS,
+    ("fliplab.convex_dt_experiment", "region"): fliplab.REGIONS,
     ("fliplab.Rule", "name"): _rules.RULE_FORMS,
     ("*", "rule"): _rules.RULE_FORMS,
     ("*", "rules"): _rules.RULE_FORMS,
