@@ -154,4 +154,46 @@ int sampler_segments(sampler_rng *g, const geom_point *p, size_t n, size_t m, ui
 #define SAMPLER_PSLG_MAX_GRID 0x3fffffffu
 int sampler_pslg_grid(sampler_rng *g, size_t n, geom_pslg *out);
 
+/* ---- random convex n-gons, chapter 6: the shared signature ---------------
+** (the `cvx` branch's section; this copy lets the `cvx2` samplers below build
+** on their own and is dropped when the two branches meet) */
+typedef enum sampler_region {
+  SAMPLER_REGION_SQUARE, SAMPLER_REGION_DISC, SAMPLER_REGION_TRIANGLE, SAMPLER_REGION_COUNT
+} sampler_region;
+typedef struct sampler_gon_params {
+  sampler_region region;
+  int law;             /* a method's variant, e.g. the bounce law; 0 = default */
+  const char *inner;   /* the dual's inner method, NULL = default */
+} sampler_gon_params;
+typedef struct sampler_gon_info {
+  double log_weight;       /* ln of the bias-correcting weight (0 when unweighted) */
+  uint64_t hull_changes;   /* h of the iteration method, else 0 */
+  uint64_t draws;          /* random points drawn or events processed */
+} sampler_gon_info;
+typedef int (*sampler_gon_fn)(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
+
+/* ---- random convex n-gons, chapter 6: bounce, triangulation, dual, prior
+** art (samplers/bounce.c, tridt.c, dual.c, priorart.c; docs/sampling.md).
+** Each is a sampler_gon_fn: out gets n vertices, strictly convex (checked
+** exactly), anticlockwise from the lexicographically smallest; 0,
+** SAMPLER_ENOMEM, or -1 with no polygon. */
+
+/* Check p[0..n) exactly (geom_polygon_check: strictly convex, anticlockwise,
+** within the coordinate contract) and rotate it in place to start at its
+** lexicographically smallest vertex, whose old index goes to *first (if not
+** NULL).  0, or -1 (p then unspecified). */
+int sampler_gon_canon(geom_point *p, size_t n, size_t *first);
+
+/* Triangulation (section 6.6): a uniformly random triangulation of the
+** n-gon realised so that it is the polygon's exact Delaunay triangulation.
+** tri (if not NULL) gets its n - 2 triangles, 3 indices into out each,
+** anticlockwise.  -1 when doubles do not realise the drawn triangulation
+** (the exact check failed: from n of a few hundred on, docs/sampling.md) or
+** n < 3. */
+int sampler_gon_tridt(sampler_rng *g, size_t n, geom_point *out, uint32_t *tri,
+                      sampler_gon_info *info);
+int sampler_gon_triangulation(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
+
 #endif
