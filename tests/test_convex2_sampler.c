@@ -14,6 +14,8 @@
 **   significance 1e-4 (fixed seed, so the verdict is reproducible), the
 **   drawn labels read back from the output (the drawn vertex 0 is the one
 **   at the origin);
+** - bounce: both laws give strictly convex output after 2n events (and the
+**   events do run to 2n from n = 50 on);
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -139,6 +141,8 @@ typedef int (*tc2_fn)(sampler_rng *g, size_t n, const sampler_gon_params *p, geo
 typedef struct tc2_sampler { const char *name; tc2_fn fn; int law; size_t maxn; } tc2_sampler;
 static const tc2_sampler tc2_samplers[] = {
   {"triangulation", sampler_gon_triangulation, 0, 100000},
+  {"bounce law 0", sampler_gon_bounce, 0, 100000},
+  {"bounce law 1", sampler_gon_bounce, 1, 100000},
 };
 #define TC2_SAMPLERS (sizeof tc2_samplers / sizeof tc2_samplers[0])
 
@@ -155,7 +159,6 @@ static void test_convex_reproducible(void **state) {
         sampler_rng g1, g2;
         sampler_seed(&g1, 3, i);
         sampler_seed(&g2, 3, i);
-        print_message("%s n=%zu i=%lu\n", tc2_samplers[f].name, n, (unsigned long)i);
         assert_int_equal(tc2_samplers[f].fn(&g1, n, &prm, a, NULL), 0);
         tc2_check_canon(a, n);
         assert_int_equal(tc2_samplers[f].fn(&g2, n, &prm, b, NULL), 0);
@@ -172,11 +175,36 @@ static void test_convex_reproducible(void **state) {
   free(b);
 }
 
+/* Both bounce laws keep the polygon strictly convex over 2n events and
+** more: the output passes the exact check, and the events run to 2n unless
+** none is left (the polygon then only grows). */
+static void test_bounce_events(void **state) {
+  (void)state;
+  static const size_t sizes[] = {3, 4, 5, 8, 50, 2000};
+  static geom_point p[2000];
+  for (int law = 0; law < 2; law++)
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+      uint64_t total = 0;
+      for (uint64_t i = 0; i < 40; i++) {
+        sampler_rng g;
+        sampler_gon_info info;
+        sampler_gon_params prm = {SAMPLER_REGION_DISC, law, NULL};
+        sampler_seed(&g, 9, i);
+        assert_int_equal(sampler_gon_bounce(&g, sizes[s], &prm, p, &info), 0);
+        tc2_check_canon(p, sizes[s]);
+        total += info.draws;
+      }
+      if (sizes[s] >= 50) assert_true(total >= 40 * 2 * (uint64_t)sizes[s]);
+      print_message("law %d n %zu: %.1f events a polygon\n", law, sizes[s], (double)total / 40);
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_tridt_delaunay),
     cmocka_unit_test(test_tridt_uniform),
     cmocka_unit_test(test_convex_reproducible),
+    cmocka_unit_test(test_bounce_events),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
