@@ -70,21 +70,13 @@ typedef struct tridt_node {
 
 #define TRIDT_NONE UINT32_MAX
 
-/* Uniform integer in [0, k), k >= 1: rejection of the top of the range
-** keeps it exactly uniform. */
-static uint64_t tridt_below(sampler_rng *g, uint64_t k) {
-  uint64_t limit = UINT64_MAX - UINT64_MAX % k, x;
-  do x = sampler_next(g); while (x >= limit);
-  return x % k;
-}
-
 /* A uniform tree word of m nodes into w[0 .. 2m]: shuffle, then rotate
 ** after the first minimum of the prefix sums (the cycle lemma).  O(m). */
 static void tridt_word(sampler_rng *g, size_t m, signed char *w, signed char *tmp) {
   size_t len = 2 * m + 1, cut = 0;
   for (size_t i = 0; i < len; i++) tmp[i] = i < m ? 1 : -1;
   for (size_t i = len - 1; i > 0; i--) {
-    size_t j = (size_t)tridt_below(g, i + 1);
+    size_t j = (size_t)sampler_below(g, i + 1);
     signed char t = tmp[i];
     tmp[i] = tmp[j];
     tmp[j] = t;

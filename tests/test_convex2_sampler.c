@@ -16,6 +16,12 @@
 **   at the origin);
 ** - bounce: both laws give strictly convex output after 2n events (and the
 **   events do run to 2n from n = 50 on);
+** - dual: the polar dual of the square and the regular hexagon by hand; Dual
+**   Rejection's edges lie on lines within distance 1 of the origin, which is
+**   strictly inside;
+** - prior art: GeoBench leaves 1/e of the corners unmoved (within 0.01 over
+**   10^5 corners); Roussille-Dufour's angles are refused where doubles
+**   cannot hold them.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -138,11 +144,24 @@ static void test_tridt_uniform(void **state) {
 
 typedef int (*tc2_fn)(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                       sampler_gon_info *info);
-typedef struct tc2_sampler { const char *name; tc2_fn fn; int law; size_t maxn; } tc2_sampler;
+typedef struct tc2_sampler {
+  const char *name;
+  tc2_fn fn;
+  int law;
+  const char *inner;
+  size_t maxn;
+} tc2_sampler;
 static const tc2_sampler tc2_samplers[] = {
-  {"triangulation", sampler_gon_triangulation, 0, 100000},
-  {"bounce law 0", sampler_gon_bounce, 0, 100000},
-  {"bounce law 1", sampler_gon_bounce, 1, 100000},
+  {"triangulation", sampler_gon_triangulation, 0, NULL, 100000},
+  {"bounce law 0", sampler_gon_bounce, 0, NULL, 100000},
+  {"bounce law 1", sampler_gon_bounce, 1, NULL, 100000},
+  {"dual of vector", sampler_gon_dual, 0, NULL, 100000},
+  {"dual of triangulation", sampler_gon_dual, 0, "triangulation", 100000},
+  {"dual of geobench", sampler_gon_dual, 0, "geobench", 1000},
+  {"dual of bounce", sampler_gon_dual, 1, "bounce", 1000},
+  {"geobench", sampler_gon_geobench, 0, NULL, 100000},
+  {"angles", sampler_gon_angles, 0, NULL, 10},
+  {"dual-rejection", sampler_gon_dualrej, 0, NULL, 6},
 };
 #define TC2_SAMPLERS (sizeof tc2_samplers / sizeof tc2_samplers[0])
 
@@ -154,7 +173,8 @@ static void test_convex_reproducible(void **state) {
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
       size_t n = sizes[s];
       if (n > tc2_samplers[f].maxn) continue;
-      sampler_gon_params prm = {SAMPLER_REGION_DISC, tc2_samplers[f].law, NULL};
+      sampler_gon_params prm = {SAMPLER_REGION_DISC, tc2_samplers[f].law,
+                                tc2_samplers[f].inner};
       for (uint64_t i = 0; i < (n <= 1000 ? 10u : 1u); i++) {
         sampler_rng g1, g2;
         sampler_seed(&g1, 3, i);
@@ -199,12 +219,88 @@ static void test_bounce_events(void **state) {
     }
 }
 
+/* The polar dual about the centre of a polygon symmetric about the origin:
+** the square (+-1, +-1) has the diamond of (+-1, 0), (0, +-1) (edge x = 1 is
+** the point (1, 0)); the regular hexagon of circumradius 2 has the hexagon
+** of inradius 1/2 turned by 30 degrees, vertices at distance 1/sqrt(3). */
+static void test_polar(void **state) {
+  (void)state;
+  const geom_point sq[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  geom_point d[6];
+  assert_int_equal(sampler_gon_polar(sq, 4, d), 0);
+  const geom_point want[4] = {{-1, 0}, {0, -1}, {1, 0}, {0, 1}};
+  for (int k = 0; k < 4; k++) {
+    assert_true(d[k].x == want[k].x && d[k].y == want[k].y);
+  }
+  geom_point hex[6];
+  for (int k = 0; k < 6; k++)
+    hex[k] = (geom_point){2 * cos(k * M_PI / 3), 2 * sin(k * M_PI / 3)};
+  assert_int_equal(sampler_gon_polar(hex, 6, d), 0);
+  tc2_check_canon(d, 6);
+  for (int k = 0; k < 6; k++) TESTUTIL_NEAR(hypot(d[k].x, d[k].y), 1 / sqrt(3.0), 1e-14, 0);
+  const geom_point cw[4] = {{-1, -1}, {-1, 1}, {1, 1}, {1, -1}};
+  assert_int_equal(sampler_gon_polar(cw, 4, d), -1);   /* clockwise: centre not left of edges */
+}
+
+/* Dual Rejection's polygon is the intersection of half-planes x . u < r with
+** r <= 1: every edge's line passes within distance 1 of the origin, which
+** is strictly inside. */
+static void test_dualrej(void **state) {
+  (void)state;
+  geom_point p[6];
+  for (size_t n = 3; n <= 6; n++)
+    for (uint64_t i = 0; i < 30; i++) {
+      sampler_rng g;
+      sampler_gon_info info;
+      sampler_seed(&g, 2, i);
+      assert_int_equal(sampler_gon_dualrej(&g, n, NULL, p, &info), 0);
+      assert_true(info.draws >= n && info.draws % n == 0);
+      for (size_t k = 0; k < n; k++) {
+        geom_point a = p[k], b = p[(k + 1) % n];
+        assert_int_equal(geom_orient(a, b, (geom_point){0, 0}), 1);
+        double dist = (a.x * b.y - a.y * b.x) / hypot(b.x - a.x, b.y - a.y);
+        assert_true(dist > 0 && dist <= 1 + 1e-12);
+      }
+    }
+}
+
+/* GeoBench: a corner never chosen keeps radius 1; the chance is (1 - 1/n)^n
+** (0.36786 at n = 10^4, ~1/e).  Over 10 polygons of 10^4 corners the share's
+** standard deviation is below 0.0016 (never-chosen counts are negatively
+** correlated), so +-0.01 is over six of them.  An unmoved corner is (cos t,
+** sin t), at distance 1 within 2 ulps; a moved one lands within 1e-15 of 1
+** with chance about 1e-15 / 1e-7 (its range: the chord's sagitta at gaps
+** of 2 pi / n), so the count is exact in practice.  Angles: refused (-1) where doubles
+** cannot hold its ever smaller turns (n = 200). */
+static void test_prior_art(void **state) {
+  (void)state;
+  enum { N = 10000, REPS = 10 };
+  geom_point *p = malloc(N * sizeof *p);
+  long unmoved = 0;
+  for (uint64_t i = 0; i < REPS; i++) {
+    sampler_rng g;
+    sampler_seed(&g, 4, i);
+    assert_int_equal(sampler_gon_geobench(&g, N, NULL, p, NULL), 0);
+    for (size_t k = 0; k < N; k++) unmoved += fabs(hypot(p[k].x, p[k].y) - 1) < 1e-15;
+  }
+  double share = (double)unmoved / (N * REPS);
+  print_message("geobench: %.4f of the corners unmoved (1/e = %.4f)\n", share, exp(-1.0));
+  assert_true(fabs(share - exp(-1.0)) < 0.01);
+  sampler_rng g;
+  sampler_seed(&g, 4, 0);
+  assert_int_equal(sampler_gon_angles(&g, 200, NULL, p, NULL), -1);
+  free(p);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_tridt_delaunay),
     cmocka_unit_test(test_tridt_uniform),
     cmocka_unit_test(test_convex_reproducible),
     cmocka_unit_test(test_bounce_events),
+    cmocka_unit_test(test_polar),
+    cmocka_unit_test(test_dualrej),
+    cmocka_unit_test(test_prior_art),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,7 +1,8 @@
 /*
-** canon.c: the output contract of the random convex n-gon samplers of
-** chapter 6 (bounce, triangulation, dual, prior art): strictly convex,
-** checked exactly, anticlockwise from the lexicographically smallest vertex.
+** gonutil.c: what the random convex n-gon samplers of chapter 6 (bounce,
+** triangulation, dual, prior art) share: their output contract (strictly
+** convex, checked exactly, anticlockwise from the lexicographically
+** smallest vertex) and uniform integers.
 */
 #include "sampler.h"
 
@@ -26,4 +27,12 @@ int sampler_gon_canon(geom_point *p, size_t n, size_t *first) {
   canon_reverse(p, 0, n);
   if (first != NULL) *first = s;
   return 0;
+}
+
+/* Rejection of the top 2^64 mod k values keeps the result exactly uniform
+** (fewer than half the draws are rejected, so O(1) expected). */
+uint64_t sampler_below(sampler_rng *g, uint64_t k) {
+  uint64_t limit = UINT64_MAX - UINT64_MAX % k, x;
+  do x = sampler_next(g); while (x >= limit);
+  return x % k;
 }
