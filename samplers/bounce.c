@@ -191,10 +191,15 @@ static double bounce_event(bounce_sim *s) {
   return t;
 }
 
-/* The polygon at time t into out, checked exactly; 0 or -1. */
+/* The polygon at time t into out, checked exactly; 0 or -1.  Every triple
+** by geom_orient first: O(n), where a failed sampler_gon_canon would have
+** sorted the vertices for duplicates, O(n log n), at every retry. */
 static int bounce_output(const bounce_sim *s, double t, geom_point *out) {
-  for (size_t i = 0; i < s->n; i++) out[i] = bounce_at(s, i, t);
-  return sampler_gon_canon(out, s->n, NULL);
+  size_t n = s->n;
+  for (size_t i = 0; i < n; i++) out[i] = bounce_at(s, i, t);
+  for (size_t i = 0; i < n; i++)
+    if (geom_orient(out[(i + n - 1) % n], out[i], out[(i + 1) % n]) <= 0) return -1;
+  return sampler_gon_canon(out, n, NULL);
 }
 
 /* Output at the time halfway to the next event (at most one unit on), once

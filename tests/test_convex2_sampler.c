@@ -39,14 +39,8 @@
 
 /* Strictly convex, anticlockwise, first vertex lexicographically smallest. */
 static void tc2_check_canon(const geom_point *p, size_t n) {
-  geom_point *q = malloc(n * sizeof *q);
-  memcpy(q, p, n * sizeof *q);
-  size_t bad = 0;
-  int rev = 1;
-  assert_int_equal(geom_polygon_check(q, n, &bad, &rev), GEOM_OK);
-  assert_false(rev);
+  testutil_check_convex(p, n);
   for (size_t k = 1; k < n; k++) assert_true(geom_lexless(p[0], p[k]));
-  free(q);
 }
 
 /* The diagonals of tri as a bit mask over vertex pairs (n <= 11), after
