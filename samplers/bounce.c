@@ -42,6 +42,11 @@
 ** within rounding), the simulation processes one more event and tries the
 ** next gap, at most 64 times, then returns -1.  The whole run is
 ** O(n log n).
+**
+** Vectors are written with the same operation in both components (a + b,
+** a + b; never a - b, a + b): gcc's vectoriser fuses the mixed pair into
+** one vfmaddsub under -march=native despite -ffp-contract=off, and the
+** output would then depend on -march.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -157,7 +162,8 @@ static void bounce_law0(bounce_sim *s, size_t b, double t) {
     u = lo + (1 - lo) * sampler_uniform(s->g);
     w = half * (2 * sampler_uniform(s->g) - 1);
   } while (!(u * u + w * w < 1 && u > h));
-  s->v[b] = (geom_point){u * m.x - w * m.y, u * m.y + w * m.x};
+  geom_point mq = {-m.y, m.x};   /* m turned a quarter: the same operation in both lanes */
+  s->v[b] = (geom_point){u * m.x + w * mq.x, u * m.y + w * mq.y};
 }
 
 /* Law 1: reflect the component normal to AC of B's velocity relative to
@@ -168,7 +174,8 @@ static void bounce_law1(bounce_sim *s, size_t b, double t) {
   geom_point d = bounce_sub(C, A), r = bounce_sub(B, A);
   double dd = d.x * d.x + d.y * d.y, len = sqrt(dd);
   double omega = bounce_cross(d, bounce_sub(s->v[c], s->v[a])) / dd;
-  geom_point u = {s->v[b].x - s->v[a].x + omega * r.y, s->v[b].y - s->v[a].y - omega * r.x};
+  geom_point rq = {r.y, -r.x};
+  geom_point u = {s->v[b].x - s->v[a].x + omega * rq.x, s->v[b].y - s->v[a].y + omega * rq.y};
   geom_point nrm = {-d.y / len, d.x / len};
   double un = u.x * nrm.x + u.y * nrm.y;
   s->v[b] = (geom_point){s->v[b].x - 2 * un * nrm.x, s->v[b].y - 2 * un * nrm.y};
@@ -224,7 +231,7 @@ static int bounce_init(bounce_sim *s, sampler_rng *g, size_t n, int law) {
   s->g = g;
   s->x = malloc(2 * n * sizeof *s->x);
   s->tau = malloc(2 * n * sizeof *s->tau);
-  s->heap = malloc(2 * n * sizeof *s->heap);
+  s->heap = calloc(2 * n, sizeof *s->heap);   /* calloc: gcc cannot see n > 0 */
   if (s->x == NULL || s->tau == NULL || s->heap == NULL) return SAMPLER_ENOMEM;
   s->v = s->x + n;
   s->key = s->tau + n;
@@ -245,9 +252,10 @@ static int bounce_init(bounce_sim *s, sampler_rng *g, size_t n, int law) {
 int sampler_gon_bounce(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                        sampler_gon_info *info) {
   if (info != NULL) *info = (sampler_gon_info){0, 0, 0};
-  if (n < 3) return -1;
+  int law = p != NULL ? p->law : 0;
+  if (n < 3 || law < 0 || law > 1) return -1;
   bounce_sim s;
-  int rc = bounce_init(&s, g, n, p != NULL ? p->law : 0);
+  int rc = bounce_init(&s, g, n, law);
   uint64_t events = 0;
   double t = 0;
   for (; rc == 0 && events < 2 * (uint64_t)n && isfinite(s.key[s.heap[0]]); events++)

@@ -198,7 +198,7 @@ int sampler_gon_tridt(sampler_rng *g, size_t n, geom_point *out, uint32_t *tri,
 /* Bounce (section 6.5): the regular n-gon, velocities uniform in the unit
 ** disc, 2n bounce events by p->law (0: the bounced velocity redrawn; 1:
 ** reflected); info->draws counts the events.  -1 when rounding spoilt the
-** output 64 times running, or n < 3.  O(n log n). */
+** output 64 times running, for n < 3 or another law.  O(n log n). */
 int sampler_gon_bounce(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                        sampler_gon_info *info);
 /* Dual (section 6.7): the polar dual, about the mean of its vertices, of

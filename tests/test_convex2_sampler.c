@@ -209,6 +209,10 @@ static void test_bounce_events(void **state) {
         total += info.draws;
       }
       if (sizes[s] >= 50) assert_true(total >= 40 * 2 * (uint64_t)sizes[s]);
+      sampler_gon_params bad = {SAMPLER_REGION_DISC, 2, NULL};
+      sampler_rng g;
+      sampler_seed(&g, 9, 0);
+      assert_int_equal(sampler_gon_bounce(&g, sizes[s], &bad, p, NULL), -1);   /* no law 2 */
       print_message("law %d n %zu: %.1f events a polygon\n", law, sizes[s], (double)total / 40);
     }
 }
