@@ -190,11 +190,14 @@ uint64_t sampler_below(sampler_rng *g, uint64_t k);
 /* Triangulation (section 6.6): a uniformly random triangulation of the
 ** n-gon realised so that it is the polygon's exact Delaunay triangulation.
 ** tri (if not NULL) gets its n - 2 triangles, 3 indices into out each,
-** anticlockwise.  -1 when doubles do not realise the drawn triangulation
-** (the exact check failed: from n of a few hundred on, docs/sampling.md) or
-** n < 3. */
+** anticlockwise; the drawn labelling's vertex 0 is the output vertex at
+** the origin.  -1 when doubles do not realise the drawn triangulation (the
+** exact check failed: from n of about 1.5 x 10^6 on, docs/sampling.md) or
+** n < 3.  O(n).  sampler_gon_triangulation: the same as a sampler_gon_fn. */
 int sampler_gon_tridt(sampler_rng *g, size_t n, geom_point *out, uint32_t *tri,
                       sampler_gon_info *info);
+int sampler_gon_triangulation(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
 /* Bounce (section 6.5): the regular n-gon, velocities uniform in the unit
 ** disc, 2n bounce events by p->law (0: the bounced velocity redrawn; 1:
 ** reflected); info->draws counts the events.  -1 when rounding spoilt the
@@ -219,12 +222,11 @@ int sampler_gon_dualrej(sampler_rng *g, size_t n, const sampler_gon_params *p, g
                         sampler_gon_info *info);
 /* The prior art (section 6.1): XYZ GeoBench's n radius moves of a cyclic
 ** polygon (about 1/e of the corners never move), and Roussille and
-** Dufour's random turning angles with closing edge lengths. */
+** Dufour's random turning angles with closing edge lengths (whose later
+** turns shrink below what doubles hold: -1 from n of about 60 on). */
 int sampler_gon_geobench(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                          sampler_gon_info *info);
 int sampler_gon_angles(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                        sampler_gon_info *info);
-int sampler_gon_triangulation(sampler_rng *g, size_t n, const sampler_gon_params *p,
-                              geom_point *out, sampler_gon_info *info);
 
 #endif
