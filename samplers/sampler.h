@@ -238,4 +238,60 @@ int sampler_gon_iteration(sampler_rng *g, size_t n, const sampler_gon_params *p,
 int sampler_gon_valtr(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                       sampler_gon_info *info);
 
+/* ---- random convex n-gons, chapter 6: bounce, triangulation, dual, prior
+** art (samplers/bounce.c, tridt.c, dual.c, priorart.c; docs/sampling.md).
+** Each is a sampler_gon_fn: out gets n vertices, strictly convex (checked
+** exactly), anticlockwise from the lexicographically smallest; 0,
+** SAMPLER_ENOMEM, or -1 with no polygon. */
+
+/* Check p[0..n) exactly (geom_polygon_check: strictly convex, anticlockwise,
+** within the coordinate contract) and rotate it in place to start at its
+** lexicographically smallest vertex, whose old index goes to *first (if not
+** NULL).  0, or -1 (p then unspecified). */
+int sampler_gon_canon(geom_point *p, size_t n, size_t *first);
+/* An integer uniform in [0, k), k >= 1 (exactly: no modulo bias). */
+uint64_t sampler_below(sampler_rng *g, uint64_t k);
+
+/* Triangulation (section 6.6): a uniformly random triangulation of the
+** n-gon realised so that it is the polygon's exact Delaunay triangulation.
+** tri (if not NULL) gets its n - 2 triangles, 3 indices into out each,
+** anticlockwise; the drawn labelling's vertex 0 is the output vertex at
+** the origin.  -1 when doubles do not realise the drawn triangulation (the
+** exact check failed: from n of about 1.5 x 10^6 on, docs/sampling.md) or
+** n < 3.  O(n).  sampler_gon_triangulation: the same as a sampler_gon_fn. */
+int sampler_gon_tridt(sampler_rng *g, size_t n, geom_point *out, uint32_t *tri,
+                      sampler_gon_info *info);
+int sampler_gon_triangulation(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
+/* Bounce (section 6.5): the regular n-gon, velocities uniform in the unit
+** disc, 2n bounce events by p->law (0: the bounced velocity redrawn; 1:
+** reflected); info->draws counts the events.  -1 when rounding spoilt the
+** output 64 times running, for n < 3 or another law.  O(n log n). */
+int sampler_gon_bounce(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                       sampler_gon_info *info);
+/* Dual (section 6.7): the polar dual, about the mean of its vertices, of
+** the polygon of the method p->inner ("vector" when NULL; also
+** "triangulation", "bounce", "geobench", "angles", "dual-rejection"), drawn
+** again when rounding spoils the dual (at most 10 times).  -1 for an
+** unknown inner method.  sampler_gon_polar: the polar dual of a strictly
+** convex anticlockwise p about the mean of its vertices, n vertices for n
+** edges, checked like every output (0 or -1). */
+int sampler_gon_dual(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                     sampler_gon_info *info);
+int sampler_gon_polar(const geom_point *p, size_t n, geom_point *out);
+/* Dual Rejection: n half-planes x . u < r (u a uniform direction, r uniform
+** on (0, 1]) until their intersection has n sides; -1 after
+** SAMPLER_DUALREJ_DRAWS half-planes.  info->draws counts them. */
+#define SAMPLER_DUALREJ_DRAWS 100000000ull
+int sampler_gon_dualrej(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                        sampler_gon_info *info);
+/* The prior art (section 6.1): XYZ GeoBench's n radius moves of a cyclic
+** polygon (about 1/e of the corners never move), and Roussille and
+** Dufour's random turning angles with closing edge lengths (whose later
+** turns shrink below what doubles hold: -1 from n of about 60 on). */
+int sampler_gon_geobench(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                         sampler_gon_info *info);
+int sampler_gon_angles(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                       sampler_gon_info *info);
+
 #endif
