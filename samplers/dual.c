@@ -32,7 +32,6 @@
 */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 #include "sampler.h"
 
 #define DUAL_TRIES 10
@@ -60,44 +59,15 @@ int sampler_gon_polar(const geom_point *p, size_t n, geom_point *out) {
   return dual_polar(p, n, c, out);
 }
 
-static int dual_vector(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
-                       sampler_gon_info *info) {
-  (void)p;
-  if (info != NULL) *info = (sampler_gon_info){0, 0, 0};
-  int rc = sampler_vector(g, n, out);
-  return rc == 0 ? sampler_gon_canon(out, n, NULL) : rc;
-}
-
-/* The inner methods the dual takes by name.  The registry of every convex
-** n-gon sampler supersedes this table when there is one. */
-static const struct dual_inner {
-  const char *name;
-  sampler_gon_fn fn;
-} dual_inners[] = {
-  {"vector", dual_vector},
-  {"triangulation", sampler_gon_triangulation},
-  {"bounce", sampler_gon_bounce},
-  {"geobench", sampler_gon_geobench},
-  {"angles", sampler_gon_angles},
-  {"dual-rejection", sampler_gon_dualrej},
-};
-
-static sampler_gon_fn dual_inner_find(const char *name) {
-  if (name == NULL) return dual_vector;
-  for (size_t k = 0; k < sizeof dual_inners / sizeof dual_inners[0]; k++)
-    if (strcmp(name, dual_inners[k].name) == 0) return dual_inners[k].fn;
-  return NULL;
-}
-
 int sampler_gon_dual(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                      sampler_gon_info *info) {
-  sampler_gon_fn inner = dual_inner_find(p != NULL ? p->inner : NULL);
+  const sampler_gon *inner = sampler_gon_inner(p != NULL ? p->inner : NULL);
   if (inner == NULL || n < 3) return -1;
   geom_point *q = malloc(n * sizeof *q);
   if (q == NULL) return SAMPLER_ENOMEM;
   int rc = -1;
   for (int t = 0; t < DUAL_TRIES && rc == -1; t++) {
-    rc = inner(g, n, p, q, info);
+    rc = inner->draw(g, n, p, q, info);
     if (rc == 0) rc = sampler_gon_polar(q, n, out);
   }
   free(q);

@@ -1,30 +1,39 @@
 /*
-** gonutil.c: what the random convex n-gon samplers of chapter 6 (bounce,
-** triangulation, dual, prior art) share: their output contract (strictly
-** convex, checked exactly, anticlockwise from the lexicographically
-** smallest vertex) and uniform integers.
+** gonutil.c: what the random convex n-gon samplers of chapter 6 share:
+** the rotation to the lexicographically smallest vertex, the output
+** contract (strictly convex, checked exactly, anticlockwise from that
+** vertex) and exactly uniform integers.
 */
-#include "sampler.h"
+#include "gon_internal.h"
 
-static void canon_reverse(geom_point *p, size_t lo, size_t hi) {   /* [lo, hi) */
-  while (lo + 1 < hi) {
-    geom_point t = p[lo];
-    p[lo++] = p[--hi];
-    p[hi] = t;
+static void sampler_reverse(geom_point *v, size_t lo, size_t hi) {   /* [lo, hi) */
+  for (; lo + 1 < hi; lo++, hi--) {
+    geom_point t = v[lo];
+    v[lo] = v[hi - 1];
+    v[hi - 1] = t;
   }
 }
 
+/* Three reversals: O(n) time, O(1) space; the labelling v0..v{n-1} then
+** does not depend on the order the polygon was built in. */
+size_t sampler_lexfirst(geom_point *v, size_t n) {
+  size_t s = 0;
+  for (size_t k = 1; k < n; k++)
+    if (geom_lexless(v[k], v[s])) s = k;
+  if (s == 0) return 0;
+  sampler_reverse(v, 0, s);
+  sampler_reverse(v, s, n);
+  sampler_reverse(v, 0, n);
+  return s;
+}
+
 /* geom_polygon_check (exact orientation tests, the coordinate contract),
-** then a rotation in place by three reversals: O(n) time, O(1) space. */
+** then sampler_lexfirst. */
 int sampler_gon_canon(geom_point *p, size_t n, size_t *first) {
-  size_t bad, s = 0;
+  size_t bad, s;
   int rev = 0;
   if (geom_polygon_check(p, n, &bad, &rev) != GEOM_OK || rev) return -1;
-  for (size_t k = 1; k < n; k++)
-    if (geom_lexless(p[k], p[s])) s = k;
-  canon_reverse(p, 0, s);
-  canon_reverse(p, s, n);
-  canon_reverse(p, 0, n);
+  s = sampler_lexfirst(p, n);
   if (first != NULL) *first = s;
   return 0;
 }
