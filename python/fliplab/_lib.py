@@ -198,6 +198,8 @@ _PROTOS = {
     "sampler_sites": (_int, [_int, _u64, _u64, _int, Point_p]),
     "sampler_quad": (None, [_u64, _u64, Point_p]),
     "sampler_gon_check": (_int, [_char_p, _int, _size, _char_p, _size]),
+    "sampler_gon_check_variant": (_int, [_char_p, _int, _char_p, _size, _char_p, _size]),
+    "sampler_gon_inner": (_void_p, [_char_p]),
     "sampler_region_find": (_int, [_char_p]),
     "sampler_region_name": (_char_p, [_int]),
     "sampler_gon_names": (_char_p, []),

@@ -181,6 +181,7 @@ CHOICES = {
     ("fliplab.census", "sampler"): fliplab.samplers.SITE_SETS,
     ("fliplab.convex_polygons", "sampler"): fliplab.CONVEX_SAMPLERS,
     ("fliplab.convex_polygons", "region"): fliplab.REGIONS,
+    ("fliplab.convex_polygons", "inner"): fliplab.CONVEX_INNER,
     ("fliplab.Counts.to_csv", "format"): fliplab.FORMATS,
     ("fliplab.measure", "sign"): fliplab.SIGNS,
     ("fliplab.ch5_averages", "method"): fliplab.CH5_METHODS,
