@@ -51,11 +51,8 @@ int study_cpdt_sampler_check(int s, int region, int law, size_t n, char *err, si
   else if (sampler_gons[s].weighted)
     snprintf(err, errlen, "sampler %s weights its polygons and the experiment's means are "
              "unweighted: use valtr (the same law in the square) or naive", name);
-  else if (law < 0 || law > 1 || (law == 1 && strcmp(name, "iteration") != 0))
-    snprintf(err, errlen, "law %d: sampler %s takes law 0%s", law, name,
-             strcmp(name, "iteration") == 0 ? " or 1" : "");
   else
-    return 0;
+    return sampler_gon_check_variant(name, law, NULL, n, err, errlen);
   return -1;
 }
 

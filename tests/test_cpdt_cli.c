@@ -109,7 +109,7 @@ static void test_refusals(void **state) {
     {"--sampler vector --region disc", "sampler vector draws no points from a region"},
     {"--sampler valtr --region disc", "sampler valtr does not draw in the disc"},
     {"--sampler iteration --region moon", "unknown region 'moon'"},
-    {"--sampler circle --law 1", "law 1: sampler circle takes law 0"},
+    {"--sampler circle --law 1", "law 1: sampler circle takes laws 0 .. 0"},
     {"--sizes 31,2", "--sizes"},
     {"--sizes 31,,62", "--sizes"},
     {"--sizes 1e12", "--sizes"},

@@ -111,7 +111,9 @@ def convex_dt_experiment(sizes: Sequence[int] = (31, 62, 124, 248, 496, 992),
     sampler : str
         A name of CPDT_SAMPLERS, the registry of random convex n-gons of
         `convex_polygons` ("rejection", "naive", "iteration", "valtr",
-        "vector", "circle", ...; docs/sampling.md): polygon t of size n is
+        "vector", "circle", "triangulation", "bounce", "dual",
+        "dual-rejection", "geobench", "angles"; docs/sampling.md; the dual's
+        inner method is "vector"): polygon t of size n is
         `convex_polygons(n, sampler=..., seed=seed)`'s polygon t.  "rejection"
         is refused (its polygons carry weights and the means are unweighted:
         "valtr" draws its law in the square unweighted).
