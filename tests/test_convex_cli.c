@@ -100,8 +100,9 @@ static void test_csv_threads(void **state) {
   (void)state;
   static const char *const s[] = {"rejection --region disc", "iteration --region triangle",
                                   "valtr", "naive --region square", "triangulation",
-                                  "bounce", "bounce --law 1", "dual", "dual --inner bounce "
-                                  "--law 1", "dual --inner triangulation", "dual-rejection",
+                                  "bounce", "bounce --law 1", "dual",
+                                  "dual --inner bounce --law 1", "dual --inner triangulation",
+                                  "dual-rejection",
                                   "geobench", "angles", "vector", "circle"};
   for (size_t k = 0; k < sizeof s / sizeof s[0]; k++) {
     char args[256];
