@@ -21,8 +21,8 @@
 ** 3. Guards: the DT sweep of the 100 x 100 grid makes no GMP call (neither
 **    the sweep's primitives nor the predicates) and no flip after the
 **    sweep, nor do the sweeps of six polygons (square, diamond, triangle,
-**    a rectangle, hexagon, octagon) on the 30 x 30 grid; the CDT of a rotated grid (sampler_pslg_grid) makes no
-**    GMP call.
+**    a rectangle, hexagon, octagon) on the 30 x 30 grid; the CDT of a
+**    rotated grid (sampler_pslg_grid) makes no GMP call.
 */
 #include <stdarg.h>
 #include <stddef.h>
