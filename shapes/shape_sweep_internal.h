@@ -104,7 +104,8 @@ typedef struct shape_sweep_poly {
   int right;
   double xr;
   size_t *special;
-  int ints;                 /* K's corners are integers within 2^10: integer keys */
+  double kscale;            /* 2^p: K's corners times it are integers within 2^20 (then
+                            ** integer keys), or 0 */
   shape_sweep_poly_memo *memo, last;   /* memo = &last */
 } shape_sweep_poly;
 

@@ -344,24 +344,30 @@ static void shape_poly_corner_q(const shape_sweep_poly *P, const shape_poly_ev *
 **
 ** A homothet's key A.x + (det Mx + xr det Ms) / det M is rational, and on
 ** grids many are equal (the squares of a grid column), which the bounds
-** cannot separate.  When K's corners are integers within 2^10 (square,
-** diamond, triangle, integer polygons: P->ints) and the run's sites fit
-** its frame (integers in [0, 2^20), shape_sweep_frame_make), every entry
-** is an integer: an edge's n = (b.y - a.y, a.x - b.x) within 2^11, h =
-** a.x b.y - a.y b.x within 2^21, w = n.(P - A) within 2^32, so |det M| <
-** 6 2^43 < 2^46, |det Mx| < 6 2^64 < 2^67, |det Ms| < 6 2^54 < 2^57 and
-** the numerator N = det Mx + xr det Ms < 2^68 (__int128).  Two keys then
-** compare as (ax1 - ax2) D1 D2 + N1 D2 - N2 D1 times the sign of D1 D2,
-** below 2^20 2^92 + 2 2^114 < 2^116.  A site's key x is N = 0, D = 1.
-** Other keys (corners', infinite ones, every key of a K with other
-** corners: the hexagon's are irrational numbers rounded) get a translate
-** record (known = 2): the kind, the contact edges or corner, and the
-** triangle's differences over the frame.  Keys are functions of those and
-** of a.x alone (the exact classification and keys are translation
-** invariant), so two equal records differ by a1.x - a2.x: the grid's
-** columns of equal keys, compared without GMP; other pairs are left to
-** key_cmp.  The sweep makes each event's record once (ikey) and compares
-** records (ikey_cmp) before it compares points. */
+** cannot separate.  The key does not change when K is scaled (t stays, s
+** scales inversely), so K is taken times kscale = 2^p, the least power of
+** two that makes its corners integers, when those are within 2^20
+** (square, diamond, triangle, integer polygons, and the hexagon and the
+** octagon, whose corners have 20 fraction bits: P->kscale), and the run's
+** sites fit its frame (integers in [0, 2^20), shape_sweep_frame_make):
+** then every entry is an integer: an edge's n = (b.y - a.y, a.x - b.x)
+** within 2^21, h = a.x b.y - a.y b.x within 2^41, w = n.(P - A) within
+** 2^42, so |det M| < 6 2^83 < 2^86, |det Mx| < 6 2^104 < 2^107, |det Ms|
+** < 6 2^84 < 2^87 and the numerator N = det Mx + xr det Ms < 2^108
+** (__int128; every partial product is below 2^106).  The key's record
+** keeps N / D when |D| < 2^46 and |N| < 2^78, reduced by their gcd when
+** they are not (corners within 2^10 always fit unreduced: |D| < 2^46, |N|
+** < 2^68).  Two keys then compare as (ax1 - ax2) D1 D2 + N1 D2 - N2 D1
+** times the sign of D1 D2, below 2^20 2^92 + 2 2^124 < 2^126.  A site's
+** key x is N = 0, D = 1.  Other keys (corners', infinite ones, every key
+** of a K with other corners, a homothet's whose reduced terms do not fit)
+** get a translate record (known = 2): the kind, the contact edges or
+** corner, and the triangle's differences over the frame.  Keys are
+** functions of those and of a.x alone (the exact classification and keys
+** are translation invariant), so two equal records differ by a1.x - a2.x:
+** the grid's columns of equal keys, compared without GMP; other pairs are
+** left to key_cmp.  The sweep makes each event's record once (ikey) and
+** compares records (ikey_cmp) before it compares points. */
 #if GEOM_HAVE_INT128
 static geom_i128 shape_poly_det3_i(geom_i128 m[3][3]) {
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
@@ -369,20 +375,58 @@ static geom_i128 shape_poly_det3_i(geom_i128 m[3][3]) {
        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
+/* gcd(a, b), b > 0, binary: at most 2 x 128 shifts and subtractions. */
+static geom_u128 shape_poly_gcd(geom_u128 a, geom_u128 b) {
+  if (a == 0) return b;
+  int z = 0;
+  while (((a | b) & 1) == 0) a >>= 1, b >>= 1, z++;
+  while ((a & 1) == 0) a >>= 1;
+  while (b != 0) {
+    while ((b & 1) == 0) b >>= 1;
+    if (a > b) {
+      geom_u128 t = a;
+      a = b, b = t;
+    }
+    b -= a;
+  }
+  return a << z;
+}
+
+static geom_u128 shape_poly_abs(geom_i128 v) {
+  return v < 0 ? -(geom_u128)v : (geom_u128)v;
+}
+
+/* The record of N / D (D != 0) at a.x: reduced if it must be, translate
+** record (known 0, to be filled) if it does not fit even so. */
+static shape_sweep_ikey shape_poly_ratio_i(int64_t ax, geom_i128 N, geom_i128 D) {
+  const geom_u128 dmax = (geom_u128)1 << 46, nmax = (geom_u128)1 << 78;
+  if (shape_poly_abs(D) >= dmax || shape_poly_abs(N) >= nmax) {
+    geom_i128 g = (geom_i128)shape_poly_gcd(shape_poly_abs(N), shape_poly_abs(D));
+    N /= g, D /= g;
+    if (shape_poly_abs(D) >= dmax || shape_poly_abs(N) >= nmax)
+      return (shape_sweep_ikey){.known = 0};
+  }
+  geom_u128 un = (geom_u128)N;
+  return (shape_sweep_ikey){ax, (int64_t)D, 0, (uint64_t)un, (uint64_t)(un >> 64), 1};
+}
+
 /* The homothet's key of ev over the frame: a.x, D, N (shape_poly_hom_q's
-** formula, in integers). */
+** formula, in integers, K times kscale). */
 static shape_sweep_ikey shape_poly_hom_i(const shape_sweep_poly *P, const shape_sweep_frame *f,
                                          const shape_poly_ev *ev) {
   const geom_point *v = P->k->v;
   int n = P->k->n;
+  double ks = P->kscale;
   int64_t z[3][2];
   for (int r = 0; r < 3; r++) shape_sweep_in_frame(f, ev->p[r], z[r]);
   geom_i128 m[3][3], mx[3][3], ms[3][3], w[3];
   for (int r = 0; r < 3; r++) {
     geom_point a = v[ev->e[r]], b = v[(ev->e[r] + 1) % n];
-    m[r][0] = (geom_i128)(b.y - a.y);
-    m[r][1] = (geom_i128)(a.x - b.x);
-    m[r][2] = (geom_i128)(a.x * b.y - a.y * b.x);   /* exact: integers within 2^21 */
+    int64_t ax = (int64_t)(a.x * ks), ay = (int64_t)(a.y * ks);   /* exact: see above */
+    int64_t bx = (int64_t)(b.x * ks), by = (int64_t)(b.y * ks);
+    m[r][0] = by - ay;
+    m[r][1] = ax - bx;
+    m[r][2] = ax * by - ay * bx;
     w[r] = m[r][0] * (z[r][0] - z[0][0]) + m[r][1] * (z[r][1] - z[0][1]);
   }
   for (int r = 0; r < 3; r++)
@@ -390,10 +434,9 @@ static shape_sweep_ikey shape_poly_hom_i(const shape_sweep_poly *P, const shape_
       mx[r][c] = c == 0 ? w[r] : m[r][c];
       ms[r][c] = c == 2 ? w[r] : m[r][c];
     }
-  geom_i128 N = shape_poly_det3_i(mx) + (geom_i128)P->xr * shape_poly_det3_i(ms);
-  geom_u128 un = (geom_u128)N;
-  return (shape_sweep_ikey){z[0][0], (int64_t)shape_poly_det3_i(m), 0, (uint64_t)un,
-                            (uint64_t)(un >> 64), 1};
+  geom_i128 xr = (geom_i128)(int64_t)(P->xr * ks);
+  geom_i128 N = shape_poly_det3_i(mx) + xr * shape_poly_det3_i(ms);
+  return shape_poly_ratio_i(z[0][0], N, shape_poly_det3_i(m));
 }
 
 static void shape_poly_ikey(const void *ctx, const shape_sweep_frame *f, const geom_point *t,
@@ -407,9 +450,9 @@ static void shape_poly_ikey(const void *ctx, const shape_sweep_frame *f, const g
   }
   shape_poly_ev ev;
   shape_poly_classify(P, t, &ev);   /* key_bounds's, from the memo */
-  if (P->ints && ev.kind == SHAPE_PK_HOMOTHET) {
+  if (P->kscale > 0 && ev.kind == SHAPE_PK_HOMOTHET) {
     *k = shape_poly_hom_i(P, f, &ev);
-    return;
+    if (k->known) return;
   }
   int64_t z[3][2];   /* in t's order: the same differences for translates */
   for (int r = 0; r < 3; r++) shape_sweep_in_frame(f, t[r], z[r]);
@@ -434,13 +477,18 @@ static int shape_poly_ikey_cmp(const shape_sweep_ikey *a, const shape_sweep_ikey
 
 #endif
 
-static int shape_poly_int_corners(const shape *k) {
+/* The least 2^p (p <= 60) that makes K's corners integers within 2^20,
+** or 0 (the integer keys above). */
+static double shape_poly_int_scale(const shape *k) {
+  double big = 0;
+  int p = 0;
   for (int c = 0; c < k->n; c++)
     for (int i = 0; i < 2; i++) {
-      double v = i ? k->v[c].y : k->v[c].x;
-      if (!(fabs(v) <= 0x1p10) || v != floor(v)) return 0;
+      double v = fabs(i ? k->v[c].y : k->v[c].x);
+      big = v > big ? v : big;
+      while (p <= 60 && ldexp(v, p) != floor(ldexp(v, p))) p++;
     }
-  return 1;
+  return p <= 60 && ldexp(big, p) <= 0x1p20 ? ldexp(1, p) : 0;
 }
 
 /* ---- infinite keys ----------------------------------------------------- */
@@ -644,7 +692,7 @@ void shape_sweep_polygon(shape_sweep_poly *P, const shape *k, size_t *special,
         shape_poly_leftward(k->v[c], k->v[(c + n - 1) % n]))
       P->right = c;
   P->xr = k->v[P->right].x;
-  P->ints = shape_poly_int_corners(k);
+  P->kscale = shape_poly_int_scale(k);
   P->memo = &P->last;
   P->last.ok = 0;
   *s = (shape_sweep){"polygon", P, shape_sweep_closes, shape_poly_key_bounds, shape_poly_key_cmp,
