@@ -1,18 +1,23 @@
 /*
-** bench_convex.c: the cost of each random convex n-gon sampler of the
-** registry (samplers/gon.c) as n grows, and its fitted exponent.
+** bench_convex.c: the cost of every random convex n-gon sampler of the
+** registry (samplers/gon.c; thesis chapter 6) as n grows, and its fitted
+** exponent beside the registry's stated cost.
 **
-**   bench_convex [MAXN [RUNS [SAMPLERS]]]   (defaults 1000000, 3, all)
+**   bench_convex [MAXN [RUNS [SAMPLERS]]] [--limit]   (defaults 1000000, 3, all)
 **
-** For each sampler (and region: square, and the disc for the point-based
-** ones) and n = 10^3, 10^4, ... MAXN: the median CPU time of RUNS polygons
-** (polygon i of seed 1, one thread: on the shared machine CPU time is the
-** steady figure, the wall time of an idle core); a sampler that fails at
-** some n (iteration in the square, circle: no strictly convex n-gon in
-** doubles) or exceeds 10 CPU seconds stops there.  The exponent is the least-squares slope of
-** log time against log n over the sizes measured (1 for O(n), about 1.1
-** for O(n log n) over these sizes).  docs/performance.md, "Random convex
-** polygons", has the table and the command.
+** One row per sampler, law (bounce, iteration) and inner method (dual), and
+** per region for the point-based ones (square and disc; the triangle costs
+** as the square): for n = 10^3, 10^4, ... MAXN the median CPU time of RUNS
+** polygons (polygon r of seed 1, one thread: on the shared machine CPU time
+** is the steady figure) and, when not all were realised, how many were
+** (the others returned -1: doubles could not realise them, and their time
+** is the time to find that out).  A row stops after a size where none was
+** realised or a polygon took over 10 CPU seconds.  The exponent is the
+** least-squares slope of log time against log n over the sizes realised in
+** full (1 for O(n), about 1.1 for O(n log n) over these sizes).  Samplers
+** limited to small n (naive, dual-rejection) are left out.  --limit adds
+** the share of triangulation draws refused at n = 1, 1.5, 2, 3 x 10^6.
+** docs/performance.md, "Random convex polygons", has the table.
 */
 #include <math.h>
 #include <stdio.h>
@@ -22,18 +27,35 @@
 #include "sampler.h"
 
 #define BENCH_SIZES 8
-#define BENCH_BUDGET 10.0   /* seconds for one polygon: larger sizes skipped */
+#define BENCH_RUNS 16
+#define BENCH_BUDGET 10.0   /* CPU seconds for one polygon: larger sizes skipped */
 
-/* One polygon's wall and CPU time, or a negative wall time on failure. */
-static bench_time bench_convex_one(const sampler_gon *s, int region, size_t n, uint64_t i,
-                                   geom_point *v) {
-  sampler_gon_params p = {(sampler_region)region, 0, NULL};
-  sampler_gon_info info;
-  double c0 = bench_cpu(), t0 = bench_wall();
-  int rc = sampler_gon_draw(s, &p, 1, i, n, v, &info);
-  bench_time t = {bench_wall() - t0, bench_cpu() - c0};
-  if (rc != 0) t.wall = -1;
-  return t;
+/* One row: a sampler with its region, law and inner method. */
+typedef struct bench_convex_case {
+  const sampler_gon *s;
+  sampler_gon_params p;
+} bench_convex_case;
+
+/* runs polygons of size n: their median CPU time; *ok gets how many were
+** realised, *slow whether one exceeded the budget (the rest then skipped). */
+static double bench_convex_size(const bench_convex_case *c, size_t n, int runs, geom_point *v,
+                                int *ok, int *slow) {
+  double t[BENCH_RUNS];
+  int r = 0;
+  *ok = *slow = 0;
+  for (; r < runs && !*slow; r++) {
+    sampler_gon_info info;
+    double c0 = bench_cpu();
+    int rc = sampler_gon_draw(c->s, &c->p, 1, (uint64_t)r, n, v, &info);
+    t[r] = bench_cpu() - c0;
+    if (rc == SAMPLER_ENOMEM) {
+      fprintf(stderr, "bench_convex: out of memory at n = %zu\n", n);
+      exit(1);
+    }
+    *ok += rc == 0;
+    *slow = t[r] > BENCH_BUDGET;
+  }
+  return bench_median(t, r);
 }
 
 /* The least-squares slope of log y against log x. */
@@ -50,55 +72,86 @@ static double bench_slope(const double *x, const double *y, int k) {
   return k >= 2 && d > 0 ? (k * sxy - sx * sy) / d : NAN;
 }
 
-static void bench_convex_row(const sampler_gon *s, int region, size_t maxn, int runs) {
+static void bench_convex_row(const bench_convex_case *c, size_t maxn, int runs, geom_point *v) {
   double xs[BENCH_SIZES], ys[BENCH_SIZES];
-  int k = 0;
-  printf("%-10s %-8s", s->name, s->regions ? sampler_region_name(region) : "-");
-  geom_point *v = malloc(maxn * sizeof *v);
-  for (size_t n = 1000; n <= maxn && v != NULL && k < BENCH_SIZES; n *= 10) {
-    bench_time t[16];
-    int ok = 1, failed = 0;
-    for (int r = 0; r < runs && ok; r++) {
-      t[r] = bench_convex_one(s, region, n, (uint64_t)r, v);
-      failed = t[r].wall < 0;
-      ok = !failed && t[r].cpu < BENCH_BUDGET;
-      t[r].wall = t[r].cpu;   /* the median of CPU times */
-    }
-    if (!ok) {
-      printf("  %8s", failed ? "fails" : "slow");
-      break;
-    }
-    bench_time m = bench_median_time(t, runs);   /* sorted by CPU time */
-    printf("  %8.4f", m.cpu);
-    xs[k] = (double)n;
-    ys[k++] = m.cpu;
+  int k = 0, ok = 1, slow = 0;
+  size_t n = 1000;
+  char name[64];
+  snprintf(name, sizeof name, "%s%s%s", c->s->name, c->p.inner ? " of " : "",
+           c->p.inner ? c->p.inner : "");
+  if (c->s->laws > 1 || (c->p.inner && sampler_gon_inner(c->p.inner)->laws > 1))
+    snprintf(name + strlen(name), sizeof name - strlen(name), ", law %d", c->p.law);
+  printf("| `%s` | %s |", name, c->s->regions ? sampler_region_name(c->p.region) : "-");
+  for (; n <= maxn && ok > 0 && !slow && k < BENCH_SIZES; n *= 10) {
+    double t = bench_convex_size(c, n, runs, v, &ok, &slow);
+    if (slow) printf(" slow |");
+    else if (ok == runs) printf(" %.4f |", t);
+    else printf(" %.4f (%d/%d) |", t, ok, runs);
+    if (ok == runs && !slow && t > 0) xs[k] = (double)n, ys[k++] = t;
+    fflush(stdout);
   }
-  free(v);
-  printf("   exponent %.2f\n", bench_slope(xs, ys, k));
+  for (; n <= maxn; n *= 10) printf(" |");
+  double e = bench_slope(xs, ys, k);
+  if (isnan(e)) printf(" - |");
+  else printf(" %.2f |", e);
+  printf(" %s |\n", c->s->cost);
+}
+
+/* The rows of registry entry s: each region it takes (the triangle left
+** out), law and, for the dual, inner method. */
+static void bench_convex_entry(const sampler_gon *s, size_t maxn, int runs, geom_point *v) {
+  for (size_t m = 0; m < (s->inner ? sampler_gons_count : 1); m++) {
+    bench_convex_case c = {s, {SAMPLER_REGION_SQUARE, 0, NULL}};
+    const sampler_gon *t = s->inner ? sampler_gon_inner(sampler_gons[m].name) : s;
+    if (t == NULL || (t->nmax != 0 && t->nmax < 1000)) continue;
+    if (s->inner) c.p.inner = t->name;
+    for (c.p.law = 0; c.p.law < t->laws; c.p.law++)
+      for (int r = 0; r < SAMPLER_REGION_TRIANGLE; r++) {
+        c.p.region = (sampler_region)r;
+        if (s->regions == 0 ? r == 0 : (s->regions & (1u << r)) != 0)
+          bench_convex_row(&c, maxn, runs, v);
+      }
+  }
+}
+
+static void bench_convex_limit(geom_point *v) {
+  static const size_t ns[] = {1000000, 1500000, 2000000, 3000000};
+  bench_convex_case c = {sampler_gon_find("triangulation"), {SAMPLER_REGION_SQUARE, 0, NULL}};
+  printf("\n| n | triangulation draws refused |\n|---:|---:|\n");
+  for (size_t k = 0; k < sizeof ns / sizeof ns[0]; k++) {
+    int ok, slow;
+    (void)bench_convex_size(&c, ns[k], 5, v, &ok, &slow);
+    printf("| %zu | %d of 5 |\n", ns[k], 5 - ok);
+    fflush(stdout);
+  }
 }
 
 int main(int argc, char **argv) {
-  size_t maxn = argc > 1 ? (size_t)strtod(argv[1], NULL) : 1000000;
-  int runs = argc > 2 ? atoi(argv[2]) : 3;
-  const char *only = argc > 3 ? argv[3] : NULL;
-  if (maxn < 1000 || runs < 1 || runs > 16) {
-    fprintf(stderr, "usage: bench_convex [MAXN >= 1000 [RUNS 1..16 [SAMPLERS]]]\n");
+  size_t maxn = 1000000;
+  int runs = 3, limit = 0, pos = 0;
+  const char *only = NULL;
+  for (int i = 1; i < argc; i++)
+    if (strcmp(argv[i], "--limit") == 0) limit = 1;
+    else if (pos++ == 0) maxn = (size_t)strtod(argv[i], NULL);
+    else if (pos == 2) runs = atoi(argv[i]);
+    else only = argv[i];
+  if (maxn < 1000 || runs < 1 || runs > BENCH_RUNS) {
+    fprintf(stderr, "usage: bench_convex [MAXN >= 1000 [RUNS 1..16 [SAMPLERS]]] [--limit]\n");
     return 2;
   }
-  printf("random convex n-gons: median CPU seconds of %d polygons, one thread; load %.2f\n",
-         runs, bench_load());
-  printf("%-10s %-8s", "sampler", "region");
-  for (size_t n = 1000; n <= maxn; n *= 10) printf("  %8.0e", (double)n);
-  printf("\n");
-  for (size_t i = 0; i < sampler_gons_count; i++) {
-    const sampler_gon *s = &sampler_gons[i];
-    if (only != NULL && strstr(only, s->name) == NULL) continue;
-    if (strcmp(s->name, "naive") == 0) continue;   /* n <= 10 */
-    for (int r = 0; r < SAMPLER_REGION_COUNT; r++) {
-      if (s->regions == 0 ? r != 0 : !(s->regions & (1u << r))) continue;
-      if (r == SAMPLER_REGION_TRIANGLE) continue;   /* as the square */
-      bench_convex_row(s, r, maxn, runs);
-    }
-  }
+  geom_point *v = malloc((limit && maxn < 3000000 ? 3000000 : maxn) * sizeof *v);
+  if (v == NULL) return 1;
+  printf("# bench_convex: median CPU seconds of %d polygons (realised/drawn when not all),"
+         " one thread, seed 1; load %.2f\n\n| sampler | region |", runs, bench_load());
+  for (size_t n = 1000; n <= maxn; n *= 10) printf(" %.0e |", (double)n);
+  printf(" exponent | cost |\n|---|---|");
+  for (size_t n = 1000; n <= maxn; n *= 10) printf("--:|");
+  printf("--:|---|\n");
+  for (size_t i = 0; i < sampler_gons_count; i++)
+    if (only == NULL || strstr(only, sampler_gons[i].name) != NULL)
+      bench_convex_entry(&sampler_gons[i], maxn, runs, v);
+  if (limit) bench_convex_limit(v);
+  printf("\n(load average at the end: %.2f)\n", bench_load());
+  free(v);
   return 0;
 }

@@ -25,7 +25,7 @@
 
 typedef struct cli_convex_opts {
   uint64_t n, count, seed, first, threads, svg_count, law;
-  const char *sampler, *out, *svg, *stats_out;
+  const char *sampler, *inner, *out, *svg, *stats_out;
   int region, stats;
 } cli_convex_opts;
 
@@ -40,7 +40,8 @@ static int cli_convex_region(const char *cmd, const cli_option *o, const char *v
 #define T cli_convex_opts
 static const cli_option cli_convex_table[] = {
   {.name = "--sampler", .arg = "S",
-   .help = "rejection, naive, iteration, valtr, vector, circle, ...\n"
+   .help = "rejection, naive, iteration, valtr, vector, circle, triangulation,\n"
+           "                     bounce, dual, dual-rejection, geobench, angles\n"
            "                     (docs/sampling.md)",
    .kind = CLI_STRING, .off = CLI_AT(T, sampler, const char *), .sdef = "rejection"},
   {.name = "--region", .arg = "R", .dflt = "square",
@@ -52,7 +53,11 @@ static const cli_option cli_convex_table[] = {
   CLI_OPT_U64("--first", "I", "start at polygon index I", T, first, 0,
               UINT64_MAX - CLI_CONVEX_MAX_COUNT, 0),
   CLI_OPT_U64("--law", "L", "the sampler's variant (iteration: 1 = the exterior-region\n"
-              "                     path also for the disc below 17)", T, law, 0, 1, 0),
+              "                     path also for the disc below 17; bounce: 0 = velocity\n"
+              "                     redrawn, 1 = reflected)", T, law, 0, 1, 0),
+  CLI_OPT_STRING("--inner", "M", "vector", "dual: the inner method (vector, circle,\n"
+                 "                     triangulation, bounce, dual-rejection, geobench, angles)",
+                 T, inner),
   CLI_OPT_THREADS("threads; the output does not depend on T", T, threads),
   CLI_OPT_OUT("FILE", "stdout unless --stats", "csv",
               "vertices as CSV: polygon,vertex,x,y,log_weight,h", T, out),
@@ -84,8 +89,9 @@ static int cli_convex_check(const cli_convex_opts *o, uint64_t given, const samp
   *s = sampler_gon_find(o->sampler);
   if (sampler_gon_check(o->sampler, region, (size_t)o->n, err, sizeof err) != 0)
     return cli_error(CMD, "%s", err);
-  if (o->law != 0 && strcmp(o->sampler, "iteration") != 0)
-    return cli_error(CMD, "--law applies to --sampler iteration only");
+  if (sampler_gon_check_variant(o->sampler, (int)o->law, o->inner, (size_t)o->n, err,
+                                sizeof err) != 0)
+    return cli_error(CMD, "%s", err);
   if (o->svg != NULL && o->n > 100000)
     return cli_error(CMD, "--svg draws polygons of at most 100000 vertices (--n %llu)",
                      (unsigned long long)o->n);
@@ -133,7 +139,8 @@ static int cli_convex_batches(const cli_convex_opts *o, cli_convex_sink *k) {
   double *lw = malloc(b * sizeof *lw), *st = malloc(b * STUDY_CONVEX_NSTATS * sizeof *st);
   uint64_t *h = malloc(b * sizeof *h), failed = 0;
   int want = o->stats || k->stats_csv != NULL, rc = xy && lw && st && h ? 0 : SAMPLER_ENOMEM;
-  study_convex_run run = {o->sampler, o->region, (int)o->law, (int)o->threads, n, o->seed};
+  study_convex_run run = {o->sampler, o->region, (int)o->law, (int)o->threads, n, o->seed,
+                          o->inner};
   for (uint64_t done = 0; done < o->count && rc == 0; done += b) {
     size_t m = o->count - done < b ? (size_t)(o->count - done) : b;
     rc = study_convex_draw(&run, o->first + done, m, xy, lw, h, want ? st : NULL, &failed);

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "cli.h"
 #include "report.h"
+#include "sampler.h"
 #include "study_cpdt.h"
 
 #define CMD "cpdt"
@@ -16,8 +17,8 @@
 
 typedef struct cli_cpdt_opts {
   const char *sizes, *algorithms, *out, *plot;
-  uint64_t trials, seed;
-  int sampler, measure;
+  uint64_t trials, seed, law;
+  int sampler, region, measure;
 } cli_cpdt_opts;
 
 #define T cli_cpdt_opts
@@ -26,9 +27,15 @@ static const cli_option cli_cpdt_table[] = {
                  "polygon sizes (3 .. 2^29 vertices each, at most 64 sizes)", T, sizes),
   CLI_OPT_U64("--trials", "K", "polygons per size", T, trials, 1, 1000000000, 70),
   {.name = "--sampler", .arg = "S", .dflt = "vector",
-   .help = "vector, circle, or iteration (at most 16 vertices)", .kind = CLI_CHOICE,
-   .off = CLI_AT(T, sampler, int), .find = study_cpdt_sampler_find, .idef = 0,
-   .bad = "unknown sampler '%s' (valid: vector, circle, iteration)"},
+   .help = "a random convex n-gon sampler of `fliplab convex` (not the\n"
+           "                     weighted rejection: valtr draws its law unweighted)",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, sampler, int), .find = study_cpdt_sampler_find,
+   .idef = -1, .bad = "unknown sampler '%s' (fliplab convex --help lists them)"},
+  {.name = "--region", .arg = "R", .dflt = "square",
+   .help = "the region of the samplers that draw points: square, disc, triangle",
+   .kind = CLI_CHOICE, .off = CLI_AT(T, region, int), .find = sampler_region_find,
+   .idef = -1, .bad = "unknown region '%s' (valid: square, disc, triangle)"},
+  CLI_OPT_U64("--law", "L", "the sampler's variant (as fliplab convex --law)", T, law, 0, 1, 0),
   CLI_OPT_STRING("--algorithms", "A,A,...", "all",
                  "circum, circum-random, circum-walk, divide, incremental,\n"
                  "                     random, flip, corners", T, algorithms),
@@ -164,16 +171,18 @@ int cli_cmd_cpdt(int argc, char **argv) {
   if (ns < 0) return 2;
   int na = cli_cpdt_algorithms(o.algorithms != NULL ? o.algorithms : "all", alg);
   if (na < 0) return 2;
-  for (int i = 0; i < ns; i++) {
-    const char *why = study_cpdt_sampler_limit(o.sampler, (size_t)sizes[i]);
-    if (why != NULL) return cli_error(CMD, "--sizes: %llu: %s", (unsigned long long)sizes[i], why);
-  }
+  if (o.sampler < 0) o.sampler = study_cpdt_sampler_find("vector");
+  char why[200];
+  for (int i = 0; i < ns; i++)
+    if (study_cpdt_sampler_check(o.sampler, o.region, (int)o.law, (size_t)sizes[i], why,
+                                 sizeof why) != 0)
+      return cli_error(CMD, "--sizes: %llu: %s", (unsigned long long)sizes[i], why);
   cli_cpdt_run s = {sizes, (size_t)ns, alg, (size_t)na};
   study_cpdt_cell *cells = malloc((size_t)ns * (size_t)na * sizeof *cells);
   if (cells == NULL) return cli_error(CMD, "out of memory"), 1;
   char err[256];
-  int rc = study_cpdt_run(sizes, s.nsizes, alg, s.nalgorithms, o.trials, o.seed, o.sampler, cells,
-                          err, sizeof err);
+  int rc = study_cpdt_run(sizes, s.nsizes, alg, s.nalgorithms, o.trials, o.seed, o.sampler,
+                          o.region, (int)o.law, cells, err, sizeof err);
   if (rc != 0) {
     free(cells);
     return cli_error(CMD, "%s", err), rc == -1 ? 2 : 1;

@@ -68,16 +68,35 @@ static int sampler_gon_circle(sampler_rng *g, size_t n, const sampler_gon_params
 #define SQ (1u << SAMPLER_REGION_SQUARE)
 const sampler_gon sampler_gons[] = {
   {"rejection", sampler_gon_rejection, "O(n log n)",
-   "n iid uniform points of the region conditioned on convex position (weighted)", 1, ALL},
+   "n iid uniform points of the region conditioned on convex position (weighted)", 1, ALL, 0, 1,
+   0},
   {"naive", sampler_gon_naive, "O(n / P(convex)), n <= 10",
-   "n iid uniform points of the region conditioned on convex position", 0, ALL},
+   "n iid uniform points of the region conditioned on convex position", 0, ALL,
+   SAMPLER_NAIVE_MAX, 1, 0},
   {"iteration", sampler_gon_iteration, "O(h log n)",
-   "uniform points of the region until their hull has n vertices", 0, ALL},
+   "uniform points of the region until their hull has n vertices", 0, ALL, 0, 2, 0},
   {"valtr", sampler_gon_valtr, "O(n log n)",
-   "n iid uniform points of the square conditioned on convex position", 0, SQ},
+   "n iid uniform points of the square conditioned on convex position", 0, SQ, 0, 1, 0},
   {"vector", sampler_gon_vector, "O(n log n)",
-   "edge vectors' x and y components uniform in the ball of {sum = 0}", 0, 0},
-  {"circle", sampler_gon_circle, "O(n log n)", "n uniform angles on the unit circle", 0, 0},
+   "edge vectors' x and y components uniform in the ball of {sum = 0}", 0, 0, 0, 1, 0},
+  {"circle", sampler_gon_circle, "O(n log n)", "n uniform angles on the unit circle", 0, 0, 0,
+   1, 0},
+  {"triangulation", sampler_gon_triangulation, "O(n)",
+   "a uniform triangulation of the n-gon, realised as its Delaunay triangulation", 0, 0, 0, 1,
+   0},
+  {"bounce", sampler_gon_bounce, "O(n log n)",
+   "the regular n-gon after 2n bounce events (law 0: velocity redrawn, 1: reflected)", 0, 0, 0,
+   2, 0},
+  {"dual", sampler_gon_dual, "O(n) beyond the inner method",
+   "the polar dual, about its vertex mean, of the inner method's polygon", 0, 0, 0, 1, 1},
+  {"dual-rejection", sampler_gon_dualrej, "O(n log n / P(n sides)), n <= 10",
+   "n uniform half-planes meeting the unit disc, drawn until they bound an n-gon", 0, 0,
+   SAMPLER_DUALREJ_NMAX, 1, 0},
+  {"geobench", sampler_gon_geobench, "O(n log n)",
+   "n random radius moves of a polygon inscribed in the unit circle (XYZ GeoBench)", 0, 0, 0,
+   1, 0},
+  {"angles", sampler_gon_angles, "O(n), n <= about 50",
+   "uniform feasible turning angles, edge lengths closing the polygon", 0, 0, 0, 1, 0},
 };
 #undef ALL
 #undef SQ
@@ -89,14 +108,20 @@ const sampler_gon *sampler_gon_find(const char *s) {
   return NULL;
 }
 
+/* The names of the registry's rows (only the inner methods when `inner`),
+** comma-separated, into buf. */
+static void sampler_gon_list(char *buf, size_t size, int inner) {
+  size_t len = 0;
+  buf[0] = '\0';
+  for (size_t k = 0; k < sampler_gons_count && len + 40 < size; k++)
+    if (!inner || sampler_gon_inner(sampler_gons[k].name) != NULL)
+      len += (size_t)snprintf(buf + len, size - len, "%s%s", len ? ", " : "",
+                              sampler_gons[k].name);
+}
+
 const char *sampler_gon_names(void) {
   static char buf[512];
-  if (buf[0] == '\0') {
-    size_t len = 0;
-    for (size_t k = 0; k < sampler_gons_count && len + 40 < sizeof buf; k++)
-      len += (size_t)snprintf(buf + len, sizeof buf - len, "%s%s", k ? ", " : "",
-                              sampler_gons[k].name);
-  }
+  if (buf[0] == '\0') sampler_gon_list(buf, sizeof buf, 0);
   return buf;
 }
 
@@ -114,9 +139,36 @@ int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t 
              sampler_region_name(region));
   else if (n < 3)
     snprintf(err, errlen, "n = %zu: a polygon has at least 3 vertices", n);
-  else if (s->draw == sampler_gon_naive && n > SAMPLER_NAIVE_MAX)
-    snprintf(err, errlen, "sampler naive takes n up to %d (it draws about 1 / P(convex) "
-             "points a polygon); use rejection or valtr", SAMPLER_NAIVE_MAX);
+  else if (s->nmax != 0 && n > s->nmax)
+    snprintf(err, errlen, "sampler %s takes n up to %zu (its draws per polygon explode "
+             "beyond; docs/sampling.md)", name, s->nmax);
+  else
+    return 0;
+  return -1;
+}
+
+/* The inner methods: no region, no weight, no inner method of their own. */
+const sampler_gon *sampler_gon_inner(const char *inner) {
+  const sampler_gon *t = sampler_gon_find(inner != NULL ? inner : "vector");
+  return t != NULL && t->regions == 0 && !t->weighted && !t->inner ? t : NULL;
+}
+
+int sampler_gon_check_variant(const char *name, int law, const char *inner, size_t n,
+                              char *err, size_t errlen) {
+  const sampler_gon *s = sampler_gon_find(name), *t = s;
+  char list[256];
+  sampler_gon_list(list, sizeof list, 1);
+  if (s != NULL && s->inner) t = sampler_gon_inner(inner);
+  if (s == NULL)
+    snprintf(err, errlen, "unknown sampler '%s' (valid: %s)", name, sampler_gon_names());
+  else if (inner != NULL && !s->inner)
+    snprintf(err, errlen, "sampler %s takes no inner method (only dual does)", name);
+  else if (t == NULL)
+    snprintf(err, errlen, "unknown inner method '%s' (valid: %s)", inner, list);
+  else if (t->nmax != 0 && n > t->nmax)
+    snprintf(err, errlen, "inner method %s takes n up to %zu", t->name, t->nmax);
+  else if (law < 0 || law >= t->laws)
+    snprintf(err, errlen, "law %d: sampler %s takes laws 0 .. %d", law, t->name, t->laws - 1);
   else
     return 0;
   return -1;
@@ -125,7 +177,8 @@ int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t 
 int sampler_gon_draw(const sampler_gon *s, const sampler_gon_params *p, uint64_t seed,
                      uint64_t index, size_t n, geom_point *out, sampler_gon_info *info) {
   *info = (sampler_gon_info){0};
-  if (n < 3 || (unsigned)p->region >= SAMPLER_REGION_COUNT) return -1;
+  if (n < 3 || (s->nmax != 0 && n > s->nmax) || (unsigned)p->region >= SAMPLER_REGION_COUNT)
+    return -1;
   if (s->regions != 0 && !(s->regions & (1u << p->region))) return -1;
   sampler_rng g;
   sampler_seed(&g, seed, GEOM_STREAM_SAMPLE(index));

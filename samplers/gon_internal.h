@@ -1,7 +1,8 @@
 /*
 ** gon_internal.h: what the convex n-gon samplers of samplers/ share and
 ** nobody else needs: the small-n iteration of pentagon.c behind the
-** registry, the in-place rotation to the lexicographically smallest vertex,
+** registry, the in-place rotation to the lexicographically smallest vertex
+** (gonutil.c),
 ** and the regions' geometry (samplers/gon_region.c) that rejection and
 ** iteration (samplers/gon_hull.c) draw in.  Not installed.
 */
@@ -21,8 +22,9 @@ FLIPLAB_INTERNAL void sampler_convex_rng(sampler_rng *g, int n, geom_point *v,
 /* Add p to the strictly convex anticlockwise hull h[0..n-1], n <
 ** SAMPLER_HULL_MAX (exact); the new size. */
 FLIPLAB_INTERNAL int sampler_hull_add(geom_point *h, int n, geom_point p);
-/* v rotated in place to start at its lexicographically smallest vertex. */
-FLIPLAB_INTERNAL void sampler_lexfirst(geom_point *v, size_t n);
+/* v rotated in place to start at its lexicographically smallest vertex
+** (samplers/gonutil.c); that vertex's old index. */
+FLIPLAB_INTERNAL size_t sampler_lexfirst(geom_point *v, size_t n);
 
 /* A convex polygon of a few vertices: a region clipped to the domain. */
 #define SAMPLER_CLIP_MAX 24   /* a region has at most 9 vertices, its disc part 18 */

@@ -152,27 +152,6 @@ int sampler_hull_add(geom_point *h, int n, geom_point p) {
   return n <= 2 ? sampler_hull_small(h, n, p) : sampler_hull_insert(h, n, p);
 }
 
-static void sampler_reverse(geom_point *v, size_t lo, size_t hi) {
-  for (; lo + 1 < hi; lo++, hi--) {
-    geom_point t = v[lo];
-    v[lo] = v[hi - 1];
-    v[hi - 1] = t;
-  }
-}
-
-/* v rotated in place (three reversals, O(n)) to start at its
-** lexicographically smallest vertex, so the labelling v0..v{n-1} does not
-** depend on the order the hull was built in. */
-void sampler_lexfirst(geom_point *v, size_t n) {
-  size_t s = 0;
-  for (size_t k = 1; k < n; k++)
-    if (geom_lexless(v[k], v[s])) s = k;
-  if (s == 0) return;
-  sampler_reverse(v, 0, s);
-  sampler_reverse(v, s, n);
-  sampler_reverse(v, 0, n);
-}
-
 /* Did the hull change?  The new hull holds p exactly when p was outside
 ** (or extended a segment of collinear points); compared whole, it is O(n). */
 static int sampler_hull_changed(const geom_point *a, int na, const geom_point *b, int nb) {

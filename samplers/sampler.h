@@ -209,14 +209,19 @@ typedef int (*sampler_gon_fn)(sampler_rng *g, size_t n, const sampler_gon_params
                               geom_point *out, sampler_gon_info *info);
 
 /* The registry: name, function, cost, law (one line each, for help and
-** docs), whether the output carries a weight, and the regions it takes
-** (a bit mask of 1 << sampler_region; 0: it draws no points from one). */
+** docs), whether the output carries a weight, the regions it takes (a bit
+** mask of 1 << sampler_region; 0: it draws no points from one), the
+** largest n it takes (0: any; beyond, its cost explodes), how many laws
+** p->law selects among (1: only law 0), and whether it takes an inner
+** method p->inner (the dual: then the inner method's laws apply). */
 typedef struct sampler_gon {
   const char *name;
   sampler_gon_fn draw;
   const char *cost, *law;
   int weighted;
   unsigned regions;
+  size_t nmax;
+  int laws, inner;
 } sampler_gon;
 extern const sampler_gon sampler_gons[];
 extern const size_t sampler_gons_count;
@@ -235,11 +240,20 @@ extern const char sampler_region_names[];
 ** 0, or -1 with a one-line message (unknown sampler, region, n below 3 or
 ** beyond naive rejection's 10). */
 int sampler_gon_check(const char *name, int region, size_t n, char *err, size_t errlen);
+/* Does sampler `name` (known) take law `law` and inner method `inner`
+** (NULL: none given) for n-gons?  An inner method is a registry row that draws no
+** points from a region, carries no weight and takes no inner method
+** itself; sampler_gon_inner finds it (NULL: "vector"), else NULL.  0, or
+** -1 with a one-line message naming the law or inner method. */
+int sampler_gon_check_variant(const char *name, int law, const char *inner, size_t n,
+                              char *err, size_t errlen);
+const sampler_gon *sampler_gon_inner(const char *inner);
 
 /* Polygon `index` of stream `seed` from s (its own stream, GEOM_STREAM_SAMPLE
 ** (index): any thread count gives the same polygons): s->draw, then the
 ** exact check that out is strictly convex and anticlockwise (-1 if not).
-** 0, SAMPLER_ENOMEM, or -1 (n < 3, a region s does not take, or s failed). */
+** 0, SAMPLER_ENOMEM, or -1 (n < 3 or above s->nmax, a region s does not
+** take, or s failed). */
 int sampler_gon_draw(const sampler_gon *s, const sampler_gon_params *p, uint64_t seed,
                      uint64_t index, size_t n, geom_point *out, sampler_gon_info *info);
 
@@ -261,5 +275,65 @@ int sampler_gon_iteration(sampler_rng *g, size_t n, const sampler_gon_params *p,
                           geom_point *out, sampler_gon_info *info);
 int sampler_gon_valtr(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
                       sampler_gon_info *info);
+
+/* ---- random convex n-gons, chapter 6: bounce, triangulation, dual, prior
+** art (samplers/bounce.c, tridt.c, dual.c, priorart.c; docs/sampling.md).
+** Each is a sampler_gon_fn: out gets n vertices, strictly convex (checked
+** exactly), anticlockwise from the lexicographically smallest; 0,
+** SAMPLER_ENOMEM, or -1 with no polygon. */
+
+/* Check p[0..n) exactly (geom_polygon_check: strictly convex, anticlockwise,
+** within the coordinate contract) and rotate it in place to start at its
+** lexicographically smallest vertex, whose old index goes to *first (if not
+** NULL).  0, or -1 (p then unspecified). */
+int sampler_gon_canon(geom_point *p, size_t n, size_t *first);
+/* An integer uniform in [0, k), k >= 1 (exactly: no modulo bias). */
+uint64_t sampler_below(sampler_rng *g, uint64_t k);
+
+/* Triangulation (section 6.6): a uniformly random triangulation of the
+** n-gon realised so that it is the polygon's exact Delaunay triangulation.
+** tri (if not NULL) gets its n - 2 triangles, 3 indices into out each,
+** anticlockwise; the drawn labelling's vertex 0 is the output vertex at
+** the origin.  -1 when doubles do not realise the drawn triangulation (the
+** exact check failed: from n of about 1.5 x 10^6 on, docs/sampling.md) or
+** n < 3.  O(n).  sampler_gon_triangulation: the same as a sampler_gon_fn. */
+int sampler_gon_tridt(sampler_rng *g, size_t n, geom_point *out, uint32_t *tri,
+                      sampler_gon_info *info);
+int sampler_gon_triangulation(sampler_rng *g, size_t n, const sampler_gon_params *p,
+                              geom_point *out, sampler_gon_info *info);
+/* Bounce (section 6.5): the regular n-gon, velocities uniform in the unit
+** disc, 2n bounce events by p->law (0: the bounced velocity redrawn; 1:
+** reflected); info->draws counts the events.  -1 when rounding spoilt the
+** output 64 times running, for n < 3 or another law.  O(n log n). */
+int sampler_gon_bounce(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                       sampler_gon_info *info);
+/* Dual (section 6.7): the polar dual, about the mean of its vertices, of
+** the polygon of the method p->inner (sampler_gon_inner: "vector" when
+** NULL; also "circle", "triangulation", "bounce", "geobench", "angles",
+** "dual-rejection"), drawn
+** again when rounding spoils the dual (at most 10 times).  -1 for an
+** unknown inner method.  sampler_gon_polar: the polar dual of a strictly
+** convex anticlockwise p about the mean of its vertices, n vertices for n
+** edges, checked like every output (0 or -1). */
+int sampler_gon_dual(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                     sampler_gon_info *info);
+int sampler_gon_polar(const geom_point *p, size_t n, geom_point *out);
+/* Dual Rejection: n half-planes x . u < r (u a uniform direction, r uniform
+** on (0, 1]) until their intersection has n sides; -1 after
+** SAMPLER_DUALREJ_DRAWS half-planes.  info->draws counts them.  The
+** registry takes n up to SAMPLER_DUALREJ_NMAX (9 x 10^5 half-planes a
+** 10-gon, docs/sampling.md). */
+#define SAMPLER_DUALREJ_DRAWS 100000000ull
+#define SAMPLER_DUALREJ_NMAX 10
+int sampler_gon_dualrej(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                        sampler_gon_info *info);
+/* The prior art (section 6.1): XYZ GeoBench's n radius moves of a cyclic
+** polygon (about 1/e of the corners never move), and Roussille and
+** Dufour's random turning angles with closing edge lengths (whose later
+** turns shrink below what doubles hold: -1 from n of about 60 on). */
+int sampler_gon_geobench(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                         sampler_gon_info *info);
+int sampler_gon_angles(sampler_rng *g, size_t n, const sampler_gon_params *p, geom_point *out,
+                       sampler_gon_info *info);
 
 #endif

@@ -66,12 +66,10 @@ static double valtr_components(sampler_rng *g, size_t n, double *c, double *d) {
   return c[0];
 }
 
-/* Fisher-Yates with uniform indices (floor(u (i + 1)): an index below
-** 2^53, so the bias is below n 2^-53 per draw). */
+/* Fisher-Yates with exactly uniform indices (sampler_below). */
 static void valtr_shuffle(sampler_rng *g, double *d, size_t n) {
   for (size_t i = n - 1; i > 0; i--) {
-    size_t j = (size_t)(sampler_uniform(g) * (double)(i + 1));
-    if (j > i) j = i;
+    size_t j = (size_t)sampler_below(g, i + 1);
     double t = d[i];
     d[i] = d[j];
     d[j] = t;

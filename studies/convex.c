@@ -216,7 +216,7 @@ int study_convex_draw(const study_convex_run *run, uint64_t first, uint64_t coun
                       uint64_t *failed) {
   const sampler_gon *s = sampler_gon_find(run->sampler);
   if (s == NULL || run->n < 3) return -1;
-  sampler_gon_params p = {run->region, run->law, NULL};
+  sampler_gon_params p = {run->region, run->law, run->inner};
   int threads = geom_threads_clamp(run->threads, omp_get_max_threads());
   uint64_t bad = UINT64_MAX;
   int badrc = 0;

@@ -18,43 +18,42 @@ typedef struct study_cpdt_opts {
   const int *algorithms;
   size_t nalgorithms;
   uint64_t trials, seed;
-  int sampler;
+  int sampler, region, law;
 } study_cpdt_opts;
-
-typedef struct study_cpdt_sampler {
-  const char *name;
-  size_t max_n;     /* 0: no limit */
-} study_cpdt_sampler;
-
-static const study_cpdt_sampler study_cpdt_samplers[] = {
-  {"vector", 0}, {"circle", 0}, {"iteration", SAMPLER_HULL_MAX - 1},
-};
-#define STUDY_CPDT_NSAMPLERS (int)(sizeof study_cpdt_samplers / sizeof study_cpdt_samplers[0])
 
 static const char *const study_cpdt_counts[STUDY_CPDT_NCOUNTS] = {
   "scanned", "incircle", "orient", "flips", "cross", "cross_max", "depth", "memory",
   "index_length", "seconds",
 };
 
-int study_cpdt_sampler_count(void) { return STUDY_CPDT_NSAMPLERS; }
+/* The experiment's samplers are the registry's rows (samplers/gon.c), in
+** its order: one name, one home. */
+int study_cpdt_sampler_count(void) { return (int)sampler_gons_count; }
 
 const char *study_cpdt_sampler_name(int s) {
-  return s >= 0 && s < STUDY_CPDT_NSAMPLERS ? study_cpdt_samplers[s].name : NULL;
+  return s >= 0 && (size_t)s < sampler_gons_count ? sampler_gons[s].name : NULL;
 }
 
 int study_cpdt_sampler_find(const char *name) {
-  for (int s = 0; name != NULL && s < STUDY_CPDT_NSAMPLERS; s++)
-    if (strcmp(name, study_cpdt_samplers[s].name) == 0) return s;
-  return -1;
+  const sampler_gon *g = name != NULL ? sampler_gon_find(name) : NULL;
+  return g != NULL ? (int)(g - sampler_gons) : -1;
 }
 
-const char *study_cpdt_sampler_limit(int s, size_t n) {
-  if (s < 0 || s >= STUDY_CPDT_NSAMPLERS) return "unknown sampler";
-  if (n < 3) return "a polygon has at least 3 vertices";
-  if (n > CPDT_MAX_N) return "too many vertices (at most 2^29)";
-  if (study_cpdt_samplers[s].max_n != 0 && n > study_cpdt_samplers[s].max_n)
-    return "the iteration sampler draws at most 16 vertices";
-  return NULL;
+int study_cpdt_sampler_check(int s, int region, int law, size_t n, char *err, size_t errlen) {
+  const char *name = study_cpdt_sampler_name(s);
+  if (name == NULL) {
+    snprintf(err, errlen, "unknown sampler %d (valid: %s)", s, sampler_gon_names());
+    return -1;
+  }
+  if (sampler_gon_check(name, region, n, err, errlen) != 0) return -1;
+  if (n > CPDT_MAX_N)
+    snprintf(err, errlen, "n = %zu: too many vertices (at most 2^29)", n);
+  else if (sampler_gons[s].weighted)
+    snprintf(err, errlen, "sampler %s weights its polygons and the experiment's means are "
+             "unweighted: use valtr (the same law in the square) or naive", name);
+  else
+    return sampler_gon_check_variant(name, law, NULL, n, err, errlen);
+  return -1;
 }
 
 const char *study_cpdt_count_name(int k) {
@@ -67,19 +66,19 @@ int study_cpdt_count_find(const char *name) {
   return -1;
 }
 
-/* The one place the experiment draws a polygon (a registry of samplers
-** would replace the switch). */
-int study_cpdt_polygon(int s, uint64_t seed, size_t n, uint64_t trial, geom_point *out) {
-  if (study_cpdt_sampler_limit(s, n) != NULL) return -1;
-  sampler_rng g;
-  sampler_seed(&g, seed, GEOM_STREAM_CPDT_GON(n, trial));
-  int rc = 0;
-  switch (s) {
-  case 0: rc = sampler_vector(&g, n, out); break;
-  case 1: rc = sampler_circle(&g, n, out); break;
-  default: sampler_convex(seed, GEOM_STREAM_CPDT_GON(n, trial), (int)n, out); break;
-  }
-  return rc == SAMPLER_ENOMEM ? -2 : rc;
+/* The one place the experiment draws a polygon: the registry's draw of
+** polygon `trial` of stream `seed`, so the same polygon as `fliplab convex
+** --sampler NAME --n n --seed S` draws as its polygon `trial` (region -1:
+** the square for the samplers that take one). */
+int study_cpdt_polygon(int s, int region, int law, uint64_t seed, size_t n, uint64_t trial,
+                       geom_point *out) {
+  char err[160];
+  if (study_cpdt_sampler_check(s, region, law, n, err, sizeof err) != 0) return -1;
+  sampler_gon_params p = {region < 0 ? SAMPLER_REGION_SQUARE : (sampler_region)region, law,
+                          NULL};
+  sampler_gon_info info;
+  int rc = sampler_gon_draw(&sampler_gons[s], &p, seed, trial, n, out, &info);
+  return rc == SAMPLER_ENOMEM ? -2 : rc != 0 ? -1 : 0;
 }
 
 /* One run's quantities, in study_cpdt_count order. */
@@ -113,8 +112,9 @@ static int study_cpdt_check_opts(const study_cpdt_opts *o, char *err, size_t err
       return -1;
     }
   for (size_t s = 0; s < o->nsizes; s++) {
-    const char *why = study_cpdt_sampler_limit(o->sampler, (size_t)o->sizes[s]);
-    if (why != NULL) {
+    char why[200];
+    if (study_cpdt_sampler_check(o->sampler, o->region, o->law, (size_t)o->sizes[s], why,
+                                 sizeof why) != 0) {
       snprintf(err, errlen, "size %llu: %s", (unsigned long long)o->sizes[s], why);
       return -1;
     }
@@ -127,7 +127,7 @@ static int study_cpdt_check_opts(const study_cpdt_opts *o, char *err, size_t err
 static int study_cpdt_trial(const study_cpdt_opts *o, size_t n, uint64_t trial, geom_point *p,
                             uint32_t *tri, study_cpdt_cell *cells, double *sq, char *err,
                             size_t errlen) {
-  int rc = study_cpdt_polygon(o->sampler, o->seed, n, trial, p);
+  int rc = study_cpdt_polygon(o->sampler, o->region, o->law, o->seed, n, trial, p);
   size_t bad = 0;
   if (rc == 0) rc = cpdt_check(p, n, &bad);
   if (rc != 0) {
@@ -163,8 +163,9 @@ static int study_cpdt_trial(const study_cpdt_opts *o, size_t n, uint64_t trial, 
 /* Cost: for each size n, trials x (the sampler + each algorithm's cost). */
 int study_cpdt_run(const uint64_t *sizes, size_t nsizes, const int *algorithms,
                    size_t nalgorithms, uint64_t trials, uint64_t seed, int sampler,
-                   study_cpdt_cell *cells, char *err, size_t errlen) {
-  const study_cpdt_opts opts = {sizes, nsizes, algorithms, nalgorithms, trials, seed, sampler};
+                   int region, int law, study_cpdt_cell *cells, char *err, size_t errlen) {
+  const study_cpdt_opts opts = {sizes, nsizes, algorithms, nalgorithms, trials,
+                                seed, sampler, region, law};
   const study_cpdt_opts *o = &opts;
   if (study_cpdt_check_opts(o, err, errlen) != 0) return -1;
   int rc = 0;

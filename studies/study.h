@@ -254,6 +254,7 @@ typedef struct study_convex_run {
   int region, law, threads;
   size_t n;
   uint64_t seed;
+  const char *inner;   /* the dual's inner method, NULL = its default */
 } study_convex_run;
 int study_convex_draw(const study_convex_run *run, uint64_t first, uint64_t count,
                       geom_point *xy, double *log_weight, uint64_t *h, double *stats,

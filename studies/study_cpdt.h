@@ -16,16 +16,24 @@
 #include "cpdt.h"
 #include "geom.h"
 
-/* The polygon samplers the experiment draws from, by name: "vector" (6.4),
-** "circle" (sorted uniform angles on the unit circle), "iteration" (6.3,
-** n < 17 here).  study_cpdt_polygon is the one place a polygon is drawn:
-** 0; -1 when the sampler cannot make an n-gon (the message:
-** study_cpdt_sampler_limit); -2 out of memory. */
+/* The polygon samplers the experiment draws from are the rows of the
+** registry of random convex n-gons (sampler_gons, docs/sampling.md), by
+** index in its order; region is a sampler_region (-1: none given, the
+** square for the samplers that draw from one) and law a method's variant
+** (sampler_gon_params).  study_cpdt_sampler_check: 0, or -1 with a one-line
+** err (an unknown sampler, region or size, a weighted sampler: the means
+** are unweighted).  study_cpdt_polygon is the one place a polygon is
+** drawn: polygon `trial` of n vertices of stream `seed`, the registry's
+** polygon `trial` (sampler_gon_draw, the same as `fliplab convex --sampler
+** NAME --n n --seed seed` draws); 0; -1 when the sampler cannot make the
+** n-gon; -2 out of memory. */
 int study_cpdt_sampler_count(void);
 const char *study_cpdt_sampler_name(int sampler);
 int study_cpdt_sampler_find(const char *name);   /* -1 if unknown */
-const char *study_cpdt_sampler_limit(int sampler, size_t n);   /* NULL when n is fine */
-int study_cpdt_polygon(int sampler, uint64_t seed, size_t n, uint64_t trial, geom_point *out);
+int study_cpdt_sampler_check(int sampler, int region, int law, size_t n, char *err,
+                             size_t errlen);
+int study_cpdt_polygon(int sampler, int region, int law, uint64_t seed, size_t n, uint64_t trial,
+                       geom_point *out);
 
 /* The quantities of one run: cpdt_counts' fields, then its time. */
 typedef enum study_cpdt_count {
@@ -46,13 +54,13 @@ typedef struct study_cpdt_cell {
 } study_cpdt_cell;
 
 /* cells[s * nalgorithms + a] for sizes[s] and algorithms[a], over trials
-** polygons of each size from `sampler`.  Every polygon is checked
+** polygons of each size from `sampler` (with region and law).  Every polygon is checked
 ** (cpdt_check) and its triangulation by each algorithm compared with the
 ** first algorithm's.  0; -1 with a one-line message in err for bad
 ** arguments, a sampler's failure or a disagreement; -2 out of memory. */
 int study_cpdt_run(const uint64_t *sizes, size_t nsizes, const int *algorithms,
                    size_t nalgorithms, uint64_t trials, uint64_t seed, int sampler,
-                   study_cpdt_cell *cells, char *err, size_t errlen);
+                   int region, int law, study_cpdt_cell *cells, char *err, size_t errlen);
 
 /* For bindings: cells on the heap (zeroed; NULL when memory ran out), and
 ** cell i's mean and half-width of one quantity (0, or -1 for a bad count). */

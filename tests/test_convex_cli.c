@@ -3,8 +3,10 @@
 **  - bad input is one line on stderr and exit status 2: an unknown sampler
 **    or region, a region the sampler does not take, n and count out of
 **    range, a bad seed, naive rejection past n = 10, an n the sampler cannot
-**    realise in doubles; and no output file is left behind;
-**  - the CSV has n rows per polygon, each polygon strictly convex
+**    realise in doubles, a law or inner method the sampler does not take;
+**    and no output file is left behind;
+**  - every sampler of the registry (each law, and the dual of several inner
+**    methods): the CSV has n rows per polygon, each polygon strictly convex
 **    (re-checked exactly from the printed digits, which read back bit for
 **    bit), and is the same file for 1 and 2 threads;
 **  - --stats prints every statistic; --svg writes one SVG with a panel each;
@@ -45,7 +47,19 @@ static void test_errors(void **state) {
   says("convex --count 0", "--count 0 is out of range");
   says("convex --seed -1", "--seed");
   says("convex --sampler naive --n 11", "naive takes n up to 10");
-  says("convex --law 1", "--law applies to --sampler iteration only");
+  says("convex --law 1", "law 1: sampler rejection takes laws 0 .. 0");
+  says("convex --sampler triangulation --law 1", "law 1: sampler triangulation takes laws 0");
+  says("convex --sampler bounce --law 2", "--law 2 is out of range");
+  says("convex --sampler dual --inner geobench --law 1", "law 1: sampler geobench takes");
+  says("convex --sampler dual --inner moon", "unknown inner method 'moon' (valid: vector, "
+       "circle, triangulation, bounce, dual-rejection, geobench, angles)");
+  says("convex --sampler dual --inner dual", "unknown inner method 'dual'");
+  says("convex --sampler dual --inner rejection", "unknown inner method 'rejection'");
+  says("convex --sampler bounce --inner vector", "sampler bounce takes no inner method");
+  says("convex --sampler dual-rejection --n 11", "dual-rejection takes n up to 10");
+  says("convex --sampler dual --inner dual-rejection --n 11", "inner method dual-rejection "
+       "takes n up to 10");
+  says("convex --sampler angles --n 300", "could not realise a strictly convex 300-gon");
   testutil_tmppath(path, sizeof path, "convex_fail.csv");
   unlink(path);
   snprintf(args, sizeof args, "convex --sampler iteration --region square --n 3000 --count 1 "
@@ -85,8 +99,12 @@ static int check_csv(const char *text, size_t n) {
 static void test_csv_threads(void **state) {
   (void)state;
   static const char *const s[] = {"rejection --region disc", "iteration --region triangle",
-                                  "valtr", "naive --region square"};
-  for (size_t k = 0; k < 4; k++) {
+                                  "valtr", "naive --region square", "triangulation",
+                                  "bounce", "bounce --law 1", "dual",
+                                  "dual --inner bounce --law 1", "dual --inner triangulation",
+                                  "dual-rejection",
+                                  "geobench", "angles", "vector", "circle"};
+  for (size_t k = 0; k < sizeof s / sizeof s[0]; k++) {
     char args[256];
     snprintf(args, sizeof args, "convex --sampler %s --n 8 --count 40 --threads 1", s[k]);
     assert_int_equal(testutil_run(args, out, CAP, err, CAP), 0);

@@ -34,7 +34,7 @@ static void tcc_means(int sampler, uint64_t seed, size_t n, uint64_t trials, int
   assert_non_null(tri);
   m[0] = m[1] = m[2] = 0;
   for (uint64_t t = 0; t < trials; t++) {
-    assert_int_equal(study_cpdt_polygon(sampler, seed, n, t, p), 0);
+    assert_int_equal(study_cpdt_polygon(sampler, -1, 0, seed, n, t, p), 0);
     cpdt_counts c;
     assert_int_equal(cpdt_triangulate(p, n, alg, seed ^ GEOM_STREAM_CPDT_GON(n, t), tri, &c), 0);
     m[0] += (double)c.scanned, m[1] += (double)c.incircle, m[2] += (double)c.flips;
@@ -68,7 +68,7 @@ static void test_table_is_the_library(void **state) {
       assert_int_equal(sscanf(row + strlen(key), "%lf,%lf,%lf,%lf,%*f,%*f,%lf", &v[0], &v[1],
                               &v[2], &v[3], &v[4]), 5);
       double m[3];
-      tcc_means(1, 5, n, 4, algs[a], m);
+      tcc_means(study_cpdt_sampler_find("circle"), 5, n, 4, algs[a], m);
       assert_true(v[0] == m[0] && v[2] == m[1] && v[4] == m[2]);
     }
   free(t);
@@ -104,7 +104,12 @@ static void test_refusals(void **state) {
   testutil_tmppath(csv, sizeof csv, "cpdt_refused.csv");
   static const struct { const char *args, *says; } bad[] = {
     {"--sampler polygon", "unknown sampler 'polygon'"},
-    {"--sampler iteration --sizes 10,20", "--sizes: 20: the iteration sampler"},
+    {"--sampler naive --sizes 10,20", "--sizes: 20: sampler naive takes n up to 10"},
+    {"--sampler rejection", "sampler rejection weights its polygons"},
+    {"--sampler vector --region disc", "sampler vector draws no points from a region"},
+    {"--sampler valtr --region disc", "sampler valtr does not draw in the disc"},
+    {"--sampler iteration --region moon", "unknown region 'moon'"},
+    {"--sampler circle --law 1", "law 1: sampler circle takes laws 0 .. 0"},
     {"--sizes 31,2", "--sizes"},
     {"--sizes 31,,62", "--sizes"},
     {"--sizes 1e12", "--sizes"},

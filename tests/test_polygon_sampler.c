@@ -30,16 +30,6 @@
 
 typedef int (*tps_fn)(sampler_rng *g, size_t n, geom_point *out);
 
-static void tps_check_convex(const geom_point *p, size_t n) {
-  geom_point *q = malloc(n * sizeof *q);
-  memcpy(q, p, n * sizeof *q);
-  size_t bad = 0;
-  int rev = 1;
-  assert_int_equal(geom_polygon_check(q, n, &bad, &rev), GEOM_OK);
-  assert_false(rev);
-  free(q);
-}
-
 static void test_convex_anticlockwise(void **state) {
   (void)state;
   static const size_t sizes[] = {3, 4, 5, 7, 10, 100, 1000, 20000};
@@ -51,7 +41,7 @@ static void test_convex_anticlockwise(void **state) {
         sampler_rng g;
         sampler_seed(&g, seed, 3);
         assert_int_equal(fns[f](&g, sizes[s], p), 0);
-        tps_check_convex(p, sizes[s]);
+        testutil_check_convex(p, sizes[s]);
       }
   sampler_rng g;
   sampler_seed(&g, 1, 1);

@@ -25,7 +25,7 @@ from ._classify import classify
 from ._studies import compare_got, verdicts, wilson
 from ._averages import CH5_METHODS, CH5_QUANTITIES, ch5_averages, ch5_measure
 from ._cdf import Cdf, cdf
-from ._convex import CONVEX_SAMPLERS, REGIONS, ConvexPolygons, convex_polygons
+from ._convex import CONVEX_INNER, CONVEX_SAMPLERS, REGIONS, ConvexPolygons, convex_polygons
 from ._scipy import from_shapely, lot_polygon
 from ._cpdt import (CPDT_ALGORITHMS, CPDT_COUNTS, CPDT_SAMPLERS, convex_dt,
                     convex_dt_experiment)
@@ -41,4 +41,4 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
            "compare_got", "ch5_averages", "ch5_measure", "CH5_METHODS", "CH5_QUANTITIES",
            "CPDT_ALGORITHMS", "CPDT_COUNTS", "CPDT_SAMPLERS", "convex_dt", "convex_dt_experiment",
-           "CONVEX_SAMPLERS", "REGIONS", "ConvexPolygons", "convex_polygons"]
+           "CONVEX_INNER", "CONVEX_SAMPLERS", "REGIONS", "ConvexPolygons", "convex_polygons"]

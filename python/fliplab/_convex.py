@@ -17,6 +17,8 @@ from ._mirrors import StudyConvexRun
 lib = _lib.lib
 # The registry's names, regions and statistics, as the library lists them.
 CONVEX_SAMPLERS = tuple(lib.sampler_gon_names().decode().split(", "))
+# The inner methods the dual takes (sampler_gon_inner).
+CONVEX_INNER = tuple(s for s in CONVEX_SAMPLERS if lib.sampler_gon_inner(s.encode()))
 REGIONS = tuple(lib.sampler_region_name(k).decode()
                 for k in range(8) if lib.sampler_region_name(k) is not None)
 STATS = tuple(lib.study_convex_stat_name(k).decode()
@@ -87,20 +89,24 @@ def _region(region: Optional[str]) -> int:
 
 def convex_polygons(n: int, count: int, sampler: str = "rejection",
                     region: Optional[str] = None, seed: int = 1, first: int = 0,
-                    law: int = 0, threads: int = 0, stats: bool = False) -> ConvexPolygons:
+                    law: int = 0, inner: Optional[str] = None, threads: int = 0,
+                    stats: bool = False) -> ConvexPolygons:
     """Random convex n-gons: polygons first .. first + count - 1 of the
-    program's `fliplab convex --sampler S --region R --n N --seed SEED`.
+    program's `fliplab convex --sampler S --region R --n N --seed SEED
+    --law L --inner M`.
 
     Parameters
     ----------
     n : int
-        Vertices, 3 .. 2^40 (naive rejection: up to 10).
+        Vertices, 3 .. 2^40 (naive and dual-rejection: up to 10).
     count : int
         How many.
     sampler : str
         One of CONVEX_SAMPLERS: "rejection" (weighted), "naive" (n <= 10),
-        "iteration", "valtr" (square only), "vector", "circle" (these two
-        take no region); docs/sampling.md gives each one's law and cost.
+        "iteration", "valtr" (square only), and, taking no region,
+        "vector", "circle", "triangulation", "bounce", "dual",
+        "dual-rejection" (n <= 10), "geobench", "angles" (n up to about
+        50); docs/sampling.md gives each one's law and cost.
     region : str or None
         One of REGIONS: "square" ([0, 1]^2), "disc" (the unit disc), "triangle"; None: the
         square, or no region for the samplers that take none.
@@ -108,7 +114,12 @@ def convex_polygons(n: int, count: int, sampler: str = "rejection",
         The stream and the first polygon's index.
     law : int
         The sampler's variant (iteration: 1 = the exterior-region path also
-        for the disc below 17 vertices).
+        for the disc below 17 vertices; bounce, and dual of bounce: 0 = the
+        bounced velocity redrawn, 1 = reflected).
+    inner : str or None
+        The dual's inner method, one of CONVEX_INNER: "vector" (None),
+        "circle", "triangulation", "bounce", "dual-rejection", "geobench",
+        "angles"; only with sampler="dual".
     threads : int
         0 (all cores) or 1 .. 1024; the output does not depend on it.
     stats : bool
@@ -121,15 +132,21 @@ def convex_polygons(n: int, count: int, sampler: str = "rejection",
     Raises
     ------
     ValueError
-        An unknown sampler or region, one the sampler does not take, a
-        number out of range, or an n the sampler cannot realise in doubles.
+        An unknown sampler, region, law or inner method, one the sampler
+        does not take, a number out of range, or an n the sampler cannot
+        realise in doubles.
     """
     name = _cstr(sampler, "sampler")
     n, count = _count(n, "n", 3), _count(count, "count", 0)
     r, err = _region(region), _lib.errbuf()
     if lib.sampler_gon_check(name, r, n, err, _lib.ERRLEN) != 0:
         raise ValueError("sampler: " + err.value.decode())
-    run = StudyConvexRun(name, max(r, 0), int(law), _threads(threads), n, _u64(seed, "seed"))
+    law = min(_u64(law, "law"), 2 ** 31 - 1)
+    cin = None if inner is None else _cstr(inner, "inner")
+    if lib.sampler_gon_check_variant(name, law, cin, n, err, _lib.ERRLEN) != 0:
+        raise ValueError(("inner: " if "inner" in err.value.decode() else "law: ")
+                         + err.value.decode())
+    run = StudyConvexRun(name, max(r, 0), law, _threads(threads), n, _u64(seed, "seed"), cin)
     xy = np.empty((count, n, 2))
     lw, h = np.zeros(count), np.zeros(count, dtype=np.uint64)
     st = np.empty((count, len(STATS))) if stats else None

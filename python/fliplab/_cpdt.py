@@ -6,13 +6,14 @@ name (cpdt_counts_get_u64, study_cpdt_cell_get): no layout restated."""
 from __future__ import annotations
 
 import ctypes
-from typing import Any, Dict, Sequence
+from typing import Any, Dict, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _lib
 from ._args import choice, count, is_int, u64
+from ._convex import _region
 from ._arrays import as_coords, check_contract, points_ptr, ptr
 
 lib = _lib.lib
@@ -95,7 +96,8 @@ def convex_dt(polygon: npt.ArrayLike, algorithm: str = "divide",
 def convex_dt_experiment(sizes: Sequence[int] = (31, 62, 124, 248, 496, 992),
                          trials: int = 70, sampler: str = "vector",
                          algorithms: Sequence[str] | None = None,
-                         seed: int = 1) -> Dict[str, Any]:
+                         seed: int = 1, region: Optional[str] = None,
+                         law: int = 0) -> Dict[str, Any]:
     """Chapter 5's experiment, as `fliplab cpdt` runs it: for each size,
     `trials` random convex polygons from `sampler` triangulated by each
     algorithm, every algorithm's triangles compared.
@@ -107,11 +109,23 @@ def convex_dt_experiment(sizes: Sequence[int] = (31, 62, 124, 248, 496, 992),
     trials : int
         Polygons per size (the thesis: 70).
     sampler : str
-        "vector", "circle" or "iteration" (at most 16 vertices).
+        A name of CPDT_SAMPLERS, the registry of random convex n-gons of
+        `convex_polygons` ("rejection", "naive", "iteration", "valtr",
+        "vector", "circle", "triangulation", "bounce", "dual",
+        "dual-rejection", "geobench", "angles"; docs/sampling.md; the dual's
+        inner method is "vector"): polygon t of size n is
+        `convex_polygons(n, sampler=..., seed=seed)`'s polygon t.  "rejection"
+        is refused (its polygons carry weights and the means are unweighted:
+        "valtr" draws its law in the square unweighted).
     algorithms : sequence of str, optional
         Names of CPDT_ALGORITHMS (default: all of them).
     seed : int
         Polygon (n, t) of a seed is the program's for the same seed.
+    region : str or None
+        One of REGIONS ("square", "disc", "triangle") for the samplers that
+        draw points from one; None: the square, or none for the others.
+    law : int
+        The sampler's variant, as `convex_polygons`' law.
 
     Returns
     -------
@@ -137,10 +151,13 @@ def convex_dt_experiment(sizes: Sequence[int] = (31, 62, 124, 248, 496, 992),
         raise ValueError("algorithms: expected distinct names, got %r" % (algs,))
     s = choice(sampler, CPDT_SAMPLERS, "sampler")
     trials, seed = count(trials, "trials", 1), u64(seed, "seed")
+    r, law = _region(region), count(law, "law", 0)
+    if law > 2 ** 31 - 1:
+        raise ValueError("law: at most 2^31 - 1, got %d" % law)
+    why = ctypes.create_string_buffer(256)
     for n in sizes:
-        why = lib.study_cpdt_sampler_limit(s, max(int(n), 0))
-        if why is not None:
-            raise ValueError("sizes: %d: %s" % (n, why.decode()))
+        if lib.study_cpdt_sampler_check(s, r, law, max(int(n), 0), why, 256) != 0:
+            raise ValueError("sizes: %d: %s" % (n, why.value.decode()))
     sz = np.array([int(n) for n in sizes], dtype=np.uint64)
     ia = np.array(ids, dtype=np.intc)
     nc = len(sz) * len(ia)
@@ -150,7 +167,7 @@ def convex_dt_experiment(sizes: Sequence[int] = (31, 62, 124, 248, 496, 992),
     try:
         err = ctypes.create_string_buffer(256)
         rc = lib.study_cpdt_run(ptr(sz, ctypes.c_uint64), len(sz), ptr(ia, ctypes.c_int),
-                                len(ia), trials, seed, s, cells, err, 256)
+                                len(ia), trials, seed, s, r, law, cells, err, 256)
         if rc != 0:
             raise (MemoryError if rc == -2 else ValueError)("convex_dt_experiment: " +
                                                              err.value.decode())

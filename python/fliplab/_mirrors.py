@@ -134,7 +134,8 @@ class FlipgraphRun(ctypes.Structure):
 class StudyConvexRun(ctypes.Structure):
     """study_convex_run (studies/study.h)."""
     _fields_ = [("sampler", ctypes.c_char_p), ("region", ctypes.c_int), ("law", ctypes.c_int),
-                ("threads", ctypes.c_int), ("n", ctypes.c_size_t), ("seed", ctypes.c_uint64)]
+                ("threads", ctypes.c_int), ("n", ctypes.c_size_t), ("seed", ctypes.c_uint64),
+                ("inner", ctypes.c_char_p)]
 
 
 SITEFLIP_COUNTS = ("samples", "tie", "no_sink", "one_sink", "multi_sink", "sink_dt", "sinks",

@@ -149,6 +149,6 @@ int main(void) {
   layout_got();
   Z(study_convex_run); F(study_convex_run, sampler); F(study_convex_run, region);
   F(study_convex_run, law); F(study_convex_run, threads); F(study_convex_run, n);
-  F(study_convex_run, seed);
+  F(study_convex_run, seed); F(study_convex_run, inner);
   return fflush(stdout) != 0 || ferror(stdout) ? 1 : 0;
 }

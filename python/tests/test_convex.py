@@ -48,9 +48,20 @@ def test_threads_and_summary(cli):
 
 
 def test_convex_and_weights():
-    for sampler, region in (("rejection", "square"), ("valtr", "square"), ("naive", "disc"),
-                            ("iteration", "disc"), ("vector", None), ("circle", None)):
-        c = fliplab.convex_polygons(9, 30, sampler=sampler, region=region)
+    """Every sampler of the registry, each law, the dual of every inner method."""
+    regions = {"rejection": "square", "valtr": "square", "naive": "disc", "iteration": "disc"}
+    cases = [(s, regions.get(s), 0, None) for s in fliplab.CONVEX_SAMPLERS]
+    cases += [("bounce", None, 1, None), ("dual", None, 1, "bounce")]
+    cases += [("dual", None, 0, m) for m in fliplab.CONVEX_INNER]
+    assert set(fliplab.CONVEX_SAMPLERS) >= {"triangulation", "bounce", "dual", "dual-rejection",
+                                            "geobench", "angles"}
+    assert "dual" not in fliplab.CONVEX_INNER and "rejection" not in fliplab.CONVEX_INNER
+    for sampler, region, law, inner in cases:
+        n = 7 if "dual-rejection" in (sampler, inner) else 9
+        c = fliplab.convex_polygons(n, 30, sampler=sampler, region=region, law=law, inner=inner)
+        d = fliplab.convex_polygons(n, 30, sampler=sampler, region=region, law=law, inner=inner,
+                                    threads=1)
+        assert np.array_equal(c.points, d.points)
         e1 = np.roll(c.points, -1, axis=1) - c.points
         e2 = np.roll(e1, -1, axis=1)
         assert (e1[..., 0] * e2[..., 1] - e1[..., 1] * e2[..., 0] > 0).all()
@@ -81,6 +92,16 @@ def test_errors():
         fliplab.convex_polygons(5, 1, sampler="valtr", region="disc")
     with pytest.raises(ValueError, match="n up to 10"):
         fliplab.convex_polygons(11, 1, sampler="naive")
+    with pytest.raises(ValueError, match="n up to 10"):
+        fliplab.convex_polygons(11, 1, sampler="dual-rejection")
+    with pytest.raises(ValueError, match="^law: law 1: sampler valtr takes laws 0 .. 0"):
+        fliplab.convex_polygons(5, 1, sampler="valtr", law=1)
+    with pytest.raises(ValueError, match="^law: law 2: sampler bounce"):
+        fliplab.convex_polygons(5, 1, sampler="bounce", law=2)
+    with pytest.raises(ValueError, match="^inner: unknown inner method 'moon'"):
+        fliplab.convex_polygons(5, 1, sampler="dual", inner="moon")
+    with pytest.raises(ValueError, match="^inner: sampler bounce takes no inner method"):
+        fliplab.convex_polygons(5, 1, sampler="bounce", inner="vector")
     with pytest.raises(ValueError, match="n"):
         fliplab.convex_polygons(2, 1)
     with pytest.raises(ValueError, match="smaller n"):

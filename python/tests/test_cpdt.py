@@ -86,12 +86,29 @@ def test_refusals(poly, says):
         fliplab.convex_dt(np.array(poly, dtype=float))
 
 
+def test_experiment_draws_the_registry_polygons():
+    """Polygon t of size n in the experiment is convex_polygons' polygon t:
+    the circumcircle count of each recomputed by convex_dt, averaged."""
+    for name, region in (("valtr", None), ("iteration", "disc"), ("circle", None)):
+        r = fliplab.convex_dt_experiment(sizes=(12,), trials=5, sampler=name, region=region,
+                                         algorithms=("circum",), seed=9)
+        polys = fliplab.convex_polygons(12, 5, sampler=name, region=region, seed=9)
+        mean = np.mean([fliplab.convex_dt(p, "circum")[1]["scanned"] for p in polys.points])
+        assert r["rows"][0]["scanned"] == mean
+
+
 def test_keyword_refusals():
     sq = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
     with pytest.raises(ValueError, match="algorithm"):
         fliplab.convex_dt(sq, "walk")
     with pytest.raises(ValueError, match="sizes: 20"):
-        fliplab.convex_dt_experiment(sizes=(10, 20), sampler="iteration", trials=1)
+        fliplab.convex_dt_experiment(sizes=(10, 20), sampler="naive", trials=1)
+    with pytest.raises(ValueError, match="weights"):
+        fliplab.convex_dt_experiment(sizes=(10,), sampler="rejection", trials=1)
+    with pytest.raises(ValueError, match="region"):
+        fliplab.convex_dt_experiment(sizes=(10,), sampler="vector", region="disc", trials=1)
+    with pytest.raises(ValueError, match="region"):
+        fliplab.convex_dt_experiment(sizes=(10,), sampler="valtr", region="moon", trials=1)
     with pytest.raises(ValueError, match="sampler"):
         fliplab.convex_dt_experiment(sampler="disc", trials=1)
     with pytest.raises(ValueError, match="algorithms"):

@@ -190,3 +190,14 @@ int testutil_extreme_measures(int ids[3]) {
   }
   return 0;
 }
+
+void testutil_check_convex(const geom_point *p, size_t n) {
+  geom_point *q = malloc(n * sizeof *q);
+  assert_non_null(q);
+  memcpy(q, p, n * sizeof *q);
+  size_t bad = 0;
+  int rev = 1;
+  assert_int_equal(geom_polygon_check(q, n, &bad, &rev), GEOM_OK);
+  assert_false(rev);
+  free(q);
+}

@@ -33,6 +33,10 @@ void testutil_near(double got, double want, double rel, double abs,
 #define TESTUTIL_NEAR(got, want, rel, abs) \
   testutil_near((got), (want), (rel), (abs), #got, __FILE__, __LINE__)
 
+/* Fails the running cmocka test unless p[0..n) is strictly convex and
+** anticlockwise (geom_polygon_check, exact; p itself is not changed). */
+void testutil_check_convex(const geom_point *p, size_t n);
+
 /* Whether s is exactly one line: its only '\n' is its last character
 ** (the "one clear line on stderr" of every refusal). */
 int testutil_one_line(const char *s);
