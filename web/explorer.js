@@ -16,6 +16,15 @@ const S = {
 };
 const $ = (id) => document.getElementById(id);
 
+/* Request-to-drawn times in ms, read by bench/bench_explorer.py: {what, dom, frame},
+** dom when the SVG is rebuilt, frame at the next animation frame (the one painting it). */
+window.__fliplabTimings = [];
+function timed(what, t0) {
+  const dom = performance.now() - t0;
+  requestAnimationFrame(() => window.__fliplabTimings.push(
+    {what: what, dom: dom, frame: performance.now() - t0}));
+}
+
 function el(tag, attrs, parent) {
   const e = document.createElementNS(SVGNS, tag);
   for (const k in attrs) e.setAttribute(k, attrs[k]);
@@ -249,6 +258,7 @@ async function refreshOnce() {
     say(sites.length ? "place at least 3 sites" : "click to place sites (3 to 12)", true);
     return;
   }
+  const t0 = performance.now();
   const old = S.graph && !S.graph.too_large ? currentTriangles().map((t) => t.v + "") : null;
   try {
     const g = await api("/api/graph", ruleBody({sites: sites}));
@@ -265,6 +275,7 @@ async function refreshOnce() {
     say(e.message, false);
   }
   redraw();
+  timed("graph", t0);
 }
 
 /* After an edit, stay on the triangulation with the same triangles if there is one. */
@@ -389,6 +400,7 @@ function drawTriangulation(svg, pts, tris, badness) {
 
 async function lot(body) {
   say("computing the LOT...", true);
+  const t0 = performance.now();
   try {
     const r = await api("/api/lot", ruleBody(body));
     S.lastLot = body;
@@ -401,6 +413,7 @@ async function lot(body) {
       c.triangles_common + " of " + c.triangles_b + " triangles shared (" +
       (100 * c.triangles_common / Math.max(1, c.triangles_b)).toFixed(2) + "% of triangles)";
     say("", true);
+    timed("lot", t0);
   } catch (e) { say(e.message); }
 }
 

@@ -12,7 +12,7 @@ node of the flip graph, drags a site onto another and types a bad formula
 and a bad shape (a message, the page still works), exports SVG, CSV and the
 command line (the command runs and gives the page's sinks), runs the LOT
 panel (the figures are lot()'s), and times site drags (frames per second
-of the redraw, printed).  Screenshots of the main views go to
+of the redraw, printed and kept in drag-fps.txt).  Screenshots of the main views go to
 FLIPLAB_ARTEFACTS (default: the build's explorer-artefacts/).
 """
 import os
@@ -246,9 +246,12 @@ def drag_fps(pg):
     rt = pg.d.execute_async_script("""const done = arguments[0], t = performance.now();
         (async () => { for (let k = 0; k < 10; k++) await refreshOnce();
                        done((performance.now() - t) / 10); })();""")
-    print("explorer_browser: drag of %d moves in %.2f s; one redraw of %d sites %.2f ms "
-          "(%.0f frames/s); one round trip to the server (graph and redraw) %.1f ms"
-          % (moves, dt, len(pg.sites()), ms, 1000 / max(ms, 1e-3), rt))
+    line = ("explorer_browser: drag of %d moves in %.2f s; one redraw of %d sites %.2f ms "
+            "(%.0f frames/s); one round trip to the server (graph and redraw) %.1f ms"
+            % (moves, dt, len(pg.sites()), ms, 1000 / max(ms, 1e-3), rt))
+    print(line)
+    with open(os.path.join(OUT, "drag-fps.txt"), "w") as f:   # beside the screenshots
+        f.write(line + "\n")
 
 
 def main():

@@ -1,0 +1,140 @@
+#!/usr/bin/python3
+"""bench_explorer.py: the explorer's speed in headless chromium, with the
+page's own clock (performance.now() around request + redraw, recorded by
+web/explorer.js in window.__fliplabTimings; docs/explorer.md).  Run by hand:
+
+    FLIPLAB_LIBRARY=b/libfliplab.so FLIPLAB_BIN=b/fliplab PYTHONPATH=python \\
+        /usr/bin/python3 bench/bench_explorer.py [--runs 5] [--moves 60]
+
+Prints, for the rule --rule (default ES:hexagon):
+  1. a drag of one site among 12 (convex 12-gon and 12 random sites): per move
+     the time from the mousemove to the next animation frame after the redraw
+     (re-triangulation on the server included), median and 95th percentile
+     over --moves moves, and the frames per second the median implies;
+  2. the flip graph of 10 sites (convex 10-gon, 1430 triangulations, and 10
+     random sites) from request to drawn, median of --runs;
+  3. the LOT of 10^5 uniform points from the click to drawn, median of --runs.
+The browser and the server are the browser test's (python/tests/browser_explorer.py).
+"""
+import argparse
+import math
+import os
+import statistics
+import sys
+import tempfile
+import threading
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "python", "tests"))
+import browser_explorer as bx   # noqa: E402  (exits 77 without chromium or selenium)
+from fliplab import explorer    # noqa: E402
+
+# One move at a time: dispatch the mousemove the page listens to, wait until
+# the page settles (no request pending) and its timing is recorded.
+DRAG_JS = """const [i, moves, done] = arguments;
+const c = document.querySelectorAll('#sites .site')[i], r = $('sites').getBoundingClientRect();
+const x = r.left + Number(c.getAttribute('cx')), y = r.top + Number(c.getAttribute('cy'));
+const idle = () => new Promise((ok) => { const f = () =>
+  (!S.pending && __fliplabTimings.length >= n) ? ok() : setTimeout(f, 1); f(); });
+let n = 0;
+__fliplabTimings.length = 0;
+c.dispatchEvent(new MouseEvent('mousedown', {bubbles: true, clientX: x, clientY: y}));
+(async () => {
+  for (let k = 0; k < moves; k++) {
+    const dx = 8 * Math.sin(k / 5), dy = 8 * Math.cos(k / 7) - 8;
+    window.dispatchEvent(new MouseEvent('mousemove', {clientX: x + dx, clientY: y + dy}));
+    n++;
+    await idle();
+  }
+  window.dispatchEvent(new MouseEvent('mouseup', {}));
+  done(__fliplabTimings.map((t) => t.frame));
+})();"""
+
+
+def convex(n):
+    return [[round(math.cos(2 * math.pi * k / n), 6), round(math.sin(2 * math.pi * k / n), 6)]
+            for k in range(n)]
+
+
+def random_sites(n, seed):
+    return np.round(np.random.default_rng(seed).random((n, 2)), 6).tolist()
+
+
+def show(pg, sites, rule):
+    """The sites under the rule, drawn; the time of their request to drawn (ms)."""
+    pg.d.execute_script("$('rule').value = arguments[1]; __fliplabTimings.length = 0;"
+                        "setSites(arguments[0], true);", sites, rule)
+    pg.settle()
+    pg.until(lambda: pg.d.execute_script("return __fliplabTimings.length > 0;"), "drawn", 60)
+    return pg.d.execute_script("return __fliplabTimings[__fliplabTimings.length - 1].frame;")
+
+
+def census(pg):
+    return pg.d.execute_script("""const g = S.graph;
+        return g ? (g.too_large ? g.triangulations + ' (too many to draw: the LOT)'
+                                : String(g.census.triangulations)) : S.pending + '?';""")
+
+
+def drag(pg, sites, rule, moves):
+    show(pg, sites, rule)
+    n = census(pg)
+    pg.d.set_script_timeout(600)
+    t = sorted(pg.d.execute_async_script(DRAG_JS, len(sites) // 2, moves))
+    med, p95 = statistics.median(t), t[min(len(t) - 1, math.ceil(0.95 * len(t)) - 1)]
+    return n, len(t), med, p95
+
+
+def lot_click(pg, n):
+    pg.d.execute_script("$('lot-n').value = arguments[0]; __fliplabTimings.length = 0;"
+                        "$('lot-go').click();", n)
+    pg.until(lambda: pg.d.execute_script(
+        "return __fliplabTimings.some((t) => t.what === 'lot');"), "the LOT", 120)
+    return pg.d.execute_script("return __fliplabTimings.find((t) => t.what === 'lot').frame;")
+
+
+def row(what, count, n, ms, target):
+    print("%-32s %-34s %4d %10.1f   %s" % (what, count, n, ms, target))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--runs", type=int, default=5)
+    ap.add_argument("--moves", type=int, default=60)
+    ap.add_argument("--rule", default="ES:hexagon")
+    a = ap.parse_args()
+    srv = explorer.Server(0, time_limit=60)
+    threading.Thread(target=srv.serve_forever, daemon=True).start()
+    d = bx.browser(tempfile.mkdtemp(prefix="fliplab-downloads-"))
+    try:
+        d.get("http://127.0.0.1:%d/" % srv.server_address[1])
+        pg = bx.Page(d)
+        pg.until(lambda: d.execute_script("return S.names !== null;"), "the names")
+        print("# bench_explorer: rule %s, chromium headless; load %s"
+              % (a.rule, os.getloadavg()[0]))
+        print("%-32s %-34s %4s %10s   %s" % ("what", "triangulations", "n", "ms", "target"))
+        for name, s in (("drag, convex 12-gon", convex(12)),
+                        ("drag, 12 random sites", random_sites(12, 1))):
+            count, n, med, p95 = drag(pg, s, a.rule, a.moves)
+            ok = "met" if p95 < 16 else "median met" if med < 16 else "not met"
+            row(name + " (median)", count, n, med, "16 ms: %s; %.0f frames/s" % (ok, 1000 / med))
+            row(name + " (95th pct)", count, n, p95, "")
+        for name, s in (("flip graph, convex 10-gon", convex(10)),
+                        ("flip graph, 10 random sites", random_sites(10, 1))):
+            t = [show(pg, s, a.rule) for _ in range(a.runs)]
+            med = statistics.median(t)
+            row(name, census(pg), a.runs, med, "1 s: %s" % ("met" if med < 1000 else "not met"))
+        t = [lot_click(pg, 100000) for _ in range(a.runs)]
+        med = statistics.median(t)
+        row("LOT of 10^5 uniform points", "-", a.runs, med,
+            "1 s: %s" % ("met" if med < 1000 else "not met"))
+        print("# load %s at the end" % os.getloadavg()[0])
+    finally:
+        d.quit()
+        srv.shutdown()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
