@@ -25,6 +25,7 @@
 #include <string.h>
 #include "benchutil.h"
 #include "sampler.h"
+#include "study_cpdt.h"
 
 #define BENCH_SIZES 8
 #define BENCH_RUNS 16
@@ -58,22 +59,8 @@ static double bench_convex_size(const bench_convex_case *c, size_t n, int runs, 
   return bench_median(t, r);
 }
 
-/* The least-squares slope of log y against log x. */
-static double bench_slope(const double *x, const double *y, int k) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (int i = 0; i < k; i++) {
-    double a = log(x[i]), b = log(y[i]);
-    sx += a;
-    sy += b;
-    sxx += a * a;
-    sxy += a * b;
-  }
-  double d = k * sxx - sx * sx;
-  return k >= 2 && d > 0 ? (k * sxy - sx * sy) / d : NAN;
-}
-
 static void bench_convex_row(const bench_convex_case *c, size_t maxn, int runs, geom_point *v) {
-  double xs[BENCH_SIZES], ys[BENCH_SIZES];
+  study_slope fit = {0};
   int k = 0, ok = 1, slow = 0;
   size_t n = 1000;
   char name[64];
@@ -87,11 +74,11 @@ static void bench_convex_row(const bench_convex_case *c, size_t maxn, int runs, 
     if (slow) printf(" slow |");
     else if (ok == runs) printf(" %.4f |", t);
     else printf(" %.4f (%d/%d) |", t, ok, runs);
-    if (ok == runs && !slow && t > 0) xs[k] = (double)n, ys[k++] = t;
+    if (ok == runs && !slow && t > 0) study_slope_add(&fit, (double)n, t), k++;
     fflush(stdout);
   }
   for (; n <= maxn; n *= 10) printf(" |");
-  double e = bench_slope(xs, ys, k);
+  double e = study_slope_get(&fit);
   if (isnan(e)) printf(" - |");
   else printf(" %.2f |", e);
   printf(" %s |\n", c->s->cost);

@@ -192,18 +192,24 @@ int study_cpdt_run(const uint64_t *sizes, size_t nsizes, const int *algorithms,
   return rc;
 }
 
+void study_slope_add(study_slope *s, double x, double y) {
+  double a = log(x), b = log(y);
+  s->sx += a, s->sy += b, s->sxx += a * a, s->sxy += a * b;
+  s->k++;
+}
+
+double study_slope_get(const study_slope *s) {
+  double k = (double)s->k, d = k * s->sxx - s->sx * s->sx;
+  return s->k >= 2 && d > 0 ? (k * s->sxy - s->sx * s->sy) / d : NAN;
+}
+
 double study_cpdt_slope(const study_cpdt_cell *cells, size_t ncells, int algorithm, int count) {
   if (count < 0 || count >= STUDY_CPDT_NCOUNTS) return NAN;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  size_t m = 0;
-  for (size_t i = 0; i < ncells; i++) {
-    if (cells[i].algorithm != algorithm || !(cells[i].mean[count] > 0)) continue;
-    double x = log((double)cells[i].n), y = log(cells[i].mean[count]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-    m++;
-  }
-  double d = (double)m * sxx - sx * sx;
-  return m >= 2 && d > 0 ? ((double)m * sxy - sx * sy) / d : NAN;
+  study_slope s = {0};
+  for (size_t i = 0; i < ncells; i++)
+    if (cells[i].algorithm == algorithm && cells[i].mean[count] > 0)
+      study_slope_add(&s, (double)cells[i].n, cells[i].mean[count]);
+  return study_slope_get(&s);
 }
 
 study_cpdt_cell *study_cpdt_cells_new(size_t ncells) {

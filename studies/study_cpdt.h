@@ -72,5 +72,11 @@ int study_cpdt_cell_get(const study_cpdt_cell *cells, size_t i, int count, doubl
 /* The least-squares slope of log(mean[count]) against log(n) over the cells
 ** of `algorithm` whose mean is positive; NaN with fewer than two. */
 double study_cpdt_slope(const study_cpdt_cell *cells, size_t ncells, int algorithm, int count);
+/* A least-squares slope of log y against log x, point by point (also the
+** benchmarks'): start from a zeroed study_slope, add positive (x, y), read
+** the slope (NAN with fewer than two points or all x equal). */
+typedef struct study_slope { double sx, sy, sxx, sxy; size_t k; } study_slope;
+void study_slope_add(study_slope *s, double x, double y);
+double study_slope_get(const study_slope *s);
 
 #endif
