@@ -181,6 +181,12 @@ size_t lot_get_hull(const lot *L, uint32_t *out);
 int lot_check_memory(size_t n, char *err, size_t errlen);
 
 void lot_free(lot *L);
+/* The exact duplicates of p[0..n-1], as lot_build merges them: first[i] is
+** the smallest index j with p[j] == p[i] (so first[i] == i for the first
+** occurrence).  Returns the number of distinct points, or -1 when out of
+** memory or n > LOT_MAX_POINTS.  O(n log n). */
+long lot_distinct(const geom_point *p, size_t n, uint32_t *first);
+
 
 /* ---- independent checks (lot/check.c), from a triangle list alone ---- */
 

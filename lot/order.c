@@ -20,6 +20,7 @@
 */
 #include <stdlib.h>
 #include <string.h>
+#include "lot.h"
 #include "order.h"
 #include "sampler.h"
 
@@ -165,4 +166,22 @@ int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord) {
   if (repeats && rc == 0) rc = lot_lex_by(p, n, 0, key, ord);
   free(key);
   return rc;
+}
+
+/* The duplicates of p in one lexicographic sort: O(n log n) (radix passes). */
+long lot_distinct(const geom_point *p, size_t n, uint32_t *first) {
+  if (n > LOT_MAX_POINTS) return -1;
+  uint32_t *ord = malloc((n ? n : 1) * sizeof *ord);
+  if (ord == NULL || lot_order_lexicographic(p, (uint32_t)n, ord) != 0) {
+    free(ord);
+    return -1;
+  }
+  long distinct = 0;
+  for (size_t k = 0, j; k < n; k = j) {
+    distinct++;
+    for (j = k; j < n && p[ord[j]].x == p[ord[k]].x && p[ord[j]].y == p[ord[k]].y; j++)
+      first[ord[j]] = ord[k];   /* the sort is stable: ord[k] is the smallest index */
+  }
+  free(ord);
+  return distinct;
 }

@@ -1,0 +1,53 @@
+/*
+** lot_rows.c: lot/'s incremental, flip and sweep algorithms as rows of the
+** registry, so that every new algorithm is compared with them on equal
+** terms.  Their counts are lot's statistics until lot/ counts through
+** ops.h itself.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include "paradigm_internal.h"
+#include "lot.h"
+
+/* Build with lot, then copy its triangles and statistics. */
+static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradigm_output *out,
+                            char *err, size_t errlen) {
+  lot_options o;
+  lot_options_init(&o, in->r);
+  o.algorithm = alg;
+  o.seed = in->seed;
+  if (in->problem == PARADIGM_CONSTRAINED) {
+    o.segments = in->segments;
+    o.nsegments = in->nsegments;
+    o.keep_hull = 1;
+  }
+  lot *L = NULL;
+  if (lot_build(&L, in->p, in->n, &o, err, errlen) != 0) return -1;
+  const lot_stats *st = lot_get_stats(L);
+  out->ntri = st->triangles;
+  out->tri = malloc((out->ntri ? out->ntri : 1) * 3 * sizeof *out->tri);
+  if (out->tri == NULL) {
+    lot_free(L);
+    snprintf(err, errlen, "out of memory for %zu triangles", st->triangles);
+    return -1;
+  }
+  lot_get_triangles(L, out->tri);
+  ops_add(&out->ops, OPS_FLIPS, st->flips);
+  lot_free(L);
+  return 0;
+}
+
+int paradigm_lot_incremental(const paradigm_input *in, paradigm_output *out, char *err,
+                             size_t errlen) {
+  return paradigm_lot_run(in, LOT_INCREMENTAL, out, err, errlen);
+}
+
+int paradigm_lot_flip(const paradigm_input *in, paradigm_output *out, char *err,
+                      size_t errlen) {
+  return paradigm_lot_run(in, LOT_FLIP, out, err, errlen);
+}
+
+int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err,
+                       size_t errlen) {
+  return paradigm_lot_run(in, LOT_SWEEP, out, err, errlen);
+}

@@ -1,0 +1,208 @@
+/*
+** paradigm.c: the registry of chapter 2's algorithms and the one runner
+** that validates, deduplicates, times and canonicalises for all of them.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "paradigm_internal.h"
+#include "lot.h"
+#include "shape.h"
+
+#define BOTH_RULES (PARADIGM_RULE_DT | PARADIGM_RULE_ES)
+
+/* One row per algorithm; problems and rules as in paradigm.h. */
+static const paradigm_algorithm paradigm_algorithms[] = {
+  {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED,
+   BOTH_RULES, "polygons: triangulate their vertices with the polygon's sides as segments",
+   "O(n log n) expected (BRIO order, walk)", NULL, paradigm_lot_incremental},
+  {"flip", "flip", "2.2.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED, BOTH_RULES,
+   "polygons: triangulate their vertices with the polygon's sides as segments",
+   "O(n^2) worst, O(n log n) for the sweep's start", NULL, paradigm_lot_flip},
+  {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints: the constrained sweep is another row", "O(n log n)", NULL,
+   paradigm_lot_sweep},
+};
+
+#define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])
+
+size_t paradigm_count(void) {
+  return PARADIGM_ROWS;
+}
+
+const paradigm_algorithm *paradigm_get(size_t i) {
+  return i < PARADIGM_ROWS ? &paradigm_algorithms[i] : NULL;
+}
+
+const paradigm_algorithm *paradigm_find(const char *name) {
+  for (size_t i = 0; i < PARADIGM_ROWS; i++)
+    if (strcmp(paradigm_algorithms[i].name, name) == 0) return &paradigm_algorithms[i];
+  return NULL;
+}
+
+const char *paradigm_problem_name(paradigm_problem pb) {
+  switch (pb) {
+    case PARADIGM_DELAUNAY: return "delaunay";
+    case PARADIGM_CONSTRAINED: return "constrained";
+    case PARADIGM_POLYGON: return "polygon";
+    case PARADIGM_CONVEX: return "convex";
+  }
+  return "?";
+}
+
+/* The lexicographic order of docs/lot.md's tie-break: larger x, then
+** larger y is greater. */
+static int paradigm_greater(geom_point p, geom_point q) {
+  return p.x > q.x || (p.x == q.x && p.y > q.y);
+}
+
+/* The symbolic perturbation of docs/lot.md, for any d: with each point's
+** lift raised by eps^(n - rank), the in-circle determinant of a, b, c, d
+** (rows p - d, lifts) is linear in the lifts, with coefficients
+** orient(b, c, d), orient(c, a, d), orient(a, b, d) for a, b, c and
+** -orient(a, b, c) for d; the greatest point with a non-zero coefficient
+** decides.  For DT the result is never 0 unless all four are collinear. */
+static int paradigm_perturbed(geom_point a, geom_point b, geom_point c, geom_point d) {
+  geom_point q[4] = {a, b, c, d};
+  int coef[4] = {geom_orient_valid(b, c, d), geom_orient_valid(c, a, d),
+                 geom_orient_valid(a, b, d), -geom_orient_valid(a, b, c)};
+  int best = -1;
+  for (int i = 0; i < 4; i++)
+    if (coef[i] != 0 && (best < 0 || paradigm_greater(q[i], q[best]))) best = i;
+  return best < 0 ? 0 : coef[best];
+}
+
+/* DT: the exact in-circle test, its zeros settled by the perturbation.  ES:
+** shape_decide_valid on the quadrilateral abcd, which must be strictly
+** convex and anticlockwise (the rule decides nothing else); its EITHER
+** settled by the same tie-break (the greatest vertex outside). */
+int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
+                     geom_point e) {
+  const shape *k = rule_shape(r);
+  if (k == NULL) {
+    int s = ops_incircle(c, a, b, d, e);
+    return s != 0 ? s : paradigm_perturbed(a, b, d, e);
+  }
+  ops_add(c, OPS_INSHAPE, 1);
+  shape_choice ch = shape_decide_valid(k, a, b, d, e);
+  if (ch == SHAPE_BD) return 1;
+  if (ch == SHAPE_AC) return -1;
+  return paradigm_perturbed(a, b, d, e);
+}
+
+static double paradigm_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Rotate each triangle to start at its smallest index, then sort. */
+static int paradigm_tri_cmp(const void *x, const void *y) {
+  const uint32_t *s = x, *t = y;
+  for (int i = 0; i < 3; i++)
+    if (s[i] != t[i]) return s[i] < t[i] ? -1 : 1;
+  return 0;
+}
+
+void paradigm_canonical(uint32_t *tri, size_t ntri) {
+  for (size_t t = 0; t < ntri; t++) {
+    uint32_t *v = tri + 3 * t;
+    while (v[0] > v[1] || v[0] > v[2]) {
+      uint32_t x = v[0];
+      v[0] = v[1], v[1] = v[2], v[2] = x;
+    }
+  }
+  qsort(tri, ntri, 3 * sizeof *tri, paradigm_tri_cmp);
+}
+
+/* Does algorithm a serve this problem and rule?  0, or -1 with its refusal. */
+static int paradigm_serves(const paradigm_algorithm *a, const paradigm_input *in, char *err,
+                           size_t errlen) {
+  unsigned want = rule_is_shape(in->r) ? PARADIGM_RULE_ES
+                : rule_is_delaunay(in->r) ? PARADIGM_RULE_DT : 0;
+  if (!(a->problems & (unsigned)in->problem)) {
+    snprintf(err, errlen, "algorithm %s does not solve the %s problem (%s)", a->name,
+             paradigm_problem_name(in->problem), a->refusal);
+    return -1;
+  }
+  if (!(a->rules & want)) {
+    snprintf(err, errlen, "algorithm %s needs the rule DT%s, not %s", a->name,
+             a->rules & PARADIGM_RULE_ES ? " or an empty-shape rule ES:SHAPE" : "",
+             in->r->name);
+    return -1;
+  }
+  return 0;
+}
+
+/* The distinct points (first occurrences, in input order) and the map
+** from their index back to the input's.  0, or -1 with the message. */
+static int paradigm_distinct(const paradigm_input *in, geom_point **q, uint32_t **back,
+                             size_t *m, char *err, size_t errlen) {
+  uint32_t *first = malloc((in->n ? in->n : 1) * sizeof *first);
+  long d = first ? lot_distinct(in->p, in->n, first) : -1;
+  *q = d >= 0 ? malloc((size_t)(d ? d : 1) * sizeof **q) : NULL;
+  *back = d >= 0 ? malloc((size_t)(d ? d : 1) * sizeof **back) : NULL;
+  if (*q == NULL || *back == NULL) {
+    free(first), free(*q), free(*back);
+    snprintf(err, errlen, "out of memory for %zu points", in->n);
+    return -1;
+  }
+  *m = 0;
+  for (size_t i = 0; i < in->n; i++)
+    if (first[i] == i) (*q)[*m] = in->p[i], (*back)[(*m)++] = (uint32_t)i;
+  free(first);
+  return 0;
+}
+
+/* Coordinates within the contract, three distinct points not collinear. */
+static int paradigm_check(const geom_point *q, size_t m, const paradigm_input *in, char *err,
+                          size_t errlen) {
+  for (size_t i = 0; i < in->n; i++)
+    if (geom_coord_check(in->p[i].x) != GEOM_COORD_OK
+        || geom_coord_check(in->p[i].y) != GEOM_COORD_OK) {
+      snprintf(err, errlen, "point %zu: %s", i + 1,
+               geom_coorderr_str(geom_coord_check(in->p[i].x) != GEOM_COORD_OK
+                                 ? geom_coord_check(in->p[i].x) : geom_coord_check(in->p[i].y)));
+      return -1;
+    }
+  for (size_t k = 2; k < m; k++)
+    if (geom_orient_valid(q[0], q[1], q[k]) != 0) return 0;
+  snprintf(err, errlen, "all %zu points are %s: a triangulation needs three non-collinear "
+           "points", in->n, m < 2 ? "equal" : "collinear");
+  return -1;
+}
+
+int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm_result *out,
+                 char *err, size_t errlen) {
+  memset(out, 0, sizeof *out);
+  if (paradigm_serves(a, in, err, errlen) != 0) return -1;
+  geom_point *q;
+  uint32_t *back;
+  size_t m;
+  if (paradigm_distinct(in, &q, &back, &m, err, errlen) != 0) return -1;
+  int rc = paradigm_check(q, m, in, err, errlen);
+  paradigm_input sub = *in;
+  sub.p = q, sub.n = m;
+  paradigm_output o = {0};
+  unsigned long exact0 = geom_exact_calls();
+  double t0 = paradigm_now();
+  if (rc == 0) rc = a->run(&sub, &o, err, errlen);
+  out->seconds = paradigm_now() - t0;
+  o.ops.v[OPS_EXACT] += geom_exact_calls() - exact0;
+  if (rc == 0) {
+    for (size_t k = 0; k < 3 * o.ntri; k++) o.tri[k] = back[o.tri[k]];
+    paradigm_canonical(o.tri, o.ntri);
+    out->tri = o.tri, out->ntri = o.ntri, out->ops = o.ops, out->distinct = m;
+  } else {
+    free(o.tri);
+  }
+  free(q), free(back);
+  return rc;
+}
+
+void paradigm_result_free(paradigm_result *r) {
+  free(r->tri);
+  r->tri = NULL;
+  r->ntri = 0;
+}
