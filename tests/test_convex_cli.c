@@ -12,6 +12,7 @@
 **  - --stats prints every statistic; --svg writes one SVG with a panel each;
 **    --stats-out has a row per polygon.
 */
+#include <ctype.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -24,6 +25,7 @@
 #include <unistd.h>
 
 #include "geom.h"
+#include "sampler.h"
 #include "testutil.h"
 
 #define CAP (1 << 20)
@@ -139,11 +141,63 @@ static void test_stats_svg(void **state) {
   free(text);
 }
 
+/* The words of the help row of option opt, as one space-separated string:
+** its text up to the first parenthesis, or (paren) the text inside it. */
+static void tcc_help_words(const char *help, const char *opt, int paren, char *out,
+                           size_t cap) {
+  const char *s = strstr(help, opt);
+  assert_non_null(s);
+  s += strlen(opt);
+  while (*s == ' ' || isupper((unsigned char)*s)) s++;
+  if (paren) s = strchr(s, '(') + 1;
+  size_t k = 0;
+  for (; *s && *s != '(' && *s != ')' && k + 1 < cap; s++)
+    out[k++] = *s == ',' || *s == '\n' ? ' ' : *s;
+  out[k] = '\0';
+}
+
+/* Does the space-separated list hold word w exactly once? */
+static int tcc_listed(const char *list, const char *w) {
+  int count = 0;
+  char buf[1024];
+  snprintf(buf, sizeof buf, "%s", list);
+  for (char *t = strtok(buf, " "); t; t = strtok(NULL, " ")) count += strcmp(t, w) == 0;
+  return count == 1;
+}
+
+/* The help names every sampler of the registry and no other (--inner: the
+** inner methods, those that can serve the dual). */
+static void test_help_lists_registry(void **state) {
+  (void)state;
+  static char out[16384], err[1024];
+  assert_int_equal(testutil_run("convex --help", out, sizeof out, err, sizeof err), 0);
+  char sam[1024], inner[1024];
+  tcc_help_words(out, "--sampler", 0, sam, sizeof sam);
+  tcc_help_words(out, "--inner", 1, inner, sizeof inner);
+  size_t words = 0, inner_words = 0;
+  for (size_t i = 0; i < sampler_gons_count; i++) {
+    if (!tcc_listed(sam, sampler_gons[i].name))
+      fail_msg("--sampler help lacks %s", sampler_gons[i].name);
+    words++;
+    if (sampler_gon_inner(sampler_gons[i].name) != NULL) {
+      if (!tcc_listed(inner, sampler_gons[i].name))
+        fail_msg("--inner help lacks %s", sampler_gons[i].name);
+      inner_words++;
+    }
+  }
+  size_t listed = 0, listed_inner = 0;
+  for (char *t = strtok(sam, " "); t; t = strtok(NULL, " ")) listed++;
+  for (char *t = strtok(inner, " "); t; t = strtok(NULL, " ")) listed_inner++;
+  assert_int_equal(listed, words);
+  assert_int_equal(listed_inner, inner_words);
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_errors),
     cmocka_unit_test(test_csv_threads),
     cmocka_unit_test(test_stats_svg),
+    cmocka_unit_test(test_help_lists_registry),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
