@@ -29,4 +29,24 @@ FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
+/* Divide and conquer (paradigms/divide.c), Guibas and Stolfi's merge with
+** vertical or alternating cuts; paradigm_divide counts into c (NULL: not
+** counting, for the benchmark of the counting layer's cost). */
+FLIPLAB_INTERNAL
+int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
+                    paradigm_output *out, char *err, size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_dc_vertical(const paradigm_input *in, paradigm_output *out, char *err,
+                         size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen);
+#define PARADIGM_DC_REFUSAL \
+  "ES:SHAPE: a merge step trusts that a circle through a cross edge and a site of one " \
+  "half holds no site of that half when the next neighbour lies outside it, which needs " \
+  "the rule's empty regions to be those of a triangulation with empty shapes; the LOT of " \
+  "a polygon's homothets covers the convex hull with triangles whose homothets are not " \
+  "empty, merges must start from a support-hull edge and deletions can disconnect a " \
+  "half (2.6.6); constraints and polygons: not yet (Chew's virtual sites, 2.6.2)"
+
 #endif

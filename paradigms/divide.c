@@ -1,0 +1,534 @@
+/*
+** divide.c: Guibas and Stolfi's divide and conquer for the Delaunay
+** triangulation (section 2.6.1), with vertical cuts ("dc-vertical") and with
+** cuts alternating between vertical and horizontal (Dwyer: "dc-alternating").
+**
+** The sites are sorted lexicographically (lot's radix sort) and halved
+** recursively; each pair of halves, separated by a line, is merged along the
+** edges that cross it, from the lower common tangent upwards: a candidate
+** neighbour of either end of the present cross edge is kept while the next
+** neighbour lies outside the circle through the cross edge and it, and the
+** circle through the cross edge and the left candidate decides which end
+** moves.  Every in-circle test is lot's (paradigm_inshape's perturbation:
+** never 0 for four sites not on a line), so the result is lot's Delaunay
+** triangulation exactly, ties included.  Alternating cuts split a y-cut's
+** sites at the median of (y, -x), the lexicographic order of the frame
+** turned a quarter clockwise, in which the same merge runs unchanged
+** (orientation does not depend on the frame); only "leftmost" and
+** "rightmost", the ends the merge starts and ends from, are found by a walk
+** along the hull in the frame of the cut.
+**
+** The mesh is a half-edge structure: half-edges 2k and 2k + 1 are one edge's
+** two directions, each on the ring of its origin's half-edges in
+** anticlockwise order (next, prev), so Lnext(e) = Oprev(Sym e) and
+** Rprev(e) = Onext(Sym e), and Guibas and Stolfi's splice swaps two ring
+** successors.  The top two levels of the recursion are fixed: four subtrees,
+** each allocating edges from its own slice of the array, their counts kept
+** apart and added in a fixed order, so that one thread and two (OpenMP
+** tasks, the halves side by side) do the same operations and make the same
+** mesh, edge for edge.
+**
+** Ties in ES:SHAPE are not served: see the rows in paradigm.c.
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "paradigm_internal.h"
+#include "lot.h"
+#include "splitmix.h"
+
+#define DC_NONE 0xffffffffu
+#define DC_TOP 2          /* levels of the recursion run as tasks: 4 subtrees */
+#define DC_NODES 7        /* nodes of those levels, heap-numbered */
+#define DC_MAX_POINTS ((DC_NONE - 1) / 6)   /* 3n edges, 6n half-edges below DC_NONE */
+
+typedef struct dc_half {
+  uint32_t next, prev;    /* the origin's ring, anticlockwise */
+  uint32_t org;           /* origin site; DC_NONE once deleted */
+} dc_half;
+
+/* A slice of the edge array: a free list, fresh slots [used, end), and the
+** slice to take from when both are empty (the subtrees a merge joins). */
+typedef struct dc_pool {
+  uint32_t free, base, used, end;
+  struct dc_pool *more;
+} dc_pool;
+
+/* A triangulated subset: ccw hull edge out of its leftmost site, cw hull
+** edge out of its rightmost (Guibas and Stolfi's ldo and rdo). */
+typedef struct dc_hull {
+  uint32_t l, r;
+} dc_hull;
+
+typedef struct dc_run {
+  const geom_point *s;    /* the sites, in the order of the cuts */
+  dc_half *h;
+  const rule *r;
+  int alternating;
+  int threads;
+  int failed;             /* an edge slice ran out: a bug, reported, never a crash */
+  dc_pool pool[DC_NODES];
+  ops_counts *count[DC_NODES];   /* NULL when not counting */
+} dc_run;
+
+static inline uint32_t dc_dest(const dc_half *h, uint32_t e) {
+  return h[e ^ 1].org;
+}
+
+static inline uint32_t dc_lnext(const dc_half *h, uint32_t e) {
+  return h[e ^ 1].prev;
+}
+
+static inline uint32_t dc_rprev(const dc_half *h, uint32_t e) {
+  return h[e ^ 1].next;
+}
+
+/* Guibas and Stolfi's splice, on the origin rings only (the faces follow). */
+static inline void dc_splice(dc_half *h, uint32_t a, uint32_t b) {
+  uint32_t alpha = h[a].next, beta = h[b].next;
+  h[a].next = beta, h[b].next = alpha;
+  h[beta].prev = a, h[alpha].prev = b;
+}
+
+static uint32_t dc_alloc(dc_run *R, dc_pool *p) {
+  for (; p != NULL; p = p->more) {
+    if (p->free != DC_NONE) {
+      uint32_t e = p->free;
+      p->free = R->h[2 * e].next;
+      return e;
+    }
+    if (p->used < p->end) return p->used++;
+  }
+  R->failed = 1;
+  return 0;
+}
+
+static uint32_t dc_make_edge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t a, uint32_t b) {
+  uint32_t e = 2 * dc_alloc(R, p);
+  dc_half *h = R->h;
+  h[e].org = a, h[e].next = h[e].prev = e;
+  h[e + 1].org = b, h[e + 1].next = h[e + 1].prev = e + 1;
+  ops_add(c, OPS_EDGES_MADE, 1);
+  return e;
+}
+
+/* A new edge from Dest(a) to Org(b), a's left face split off by it. */
+static uint32_t dc_connect(dc_run *R, dc_pool *p, ops_counts *c, uint32_t a, uint32_t b) {
+  uint32_t e = dc_make_edge(R, p, c, dc_dest(R->h, a), R->h[b].org);
+  dc_splice(R->h, e, dc_lnext(R->h, a));
+  dc_splice(R->h, e ^ 1, b);
+  return e;
+}
+
+static void dc_delete(dc_run *R, dc_pool *p, ops_counts *c, uint32_t e) {
+  dc_half *h = R->h;
+  dc_splice(h, e, h[e].prev);
+  dc_splice(h, e ^ 1, h[e ^ 1].prev);
+  h[e].org = h[e ^ 1].org = DC_NONE;
+  h[e & ~1u].next = p->free;
+  p->free = e >> 1;
+  ops_add(c, OPS_EDGES_DELETED, 1);
+}
+
+/* Two or three sites, lexicographically sorted. */
+static dc_hull dc_base(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t n) {
+  uint32_t a = dc_make_edge(R, p, c, lo, lo + 1);
+  if (n == 2) return (dc_hull){a, a ^ 1};
+  uint32_t b = dc_make_edge(R, p, c, lo + 1, lo + 2);
+  dc_splice(R->h, a ^ 1, b);
+  int o = ops_orient(c, R->s[lo], R->s[lo + 1], R->s[lo + 2]);
+  if (o > 0) {
+    dc_connect(R, p, c, b, a);
+    return (dc_hull){a, b ^ 1};
+  }
+  if (o < 0) {
+    uint32_t t = dc_connect(R, p, c, b, a);
+    return (dc_hull){t ^ 1, t};
+  }
+  return (dc_hull){a, b ^ 1};
+}
+
+/* Site x strictly right of the directed edge e (to its left: swap). */
+static inline int dc_right_of(const dc_run *R, ops_counts *c, uint32_t x, uint32_t e) {
+  return ops_orient(c, R->s[x], R->s[dc_dest(R->h, e)], R->s[R->h[e].org]) > 0;
+}
+
+static inline int dc_left_of(const dc_run *R, ops_counts *c, uint32_t x, uint32_t e) {
+  return ops_orient(c, R->s[x], R->s[R->h[e].org], R->s[dc_dest(R->h, e)]) > 0;
+}
+
+/* lot's in-circle test: d strictly inside the circle through a, b, d
+** (anticlockwise), the zeros settled by paradigm_inshape's perturbation. */
+static inline int dc_incircle(const dc_run *R, ops_counts *c, uint32_t a, uint32_t b,
+                              uint32_t d, uint32_t e) {
+  const geom_point *s = R->s;
+  int v = ops_incircle(c, s[a], s[b], s[d], s[e]);
+  return (v != 0 ? v : paradigm_inshape(R->r, NULL, s[a], s[b], s[d], s[e])) > 0;
+}
+
+/* The left candidate: the first neighbour of basel's left end, above it,
+** whose circle with basel holds no next neighbour; edges in the way are
+** deleted.  DC_NONE when no neighbour lies above. */
+static uint32_t dc_left_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel) {
+  dc_half *h = R->h;
+  uint32_t lc = h[basel ^ 1].next, bo = h[basel].org, bd = dc_dest(h, basel);
+  if (!dc_right_of(R, c, dc_dest(h, lc), basel)) return DC_NONE;
+  for (int deleted = 0;; deleted = 1) {
+    uint32_t t = h[lc].next, far = dc_dest(h, t);
+    if (far == bo || !dc_incircle(R, c, bd, bo, dc_dest(h, lc), far))
+      return !deleted || dc_right_of(R, c, dc_dest(h, lc), basel) ? lc : DC_NONE;
+    dc_delete(R, p, c, lc);
+    lc = t;
+  }
+}
+
+/* The right candidate, mirrored. */
+static uint32_t dc_right_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel) {
+  dc_half *h = R->h;
+  uint32_t rc = h[basel].prev, bo = h[basel].org, bd = dc_dest(h, basel);
+  if (!dc_right_of(R, c, dc_dest(h, rc), basel)) return DC_NONE;
+  for (int deleted = 0;; deleted = 1) {
+    uint32_t t = h[rc].prev, far = dc_dest(h, t);
+    if (far == bd || !dc_incircle(R, c, bd, bo, dc_dest(h, rc), far))
+      return !deleted || dc_right_of(R, c, dc_dest(h, rc), basel) ? rc : DC_NONE;
+    dc_delete(R, p, c, rc);
+    rc = t;
+  }
+}
+
+/* Merge left (ldo, ldi: cw hull edge out of its rightmost site) and right
+** (rdi: ccw hull edge out of its leftmost site, rdo).  O(sites of both):
+** each step adds or deletes an edge. */
+static dc_hull dc_merge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t ldo, uint32_t ldi,
+                        uint32_t rdi, uint32_t rdo) {
+  dc_half *h = R->h;
+  for (;;) {   /* the lower common tangent */
+    if (dc_left_of(R, c, h[rdi].org, ldi)) ldi = dc_lnext(h, ldi);
+    else if (dc_right_of(R, c, h[ldi].org, rdi)) rdi = dc_rprev(h, rdi);
+    else break;
+  }
+  uint32_t basel = dc_connect(R, p, c, rdi ^ 1, ldi);
+  if (h[ldi].org == h[ldo].org) ldo = basel ^ 1;
+  if (h[rdi].org == h[rdo].org) rdo = basel;
+  for (;;) {
+    uint32_t lc = dc_left_candidate(R, p, c, basel);
+    uint32_t rc = dc_right_candidate(R, p, c, basel);
+    if (lc == DC_NONE && rc == DC_NONE) break;
+    if (lc == DC_NONE
+        || (rc != DC_NONE
+            && dc_incircle(R, c, dc_dest(h, lc), h[lc].org, h[rc].org, dc_dest(h, rc))))
+      basel = dc_connect(R, p, c, rc, basel ^ 1);
+    else
+      basel = dc_connect(R, p, c, basel ^ 1, lc ^ 1);
+  }
+  return (dc_hull){ldo, rdo};
+}
+
+/* u before v in the frame of the cut: (x, y) for a vertical cut, (y, -x)
+** for a horizontal one (the frame turned a quarter clockwise). */
+static inline int dc_before(geom_point u, geom_point v, int frame) {
+  if (frame == 0) return u.x < v.x || (u.x == v.x && u.y < v.y);
+  return u.y < v.y || (u.y == v.y && u.x > v.x);
+}
+
+/* From ccw hull edge e, the ccw hull edge out of the first (last) site of
+** the frame: the order is unimodal along a convex hull, so walk the way it
+** improves.  O(hull). */
+static uint32_t dc_extreme(const dc_run *R, uint32_t e, int frame, int last) {
+  const dc_half *h = R->h;
+  const geom_point *s = R->s;
+#define DC_BETTER(u, v) (last ? dc_before(s[v], s[u], frame) : dc_before(s[u], s[v], frame))
+  while (DC_BETTER(dc_dest(h, e), h[e].org)) e = dc_rprev(h, e);
+  for (uint32_t b = h[e].prev ^ 1; DC_BETTER(h[b].org, h[e].org); b = h[e].prev ^ 1) e = b;
+#undef DC_BETTER
+  return e;
+}
+
+/* Merge two halves split by the cut of frame 1 (horizontal): find their
+** ends in that frame, merge, and give back the ends in frame 0. */
+static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, dc_hull b,
+                               int frame) {
+  if (frame == 0) return dc_merge(R, p, c, a.l, a.r, b.l, b.r);
+  uint32_t ldo = dc_extreme(R, a.l, 1, 0), ldi = R->h[dc_extreme(R, a.l, 1, 1)].prev;
+  uint32_t rdi = dc_extreme(R, b.l, 1, 0), rdo = R->h[dc_extreme(R, b.l, 1, 1)].prev;
+  dc_hull m = dc_merge(R, p, c, ldo, ldi, rdi, rdo);
+  return (dc_hull){dc_extreme(R, m.l, 0, 0), R->h[dc_extreme(R, m.l, 0, 1)].prev};
+}
+
+static inline int dc_frame(const dc_run *R, int depth) {
+  return R->alternating ? depth & 1 : 0;
+}
+
+/* Sites [lo, hi) at recursion depth `depth`: T(n) = 2 T(n/2) + merge. */
+static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
+                          int depth) {
+  if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
+  uint32_t mid = lo + (hi - lo) / 2;
+  dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1);
+  dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1);
+  return dc_merge_across(R, p, c, a, b, dc_frame(R, depth));
+}
+
+/* The fixed top levels: node k (heap order) covers [lo, hi); its subtrees
+** run as tasks.  Returns the chain of edge slices it used in *first and
+** *tail. */
+static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_pool **first,
+                      dc_pool **tail) {
+  if (depth == DC_TOP || hi - lo <= 3) {
+    dc_pool *p = &R->pool[k];
+    *p = (dc_pool){DC_NONE, 3 * lo, 3 * lo, 3 * hi, NULL};
+    *first = *tail = p;
+    return dc_recurse(R, p, R->count[k], lo, hi, depth);
+  }
+  uint32_t mid = lo + (hi - lo) / 2;
+  dc_pool *f1, *t1, *f2, *t2;
+  dc_hull a, b;
+#pragma omp task shared(a, f1, t1) if (R->threads > 1)
+  a = dc_top(R, lo, mid, depth + 1, 2 * k + 1, &f1, &t1);
+  b = dc_top(R, mid, hi, depth + 1, 2 * k + 2, &f2, &t2);
+#pragma omp taskwait
+  t1->more = f2;
+  *first = f1, *tail = t2;
+  return dc_merge_across(R, f1, R->count[k], a, b, dc_frame(R, depth));
+}
+
+/* ---- the alternating cuts: sites [lo, hi) of a horizontal cut split at
+** the median of (y, -x), each half kept in lexicographic order (the next,
+** vertical, cut is then the middle).  The sites are positions into the
+** lexicographically sorted array xs, so position order is that order. ---- */
+
+static inline int dc_lower(const geom_point *xs, uint32_t i, uint32_t j) {
+  return xs[i].y < xs[j].y || (xs[i].y == xs[j].y && i > j);
+}
+
+static void dc_sift(const geom_point *xs, uint32_t *a, uint32_t i, uint32_t n) {
+  for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
+    if (k + 1 < n && dc_lower(xs, a[k], a[k + 1])) k++;
+    if (!dc_lower(xs, a[i], a[k])) return;
+    uint32_t t = a[i];
+    a[i] = a[k], a[k] = t;
+  }
+}
+
+/* Heapsort: the selection's way out when its pivots keep failing, so that
+** no input makes it quadratic.  O(n log n). */
+static void dc_heapsort(const geom_point *xs, uint32_t *a, uint32_t n) {
+  for (uint32_t i = n / 2; i-- > 0;) dc_sift(xs, a, i, n);
+  for (uint32_t m = n; m-- > 1;) {
+    uint32_t t = a[0];
+    a[0] = a[m], a[m] = t;
+    dc_sift(xs, a, 0, m);
+  }
+}
+
+/* The element of rank k of a[0..n): Hoare's selection with pseudo-random
+** pivots, O(n) expected; after 2 log2 n + 16 rounds, a heapsort. */
+static uint32_t dc_select(const geom_point *xs, uint32_t *a, uint32_t n, uint32_t k) {
+  uint64_t g = n;
+  uint32_t lo = 0, hi = n;
+  int budget = 16;
+  for (uint32_t m = n; m > 1; m >>= 1) budget += 2;
+  while (hi - lo > 1) {
+    if (budget-- == 0) {
+      dc_heapsort(xs, a + lo, hi - lo);
+      return a[k];
+    }
+    uint32_t q = lo + (uint32_t)(geom_splitmix64(&g) % (hi - lo)), piv = a[q], i = lo, j = hi - 1;
+    a[q] = a[j], a[j] = piv;
+    while (i < j) {
+      if (dc_lower(xs, a[i], piv)) i++;
+      else {
+        uint32_t t = a[i];
+        a[i] = a[--j], a[j] = t;
+      }
+    }
+    a[hi - 1] = a[i], a[i] = piv;
+    if (k == i) return piv;
+    if (k < i) hi = i;
+    else lo = i + 1;
+  }
+  return a[lo];
+}
+
+typedef struct dc_cut {
+  const geom_point *xs;
+  uint32_t *idx, *tmp;
+  int threads;
+} dc_cut;
+
+/* Split idx[lo, hi) at mid by (y, -x), stably.  O(hi - lo) expected. */
+static void dc_split(dc_cut *C, uint32_t lo, uint32_t mid, uint32_t hi) {
+  uint32_t *t = C->tmp + lo, *v = C->idx + lo;
+  memcpy(t, v, (size_t)(hi - lo) * sizeof *t);
+  uint32_t piv = dc_select(C->xs, t, hi - lo, mid - lo), a = 0, b = mid - lo;
+  for (uint32_t k = 0; k < hi - lo; k++) {
+    if (dc_lower(C->xs, v[k], piv)) t[a++] = v[k];
+    else t[b++] = v[k];
+  }
+  memcpy(v, t, (size_t)(hi - lo) * sizeof *t);
+}
+
+/* The cuts of the recursion of dc_recurse, made in advance: O(n log n). */
+static void dc_alternate(dc_cut *C, uint32_t lo, uint32_t hi, int depth) {
+  if (hi - lo <= 3) return;
+  uint32_t mid = lo + (hi - lo) / 2;
+  if (depth & 1) dc_split(C, lo, mid, hi);
+  if (depth >= DC_TOP) {
+    dc_alternate(C, lo, mid, depth + 1);
+    dc_alternate(C, mid, hi, depth + 1);
+    return;
+  }
+#pragma omp task if (C->threads > 1)
+  dc_alternate(C, lo, mid, depth + 1);
+  dc_alternate(C, mid, hi, depth + 1);
+#pragma omp taskwait
+}
+
+/* ---- the run ---- */
+
+/* The triangles of the mesh, in input indices: each face of three
+** half-edges from its smallest, but the outer face (which has three too
+** when the hull is a triangle).  O(n). */
+static int dc_triangles(const dc_run *R, dc_pool *first, dc_hull top, uint32_t n,
+                        const uint32_t *id, paradigm_output *out) {
+  const dc_half *h = R->h;
+  uint32_t e0 = top.l ^ 1, e = e0, outer = e0, hull = 0;
+  do {
+    hull++;
+    if (e < outer) outer = e;
+    e = dc_lnext(h, e);
+  } while (e != e0);
+  size_t want = 2 * (size_t)n - 2 - hull, t = 0;
+  out->tri = malloc((want ? want : 1) * 3 * sizeof *out->tri);
+  if (out->tri == NULL) return -1;
+  for (const dc_pool *p = first; p != NULL; p = p->more)
+    for (uint32_t a = 2 * p->base; a < 2 * p->used; a++) {
+      if (h[a].org == DC_NONE || (hull == 3 && a == outer)) continue;
+      uint32_t b = dc_lnext(h, a), c = dc_lnext(h, b);
+      if (b < a || c < a || dc_lnext(h, c) != a) continue;   /* the outer face */
+      if (t == want) return -2;
+      out->tri[3 * t] = id[h[a].org];
+      out->tri[3 * t + 1] = id[h[b].org];
+      out->tri[3 * t + 2] = id[h[c].org];
+      t++;
+    }
+  out->ntri = t;
+  return t == want ? 0 : -2;
+}
+
+/* Merge and triangulate the sites s (in the order of the cuts). */
+static int dc_mesh(dc_run *R, uint32_t n, const uint32_t *id, ops_counts *c,
+                   paradigm_output *out, char *err, size_t errlen) {
+  ops_counts part[DC_NODES];
+  memset(part, 0, sizeof part);
+  for (int k = 0; k < DC_NODES; k++) R->count[k] = c ? &part[k] : NULL;
+  size_t bytes = 3 * (size_t)n * 2 * sizeof *R->h;
+  R->h = malloc(bytes);
+  if (R->h == NULL) {
+    snprintf(err, errlen, "out of memory for the mesh of %u points", n);
+    return -1;
+  }
+  ops_memory(c, (int64_t)bytes);
+  dc_pool *first = NULL, *tail = NULL;
+  dc_hull top;
+  if (R->threads > 1) {
+#pragma omp parallel num_threads(R->threads < 4 ? R->threads : 4)
+#pragma omp single
+    top = dc_top(R, 0, n, 0, 0, &first, &tail);
+  } else {
+    top = dc_top(R, 0, n, 0, 0, &first, &tail);
+  }
+  for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k]);
+  int rc = R->failed ? -2 : dc_triangles(R, first, top, n, id, out);
+  free(R->h);
+  ops_memory(c, -(int64_t)bytes);
+  if (rc == -1) snprintf(err, errlen, "out of memory for the triangles of %u points", n);
+  if (rc == -2) snprintf(err, errlen, "divide and conquer: the mesh of %u points is not a "
+                         "triangulation (a bug: please report it)", n);
+  return rc == 0 ? 0 : -1;
+}
+
+/* Alternating cuts: xs and ord (lexicographic) rearranged by dc_alternate
+** into the order of the cuts.  0, or -1 (out of memory). */
+static int dc_order_alternating(int threads, uint32_t n, ops_counts *c, geom_point **xs,
+                                uint32_t **ord) {
+  uint32_t *idx = malloc((size_t)n * sizeof *idx), *tmp = malloc((size_t)n * sizeof *tmp);
+  geom_point *s = malloc((size_t)n * sizeof *s);
+  ops_memory(c, (int64_t)n * (int64_t)(2 * sizeof *idx + sizeof *s));
+  if (idx == NULL || tmp == NULL || s == NULL) {
+    free(idx), free(tmp), free(s);
+    return -1;
+  }
+  for (uint32_t k = 0; k < n; k++) idx[k] = k;
+  dc_cut C = {*xs, idx, tmp, threads};
+  if (threads > 1) {
+#pragma omp parallel num_threads(threads < 4 ? threads : 4)
+#pragma omp single
+    dc_alternate(&C, 0, n, 0);
+  } else {
+    dc_alternate(&C, 0, n, 0);
+  }
+  for (uint32_t k = 0; k < n; k++) s[k] = (*xs)[idx[k]], tmp[k] = (*ord)[idx[k]];
+  free(idx), free(*xs), free(*ord);
+  ops_memory(c, -(int64_t)n * (int64_t)(2 * sizeof *idx + sizeof *s));
+  *xs = s, *ord = tmp;
+  return 0;
+}
+
+/* The sites in the order of the cuts, s[k] = p[id[k]]: lexicographic for
+** vertical cuts, rearranged by dc_alternate for alternating ones.  0, or
+** -1 (out of memory). */
+static int dc_order(const paradigm_input *in, int alternating, ops_counts *c, geom_point **s,
+                    uint32_t **id) {
+  uint32_t n = (uint32_t)in->n, *ord = malloc((size_t)n * sizeof *ord);
+  geom_point *xs = malloc((size_t)n * sizeof *xs);
+  ops_memory(c, (int64_t)n * (int64_t)(sizeof *ord + sizeof *xs));
+  int rc = ord && xs ? lot_sort_lexicographic(in->p, n, ord) : -1;
+  for (uint32_t k = 0; k < n && rc == 0; k++) xs[k] = in->p[ord[k]];
+  if (rc == 0 && alternating) rc = dc_order_alternating(in->threads, n, c, &xs, &ord);
+  if (rc != 0) {
+    free(ord), free(xs);
+    return -1;
+  }
+  *s = xs, *id = ord;
+  return 0;
+}
+
+/* Both rows, counting into c (NULL: not counting).  Cost: the sort, O(n)
+** radix passes; alternating cuts add the medians, O(n) expected per level
+** of horizontal cuts, O(n log n) in all; log n levels of merges, each O(n)
+** at worst (T(n) = 2 T(n/2) + O(n) = O(n log n)).  On uniform sites the
+** vertical cuts' merges run along the long axis of thin strips, Theta(n)
+** each, so Theta(n log n); alternating cuts keep the pieces square, a merge
+** of m sites crosses O(sqrt m) edges, and the merges cost O(n) expected in
+** all (Dwyer shows O(n log log n) for his variant).  Memory: 72 bytes a
+** site for the mesh (3n edges of 24 bytes), 20 to 48 for the order. */
+int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
+                    paradigm_output *out, char *err, size_t errlen) {
+  if (in->n > DC_MAX_POINTS) {
+    snprintf(err, errlen, "divide and conquer: %zu points, at most %u", in->n,
+             (unsigned)DC_MAX_POINTS);
+    return -1;
+  }
+  geom_point *s;
+  uint32_t *id, n = (uint32_t)in->n;
+  if (dc_order(in, alternating, c, &s, &id) != 0) {
+    snprintf(err, errlen, "out of memory for the order of %u points", n);
+    return -1;
+  }
+  dc_run R = {.s = s, .r = in->r, .alternating = alternating, .threads = in->threads};
+  int rc = dc_mesh(&R, n, id, c, out, err, errlen);
+  free(s), free(id);
+  ops_memory(c, -(int64_t)n * (int64_t)(sizeof *s + sizeof *id));
+  return rc;
+}
+
+int paradigm_dc_vertical(const paradigm_input *in, paradigm_output *out, char *err,
+                         size_t errlen) {
+  return paradigm_divide(in, 0, &out->ops, out, err, errlen);
+}
+
+int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen) {
+  return paradigm_divide(in, 1, &out->ops, out, err, errlen);
+}
