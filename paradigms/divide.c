@@ -61,7 +61,10 @@ typedef struct dc_hull {
 } dc_hull;
 
 typedef struct dc_run {
-  const geom_point *s;    /* the sites, in the order of the cuts */
+  geom_point *s;          /* the sites, in the order of the cuts */
+  uint32_t *id;           /* their input indices */
+  geom_point *ts;         /* scratch of the horizontal cuts (NULL for vertical ones) */
+  uint32_t *tid;
   dc_half *h;
   const rule *r;
   int alternating;
@@ -255,6 +258,113 @@ static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, 
   return (dc_hull){dc_extreme(R, m.l, 0, 0), R->h[dc_extreme(R, m.l, 0, 1)].prev};
 }
 
+/* ---- horizontal cuts: the sites [lo, hi), in lexicographic order, split
+** by (y, -x) at a pivot, each half kept in lexicographic order (a stable
+** partition), so the next, vertical, cut is the middle.  Any pivot that
+** leaves each half two sites gives the same triangulation (every split is
+** by a line); a balanced one keeps the pieces square, which makes the
+** merges cheap: the median of a sample, or the exact median when the
+** sample's leaves a side under an eighth. ---- */
+
+#define DC_SAMPLE 63      /* sites sampled for a pivot ... */
+#define DC_SMALL 11       /* ... or fewer, in pieces under 64 samples */
+
+static inline int dc_lower(geom_point u, geom_point v) {
+  return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));
+}
+
+static void dc_sift(geom_point *a, uint32_t i, uint32_t n) {
+  for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
+    if (k + 1 < n && dc_lower(a[k], a[k + 1])) k++;
+    if (!dc_lower(a[i], a[k])) return;
+    geom_point t = a[i];
+    a[i] = a[k], a[k] = t;
+  }
+}
+
+/* Heapsort: the selection's way out when its pivots keep failing, so that
+** no input makes it quadratic.  O(n log n). */
+static void dc_heapsort(geom_point *a, uint32_t n) {
+  for (uint32_t i = n / 2; i-- > 0;) dc_sift(a, i, n);
+  for (uint32_t m = n; m-- > 1;) {
+    geom_point t = a[0];
+    a[0] = a[m], a[m] = t;
+    dc_sift(a, 0, m);
+  }
+}
+
+/* The element of rank k of a[0..n) by (y, -x): Hoare's selection with
+** pseudo-random pivots, O(n) expected; after 2 log2 n + 16 rounds, a
+** heapsort.  The sites are distinct, so the ranks are too. */
+static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k) {
+  uint64_t g = n;
+  uint32_t lo = 0, hi = n;
+  int budget = 16;
+  for (uint32_t m = n; m > 1; m >>= 1) budget += 2;
+  while (hi - lo > 1) {
+    if (budget-- == 0) {
+      dc_heapsort(a + lo, hi - lo);
+      return a[k];
+    }
+    uint32_t q = lo + (uint32_t)(geom_splitmix64(&g) % (hi - lo)), i = lo, j = hi - 1;
+    geom_point piv = a[q], t;
+    a[q] = a[j], a[j] = piv;
+    while (i < j) {
+      if (dc_lower(a[i], piv)) i++;
+      else t = a[i], a[i] = a[--j], a[j] = t;
+    }
+    a[hi - 1] = a[i], a[i] = piv;
+    if (k == i) return piv;
+    if (k < i) hi = i;
+    else lo = i + 1;
+  }
+  return a[lo];
+}
+
+/* The pivot of [lo, hi): the median of DC_SAMPLE sites drawn by a
+** generator seeded with the range (so the same whatever the threads), or
+** the exact median.  Uses the range's slice of the scratch. */
+static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int exact) {
+  uint32_t m = hi - lo;
+  geom_point *t = R->ts + lo;
+  if (exact || m <= 2 * DC_SMALL) {
+    memcpy(t, R->s + lo, (size_t)m * sizeof *t);
+    return dc_select(t, m, m / 2);
+  }
+  uint32_t size = m < 64 * DC_SAMPLE ? DC_SMALL : DC_SAMPLE;
+  uint64_t g = (uint64_t)lo << 32 | hi;
+  for (uint32_t k = 0; k < size; k++) t[k] = R->s[lo + geom_splitmix64(&g) % m];
+  return dc_select(t, size, size / 2);
+}
+
+/* The sites of [lo, hi) below piv. */
+static uint32_t dc_count_below(const dc_run *R, uint32_t lo, uint32_t hi, geom_point piv) {
+  uint32_t below = 0;
+  for (uint32_t k = lo; k < hi; k++) below += (uint32_t)dc_lower(R->s[k], piv);
+  return below;
+}
+
+/* Split [lo, hi) (at least 4 sites) by (y, -x); returns where the upper
+** half starts.  O(hi - lo) expected: one pass to count, one to move, the
+** moves without branches (each site written to both sides, one kept). */
+static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi) {
+  uint32_t m = hi - lo;
+  geom_point piv = dc_pivot(R, lo, hi, 0);
+  uint32_t below = dc_count_below(R, lo, hi, piv);
+  if (below < m / 8 + 2 || m - below < m / 8 + 2) piv = dc_pivot(R, lo, hi, 1);
+  geom_point *s = R->s, *t = R->ts + lo;
+  uint32_t *id = R->id, *tid = R->tid + lo, a = lo, b = 0;
+  for (uint32_t k = lo; k < hi; k++) {
+    geom_point v = s[k];
+    uint32_t i = id[k], low = (uint32_t)dc_lower(v, piv);
+    s[a] = v, id[a] = i, t[b] = v, tid[b] = i;
+    a += low, b += 1 - low;
+  }
+  memcpy(s + a, t, (size_t)b * sizeof *t);
+  memcpy(id + a, tid, (size_t)b * sizeof *tid);
+  return a;
+}
+
 static inline int dc_frame(const dc_run *R, int depth) {
   return R->alternating ? depth & 1 : 0;
 }
@@ -263,7 +373,7 @@ static inline int dc_frame(const dc_run *R, int depth) {
 static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
                           int depth) {
   if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
-  uint32_t mid = lo + (hi - lo) / 2;
+  uint32_t mid = dc_frame(R, depth) ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
   dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1);
   dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1);
   return dc_merge_across(R, p, c, a, b, dc_frame(R, depth));
@@ -280,7 +390,7 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_
     *first = *tail = p;
     return dc_recurse(R, p, R->count[k], lo, hi, depth);
   }
-  uint32_t mid = lo + (hi - lo) / 2;
+  uint32_t mid = dc_frame(R, depth) ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
   dc_pool *f1, *t1, *f2, *t2;
   dc_hull a, b;
 #pragma omp task shared(a, f1, t1) if (R->threads > 1)
@@ -292,133 +402,65 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_
   return dc_merge_across(R, f1, R->count[k], a, b, dc_frame(R, depth));
 }
 
-/* ---- the alternating cuts: sites [lo, hi) of a horizontal cut split at
-** the median of (y, -x), each half kept in lexicographic order (the next,
-** vertical, cut is then the middle).  The sites are positions into the
-** lexicographically sorted array xs, so position order is that order. ---- */
-
-static inline int dc_lower(const geom_point *xs, uint32_t i, uint32_t j) {
-  return xs[i].y < xs[j].y || (xs[i].y == xs[j].y && i > j);
-}
-
-static void dc_sift(const geom_point *xs, uint32_t *a, uint32_t i, uint32_t n) {
-  for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
-    if (k + 1 < n && dc_lower(xs, a[k], a[k + 1])) k++;
-    if (!dc_lower(xs, a[i], a[k])) return;
-    uint32_t t = a[i];
-    a[i] = a[k], a[k] = t;
-  }
-}
-
-/* Heapsort: the selection's way out when its pivots keep failing, so that
-** no input makes it quadratic.  O(n log n). */
-static void dc_heapsort(const geom_point *xs, uint32_t *a, uint32_t n) {
-  for (uint32_t i = n / 2; i-- > 0;) dc_sift(xs, a, i, n);
-  for (uint32_t m = n; m-- > 1;) {
-    uint32_t t = a[0];
-    a[0] = a[m], a[m] = t;
-    dc_sift(xs, a, 0, m);
-  }
-}
-
-/* The element of rank k of a[0..n): Hoare's selection with pseudo-random
-** pivots, O(n) expected; after 2 log2 n + 16 rounds, a heapsort. */
-static uint32_t dc_select(const geom_point *xs, uint32_t *a, uint32_t n, uint32_t k) {
-  uint64_t g = n;
-  uint32_t lo = 0, hi = n;
-  int budget = 16;
-  for (uint32_t m = n; m > 1; m >>= 1) budget += 2;
-  while (hi - lo > 1) {
-    if (budget-- == 0) {
-      dc_heapsort(xs, a + lo, hi - lo);
-      return a[k];
-    }
-    uint32_t q = lo + (uint32_t)(geom_splitmix64(&g) % (hi - lo)), piv = a[q], i = lo, j = hi - 1;
-    a[q] = a[j], a[j] = piv;
-    while (i < j) {
-      if (dc_lower(xs, a[i], piv)) i++;
-      else {
-        uint32_t t = a[i];
-        a[i] = a[--j], a[j] = t;
-      }
-    }
-    a[hi - 1] = a[i], a[i] = piv;
-    if (k == i) return piv;
-    if (k < i) hi = i;
-    else lo = i + 1;
-  }
-  return a[lo];
-}
-
-typedef struct dc_cut {
-  const geom_point *xs;
-  uint32_t *idx, *tmp;
-  int threads;
-} dc_cut;
-
-/* Split idx[lo, hi) at mid by (y, -x), stably.  O(hi - lo) expected. */
-static void dc_split(dc_cut *C, uint32_t lo, uint32_t mid, uint32_t hi) {
-  uint32_t *t = C->tmp + lo, *v = C->idx + lo;
-  memcpy(t, v, (size_t)(hi - lo) * sizeof *t);
-  uint32_t piv = dc_select(C->xs, t, hi - lo, mid - lo), a = 0, b = mid - lo;
-  for (uint32_t k = 0; k < hi - lo; k++) {
-    if (dc_lower(C->xs, v[k], piv)) t[a++] = v[k];
-    else t[b++] = v[k];
-  }
-  memcpy(v, t, (size_t)(hi - lo) * sizeof *t);
-}
-
-/* The cuts of the recursion of dc_recurse, made in advance: O(n log n). */
-static void dc_alternate(dc_cut *C, uint32_t lo, uint32_t hi, int depth) {
-  if (hi - lo <= 3) return;
-  uint32_t mid = lo + (hi - lo) / 2;
-  if (depth & 1) dc_split(C, lo, mid, hi);
-  if (depth >= DC_TOP) {
-    dc_alternate(C, lo, mid, depth + 1);
-    dc_alternate(C, mid, hi, depth + 1);
-    return;
-  }
-#pragma omp task if (C->threads > 1)
-  dc_alternate(C, lo, mid, depth + 1);
-  dc_alternate(C, mid, hi, depth + 1);
-#pragma omp taskwait
-}
-
 /* ---- the run ---- */
 
-/* The triangles of the mesh, in input indices: each face of three
-** half-edges from its smallest, but the outer face (which has three too
-** when the hull is a triangle).  O(n). */
-static int dc_triangles(const dc_run *R, dc_pool *first, dc_hull top, uint32_t n,
-                        const uint32_t *id, paradigm_output *out) {
+/* The faces of pool p's half-edges, in input indices, into tri: each face
+** of three half-edges from its smallest, but the outer face (which has
+** three too when the hull is a triangle: then its smallest is outer3).
+** Returns their number, at most p's half-edges. */
+static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t outer3, uint32_t *tri) {
   const dc_half *h = R->h;
+  const uint32_t *id = R->id;
+  size_t t = 0;
+  for (uint32_t a = 2 * p->base; a < 2 * p->used; a++) {
+    if (h[a].org == DC_NONE || a == outer3) continue;
+    uint32_t b = dc_lnext(h, a), c = dc_lnext(h, b);
+    if (b < a || c < a || dc_lnext(h, c) != a) continue;   /* the outer face */
+    tri[3 * t] = id[h[a].org];
+    tri[3 * t + 1] = id[h[b].org];
+    tri[3 * t + 2] = id[h[c].org];
+    t++;
+  }
+  return t;
+}
+
+/* The triangles of the mesh, each pool's on its own thread (its own
+** stretch of the output, closed up after), in the order of the pools, so
+** the same array whatever the threads.  O(n). */
+static int dc_triangles(const dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
+                        paradigm_output *out) {
   uint32_t e0 = top.l ^ 1, e = e0, outer = e0, hull = 0;
   do {
     hull++;
     if (e < outer) outer = e;
-    e = dc_lnext(h, e);
+    e = dc_lnext(R->h, e);
   } while (e != e0);
-  size_t want = 2 * (size_t)n - 2 - hull, t = 0;
-  out->tri = malloc((want ? want : 1) * 3 * sizeof *out->tri);
+  const dc_pool *pool[DC_NODES];
+  size_t at[DC_NODES + 1] = {0}, got[DC_NODES], t = 0;
+  int np = 0;
+  for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more, np++) {
+    pool[np] = p;
+    at[np + 1] = at[np] + 2 * (size_t)(p->used - p->base);
+  }
+  out->tri = malloc(3 * at[np] * sizeof *out->tri);
   if (out->tri == NULL) return -1;
-  for (const dc_pool *p = first; p != NULL; p = p->more)
-    for (uint32_t a = 2 * p->base; a < 2 * p->used; a++) {
-      if (h[a].org == DC_NONE || (hull == 3 && a == outer)) continue;
-      uint32_t b = dc_lnext(h, a), c = dc_lnext(h, b);
-      if (b < a || c < a || dc_lnext(h, c) != a) continue;   /* the outer face */
-      if (t == want) return -2;
-      out->tri[3 * t] = id[h[a].org];
-      out->tri[3 * t + 1] = id[h[b].org];
-      out->tri[3 * t + 2] = id[h[c].org];
-      t++;
-    }
+#pragma omp parallel for schedule(static, 1) num_threads(R->threads < 4 ? R->threads : 4) \
+  if (R->threads > 1)
+  for (int k = 0; k < np; k++)
+    got[k] = dc_faces(R, pool[k], hull == 3 ? outer : DC_NONE, out->tri + 3 * at[k]);
+  for (int k = 0; k < np; k++) {
+    memmove(out->tri + 3 * t, out->tri + 3 * at[k], 3 * got[k] * sizeof *out->tri);
+    t += got[k];
+  }
+  uint32_t *tri = realloc(out->tri, (t ? 3 * t : 1) * sizeof *tri);
+  out->tri = tri ? tri : out->tri;
   out->ntri = t;
-  return t == want ? 0 : -2;
+  return t == 2 * (size_t)n - 2 - hull ? 0 : -2;
 }
 
 /* Merge and triangulate the sites s (in the order of the cuts). */
-static int dc_mesh(dc_run *R, uint32_t n, const uint32_t *id, ops_counts *c,
-                   paradigm_output *out, char *err, size_t errlen) {
+static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, char *err,
+                   size_t errlen) {
   ops_counts part[DC_NODES];
   memset(part, 0, sizeof part);
   for (int k = 0; k < DC_NODES; k++) R->count[k] = c ? &part[k] : NULL;
@@ -439,7 +481,7 @@ static int dc_mesh(dc_run *R, uint32_t n, const uint32_t *id, ops_counts *c,
     top = dc_top(R, 0, n, 0, 0, &first, &tail);
   }
   for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k]);
-  int rc = R->failed ? -2 : dc_triangles(R, first, top, n, id, out);
+  int rc = R->failed ? -2 : dc_triangles(R, first, top, n, out);
   free(R->h);
   ops_memory(c, -(int64_t)bytes);
   if (rc == -1) snprintf(err, errlen, "out of memory for the triangles of %u points", n);
@@ -448,49 +490,19 @@ static int dc_mesh(dc_run *R, uint32_t n, const uint32_t *id, ops_counts *c,
   return rc == 0 ? 0 : -1;
 }
 
-/* Alternating cuts: xs and ord (lexicographic) rearranged by dc_alternate
-** into the order of the cuts.  0, or -1 (out of memory). */
-static int dc_order_alternating(int threads, uint32_t n, ops_counts *c, geom_point **xs,
-                                uint32_t **ord) {
-  uint32_t *idx = malloc((size_t)n * sizeof *idx), *tmp = malloc((size_t)n * sizeof *tmp);
-  geom_point *s = malloc((size_t)n * sizeof *s);
-  ops_memory(c, (int64_t)n * (int64_t)(2 * sizeof *idx + sizeof *s));
-  if (idx == NULL || tmp == NULL || s == NULL) {
-    free(idx), free(tmp), free(s);
+/* The sites in lexicographic order, s[k] = p[id[k]], and the scratch of
+** the horizontal cuts.  0, or -1 (out of memory). */
+static int dc_order(const paradigm_input *in, int alternating, ops_counts *c, dc_run *R) {
+  uint32_t n = (uint32_t)in->n;
+  R->id = malloc((size_t)n * sizeof *R->id);
+  R->s = malloc((size_t)n * sizeof *R->s);
+  R->tid = alternating ? malloc((size_t)n * sizeof *R->tid) : NULL;
+  R->ts = alternating ? malloc((size_t)n * sizeof *R->ts) : NULL;
+  ops_memory(c, (int64_t)n * (alternating ? 40 : 20));
+  if (R->id == NULL || R->s == NULL || (alternating && (R->tid == NULL || R->ts == NULL))
+      || lot_sort_lexicographic(in->p, n, R->id) != 0)
     return -1;
-  }
-  for (uint32_t k = 0; k < n; k++) idx[k] = k;
-  dc_cut C = {*xs, idx, tmp, threads};
-  if (threads > 1) {
-#pragma omp parallel num_threads(threads < 4 ? threads : 4)
-#pragma omp single
-    dc_alternate(&C, 0, n, 0);
-  } else {
-    dc_alternate(&C, 0, n, 0);
-  }
-  for (uint32_t k = 0; k < n; k++) s[k] = (*xs)[idx[k]], tmp[k] = (*ord)[idx[k]];
-  free(idx), free(*xs), free(*ord);
-  ops_memory(c, -(int64_t)n * (int64_t)(2 * sizeof *idx + sizeof *s));
-  *xs = s, *ord = tmp;
-  return 0;
-}
-
-/* The sites in the order of the cuts, s[k] = p[id[k]]: lexicographic for
-** vertical cuts, rearranged by dc_alternate for alternating ones.  0, or
-** -1 (out of memory). */
-static int dc_order(const paradigm_input *in, int alternating, ops_counts *c, geom_point **s,
-                    uint32_t **id) {
-  uint32_t n = (uint32_t)in->n, *ord = malloc((size_t)n * sizeof *ord);
-  geom_point *xs = malloc((size_t)n * sizeof *xs);
-  ops_memory(c, (int64_t)n * (int64_t)(sizeof *ord + sizeof *xs));
-  int rc = ord && xs ? lot_sort_lexicographic(in->p, n, ord) : -1;
-  for (uint32_t k = 0; k < n && rc == 0; k++) xs[k] = in->p[ord[k]];
-  if (rc == 0 && alternating) rc = dc_order_alternating(in->threads, n, c, &xs, &ord);
-  if (rc != 0) {
-    free(ord), free(xs);
-    return -1;
-  }
-  *s = xs, *id = ord;
+  for (uint32_t k = 0; k < n; k++) R->s[k] = in->p[R->id[k]];
   return 0;
 }
 
@@ -510,16 +522,13 @@ int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
              (unsigned)DC_MAX_POINTS);
     return -1;
   }
-  geom_point *s;
-  uint32_t *id, n = (uint32_t)in->n;
-  if (dc_order(in, alternating, c, &s, &id) != 0) {
-    snprintf(err, errlen, "out of memory for the order of %u points", n);
-    return -1;
-  }
-  dc_run R = {.s = s, .r = in->r, .alternating = alternating, .threads = in->threads};
-  int rc = dc_mesh(&R, n, id, c, out, err, errlen);
-  free(s), free(id);
-  ops_memory(c, -(int64_t)n * (int64_t)(sizeof *s + sizeof *id));
+  uint32_t n = (uint32_t)in->n;
+  dc_run R = {.r = in->r, .alternating = alternating, .threads = in->threads};
+  int rc = dc_order(in, alternating, c, &R);
+  if (rc != 0) snprintf(err, errlen, "out of memory for the order of %u points", n);
+  else rc = dc_mesh(&R, n, c, out, err, errlen);
+  free(R.s), free(R.id), free(R.ts), free(R.tid);
+  ops_memory(c, -(int64_t)n * (alternating ? 40 : 20));
   return rc;
 }
 
