@@ -523,7 +523,8 @@ int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
     return -1;
   }
   uint32_t n = (uint32_t)in->n;
-  dc_run R = {.r = in->r, .alternating = alternating, .threads = in->threads};
+  /* Threads pay only past a few thousand sites (a team costs microseconds). */
+  dc_run R = {.r = in->r, .alternating = alternating, .threads = n < 4096 ? 1 : in->threads};
   int rc = dc_order(in, alternating, c, &R);
   if (rc != 0) snprintf(err, errlen, "out of memory for the order of %u points", n);
   else rc = dc_mesh(&R, n, c, out, err, errlen);

@@ -42,11 +42,8 @@ FLIPLAB_INTERNAL
 int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
 #define PARADIGM_DC_REFUSAL \
-  "ES:SHAPE: a merge step trusts that a circle through a cross edge and a site of one " \
-  "half holds no site of that half when the next neighbour lies outside it, which needs " \
-  "the rule's empty regions to be those of a triangulation with empty shapes; the LOT of " \
-  "a polygon's homothets covers the convex hull with triangles whose homothets are not " \
-  "empty, merges must start from a support-hull edge and deletions can disconnect a " \
-  "half (2.6.6); constraints and polygons: not yet (Chew's virtual sites, 2.6.2)"
+  "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
+  "has triangles with non-empty homothets, and merges would start at support-hull edges " \
+  "(2.6.6); constraints: not yet (Chew's virtual sites, 2.6.2)"
 
 #endif
