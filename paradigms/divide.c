@@ -404,35 +404,44 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_
 
 /* ---- the run ---- */
 
-/* The faces of pool p's half-edges, in input indices, into tri: each face
-** of three half-edges from its smallest, but the outer face (which has
-** three too when the hull is a triangle: then its smallest is outer3).
-** Returns their number, at most p's half-edges. */
-static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t outer3, uint32_t *tri) {
+/* The faces of pool p's half-edges, in input indices, into tri: the face
+** left of half-edge a is Org(a), Dest(a), Dest(b) with b = Lnext(a), and it
+** is written from its smallest half-edge (a < b and a < c = Lnext(b)); the
+** outer face is skipped by the mark DC_OUTER on the origins of its
+** half-edges.  b and its twin hold b, c and Dest(b): one random read a
+** half-edge, prefetched a few half-edges ahead.  Returns the number of
+** faces, at most p's half-edges. */
+#define DC_OUTER 0x80000000u   /* origins are below DC_MAX_POINTS < 2^31 */
+#define DC_AHEAD 16
+
+static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri) {
   const dc_half *h = R->h;
   const uint32_t *id = R->id;
   size_t t = 0;
-  for (uint32_t a = 2 * p->base; a < 2 * p->used; a++) {
-    if (h[a].org == DC_NONE || a == outer3) continue;
-    uint32_t b = dc_lnext(h, a), c = dc_lnext(h, b);
-    if (b < a || c < a || dc_lnext(h, c) != a) continue;   /* the outer face */
-    tri[3 * t] = id[h[a].org];
-    tri[3 * t + 1] = id[h[b].org];
-    tri[3 * t + 2] = id[h[c].org];
+  uint32_t end = 2 * p->used;
+  for (uint32_t a = 2 * p->base; a < end; a++) {
+    if (a + DC_AHEAD < end) __builtin_prefetch(&h[h[(a + DC_AHEAD) ^ 1].prev ^ 1]);
+    uint32_t o = h[a].org;
+    if (o & DC_OUTER) continue;   /* deleted (DC_NONE) or outer */
+    uint32_t b = h[a ^ 1].prev, c = h[b ^ 1].prev;
+    if (b < a || c < a) continue;
+    tri[3 * t] = id[o];
+    tri[3 * t + 1] = id[h[a ^ 1].org & ~DC_OUTER];
+    tri[3 * t + 2] = id[h[b ^ 1].org & ~DC_OUTER];
     t++;
   }
   return t;
 }
 
-/* The triangles of the mesh, each pool's on its own thread (its own
+/* The triangles of the mesh, each pool's on its own thread (into its own
 ** stretch of the output, closed up after), in the order of the pools, so
 ** the same array whatever the threads.  O(n). */
-static int dc_triangles(const dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
+static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
                         paradigm_output *out) {
-  uint32_t e0 = top.l ^ 1, e = e0, outer = e0, hull = 0;
+  uint32_t e0 = top.l ^ 1, e = e0, hull = 0;
   do {
     hull++;
-    if (e < outer) outer = e;
+    R->h[e].org |= DC_OUTER;
     e = dc_lnext(R->h, e);
   } while (e != e0);
   const dc_pool *pool[DC_NODES];
@@ -446,8 +455,7 @@ static int dc_triangles(const dc_run *R, const dc_pool *first, dc_hull top, uint
   if (out->tri == NULL) return -1;
 #pragma omp parallel for schedule(static, 1) num_threads(R->threads < 4 ? R->threads : 4) \
   if (R->threads > 1)
-  for (int k = 0; k < np; k++)
-    got[k] = dc_faces(R, pool[k], hull == 3 ? outer : DC_NONE, out->tri + 3 * at[k]);
+  for (int k = 0; k < np; k++) got[k] = dc_faces(R, pool[k], out->tri + 3 * at[k]);
   for (int k = 0; k < np; k++) {
     memmove(out->tri + 3 * t, out->tri + 3 * at[k], 3 * got[k] * sizeof *out->tri);
     t += got[k];
