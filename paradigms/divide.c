@@ -268,6 +268,7 @@ static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, 
 
 #define DC_SAMPLE 63      /* sites sampled for a pivot ... */
 #define DC_SMALL 11       /* ... or fewer, in pieces under 64 samples */
+#define DC_YMIN 24        /* smaller pieces take vertical cuts only */
 
 static inline int dc_lower(geom_point u, geom_point v) {
   return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));
@@ -337,21 +338,11 @@ static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int exact) {
   return dc_select(t, size, size / 2);
 }
 
-/* The sites of [lo, hi) below piv. */
-static uint32_t dc_count_below(const dc_run *R, uint32_t lo, uint32_t hi, geom_point piv) {
-  uint32_t below = 0;
-  for (uint32_t k = lo; k < hi; k++) below += (uint32_t)dc_lower(R->s[k], piv);
-  return below;
-}
-
-/* Split [lo, hi) (at least 4 sites) by (y, -x); returns where the upper
-** half starts.  O(hi - lo) expected: one pass to count, one to move, the
-** moves without branches (each site written to both sides, one kept). */
-static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi) {
-  uint32_t m = hi - lo;
-  geom_point piv = dc_pivot(R, lo, hi, 0);
-  uint32_t below = dc_count_below(R, lo, hi, piv);
-  if (below < m / 8 + 2 || m - below < m / 8 + 2) piv = dc_pivot(R, lo, hi, 1);
+/* Partition [lo, hi) by piv, stably: the sites below it stay in s from
+** lo on, the others go to the range's scratch.  Returns where the upper
+** half will start.  Without branches: each site is written to both sides
+** and one of the two writes is kept. */
+static uint32_t dc_partition(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv) {
   geom_point *s = R->s, *t = R->ts + lo;
   uint32_t *id = R->id, *tid = R->tid + lo, a = lo, b = 0;
   for (uint32_t k = lo; k < hi; k++) {
@@ -360,23 +351,47 @@ static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi) {
     s[a] = v, id[a] = i, t[b] = v, tid[b] = i;
     a += low, b += 1 - low;
   }
-  memcpy(s + a, t, (size_t)b * sizeof *t);
-  memcpy(id + a, tid, (size_t)b * sizeof *tid);
   return a;
 }
 
-static inline int dc_frame(const dc_run *R, int depth) {
-  return R->alternating ? depth & 1 : 0;
+/* Undo dc_partition (split at a): both sides are in lexicographic order,
+** so merging them from the back restores [lo, hi). */
+static void dc_unpartition(dc_run *R, uint32_t lo, uint32_t a, uint32_t hi) {
+  geom_point *s = R->s, *t = R->ts + lo;
+  uint32_t *id = R->id, *tid = R->tid + lo, i = a, j = hi - a, k = hi;
+  while (j > 0) {
+    if (i > lo && dc_before(t[j - 1], s[i - 1], 0)) s[--k] = s[--i], id[k] = id[i];
+    else s[--k] = t[--j], id[k] = tid[j];
+  }
+}
+
+/* Split [lo, hi) (at least 4 sites) by (y, -x); returns where the upper
+** half starts.  O(hi - lo) expected: one pass with the sample's pivot,
+** undone and redone with the exact median when a side is under an eighth. */
+static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi) {
+  uint32_t m = hi - lo, a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, 0));
+  if (a - lo < m / 8 + 2 || hi - a < m / 8 + 2) {
+    dc_unpartition(R, lo, a, hi);
+    a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, 1));
+  }
+  memcpy(R->s + a, R->ts + lo, (size_t)(hi - a) * sizeof *R->s);
+  memcpy(R->id + a, R->tid + lo, (size_t)(hi - a) * sizeof *R->id);
+  return a;
+}
+
+static inline int dc_frame(const dc_run *R, int depth, uint32_t m) {
+  return R->alternating && (depth & 1) && m >= DC_YMIN;
 }
 
 /* Sites [lo, hi) at recursion depth `depth`: T(n) = 2 T(n/2) + merge. */
 static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
                           int depth) {
   if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
-  uint32_t mid = dc_frame(R, depth) ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
+  int frame = dc_frame(R, depth, hi - lo);
+  uint32_t mid = frame ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
   dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1);
   dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1);
-  return dc_merge_across(R, p, c, a, b, dc_frame(R, depth));
+  return dc_merge_across(R, p, c, a, b, frame);
 }
 
 /* The fixed top levels: node k (heap order) covers [lo, hi); its subtrees
@@ -390,7 +405,8 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_
     *first = *tail = p;
     return dc_recurse(R, p, R->count[k], lo, hi, depth);
   }
-  uint32_t mid = dc_frame(R, depth) ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
+  int frame = dc_frame(R, depth, hi - lo);
+  uint32_t mid = frame ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
   dc_pool *f1, *t1, *f2, *t2;
   dc_hull a, b;
 #pragma omp task shared(a, f1, t1) if (R->threads > 1)
@@ -399,7 +415,7 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_
 #pragma omp taskwait
   t1->more = f2;
   *first = f1, *tail = t2;
-  return dc_merge_across(R, f1, R->count[k], a, b, dc_frame(R, depth));
+  return dc_merge_across(R, f1, R->count[k], a, b, frame);
 }
 
 /* ---- the run ---- */

@@ -1,7 +1,7 @@
 /*
 ** test_paradigm_divide.c: divide and conquer (paradigms/divide.c) against
 ** lot's incremental algorithm, the oracle of the registry: thousands of
-** small sets (3 to 40 sites; uniform, grid subsets, cocircular, duplicates,
+** small sets (3 to 400 sites; uniform, grid subsets, cocircular, duplicates,
 ** collinear runs) give exactly its triangles, with vertical and with
 ** alternating cuts; one thread and two give the same triangles and the same
 ** counts; the counts obey Euler's relation (every merge adds and deletes
@@ -23,7 +23,7 @@
 
 static const char *const td_rows[2] = {"dc-vertical", "dc-alternating"};
 
-/* Sites of family f (n of them, n <= 40 for the small sets). */
+/* Sites of family f (n of them, n <= 400). */
 static size_t td_points(int f, size_t n, testutil_rng *g, geom_point *p) {
   for (size_t i = 0; i < n; i++) {
     uint64_t a = testutil_next(g) % 6, b = testutil_next(g) % 6;
@@ -31,8 +31,8 @@ static size_t td_points(int f, size_t n, testutil_rng *g, geom_point *p) {
     switch (f) {
       case 0: p[i] = (geom_point){testutil_uniform(g), testutil_uniform(g)}; break;
       case 1: p[i] = (geom_point){(double)a, (double)b}; break;   /* grid, duplicates */
-      case 2: p[i] = (geom_point){(double)(i % 7), (double)(i / 7)}; break;   /* full grid */
-      case 3: p[i] = (geom_point){5 * cos(t), 5 * sin(t)}; break;   /* one circle */
+      case 2: p[i] = (geom_point){(double)(i % 7), (double)(i / 7)}; break;   /* grid */
+      case 3: p[i] = (geom_point){5 * cos(t), 5 * sin(t)}; break;   /* 24 on a circle */
       case 4:   /* collinear runs on three lines, a few off them */
         p[i] = i % 4 == 3 ? (geom_point){testutil_uniform(g) * 8, testutil_uniform(g) * 8}
              : (geom_point){(double)(i % 4 == 0 ? a : i % 4 == 1 ? 0 : a),
@@ -75,14 +75,17 @@ static void td_euler(const paradigm_result *r) {
   assert_true(r->ops.v[OPS_PEAK_BYTES] >= 72 * r->distinct);
 }
 
+/* 3,000 sets of 3 to 40 sites, then 300 of 40 to 400 (where the
+** horizontal cuts start: pieces of 24 sites and more). */
 static void test_small_sets(void **state) {
   (void)state;
-  geom_point p[40];
+  geom_point p[400];
   testutil_rng g = {2026};
   int compared = 0;
-  for (int trial = 0; trial < testutil_reps(3000); trial++) {
+  for (int trial = 0; trial < testutil_reps(3300); trial++) {
     int f = trial % 6;
-    size_t n = td_points(f, 3 + testutil_next(&g) % 38, &g, p);
+    size_t n = td_points(f, trial < 3000 ? 3 + testutil_next(&g) % 38
+                                         : 40 + testutil_next(&g) % 361, &g, p);
     paradigm_result ref, res;
     if (td_run("incremental", p, n, 1, &ref) != 0) continue;   /* collinear: refused */
     for (int a = 0; a < 2; a++) {
