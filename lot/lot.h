@@ -186,10 +186,6 @@ void lot_free(lot *L);
 ** occurrence).  Returns the number of distinct points, or -1 when out of
 ** memory or n > LOT_MAX_POINTS.  O(n log n). */
 long lot_distinct(const geom_point *p, size_t n, uint32_t *first);
-/* The lexicographic order of p[0..n-1] (x, then y, then index), the order
-** of lot's duplicate merging: ord[k] is the input index of the k-th point.
-** 0, or -1 when out of memory or n > LOT_MAX_POINTS.  O(n) radix passes. */
-int lot_sort_lexicographic(const geom_point *p, size_t n, uint32_t *ord);
 
 
 /* ---- independent checks (lot/check.c), from a triangle list alone ---- */

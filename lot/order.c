@@ -168,10 +168,6 @@ int lot_order_lexicographic(const geom_point *p, uint32_t n, uint32_t *ord) {
   return rc;
 }
 
-int lot_sort_lexicographic(const geom_point *p, size_t n, uint32_t *ord) {
-  return n > LOT_MAX_POINTS ? -1 : lot_order_lexicographic(p, (uint32_t)n, ord);
-}
-
 /* The duplicates of p in one lexicographic sort: O(n log n) (radix passes). */
 long lot_distinct(const geom_point *p, size_t n, uint32_t *first) {
   if (n > LOT_MAX_POINTS) return -1;

@@ -34,7 +34,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "paradigm_internal.h"
-#include "lot.h"
 #include "splitmix.h"
 
 #define DC_NONE 0xffffffffu
@@ -230,8 +229,8 @@ static dc_hull dc_merge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t ldo, uint
 /* u before v in the frame of the cut: (x, y) for a vertical cut, (y, -x)
 ** for a horizontal one (the frame turned a quarter clockwise). */
 static inline int dc_before(geom_point u, geom_point v, int frame) {
-  if (frame == 0) return u.x < v.x || (u.x == v.x && u.y < v.y);
-  return u.y < v.y || (u.y == v.y && u.x > v.x);
+  if (frame == 0) return (u.x < v.x) | ((u.x == v.x) & (u.y < v.y));   /* no branches: */
+  return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));   /* the partitions' answers are coins */
 }
 
 /* From ccw hull edge e, the ccw hull edge out of the first (last) site of
@@ -258,26 +257,24 @@ static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, 
   return (dc_hull){dc_extreme(R, m.l, 0, 0), R->h[dc_extreme(R, m.l, 0, 1)].prev};
 }
 
-/* ---- horizontal cuts: the sites [lo, hi), in lexicographic order, split
-** by (y, -x) at a pivot, each half kept in lexicographic order (a stable
-** partition), so the next, vertical, cut is the middle.  Any pivot that
-** leaves each half two sites gives the same triangulation (every split is
-** by a line); a balanced one keeps the pieces square, which makes the
-** merges cheap: the median of a sample, or the exact median when the
-** sample's leaves a side under an eighth. ---- */
+/* ---- the cuts: no sort.  A piece [lo, hi) is split by the order of its
+** cut's frame at a pivot: any pivot that leaves each side two sites gives
+** the same triangulation (every split is by a line); a balanced one keeps
+** the recursion O(log n) deep and, with alternating cuts, the pieces
+** square, which makes the merges cheap.  The pivot is the median of a
+** sample, or the exact median when the sample's leaves a side under an
+** eighth.  Pieces under DC_SORTED sites are sorted lexicographically once
+** and then halved in the middle by vertical cuts, as Guibas and Stolfi's
+** sorted sites are. ---- */
 
 #define DC_SAMPLE 63      /* sites sampled for a pivot ... */
 #define DC_SMALL 11       /* ... or fewer, in pieces under 64 samples */
-#define DC_YMIN 24        /* smaller pieces take vertical cuts only */
+#define DC_SORTED 24      /* smaller pieces are sorted, then take vertical cuts only */
 
-static inline int dc_lower(geom_point u, geom_point v) {
-  return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));
-}
-
-static void dc_sift(geom_point *a, uint32_t i, uint32_t n) {
+static void dc_sift(geom_point *a, uint32_t i, uint32_t n, int frame) {
   for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
-    if (k + 1 < n && dc_lower(a[k], a[k + 1])) k++;
-    if (!dc_lower(a[i], a[k])) return;
+    if (k + 1 < n && dc_before(a[k], a[k + 1], frame)) k++;
+    if (!dc_before(a[i], a[k], frame)) return;
     geom_point t = a[i];
     a[i] = a[k], a[k] = t;
   }
@@ -285,33 +282,33 @@ static void dc_sift(geom_point *a, uint32_t i, uint32_t n) {
 
 /* Heapsort: the selection's way out when its pivots keep failing, so that
 ** no input makes it quadratic.  O(n log n). */
-static void dc_heapsort(geom_point *a, uint32_t n) {
-  for (uint32_t i = n / 2; i-- > 0;) dc_sift(a, i, n);
+static void dc_heapsort(geom_point *a, uint32_t n, int frame) {
+  for (uint32_t i = n / 2; i-- > 0;) dc_sift(a, i, n, frame);
   for (uint32_t m = n; m-- > 1;) {
     geom_point t = a[0];
     a[0] = a[m], a[m] = t;
-    dc_sift(a, 0, m);
+    dc_sift(a, 0, m, frame);
   }
 }
 
-/* The element of rank k of a[0..n) by (y, -x): Hoare's selection with
-** pseudo-random pivots, O(n) expected; after 2 log2 n + 16 rounds, a
+/* The element of rank k of a[0..n) in the frame's order: Hoare's selection
+** with pseudo-random pivots, O(n) expected; after 2 log2 n + 16 rounds, a
 ** heapsort.  The sites are distinct, so the ranks are too. */
-static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k) {
+static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k, int frame) {
   uint64_t g = n;
   uint32_t lo = 0, hi = n;
   int budget = 16;
   for (uint32_t m = n; m > 1; m >>= 1) budget += 2;
   while (hi - lo > 1) {
     if (budget-- == 0) {
-      dc_heapsort(a + lo, hi - lo);
+      dc_heapsort(a + lo, hi - lo, frame);
       return a[k];
     }
     uint32_t q = lo + (uint32_t)(geom_splitmix64(&g) % (hi - lo)), i = lo, j = hi - 1;
     geom_point piv = a[q], t;
     a[q] = a[j], a[j] = piv;
     while (i < j) {
-      if (dc_lower(a[i], piv)) i++;
+      if (dc_before(a[i], piv, frame)) i++;
       else t = a[i], a[i] = a[--j], a[j] = t;
     }
     a[hi - 1] = a[i], a[i] = piv;
@@ -322,75 +319,91 @@ static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k) {
   return a[lo];
 }
 
-/* The pivot of [lo, hi): the median of DC_SAMPLE sites drawn by a
-** generator seeded with the range (so the same whatever the threads), or
-** the exact median.  Uses the range's slice of the scratch. */
-static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int exact) {
+/* The pivot of [lo, hi): the median of a sample drawn by a generator
+** seeded with the range (so the same whatever the threads), or the exact
+** median.  Uses the range's slice of the scratch. */
+static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int frame, int exact) {
   uint32_t m = hi - lo;
   geom_point *t = R->ts + lo;
   if (exact || m <= 2 * DC_SMALL) {
     memcpy(t, R->s + lo, (size_t)m * sizeof *t);
-    return dc_select(t, m, m / 2);
+    return dc_select(t, m, m / 2, frame);
   }
   uint32_t size = m < 64 * DC_SAMPLE ? DC_SMALL : DC_SAMPLE;
   uint64_t g = (uint64_t)lo << 32 | hi;
   for (uint32_t k = 0; k < size; k++) t[k] = R->s[lo + geom_splitmix64(&g) % m];
-  return dc_select(t, size, size / 2);
+  return dc_select(t, size, size / 2, frame);
 }
 
-/* Partition [lo, hi) by piv, stably: the sites below it stay in s from
-** lo on, the others go to the range's scratch.  Returns where the upper
-** half will start.  Without branches: each site is written to both sides
-** and one of the two writes is kept. */
-static uint32_t dc_partition(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv) {
-  geom_point *s = R->s, *t = R->ts + lo;
-  uint32_t *id = R->id, *tid = R->tid + lo, a = lo, b = 0;
+/* Partition [lo, hi) by piv into the range's scratch: the sites before it
+** from the front, the others from the back.  Returns the count before.
+** Without branches: each site is written to both free ends, one kept.
+** Inline, so that each frame gets its own loop. */
+static inline uint32_t dc_partition_in(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv,
+                                       int frame) {
+  const geom_point *s = R->s;
+  const uint32_t *id = R->id;
+  geom_point *t = R->ts + lo;
+  uint32_t *tid = R->tid + lo, a = 0, b = hi - lo;
   for (uint32_t k = lo; k < hi; k++) {
     geom_point v = s[k];
-    uint32_t i = id[k], low = (uint32_t)dc_lower(v, piv);
-    s[a] = v, id[a] = i, t[b] = v, tid[b] = i;
-    a += low, b += 1 - low;
+    uint32_t i = id[k], low = (uint32_t)dc_before(v, piv, frame);
+    t[a] = v, tid[a] = i, t[b - 1] = v, tid[b - 1] = i;
+    a += low, b -= 1 - low;
   }
   return a;
 }
 
-/* Undo dc_partition (split at a): both sides are in lexicographic order,
-** so merging them from the back restores [lo, hi). */
-static void dc_unpartition(dc_run *R, uint32_t lo, uint32_t a, uint32_t hi) {
-  geom_point *s = R->s, *t = R->ts + lo;
-  uint32_t *id = R->id, *tid = R->tid + lo, i = a, j = hi - a, k = hi;
-  while (j > 0) {
-    if (i > lo && dc_before(t[j - 1], s[i - 1], 0)) s[--k] = s[--i], id[k] = id[i];
-    else s[--k] = t[--j], id[k] = tid[j];
+static uint32_t dc_partition(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv, int frame) {
+  return frame ? dc_partition_in(R, lo, hi, piv, 1) : dc_partition_in(R, lo, hi, piv, 0);
+}
+
+/* Split [lo, hi) (at least DC_SORTED sites) in the frame's order; returns
+** where the second side starts.  O(hi - lo) expected: one pass with the
+** sample's pivot, redone with the exact median when a side is under an
+** eighth (the sites are still in place). */
+static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame) {
+  uint32_t m = hi - lo, a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, frame, 0), frame);
+  if (a < m / 8 + 2 || m - a < m / 8 + 2)
+    a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, frame, 1), frame);
+  memcpy(R->s + lo, R->ts + lo, (size_t)m * sizeof *R->s);
+  memcpy(R->id + lo, R->tid + lo, (size_t)m * sizeof *R->id);
+  return lo + a;
+}
+
+/* Sort [lo, hi) lexicographically, by insertion: small pieces only. */
+static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi) {
+  geom_point *s = R->s;
+  uint32_t *id = R->id;
+  for (uint32_t k = lo + 1; k < hi; k++) {
+    geom_point v = s[k];
+    uint32_t i = id[k], j = k;
+    for (; j > lo && dc_before(v, s[j - 1], 0); j--) s[j] = s[j - 1], id[j] = id[j - 1];
+    s[j] = v, id[j] = i;
   }
 }
 
-/* Split [lo, hi) (at least 4 sites) by (y, -x); returns where the upper
-** half starts.  O(hi - lo) expected: one pass with the sample's pivot,
-** undone and redone with the exact median when a side is under an eighth. */
-static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi) {
-  uint32_t m = hi - lo, a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, 0));
-  if (a - lo < m / 8 + 2 || hi - a < m / 8 + 2) {
-    dc_unpartition(R, lo, a, hi);
-    a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, 1));
+/* The cut of piece [lo, hi) at depth `depth` (sorted: already in
+** lexicographic order): its frame into *frame, where it splits returned. */
+static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *sorted,
+                       int *frame) {
+  if (!*sorted && hi - lo < DC_SORTED) {
+    dc_sort_small(R, lo, hi);
+    *sorted = 1;
   }
-  memcpy(R->s + a, R->ts + lo, (size_t)(hi - a) * sizeof *R->s);
-  memcpy(R->id + a, R->tid + lo, (size_t)(hi - a) * sizeof *R->id);
-  return a;
-}
-
-static inline int dc_frame(const dc_run *R, int depth, uint32_t m) {
-  return R->alternating && (depth & 1) && m >= DC_YMIN;
+  *frame = !*sorted && R->alternating ? depth & 1 : 0;
+  return *sorted ? lo + (hi - lo) / 2 : dc_split(R, lo, hi, *frame);
 }
 
 /* Sites [lo, hi) at recursion depth `depth`: T(n) = 2 T(n/2) + merge. */
 static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
-                          int depth) {
+                          int depth, int sorted) {
+  int frame;
+  if (hi - lo <= 3 && !sorted) dc_sort_small(R, lo, hi);
   if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
-  int frame = dc_frame(R, depth, hi - lo);
-  uint32_t mid = frame ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
-  dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1);
-  dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1);
+  uint32_t mid = dc_cut(R, lo, hi, depth, &sorted, &frame);
+  dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1, sorted);
+  dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1, sorted);
   return dc_merge_across(R, p, c, a, b, frame);
 }
 
@@ -399,14 +412,14 @@ static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uin
 ** *tail. */
 static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_pool **first,
                       dc_pool **tail) {
-  if (depth == DC_TOP || hi - lo <= 3) {
+  if (depth == DC_TOP || hi - lo < DC_SORTED) {
     dc_pool *p = &R->pool[k];
     *p = (dc_pool){DC_NONE, 3 * lo, 3 * lo, 3 * hi, NULL};
     *first = *tail = p;
-    return dc_recurse(R, p, R->count[k], lo, hi, depth);
+    return dc_recurse(R, p, R->count[k], lo, hi, depth, 0);
   }
-  int frame = dc_frame(R, depth, hi - lo);
-  uint32_t mid = frame ? dc_split(R, lo, hi) : lo + (hi - lo) / 2;
+  int sorted = 0, frame;
+  uint32_t mid = dc_cut(R, lo, hi, depth, &sorted, &frame);
   dc_pool *f1, *t1, *f2, *t2;
   dc_hull a, b;
 #pragma omp task shared(a, f1, t1) if (R->threads > 1)
@@ -514,31 +527,31 @@ static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, c
   return rc == 0 ? 0 : -1;
 }
 
-/* The sites in lexicographic order, s[k] = p[id[k]], and the scratch of
-** the horizontal cuts.  0, or -1 (out of memory). */
-static int dc_order(const paradigm_input *in, int alternating, ops_counts *c, dc_run *R) {
+/* The sites, s[k] = p[id[k]] (in input order to begin with: the cuts
+** permute them), and the scratch of the cuts.  0, or -1 (out of memory). */
+static int dc_sites(const paradigm_input *in, ops_counts *c, dc_run *R) {
   uint32_t n = (uint32_t)in->n;
   R->id = malloc((size_t)n * sizeof *R->id);
   R->s = malloc((size_t)n * sizeof *R->s);
-  R->tid = alternating ? malloc((size_t)n * sizeof *R->tid) : NULL;
-  R->ts = alternating ? malloc((size_t)n * sizeof *R->ts) : NULL;
-  ops_memory(c, (int64_t)n * (alternating ? 40 : 20));
-  if (R->id == NULL || R->s == NULL || (alternating && (R->tid == NULL || R->ts == NULL))
-      || lot_sort_lexicographic(in->p, n, R->id) != 0)
-    return -1;
-  for (uint32_t k = 0; k < n; k++) R->s[k] = in->p[R->id[k]];
+  R->tid = malloc((size_t)n * sizeof *R->tid);
+  R->ts = malloc((size_t)n * sizeof *R->ts);
+  ops_memory(c, (int64_t)n * 40);
+  if (R->id == NULL || R->s == NULL || R->tid == NULL || R->ts == NULL) return -1;
+  memcpy(R->s, in->p, (size_t)n * sizeof *R->s);
+  for (uint32_t k = 0; k < n; k++) R->id[k] = k;
   return 0;
 }
 
-/* Both rows, counting into c (NULL: not counting).  Cost: the sort, O(n)
-** radix passes; alternating cuts add the medians, O(n) expected per level
-** of horizontal cuts, O(n log n) in all; log n levels of merges, each O(n)
-** at worst (T(n) = 2 T(n/2) + O(n) = O(n log n)).  On uniform sites the
-** vertical cuts' merges run along the long axis of thin strips, Theta(n)
-** each, so Theta(n log n); alternating cuts keep the pieces square, a merge
-** of m sites crosses O(sqrt m) edges, and the merges cost O(n) expected in
-** all (Dwyer shows O(n log log n) for his variant).  Memory: 72 bytes a
-** site for the mesh (3n edges of 24 bytes), 20 to 48 for the order. */
+/* Both rows, counting into c (NULL: not counting).  Cost: the cuts, one
+** partition pass a level, O(n) expected per level and O(n log n) in all
+** (they take the place of the sort, which costs about as much); log n
+** levels of merges, each O(n) at worst (T(n) = 2 T(n/2) + O(n) = O(n log
+** n)).  On uniform sites the vertical cuts' merges run along the long axis
+** of thin strips, Theta(n) each, so Theta(n log n); alternating cuts keep
+** the pieces square, a merge of m sites crosses O(sqrt m) edges, and the
+** merges cost O(n) expected in all (Dwyer shows O(n log log n) for his
+** variant).  Memory: 72 bytes a site for the mesh (3n edges of 24 bytes),
+** 40 for the sites and the scratch of the cuts. */
 int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
                     paradigm_output *out, char *err, size_t errlen) {
   if (in->n > DC_MAX_POINTS) {
@@ -549,11 +562,11 @@ int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
   uint32_t n = (uint32_t)in->n;
   /* Threads pay only past a few thousand sites (a team costs microseconds). */
   dc_run R = {.r = in->r, .alternating = alternating, .threads = n < 4096 ? 1 : in->threads};
-  int rc = dc_order(in, alternating, c, &R);
-  if (rc != 0) snprintf(err, errlen, "out of memory for the order of %u points", n);
+  int rc = dc_sites(in, c, &R);
+  if (rc != 0) snprintf(err, errlen, "out of memory for the sites of %u points", n);
   else rc = dc_mesh(&R, n, c, out, err, errlen);
   free(R.s), free(R.id), free(R.ts), free(R.tid);
-  ops_memory(c, -(int64_t)n * (alternating ? 40 : 20));
+  ops_memory(c, -(int64_t)n * 40);
   return rc;
 }
 
