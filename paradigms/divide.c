@@ -62,8 +62,10 @@ typedef struct dc_hull {
 typedef struct dc_run {
   geom_point *s;          /* the sites, in the order of the cuts */
   uint32_t *id;           /* their input indices */
-  geom_point *ts;         /* scratch of the horizontal cuts (NULL for vertical ones) */
+  geom_point *ts;         /* the cuts' scratch */
   uint32_t *tid;
+  geom_point *sb[2];      /* s and ts: each cut moves a piece to the other */
+  uint32_t *ib[2];
   dc_half *h;
   const rule *r;
   int alternating;
@@ -322,29 +324,30 @@ static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k, int frame) {
 /* The pivot of [lo, hi): the median of a sample drawn by a generator
 ** seeded with the range (so the same whatever the threads), or the exact
 ** median.  Uses the range's slice of the scratch. */
-static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int frame, int exact) {
+static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int frame, int exact, int w) {
   uint32_t m = hi - lo;
-  geom_point *t = R->ts + lo;
+  const geom_point *s = R->sb[w];
+  geom_point *t = R->sb[!w] + lo;
   if (exact || m <= 2 * DC_SMALL) {
-    memcpy(t, R->s + lo, (size_t)m * sizeof *t);
+    memcpy(t, s + lo, (size_t)m * sizeof *t);
     return dc_select(t, m, m / 2, frame);
   }
   uint32_t size = m < 64 * DC_SAMPLE ? DC_SMALL : DC_SAMPLE;
   uint64_t g = (uint64_t)lo << 32 | hi;
-  for (uint32_t k = 0; k < size; k++) t[k] = R->s[lo + geom_splitmix64(&g) % m];
+  for (uint32_t k = 0; k < size; k++) t[k] = s[lo + geom_splitmix64(&g) % m];
   return dc_select(t, size, size / 2, frame);
 }
 
-/* Partition [lo, hi) by piv into the range's scratch: the sites before it
-** from the front, the others from the back.  Returns the count before.
-** Without branches: each site is written to both free ends, one kept.
-** Inline, so that each frame gets its own loop. */
+/* Partition [lo, hi) of buffer w by piv into the other buffer: the sites
+** before it from the front, the others from the back.  Returns the count
+** before.  Without branches: each site is written to both free ends, one
+** kept.  Inline, so that each frame gets its own loop. */
 static inline uint32_t dc_partition_in(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv,
-                                       int frame) {
-  const geom_point *s = R->s;
-  const uint32_t *id = R->id;
-  geom_point *t = R->ts + lo;
-  uint32_t *tid = R->tid + lo, a = 0, b = hi - lo;
+                                       int frame, int w) {
+  const geom_point *s = R->sb[w];
+  const uint32_t *id = R->ib[w];
+  geom_point *t = R->sb[!w] + lo;
+  uint32_t *tid = R->ib[!w] + lo, a = 0, b = hi - lo;
   for (uint32_t k = lo; k < hi; k++) {
     geom_point v = s[k];
     uint32_t i = id[k], low = (uint32_t)dc_before(v, piv, frame);
@@ -354,27 +357,29 @@ static inline uint32_t dc_partition_in(dc_run *R, uint32_t lo, uint32_t hi, geom
   return a;
 }
 
-static uint32_t dc_partition(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv, int frame) {
-  return frame ? dc_partition_in(R, lo, hi, piv, 1) : dc_partition_in(R, lo, hi, piv, 0);
-}
-
-/* Split [lo, hi) (at least DC_SORTED sites) in the frame's order; returns
-** where the second side starts.  O(hi - lo) expected: one pass with the
-** sample's pivot, redone with the exact median when a side is under an
-** eighth (the sites are still in place). */
-static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame) {
-  uint32_t m = hi - lo, a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, frame, 0), frame);
-  if (a < m / 8 + 2 || m - a < m / 8 + 2)
-    a = dc_partition(R, lo, hi, dc_pivot(R, lo, hi, frame, 1), frame);
-  memcpy(R->s + lo, R->ts + lo, (size_t)m * sizeof *R->s);
-  memcpy(R->id + lo, R->tid + lo, (size_t)m * sizeof *R->id);
+/* Split [lo, hi) (at least DC_SORTED sites, in buffer w) in the frame's
+** order into the other buffer; returns where the second side starts.
+** O(hi - lo) expected: one pass with the sample's pivot, redone with the
+** exact median when a side is under an eighth (buffer w is untouched). */
+static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame, int w) {
+  uint32_t m = hi - lo, a;
+  for (int exact = 0; exact < 2; exact++) {
+    geom_point piv = dc_pivot(R, lo, hi, frame, exact, w);
+    a = frame ? dc_partition_in(R, lo, hi, piv, 1, w) : dc_partition_in(R, lo, hi, piv, 0, w);
+    if (a >= m / 8 + 2 && m - a >= m / 8 + 2) break;
+  }
   return lo + a;
 }
 
-/* Sort [lo, hi) lexicographically, by insertion: small pieces only. */
-static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi) {
+/* Bring [lo, hi) from buffer w to the sites' array and sort it
+** lexicographically, by insertion: small pieces only. */
+static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi, int w) {
   geom_point *s = R->s;
   uint32_t *id = R->id;
+  if (w) {
+    memcpy(s + lo, R->ts + lo, (size_t)(hi - lo) * sizeof *s);
+    memcpy(id + lo, R->tid + lo, (size_t)(hi - lo) * sizeof *id);
+  }
   for (uint32_t k = lo + 1; k < hi; k++) {
     geom_point v = s[k];
     uint32_t i = id[k], j = k;
@@ -383,48 +388,56 @@ static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi) {
   }
 }
 
-/* The cut of piece [lo, hi) at depth `depth` (sorted: already in
-** lexicographic order): its frame into *frame, where it splits returned. */
-static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *sorted,
+/* Where a piece's sites are: in buffer 0 (the sites' array) or 1 (the
+** scratch), or sorted in the sites' array. */
+enum { DC_IN_S, DC_IN_T, DC_SORTED_S };
+
+/* The cut of piece [lo, hi) at depth `depth`: its frame into *frame, the
+** state of its sides into *state, where it splits returned.  Each cut moves
+** the sites to the other buffer; small pieces come back and are sorted. */
+static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *state,
                        int *frame) {
-  if (!*sorted && hi - lo < DC_SORTED) {
-    dc_sort_small(R, lo, hi);
-    *sorted = 1;
+  if (*state != DC_SORTED_S && hi - lo < DC_SORTED) {
+    dc_sort_small(R, lo, hi, *state == DC_IN_T);
+    *state = DC_SORTED_S;
   }
-  *frame = !*sorted && R->alternating ? depth & 1 : 0;
-  return *sorted ? lo + (hi - lo) / 2 : dc_split(R, lo, hi, *frame);
+  *frame = *state != DC_SORTED_S && R->alternating ? depth & 1 : 0;
+  if (*state == DC_SORTED_S) return lo + (hi - lo) / 2;
+  uint32_t mid = dc_split(R, lo, hi, *frame, *state == DC_IN_T);
+  *state = *state == DC_IN_T ? DC_IN_S : DC_IN_T;
+  return mid;
 }
 
 /* Sites [lo, hi) at recursion depth `depth`: T(n) = 2 T(n/2) + merge. */
 static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
-                          int depth, int sorted) {
+                          int depth, int state) {
   int frame;
-  if (hi - lo <= 3 && !sorted) dc_sort_small(R, lo, hi);
+  if (hi - lo <= 3 && state != DC_SORTED_S) dc_sort_small(R, lo, hi, state == DC_IN_T);
   if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
-  uint32_t mid = dc_cut(R, lo, hi, depth, &sorted, &frame);
-  dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1, sorted);
-  dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1, sorted);
+  uint32_t mid = dc_cut(R, lo, hi, depth, &state, &frame);
+  dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1, state);
+  dc_hull b = dc_recurse(R, p, c, mid, hi, depth + 1, state);
   return dc_merge_across(R, p, c, a, b, frame);
 }
 
 /* The fixed top levels: node k (heap order) covers [lo, hi); its subtrees
 ** run as tasks.  Returns the chain of edge slices it used in *first and
 ** *tail. */
-static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, dc_pool **first,
-                      dc_pool **tail) {
+static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int state,
+                      dc_pool **first, dc_pool **tail) {
   if (depth == DC_TOP || hi - lo < DC_SORTED) {
     dc_pool *p = &R->pool[k];
     *p = (dc_pool){DC_NONE, 3 * lo, 3 * lo, 3 * hi, NULL};
     *first = *tail = p;
-    return dc_recurse(R, p, R->count[k], lo, hi, depth, 0);
+    return dc_recurse(R, p, R->count[k], lo, hi, depth, state);
   }
-  int sorted = 0, frame;
-  uint32_t mid = dc_cut(R, lo, hi, depth, &sorted, &frame);
+  int frame;
+  uint32_t mid = dc_cut(R, lo, hi, depth, &state, &frame);
   dc_pool *f1, *t1, *f2, *t2;
   dc_hull a, b;
 #pragma omp task shared(a, f1, t1) if (R->threads > 1)
-  a = dc_top(R, lo, mid, depth + 1, 2 * k + 1, &f1, &t1);
-  b = dc_top(R, mid, hi, depth + 1, 2 * k + 2, &f2, &t2);
+  a = dc_top(R, lo, mid, depth + 1, 2 * k + 1, state, &f1, &t1);
+  b = dc_top(R, mid, hi, depth + 1, 2 * k + 2, state, &f2, &t2);
 #pragma omp taskwait
   t1->more = f2;
   *first = f1, *tail = t2;
@@ -513,9 +526,9 @@ static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, c
   if (R->threads > 1) {
 #pragma omp parallel num_threads(R->threads < 4 ? R->threads : 4)
 #pragma omp single
-    top = dc_top(R, 0, n, 0, 0, &first, &tail);
+    top = dc_top(R, 0, n, 0, 0, DC_IN_S, &first, &tail);
   } else {
-    top = dc_top(R, 0, n, 0, 0, &first, &tail);
+    top = dc_top(R, 0, n, 0, 0, DC_IN_S, &first, &tail);
   }
   for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k]);
   int rc = R->failed ? -2 : dc_triangles(R, first, top, n, out);
@@ -539,6 +552,7 @@ static int dc_sites(const paradigm_input *in, ops_counts *c, dc_run *R) {
   if (R->id == NULL || R->s == NULL || R->tid == NULL || R->ts == NULL) return -1;
   memcpy(R->s, in->p, (size_t)n * sizeof *R->s);
   for (uint32_t k = 0; k < n; k++) R->id[k] = k;
+  R->sb[0] = R->s, R->sb[1] = R->ts, R->ib[0] = R->id, R->ib[1] = R->tid;
   return 0;
 }
 
