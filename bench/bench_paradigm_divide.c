@@ -96,12 +96,12 @@ static void bd_table(bench_time t[][BD_ROWS], int runs) {
   for (int r = 0; r < BD_ROWS; r++)
     printf("| %s | %.3f | %.3f | %.2f | %.2f |\n", bd_names[r], m[r].wall, m[r].cpu,
            m[r].wall / m[BD_INCR].wall, m[r].wall / m[BD_CGAL].wall);
-  printf("\ntarget dc-alternating 1 thread / incremental <= 1.00: %.2f\n",
-         m[BD_ALT1].wall / m[BD_INCR].wall);
+  printf("\ntarget dc-alternating 1 thread / incremental <= 1.00: %.2f (CPU %.2f)\n",
+         m[BD_ALT1].wall / m[BD_INCR].wall, m[BD_ALT1].cpu / m[BD_INCR].cpu);
   printf("target dc-alternating 2 threads / CGAL <= 0.35: %.2f%s\n",
          m[BD_ALT2].wall / m[BD_CGAL].wall, isnan(m[BD_CGAL].wall) ? " (CGAL not built)" : "");
-  printf("counting on / off (dc-alternating, 1 thread): %.3f\n",
-         m[BD_ALT1_COUNT].wall / m[BD_ALT1].wall);
+  printf("counting on / off (dc-alternating, 1 thread): %.3f (CPU %.3f)\n",
+         m[BD_ALT1_COUNT].wall / m[BD_ALT1].wall, m[BD_ALT1_COUNT].cpu / m[BD_ALT1].cpu);
 }
 
 int main(int argc, char **argv) {
