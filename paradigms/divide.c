@@ -170,33 +170,24 @@ static inline int dc_incircle(const dc_run *R, ops_counts *c, uint32_t a, uint32
   return (v != 0 ? v : paradigm_inshape(R->r, NULL, s[a], s[b], s[d], s[e])) > 0;
 }
 
-/* The left candidate: the first neighbour of basel's left end, above it,
-** whose circle with basel holds no next neighbour; edges in the way are
-** deleted.  DC_NONE when no neighbour lies above. */
-static uint32_t dc_left_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel) {
+/* The left (right) candidate: the first neighbour of basel's left (right)
+** end, anticlockwise (clockwise) from basel and above it, whose circle
+** with basel holds no next neighbour; edges in the way are deleted.
+** DC_NONE when no neighbour lies above.  When the next neighbour is
+** basel's other end, the four sites are three and the candidate stays.
+** Inline: each side gets its own copy. */
+static inline uint32_t dc_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel,
+                                    int right) {
   dc_half *h = R->h;
-  uint32_t lc = h[basel ^ 1].next, bo = h[basel].org, bd = dc_dest(h, basel);
-  if (!dc_right_of(R, c, dc_dest(h, lc), basel)) return DC_NONE;
+  uint32_t bo = h[basel].org, bd = dc_dest(h, basel), stop = right ? bd : bo;
+  uint32_t e = right ? h[basel].prev : h[basel ^ 1].next;
+  if (!dc_right_of(R, c, dc_dest(h, e), basel)) return DC_NONE;
   for (int deleted = 0;; deleted = 1) {
-    uint32_t t = h[lc].next, far = dc_dest(h, t);
-    if (far == bo || !dc_incircle(R, c, bd, bo, dc_dest(h, lc), far))
-      return !deleted || dc_right_of(R, c, dc_dest(h, lc), basel) ? lc : DC_NONE;
-    dc_delete(R, p, c, lc);
-    lc = t;
-  }
-}
-
-/* The right candidate, mirrored. */
-static uint32_t dc_right_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel) {
-  dc_half *h = R->h;
-  uint32_t rc = h[basel].prev, bo = h[basel].org, bd = dc_dest(h, basel);
-  if (!dc_right_of(R, c, dc_dest(h, rc), basel)) return DC_NONE;
-  for (int deleted = 0;; deleted = 1) {
-    uint32_t t = h[rc].prev, far = dc_dest(h, t);
-    if (far == bd || !dc_incircle(R, c, bd, bo, dc_dest(h, rc), far))
-      return !deleted || dc_right_of(R, c, dc_dest(h, rc), basel) ? rc : DC_NONE;
-    dc_delete(R, p, c, rc);
-    rc = t;
+    uint32_t t = right ? h[e].prev : h[e].next, far = dc_dest(h, t);
+    if (far == stop || !dc_incircle(R, c, bd, bo, dc_dest(h, e), far))
+      return !deleted || dc_right_of(R, c, dc_dest(h, e), basel) ? e : DC_NONE;
+    dc_delete(R, p, c, e);
+    e = t;
   }
 }
 
@@ -215,8 +206,7 @@ static dc_hull dc_merge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t ldo, uint
   if (h[ldi].org == h[ldo].org) ldo = basel ^ 1;
   if (h[rdi].org == h[rdo].org) rdo = basel;
   for (;;) {
-    uint32_t lc = dc_left_candidate(R, p, c, basel);
-    uint32_t rc = dc_right_candidate(R, p, c, basel);
+    uint32_t lc = dc_candidate(R, p, c, basel, 0), rc = dc_candidate(R, p, c, basel, 1);
     if (lc == DC_NONE && rc == DC_NONE) break;
     if (lc == DC_NONE
         || (rc != DC_NONE
