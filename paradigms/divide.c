@@ -3,20 +3,21 @@
 ** triangulation (section 2.6.1), with vertical cuts ("dc-vertical") and with
 ** cuts alternating between vertical and horizontal (Dwyer: "dc-alternating").
 **
-** The sites are sorted lexicographically (lot's radix sort) and halved
-** recursively; each pair of halves, separated by a line, is merged along the
-** edges that cross it, from the lower common tangent upwards: a candidate
-** neighbour of either end of the present cross edge is kept while the next
-** neighbour lies outside the circle through the cross edge and it, and the
-** circle through the cross edge and the left candidate decides which end
-** moves.  Every in-circle test is lot's (paradigm_inshape's perturbation:
-** never 0 for four sites not on a line), so the result is lot's Delaunay
-** triangulation exactly, ties included.  Alternating cuts split a y-cut's
-** sites at the median of (y, -x), the lexicographic order of the frame
-** turned a quarter clockwise, in which the same merge runs unchanged
-** (orientation does not depend on the frame); only "leftmost" and
-** "rightmost", the ends the merge starts and ends from, are found by a walk
-** along the hull in the frame of the cut.
+** The sites are halved recursively by lines; each pair of triangulated
+** halves is merged along the edges that cross the line, from the lower
+** common tangent upwards: a candidate neighbour of either end of the
+** present cross edge is kept while the next neighbour lies outside the
+** circle through the cross edge and it, and the circle through the cross
+** edge and the left candidate decides which end moves.  Every in-circle test
+** is lot's (paradigm_inshape's perturbation: never 0 for four sites not on a
+** line), so the result is lot's Delaunay triangulation exactly, ties
+** included.  A vertical cut splits by the lexicographic order (x, y), a
+** horizontal one by (y, -x), the lexicographic order of the frame turned a
+** quarter clockwise, in which the same merge runs unchanged (orientation
+** does not depend on the frame); only "leftmost" and "rightmost", the ends
+** the merge starts and ends from, are found by a walk along the hulls in
+** the frame of the cut.  There is no sort: each cut partitions its piece at
+** a sampled median (below).
 **
 ** The mesh is a half-edge structure: half-edges 2k and 2k + 1 are one edge's
 ** two directions, each on the ring of its origin's half-edges in
@@ -28,7 +29,7 @@
 ** tasks, the halves side by side) do the same operations and make the same
 ** mesh, edge for edge.
 **
-** Ties in ES:SHAPE are not served: see the rows in paradigm.c.
+** ES:SHAPE is refused (PARADIGM_DC_REFUSAL in paradigm_internal.h says why).
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,8 +65,8 @@ typedef struct dc_run {
   uint32_t *id;           /* their input indices */
   geom_point *ts;         /* the cuts' scratch */
   uint32_t *tid;
-  geom_point *sb[2];      /* s and ts: each cut moves a piece to the other */
-  uint32_t *ib[2];
+  const geom_point *sb[3];   /* s, ts and the input: each cut moves a piece from */
+  const uint32_t *ib[3];     /* one to s or ts (dc_to); the input's indices are k */
   dc_half *h;
   const rule *r;
   int alternating;
@@ -311,13 +312,26 @@ static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k, int frame) {
   return a[lo];
 }
 
+/* Where a piece's sites are: in the sites' array, the scratch or the
+** input (the first cut's), or sorted in the sites' array. */
+enum { DC_IN_S, DC_IN_T, DC_IN_P, DC_SORTED_S };
+
+/* Where a cut moves a piece from buffer w: the scratch, or back. */
+static inline geom_point *dc_to(const dc_run *R, int w) {
+  return w == DC_IN_T ? R->s : R->ts;
+}
+
+static inline uint32_t *dc_to_id(const dc_run *R, int w) {
+  return w == DC_IN_T ? R->id : R->tid;
+}
+
 /* The pivot of [lo, hi): the median of a sample drawn by a generator
 ** seeded with the range (so the same whatever the threads), or the exact
 ** median.  Uses the range's slice of the scratch. */
 static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int frame, int exact, int w) {
   uint32_t m = hi - lo;
   const geom_point *s = R->sb[w];
-  geom_point *t = R->sb[!w] + lo;
+  geom_point *t = dc_to(R, w) + lo;
   if (exact || m <= 2 * DC_SMALL) {
     memcpy(t, s + lo, (size_t)m * sizeof *t);
     return dc_select(t, m, m / 2, frame);
@@ -336,11 +350,11 @@ static inline uint32_t dc_partition_in(dc_run *R, uint32_t lo, uint32_t hi, geom
                                        int frame, int w) {
   const geom_point *s = R->sb[w];
   const uint32_t *id = R->ib[w];
-  geom_point *t = R->sb[!w] + lo;
-  uint32_t *tid = R->ib[!w] + lo, a = 0, b = hi - lo;
+  geom_point *t = dc_to(R, w) + lo;
+  uint32_t *tid = dc_to_id(R, w) + lo, a = 0, b = hi - lo;
   for (uint32_t k = lo; k < hi; k++) {
     geom_point v = s[k];
-    uint32_t i = id[k], low = (uint32_t)dc_before(v, piv, frame);
+    uint32_t i = id ? id[k] : k, low = (uint32_t)dc_before(v, piv, frame);
     t[a] = v, tid[a] = i, t[b - 1] = v, tid[b - 1] = i;
     a += low, b -= 1 - low;
   }
@@ -366,10 +380,8 @@ static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame, int w) 
 static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi, int w) {
   geom_point *s = R->s;
   uint32_t *id = R->id;
-  if (w) {
-    memcpy(s + lo, R->ts + lo, (size_t)(hi - lo) * sizeof *s);
-    memcpy(id + lo, R->tid + lo, (size_t)(hi - lo) * sizeof *id);
-  }
+  for (uint32_t k = lo; k < hi && w != DC_IN_S; k++)
+    s[k] = R->sb[w][k], id[k] = R->ib[w] ? R->ib[w][k] : k;
   for (uint32_t k = lo + 1; k < hi; k++) {
     geom_point v = s[k];
     uint32_t i = id[k], j = k;
@@ -378,9 +390,6 @@ static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi, int w) {
   }
 }
 
-/* Where a piece's sites are: in buffer 0 (the sites' array) or 1 (the
-** scratch), or sorted in the sites' array. */
-enum { DC_IN_S, DC_IN_T, DC_SORTED_S };
 
 /* The cut of piece [lo, hi) at depth `depth`: its frame into *frame, the
 ** state of its sides into *state, where it splits returned.  Each cut moves
@@ -388,12 +397,12 @@ enum { DC_IN_S, DC_IN_T, DC_SORTED_S };
 static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *state,
                        int *frame) {
   if (*state != DC_SORTED_S && hi - lo < DC_SORTED) {
-    dc_sort_small(R, lo, hi, *state == DC_IN_T);
+    dc_sort_small(R, lo, hi, *state);
     *state = DC_SORTED_S;
   }
   *frame = *state != DC_SORTED_S && R->alternating ? depth & 1 : 0;
   if (*state == DC_SORTED_S) return lo + (hi - lo) / 2;
-  uint32_t mid = dc_split(R, lo, hi, *frame, *state == DC_IN_T);
+  uint32_t mid = dc_split(R, lo, hi, *frame, *state);
   *state = *state == DC_IN_T ? DC_IN_S : DC_IN_T;
   return mid;
 }
@@ -402,7 +411,7 @@ static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *stat
 static dc_hull dc_recurse(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32_t hi,
                           int depth, int state) {
   int frame;
-  if (hi - lo <= 3 && state != DC_SORTED_S) dc_sort_small(R, lo, hi, state == DC_IN_T);
+  if (hi - lo <= 3 && state != DC_SORTED_S) dc_sort_small(R, lo, hi, state);
   if (hi - lo <= 3) return dc_base(R, p, c, lo, hi - lo);
   uint32_t mid = dc_cut(R, lo, hi, depth, &state, &frame);
   dc_hull a = dc_recurse(R, p, c, lo, mid, depth + 1, state);
@@ -516,9 +525,9 @@ static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, c
   if (R->threads > 1) {
 #pragma omp parallel num_threads(R->threads < 4 ? R->threads : 4)
 #pragma omp single
-    top = dc_top(R, 0, n, 0, 0, DC_IN_S, &first, &tail);
+    top = dc_top(R, 0, n, 0, 0, DC_IN_P, &first, &tail);
   } else {
-    top = dc_top(R, 0, n, 0, 0, DC_IN_S, &first, &tail);
+    top = dc_top(R, 0, n, 0, 0, DC_IN_P, &first, &tail);
   }
   for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k]);
   int rc = R->failed ? -2 : dc_triangles(R, first, top, n, out);
@@ -540,9 +549,8 @@ static int dc_sites(const paradigm_input *in, ops_counts *c, dc_run *R) {
   R->ts = malloc((size_t)n * sizeof *R->ts);
   ops_memory(c, (int64_t)n * 40);
   if (R->id == NULL || R->s == NULL || R->tid == NULL || R->ts == NULL) return -1;
-  memcpy(R->s, in->p, (size_t)n * sizeof *R->s);
-  for (uint32_t k = 0; k < n; k++) R->id[k] = k;
-  R->sb[0] = R->s, R->sb[1] = R->ts, R->ib[0] = R->id, R->ib[1] = R->tid;
+  R->sb[0] = R->s, R->sb[1] = R->ts, R->sb[2] = in->p;
+  R->ib[0] = R->id, R->ib[1] = R->tid, R->ib[2] = NULL;
   return 0;
 }
 
