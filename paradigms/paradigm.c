@@ -24,10 +24,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "constraints: the constrained sweep is another row", "O(n log n)", NULL,
    paradigm_lot_sweep},
   {"dc-vertical", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT, PARADIGM_DC_REFUSAL,
-   "O(n log n): radix sort, log n levels of O(n) merges; Theta(n log n) on uniform sites",
-   NULL, paradigm_dc_vertical},
+   "O(n log n): cuts at sampled medians, log n levels of O(n) merges; Theta(n log n) "
+   "on uniform sites", NULL, paradigm_dc_vertical},
   {"dc-alternating", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
-   PARADIGM_DC_REFUSAL, "O(n log n): radix sort and medians; merges O(n) expected on "
+   PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
 };
 

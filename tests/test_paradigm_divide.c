@@ -71,6 +71,8 @@ static void td_same(const paradigm_result *a, const paradigm_result *b, const ch
 static void td_euler(const paradigm_result *r) {
   uint64_t live = r->ops.v[OPS_EDGES_MADE] - r->ops.v[OPS_EDGES_DELETED];
   assert_int_equal(live, r->distinct - 1 + r->ntri);
+  /* Every deletion follows an in-circle test that found a site inside. */
+  assert_true(r->ops.v[OPS_INCIRCLE] >= r->ops.v[OPS_EDGES_DELETED]);
   assert_true(r->ops.v[OPS_ORIENT] > 0);
   assert_true(r->ops.v[OPS_PEAK_BYTES] >= 72 * r->distinct);
 }
