@@ -23,6 +23,12 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints: the constrained sweep is another row", "O(n log n)", NULL,
    paradigm_lot_sweep},
+  {"dc-vertical", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT, PARADIGM_DC_REFUSAL,
+   "O(n log n): cuts at sampled medians, log n levels of O(n) merges; Theta(n log n) "
+   "on uniform sites", NULL, paradigm_dc_vertical},
+  {"dc-alternating", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
+   PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
+   "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
 };
 
 #define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])

@@ -29,4 +29,21 @@ FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
+/* Divide and conquer (paradigms/divide.c), Guibas and Stolfi's merge with
+** vertical or alternating cuts; paradigm_divide counts into c (NULL: not
+** counting, for the benchmark of the counting layer's cost). */
+FLIPLAB_INTERNAL
+int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
+                    paradigm_output *out, char *err, size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_dc_vertical(const paradigm_input *in, paradigm_output *out, char *err,
+                         size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen);
+#define PARADIGM_DC_REFUSAL \
+  "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
+  "has triangles with non-empty homothets, and merges would start at support-hull edges " \
+  "(2.6.6); constraints: not yet (Chew's virtual sites, 2.6.2)"
+
 #endif

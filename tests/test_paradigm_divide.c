@@ -1,0 +1,174 @@
+/*
+** test_paradigm_divide.c: divide and conquer (paradigms/divide.c) against
+** lot's incremental algorithm, the oracle of the registry: thousands of
+** small sets (3 to 400 sites; uniform, grid subsets, cocircular, duplicates,
+** collinear runs) give exactly its triangles, with vertical and with
+** alternating cuts; one thread and two give the same triangles and the same
+** counts; the counts obey Euler's relation (every merge adds and deletes
+** edges so that edges made - edges deleted = 3n - 3 - h, h the sites on the
+** hull); the rows refuse ES:SHAPE and the constrained problem with their
+** reason, and a set too large for the mesh with one line.
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include "paradigm_internal.h"
+#include "lot.h"
+#include "testutil.h"
+
+static const char *const td_rows[2] = {"dc-vertical", "dc-alternating"};
+
+/* Sites of family f (n of them, n <= 400). */
+static size_t td_points(int f, size_t n, testutil_rng *g, geom_point *p) {
+  for (size_t i = 0; i < n; i++) {
+    uint64_t a = testutil_next(g) % 6, b = testutil_next(g) % 6;
+    double t = 6.283185307179586 * (double)(testutil_next(g) % 24) / 24;
+    switch (f) {
+      case 0: p[i] = (geom_point){testutil_uniform(g), testutil_uniform(g)}; break;
+      case 1: p[i] = (geom_point){(double)a, (double)b}; break;   /* grid, duplicates */
+      case 2: p[i] = (geom_point){(double)(i % 7), (double)(i / 7)}; break;   /* grid */
+      case 3: p[i] = (geom_point){5 * cos(t), 5 * sin(t)}; break;   /* 24 on a circle */
+      case 4:   /* collinear runs on three lines, a few off them */
+        p[i] = i % 4 == 3 ? (geom_point){testutil_uniform(g) * 8, testutil_uniform(g) * 8}
+             : (geom_point){(double)(i % 4 == 0 ? a : i % 4 == 1 ? 0 : a),
+                            (double)(i % 4 == 0 ? 0 : i % 4 == 1 ? b : a)};
+        break;
+      default:  /* integer points of two concentric circles, with repeats */
+        {
+          static const int c[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+                                     {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+          int k = (int)(testutil_next(g) % 12), s = (int)(testutil_next(g) % 2) + 1;
+          p[i] = (geom_point){s * c[k][0], s * c[k][1]};
+        }
+    }
+  }
+  return n;
+}
+
+/* Run row a on p; 0 and the result, or -1 when the set is refused (all
+** collinear, too few distinct). */
+static int td_run(const char *name, const geom_point *p, size_t n, int threads,
+                  paradigm_result *res) {
+  rule dt = rule_delaunay();
+  paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_DELAUNAY, .seed = 3,
+                       .threads = threads};
+  char err[256];
+  return paradigm_run(paradigm_find(name), &in, res, err, sizeof err);
+}
+
+static void td_same(const paradigm_result *a, const paradigm_result *b, const char *what) {
+  if (a->ntri != b->ntri || memcmp(a->tri, b->tri, 3 * a->ntri * sizeof *a->tri) != 0)
+    fail_msg("%s: triangles differ (%zu against %zu)", what, a->ntri, b->ntri);
+}
+
+/* Euler: a triangulation of n sites, h of them on the hull, has 3n - 3 - h
+** edges and 2n - 2 - h triangles, so made - deleted = n - 1 + triangles. */
+static void td_euler(const paradigm_result *r) {
+  uint64_t live = r->ops.v[OPS_EDGES_MADE] - r->ops.v[OPS_EDGES_DELETED];
+  assert_int_equal(live, r->distinct - 1 + r->ntri);
+  /* Every deletion follows an in-circle test that found a site inside. */
+  assert_true(r->ops.v[OPS_INCIRCLE] >= r->ops.v[OPS_EDGES_DELETED]);
+  assert_true(r->ops.v[OPS_ORIENT] > 0);
+  assert_true(r->ops.v[OPS_PEAK_BYTES] >= 72 * r->distinct);
+}
+
+/* 3,000 sets of 3 to 40 sites, then 300 of 40 to 400 (where the
+** horizontal cuts start: pieces of 24 sites and more). */
+static void test_small_sets(void **state) {
+  (void)state;
+  geom_point p[400];
+  testutil_rng g = {2026};
+  int compared = 0;
+  for (int trial = 0; trial < testutil_reps(3300); trial++) {
+    int f = trial % 6;
+    size_t n = td_points(f, trial < 3000 ? 3 + testutil_next(&g) % 38
+                                         : 40 + testutil_next(&g) % 361, &g, p);
+    paradigm_result ref, res;
+    if (td_run("incremental", p, n, 1, &ref) != 0) continue;   /* collinear: refused */
+    for (int a = 0; a < 2; a++) {
+      assert_int_equal(td_run(td_rows[a], p, n, 1 + trial % 2, &res), 0);
+      char what[96];
+      snprintf(what, sizeof what, "%s, family %d, n %zu, trial %d", td_rows[a], f, n, trial);
+      td_same(&ref, &res, what);
+      td_euler(&res);
+      paradigm_result_free(&res);
+      compared++;
+    }
+    paradigm_result_free(&ref);
+  }
+  assert_true(compared > testutil_reps(3000));
+}
+
+/* Larger sets, one and two threads: the same triangles and the same counts. */
+static void test_threads(void **state) {
+  (void)state;
+  size_t n = 30000;
+  geom_point *p = malloc(n * sizeof *p);
+  assert_non_null(p);
+  testutil_rng g = {77};
+  for (int f = 0; f < 3; f++) {
+    for (size_t i = 0; i < n; i++)
+      p[i] = f == 0 ? (geom_point){testutil_uniform(&g), testutil_uniform(&g)}
+           : f == 1 ? (geom_point){(double)(i % 173), (double)(i / 173)}
+                    : (geom_point){(double)(testutil_next(&g) % 300),
+                                   (double)(testutil_next(&g) % 5)};
+    paradigm_result ref;
+    assert_int_equal(td_run("incremental", p, n, 1, &ref), 0);
+    for (int a = 0; a < 2; a++) {
+      paradigm_result one, two;
+      assert_int_equal(td_run(td_rows[a], p, n, 1, &one), 0);
+      assert_int_equal(td_run(td_rows[a], p, n, 2, &two), 0);
+      td_same(&ref, &one, td_rows[a]);
+      td_same(&one, &two, td_rows[a]);
+      for (int k = 0; k < OPS_COUNT; k++)
+        if (k != OPS_EXACT) assert_int_equal(one.ops.v[k], two.ops.v[k]);
+      td_euler(&one);
+      paradigm_result_free(&one), paradigm_result_free(&two);
+    }
+    paradigm_result_free(&ref);
+  }
+  free(p);
+}
+
+static void test_refusals(void **state) {
+  (void)state;
+  geom_point p[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  uint32_t seg[2] = {0, 3};
+  rule sq, dt = rule_delaunay();
+  char err[512];
+  assert_int_equal(rule_parse("ES:square", &sq, err, sizeof err), 0);
+  paradigm_input in = {.p = p, .n = 4, .r = &sq, .problem = PARADIGM_DELAUNAY, .threads = 1};
+  paradigm_result res;
+  for (int a = 0; a < 2; a++) {
+    const paradigm_algorithm *alg = paradigm_find(td_rows[a]);
+    assert_non_null(strstr(alg->refusal, "ES:SHAPE"));
+    in.r = &sq, in.problem = PARADIGM_DELAUNAY;
+    assert_int_equal(paradigm_run(alg, &in, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "ES:square"));
+    assert_null(strchr(err, '\n'));
+    in.r = &dt, in.problem = PARADIGM_CONSTRAINED, in.segments = seg, in.nsegments = 1;
+    assert_int_equal(paradigm_run(alg, &in, &res, err, sizeof err), -1);
+    assert_non_null(strstr(err, "2.6.2"));
+    assert_null(strchr(err, '\n'));
+  }
+  /* Too many sites for 32-bit half-edges: refused before anything is read. */
+  paradigm_input big = {.p = p, .n = (size_t)1 << 30, .r = &dt, .threads = 1};
+  paradigm_output out = {0};
+  assert_int_equal(paradigm_divide(&big, 1, NULL, &out, err, sizeof err), -1);
+  assert_non_null(strstr(err, "at most"));
+  assert_null(strchr(err, '\n'));
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_small_sets),
+    cmocka_unit_test(test_threads),
+    cmocka_unit_test(test_refusals),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
