@@ -9,9 +9,13 @@ set -u
 src=$1
 max=${2:-60}
 cd "$src" || exit 2
-files=$(ls geom/*.[ch] badness/*.[ch] joints/*.[ch] samplers/*.[ch] shapes/*.[ch] \
-  cpdt/*.[ch] fliprules/*.[ch] lot/*.[ch] classify/*.[ch] got/*.[ch] studies/*.[ch] reports/*.[ch] \
-  cli/*.[ch] plugins/*.c fuzz/*.c 2>/dev/null)
+# The parts are read from the top CMakeLists.txt (fliplab_parts), so a new
+# part is checked without a change here.
+parts=$(awk '/^set\(fliplab_parts/ { f = 1 } f { print } f && /\)/ { exit }' CMakeLists.txt \
+  | sed 's/set(fliplab_parts//; s/)//')
+globs=""
+for p in $parts; do globs="$globs $p/*.[ch]"; done
+files=$(ls $globs cli/*.[ch] plugins/*.c fuzz/*.c 2>/dev/null)
 out=$(awk -v max="$max" '
 FNR == 1 { infn = 0; sig = "" }
 !infn && /^[A-Za-z_]/ && !/;[ \t]*$/ { sig = $0 }
