@@ -23,6 +23,20 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints: the constrained sweep is another row", "O(n log n)", NULL,
    paradigm_lot_sweep},
+  {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   NULL, paradigm_select_stack},
+  {"select-queue", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   NULL, paradigm_select_queue},
+  {"select-strip", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   "O(n^{3/2}) expected on uniform sites (DT); O(n^2) for ES (no strip bound)", NULL,
+   paradigm_select_strip},
+  {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   "O(n) expected on uniform sites (DT); O(n^2) for ES (no cap bound)",
+   "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
 };
 
 #define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])

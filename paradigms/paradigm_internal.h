@@ -25,4 +25,39 @@ int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
+/* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
+** unfinished edges as a stack or a queue, and the apex search by a scan of
+** every site, an x-sorted strip, or a bucket grid. */
+int paradigm_select_stack(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen);
+int paradigm_select_queue(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen);
+int paradigm_select_strip(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen);
+int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen);
+
+/* How a selection run keeps its boundary and searches for an apex. */
+typedef enum paradigm_select_order { PARADIGM_SELECT_STACK, PARADIGM_SELECT_QUEUE }
+  paradigm_select_order;
+typedef enum paradigm_select_search {
+  PARADIGM_SELECT_SCAN, PARADIGM_SELECT_STRIP, PARADIGM_SELECT_BUCKETS
+} paradigm_select_search;
+
+/* What figures 2.9-2.11 and the bucket count of 2.4.1 measure: the
+** boundary's size after each triangle (its mean) and its peak, the hull's
+** sites, the grid's buckets. */
+typedef struct paradigm_select_stats {
+  double mean_boundary;
+  size_t peak_boundary;
+  size_t hull;
+  size_t buckets;
+} paradigm_select_stats;
+
+/* One selection run on distinct points (as the runner hands them over);
+** st may be NULL.  0, or -1 with a one-line message (out of memory). */
+int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
+                        paradigm_select_search search, paradigm_output *out,
+                        paradigm_select_stats *st, char *err, size_t errlen);
+
 #endif

@@ -1,0 +1,451 @@
+/*
+** select.c: the selection algorithms of thesis 2.4.1 (docs/paradigms.md,
+** "Selection").  The circumcircle algorithm grows the triangulation one
+** triangle at a time from a hull edge: the boundary holds the directed
+** edges whose left side is still unknown; an edge is taken from it, the
+** apex on its left is selected, and the triangle's two other sides either
+** close a boundary edge (the reverse was waiting) or join the boundary.
+** Lifted to the paraboloid it is gift wrapping.  The boundary is a stack
+** (a depth-first walk of the dual graph: figure 2.9) or a queue (breadth
+** first: figure 2.10); the apex search scans every site, or an x-sorted
+** strip, or a bucket grid.
+**
+** The apex of edge ab is the site c on its left such that no other site on
+** its left beats it, "d beats c" meaning that d lies inside the rule's
+** region through a, b, c (paradigm_inshape, lot's tie-break included).  For
+** every rule here the regions through a and b are nested on the left of ab
+** (circles of one pencil; for ES the circumscribing homothets and rounding
+** shapes of docs/emptyshape.md), so "beats" is a strict order there and one
+** pass that keeps the better of the candidate and each site finds the
+** minimum: the output is lot's triangulation exactly.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "paradigm_internal.h"
+#include "rule.h"
+#include "shape.h"
+
+#define SEL_NONE UINT32_MAX
+#define SEL_EMPTY UINT64_MAX          /* hash slots: never a key (indices < 2^32 - 1) */
+#define SEL_GONE (UINT64_MAX - 1)
+
+typedef struct sel_edge { uint32_t u, v; } sel_edge;
+
+/* The part of the candidate's circle on the left of ab (DT), widened by
+** tol; bounded = 0: nothing is known (no candidate, an ES rule, or a
+** triangle too flat for the floating-point bound below). */
+typedef struct sel_cap {
+  int bounded;
+  double cx, cy, r, tol, xlo, xhi;
+} sel_cap;
+
+/* The bucket grid: gx * gy cells over the bounding box, the sites of cell k
+** at site[start[k] .. start[k + 1]), a stamp per cell (the search that last
+** queued it) and the breadth-first queue of one search. */
+typedef struct sel_grid {
+  size_t gx, gy;
+  double x0, y0, w, h, span, tol;
+  uint32_t *start, *site, *stamp, *queue;
+  uint32_t search;
+} sel_grid;
+
+typedef struct sel_state sel_state;
+typedef uint32_t (*sel_search_fn)(sel_state *s, uint32_t a, uint32_t b);
+
+struct sel_state {
+  const geom_point *p;
+  size_t n;
+  const rule *r;
+  ops_counts *c;
+  int dt;                              /* the rule is DT (bounds known) */
+  int (*beats)(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d);
+  sel_search_fn search;
+  uint32_t *ord, *pos, *hprev;         /* lexicographic order, its inverse, hull links */
+  uint32_t h0, h1;                     /* the first hull edge, interior on its left */
+  size_t hull;
+  sel_edge *edge;                      /* pushed edges: [head, top) */
+  size_t head, top;
+  uint64_t *hkey;                      /* the live boundary, open addressing */
+  size_t hmask, live, peak;
+  double live_sum;
+  uint32_t *tri;
+  size_t ntri;
+  sel_grid g;
+};
+
+/* ---- the apex order ---------------------------------------------------- */
+
+/* DT: d beats c when it lies inside the circle abc; the in-circle sign with
+** its tie-break is valid for d anywhere, one test per site. */
+static int sel_beats_dt(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  return paradigm_inshape(s->r, s->c, s->p[a], s->p[b], s->p[c], s->p[d]) > 0;
+}
+
+/* ES: shape_decide answers only for a strictly convex quadrilateral, so
+** the position of c and d (both strictly left of ab) is settled first by
+** s = orient(b, c, d) and t = orient(a, c, d).  s > 0, t > 0: abcd is
+** strictly convex, and d beats c when inside the shape through a, b, c.
+** s < 0, t < 0: abdc is, and c stays when inside the shape through a, b, d.
+** Otherwise one of c, d lies in the closed triangle of a, b and the other
+** (a or b cannot: c and d would be on opposite sides of ab): s > 0, t < 0
+** puts d inside abc; s = 0 puts c, d on one ray from b and t < 0 says d is
+** the nearer; t = 0 the same from a with s > 0.  A site inside triangle
+** abc, or on its open side ac or bc, lies strictly inside every shape
+** through a, b, c (a chord of a strictly convex region, and for a polygon
+** K the perturbation of docs/emptyshape.md turns K so that no side of a
+** homothet is parallel to a chord), so it beats c: d beats c exactly when
+** s > 0 or t < 0. */
+static int sel_beats_es(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  geom_point pa = s->p[a], pb = s->p[b], pc = s->p[c], pd = s->p[d];
+  int sg = ops_orient(s->c, pb, pc, pd), tg = ops_orient(s->c, pa, pc, pd);
+  if (sg > 0 && tg > 0) return paradigm_inshape(s->r, s->c, pa, pb, pc, pd) > 0;
+  if (sg < 0 && tg < 0) return paradigm_inshape(s->r, s->c, pa, pb, pd, pc) < 0;
+  return sg > 0 || tg < 0;
+}
+
+/* Site d against the best apex so far of edge ab: the new best. */
+static uint32_t sel_try(sel_state *s, uint32_t a, uint32_t b, uint32_t best, uint32_t d) {
+  if (d == a || d == b || ops_orient(s->c, s->p[a], s->p[b], s->p[d]) <= 0) return best;
+  return best == SEL_NONE || s->beats(s, a, b, best, d) ? d : best;
+}
+
+/* ---- the boundary: a stack or a queue, and the set of live edges -------- */
+
+static size_t sel_slot(const sel_state *s, uint64_t key) {
+  uint64_t z = key + 0x9e3779b97f4a7c15u;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+  return (size_t)(z ^ (z >> 31)) & s->hmask;
+}
+
+static uint64_t sel_key(uint32_t u, uint32_t v) {
+  return (uint64_t)u << 32 | v;
+}
+
+/* Remove u->v from the live boundary: 1 when it was there. */
+static int sel_take(sel_state *s, uint32_t u, uint32_t v) {
+  uint64_t key = sel_key(u, v);
+  for (size_t i = sel_slot(s, key);; i = (i + 1) & s->hmask) {
+    if (s->hkey[i] == SEL_EMPTY) return 0;
+    if (s->hkey[i] != key) continue;
+    s->hkey[i] = SEL_GONE;
+    s->live--;
+    ops_memory(s->c, -(int64_t)sizeof(sel_edge));
+    return 1;
+  }
+}
+
+/* A new boundary edge u->v (its left side unknown).  Each directed edge
+** is pushed at most once, so the table never holds more than 3n keys and
+** tombstones in its 8n slots or more. */
+static void sel_push(sel_state *s, uint32_t u, uint32_t v) {
+  size_t i = sel_slot(s, sel_key(u, v));
+  while (s->hkey[i] != SEL_EMPTY) i = (i + 1) & s->hmask;
+  s->hkey[i] = sel_key(u, v);
+  s->edge[s->top++] = (sel_edge){u, v};
+  if (++s->live > s->peak) s->peak = s->live;
+  ops_memory(s->c, (int64_t)sizeof(sel_edge));
+  ops_add(s->c, OPS_EDGES_MADE, 1);
+}
+
+/* Side x->y of a new triangle (the triangle on its left): it closes the
+** boundary edge x->y if that waits, else y->x joins the boundary. */
+static void sel_close(sel_state *s, uint32_t x, uint32_t y) {
+  if (!sel_take(s, x, y)) sel_push(s, y, x);
+}
+
+/* The circumcircle algorithm: O(n) boundary steps, each one apex search. */
+static void sel_wrap(sel_state *s, paradigm_select_order order) {
+  sel_push(s, s->h0, s->h1);
+  while (s->head < s->top) {
+    sel_edge e = order == PARADIGM_SELECT_STACK ? s->edge[--s->top] : s->edge[s->head++];
+    if (!sel_take(s, e.u, e.v)) continue;          /* closed while it waited */
+    if (s->hprev[e.u] == e.v) continue;            /* a hull edge seen from outside */
+    uint32_t c = s->search(s, e.u, e.v);
+    if (c == SEL_NONE) continue;                   /* never: only hull edges see nothing */
+    uint32_t *t = s->tri + 3 * s->ntri++;
+    t[0] = e.u, t[1] = e.v, t[2] = c;
+    sel_close(s, e.v, c);
+    sel_close(s, c, e.u);
+    s->live_sum += (double)s->live;
+  }
+}
+
+/* ---- the hull: where the wrapping starts and which edges face out ------- */
+
+typedef struct sel_site { geom_point p; uint32_t i; } sel_site;
+
+static int sel_lex_cmp(const void *x, const void *y) {
+  const sel_site *p = x, *q = y;
+  if (p->p.x != q->p.x) return p->p.x < q->p.x ? -1 : 1;
+  return p->p.y < q->p.y ? -1 : p->p.y > q->p.y;
+}
+
+/* The sites in lexicographic order, and the convex hull with the sites on
+** its sides (every site is a vertex of lot's triangulation), anticlockwise
+** by Andrew's monotone chain keeping collinear turns: O(n log n).  The
+** hull's turns are counted as orientation tests. */
+static int sel_hull(sel_state *s, uint32_t *h) {
+  sel_site *t = malloc(s->n * sizeof *t);
+  if (t == NULL) return -1;
+  for (size_t i = 0; i < s->n; i++) t[i] = (sel_site){s->p[i], (uint32_t)i};
+  qsort(t, s->n, sizeof *t, sel_lex_cmp);
+  for (size_t i = 0; i < s->n; i++) s->ord[i] = t[i].i;
+  free(t);
+  size_t k = 0;
+  for (size_t i = 0; i < s->n; i++) {
+    s->pos[s->ord[i]] = (uint32_t)i;
+    while (k >= 2 && ops_orient(s->c, s->p[h[k - 2]], s->p[h[k - 1]], s->p[s->ord[i]]) < 0) k--;
+    h[k++] = s->ord[i];
+  }
+  for (size_t i = s->n - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && ops_orient(s->c, s->p[h[k - 2]], s->p[h[k - 1]], s->p[s->ord[i]]) < 0)
+      k--;
+    h[k++] = s->ord[i];
+  }
+  s->hull = k - 1;                                 /* h[k - 1] is h[0] again */
+  for (size_t i = 0; i < s->n; i++) s->hprev[i] = SEL_NONE;
+  for (size_t j = 0; j < s->hull; j++) s->hprev[h[j + 1]] = h[j];
+  s->h0 = h[0], s->h1 = h[1];
+  return 0;
+}
+
+/* ---- the apex searches ------------------------------------------------- */
+
+/* Every site: O(n) per edge, O(n^2) in all (2.4.1). */
+static uint32_t sel_search_scan(sel_state *s, uint32_t a, uint32_t b) {
+  uint32_t best = SEL_NONE;
+  for (size_t i = 0; i < s->n; i++) best = sel_try(s, a, b, best, (uint32_t)i);
+  return best;
+}
+
+/* The cap of the candidate c of edge ab: the part of circle abc on the
+** left of ab, as centre, radius and x-extent, all widened by tol.  Only a
+** bound: a site outside it cannot lie inside the circle, and the choice
+** among the sites inside is the exact test's.  Why tol suffices: with
+** v = b - a, the centre is m + t n (m the midpoint, n the unit left normal)
+** with t = |v| (c - a).(c - b) / (2 cross(v, c - a)).  Differences, products
+** and sums of doubles carry a relative error u = 2^-53 each, so cross
+** carries at most 5u |v| |c - a| and the dot product 5u |c - a| |c - b|;
+** when cross >= 2^-20 |v| |c - a| (else nothing is bounded) t is good to
+** 2^-30 |t| + 2^-31 |c - b|, and the centre and the radius r to 2^-28 of
+** |m| + |t| + |c - b| + |v|.  tol is 2^-24 of the sum of those magnitudes
+** and r: 16 times the error, with room for the comparisons made with it. */
+static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, sel_cap *k) {
+  k->bounded = 0;
+  if (c == SEL_NONE || !s->dt) return;
+  geom_point pa = s->p[a], pb = s->p[b], pc = s->p[c];
+  double vx = pb.x - pa.x, vy = pb.y - pa.y, len = hypot(vx, vy);
+  double ax = pc.x - pa.x, ay = pc.y - pa.y, bx = pc.x - pb.x, by = pc.y - pb.y;
+  double la = hypot(ax, ay), lb = hypot(bx, by), cr = vx * ay - vy * ax;
+  if (!(cr >= 0x1p-20 * len * la)) return;
+  double t = len * (ax * bx + ay * by) / (2 * cr), nx = -vy / len, ny = vx / len;
+  double mx = 0.5 * pa.x + 0.5 * pb.x, my = 0.5 * pa.y + 0.5 * pb.y;
+  k->cx = mx + t * nx, k->cy = my + t * ny, k->r = hypot(0.5 * len, t);
+  k->tol = 0x1p-24 * (fabs(mx) + fabs(my) + fabs(t) + k->r + len + la + lb);
+  k->xlo = fmin(pa.x, pb.x), k->xhi = fmax(pa.x, pb.x);
+  if (t - k->r * nx >= -k->tol) k->xlo = fmin(k->xlo, k->cx - k->r);  /* leftmost point on it */
+  if (t + k->r * nx >= -k->tol) k->xhi = fmax(k->xhi, k->cx + k->r);  /* rightmost */
+  k->xlo -= k->tol, k->xhi += k->tol;
+  k->bounded = 1;
+}
+
+/* The x-sorted strip (2.4.1, figure 2.13): the sites between a and b in x
+** first, then outwards, the nearer side in x first, until both sides leave
+** the cap's x-extent.  Expected O(sqrt n) sites per edge on uniform sites,
+** O(n^{3/2}) in all; no bound for ES (O(n) per edge). */
+static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
+  size_t i0 = s->pos[a] < s->pos[b] ? s->pos[a] : s->pos[b];
+  size_t i1 = s->pos[a] ^ s->pos[b] ^ i0, l = i0, r = i1 + 1;
+  double xlo = fmin(s->p[a].x, s->p[b].x), xhi = fmax(s->p[a].x, s->p[b].x);
+  uint32_t best = SEL_NONE;
+  for (size_t i = i0; i <= i1; i++) best = sel_try(s, a, b, best, s->ord[i]);
+  sel_cap k;
+  sel_cap_make(s, a, b, best, &k);
+  for (;;) {
+    int gol = l > 0 && (!k.bounded || s->p[s->ord[l - 1]].x >= k.xlo);
+    int gor = r < s->n && (!k.bounded || s->p[s->ord[r]].x <= k.xhi);
+    if (!gol && !gor) return best;
+    size_t i = gol && (!gor || xlo - s->p[s->ord[l - 1]].x <= s->p[s->ord[r]].x - xhi)
+             ? --l : r++;
+    uint32_t nb = sel_try(s, a, b, best, s->ord[i]);
+    if (nb != best) best = nb, sel_cap_make(s, a, b, best, &k);
+  }
+}
+
+/* Does cell (i, j), widened by the grid's rounding margin, meet the left
+** half-plane of ab and the cap?  Bounds only, as for sel_cap_make: the
+** corners' cross products carry at most 8u |v| span. */
+static int sel_cell_meets(const sel_state *s, uint32_t a, uint32_t b, const sel_cap *k,
+                          size_t i, size_t j) {
+  const sel_grid *g = &s->g;
+  double x0 = g->x0 + (double)i * g->w - g->tol, x1 = g->x0 + (double)(i + 1) * g->w + g->tol;
+  double y0 = g->y0 + (double)j * g->h - g->tol, y1 = g->y0 + (double)(j + 1) * g->h + g->tol;
+  geom_point pa = s->p[a];
+  double vx = s->p[b].x - pa.x, vy = s->p[b].y - pa.y;
+  double cx = vx * ((vx > 0 ? y1 : y0) - pa.y) - vy * ((vy > 0 ? x0 : x1) - pa.x);
+  if (cx < -0x1p-28 * hypot(vx, vy) * g->span) return 0;   /* the corner furthest left */
+  if (!k->bounded) return 1;
+  double dx = fmax(fmax(x0 - k->cx, k->cx - x1), 0), dy = fmax(fmax(y0 - k->cy, k->cy - y1), 0);
+  return dx * dx + dy * dy <= (k->r + k->tol) * (k->r + k->tol);
+}
+
+static size_t sel_cell_of(const sel_grid *g, double x, double y) {
+  double fx = (x - g->x0) / g->w, fy = (y - g->y0) / g->h;
+  size_t i = fx < (double)g->gx ? (size_t)fx : g->gx - 1;
+  size_t j = fy < (double)g->gy ? (size_t)fy : g->gy - 1;
+  return j * g->gx + i;
+}
+
+/* Visit cell k: count it, try its sites, queue its unqueued neighbours. */
+static uint32_t sel_cell_visit(sel_state *s, uint32_t a, uint32_t b, uint32_t best, size_t k,
+                               size_t *qt) {
+  sel_grid *g = &s->g;
+  ops_add(s->c, OPS_BUCKETS, 1);
+  for (uint32_t q = g->start[k]; q < g->start[k + 1]; q++)
+    best = sel_try(s, a, b, best, g->site[q]);
+  size_t i = k % g->gx, j = k / g->gx;
+  size_t nb[4] = {i > 0 ? k - 1 : k, i + 1 < g->gx ? k + 1 : k,
+                  j > 0 ? k - g->gx : k, j + 1 < g->gy ? k + g->gx : k};
+  for (int d = 0; d < 4; d++)
+    if (g->stamp[nb[d]] != g->search)
+      g->stamp[nb[d]] = g->search, g->queue[(*qt)++] = (uint32_t)nb[d];
+  return best;
+}
+
+/* The bucket grid (2.4.1, figure 2.14): a breadth-first search of the
+** cells from the one holding the midpoint of ab, through the cells that
+** meet the left half-plane and the current cap.  Every cell meeting the
+** final cap is reached: those cells are 4-connected (closed cells), hold
+** the midpoint's, and meet every earlier, larger cap.  O(1) expected cells
+** and sites per edge on uniform sites, O(n) in all; no bound for ES. */
+static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
+  sel_grid *g = &s->g;
+  size_t qh = 0, qt = 0, k0 = sel_cell_of(g, 0.5 * s->p[a].x + 0.5 * s->p[b].x,
+                                          0.5 * s->p[a].y + 0.5 * s->p[b].y);
+  g->search++;
+  g->stamp[k0] = g->search, g->queue[qt++] = (uint32_t)k0;
+  uint32_t best = SEL_NONE;
+  sel_cap cap;
+  sel_cap_make(s, a, b, best, &cap);
+  while (qh < qt) {
+    size_t k = g->queue[qh++];
+    if (!sel_cell_meets(s, a, b, &cap, k % g->gx, k / g->gx)) continue;
+    uint32_t nb = sel_cell_visit(s, a, b, best, k, &qt);
+    if (nb != best) best = nb, sel_cap_make(s, a, b, best, &cap);
+  }
+  return best;
+}
+
+/* ---- setting up -------------------------------------------------------- */
+
+/* The grid of about n / p cells of the bounding box's shape, p sites
+** expected per cell on uniform sites: O(n + n / p). */
+static int sel_grid_make(sel_state *s, double p) {
+  sel_grid *g = &s->g;
+  double x1 = s->p[0].x, y1 = s->p[0].y;
+  g->x0 = x1, g->y0 = y1;
+  for (size_t i = 1; i < s->n; i++) {
+    g->x0 = fmin(g->x0, s->p[i].x), x1 = fmax(x1, s->p[i].x);
+    g->y0 = fmin(g->y0, s->p[i].y), y1 = fmax(y1, s->p[i].y);
+  }
+  double cells = fmax(1, floor((double)s->n / p)), wd = x1 - g->x0, ht = y1 - g->y0;
+  g->gx = (size_t)fmin(cells, fmax(1, round(sqrt(cells * wd / ht))));
+  g->gy = (size_t)fmin(cells, fmax(1, round(cells / (double)g->gx)));
+  g->w = wd / (double)g->gx, g->h = ht / (double)g->gy;
+  g->span = fabs(g->x0) + fabs(g->y0) + wd + ht;
+  g->tol = 0x1p-30 * g->span;
+  size_t m = g->gx * g->gy;
+  g->start = calloc(m + 1, sizeof *g->start);
+  g->site = malloc(s->n * sizeof *g->site);
+  g->stamp = calloc(m, sizeof *g->stamp);
+  g->queue = malloc(m * sizeof *g->queue);
+  if (!g->start || !g->site || !g->stamp || !g->queue) return -1;
+  for (size_t i = 0; i < s->n; i++) g->start[sel_cell_of(g, s->p[i].x, s->p[i].y) + 1]++;
+  for (size_t k = 0; k < m; k++) g->start[k + 1] += g->start[k];
+  for (size_t i = 0; i < s->n; i++)     /* counting sort; start[k] ends at cell k + 1's start */
+    g->site[g->start[sel_cell_of(g, s->p[i].x, s->p[i].y)]++] = (uint32_t)i;
+  for (size_t k = m; k > 0; k--) g->start[k] = g->start[k - 1];
+  g->start[0] = 0;
+  return 0;
+}
+
+static void sel_free(sel_state *s) {
+  free(s->ord), free(s->pos), free(s->hprev), free(s->edge), free(s->hkey);
+  free(s->g.start), free(s->g.site), free(s->g.stamp), free(s->g.queue);
+}
+
+static int sel_alloc(sel_state *s, double p) {
+  size_t n = s->n, slots = 16;
+  while (slots < 8 * n) slots *= 2;
+  s->hmask = slots - 1;
+  s->ord = malloc(n * sizeof *s->ord);
+  s->pos = malloc(n * sizeof *s->pos);
+  s->hprev = malloc(3 * n * sizeof *s->hprev);      /* and 2n for the hull's chain */
+  s->edge = malloc(3 * n * sizeof *s->edge);
+  s->hkey = malloc(slots * sizeof *s->hkey);
+  s->tri = malloc(3 * 2 * n * sizeof *s->tri);
+  if (!s->ord || !s->pos || !s->hprev || !s->edge || !s->hkey || !s->tri) return -1;
+  memset(s->hkey, 0xff, slots * sizeof *s->hkey);
+  return p > 0 ? sel_grid_make(s, p) : 0;
+}
+
+int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
+                        paradigm_select_search search, paradigm_output *out,
+                        paradigm_select_stats *st, char *err, size_t errlen) {
+  sel_state s;
+  memset(&s, 0, sizeof s);
+  s.p = in->p, s.n = in->n, s.r = in->r, s.c = &out->ops;
+  s.dt = rule_shape(in->r) == NULL;
+  s.beats = s.dt ? sel_beats_dt : sel_beats_es;
+  double bucket = in->param == 0 ? 1 : in->param;
+  switch (search) {
+    case PARADIGM_SELECT_SCAN: s.search = sel_search_scan, bucket = 0; break;
+    case PARADIGM_SELECT_STRIP: s.search = sel_search_strip, bucket = 0; break;
+    case PARADIGM_SELECT_BUCKETS: s.search = sel_search_buckets; break;
+  }
+  if (bucket != 0 && !(bucket >= 0.0625 && bucket <= 1e6)) {
+    snprintf(err, errlen, "select-buckets: the bucket size p = %g (sites per bucket) must lie "
+             "in [0.0625, 1e6]", bucket);
+    return -1;
+  }
+  if (sel_alloc(&s, bucket) != 0 || sel_hull(&s, s.hprev + in->n) != 0) {
+    sel_free(&s), free(s.tri);
+    snprintf(err, errlen, "out of memory for the selection of %zu points", in->n);
+    return -1;
+  }
+  sel_wrap(&s, order);
+  out->tri = s.tri, out->ntri = s.ntri;
+  if (st) {
+    st->mean_boundary = s.ntri ? s.live_sum / (double)s.ntri : 0;
+    st->peak_boundary = s.peak, st->hull = s.hull, st->buckets = s.g.gx * s.g.gy;
+  }
+  sel_free(&s);
+  return 0;
+}
+
+int paradigm_select_stack(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen) {
+  return paradigm_select_run(in, PARADIGM_SELECT_STACK, PARADIGM_SELECT_SCAN, out, NULL, err,
+                             errlen);
+}
+
+int paradigm_select_queue(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen) {
+  return paradigm_select_run(in, PARADIGM_SELECT_QUEUE, PARADIGM_SELECT_SCAN, out, NULL, err,
+                             errlen);
+}
+
+int paradigm_select_strip(const paradigm_input *in, paradigm_output *out, char *err,
+                          size_t errlen) {
+  return paradigm_select_run(in, PARADIGM_SELECT_STACK, PARADIGM_SELECT_STRIP, out, NULL, err,
+                             errlen);
+}
+
+int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen) {
+  return paradigm_select_run(in, PARADIGM_SELECT_STACK, PARADIGM_SELECT_BUCKETS, out, NULL, err,
+                             errlen);
+}
