@@ -9,10 +9,13 @@
 #include "paradigm.h"
 
 /* lot/'s algorithms as rows (paradigms/lot_rows.c). */
+FLIPLAB_INTERNAL
 int paradigm_lot_incremental(const paradigm_input *in, paradigm_output *out, char *err,
                              size_t errlen);
+FLIPLAB_INTERNAL
 int paradigm_lot_flip(const paradigm_input *in, paradigm_output *out, char *err,
                       size_t errlen);
+FLIPLAB_INTERNAL
 int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err,
                        size_t errlen);
 
@@ -22,20 +25,21 @@ int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err
 ** homothet for ES:SHAPE), -1 strictly outside, 0 on it (then the rule's
 ** tie-break decides, as lot/ does).  Counted as OPS_INCIRCLE or
 ** OPS_INSHAPE. */
+FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
 /* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
 ** unfinished edges as a stack or a queue, and the apex search by a scan of
 ** every site, an x-sorted strip, or a bucket grid. */
-int paradigm_select_stack(const paradigm_input *in, paradigm_output *out, char *err,
-                          size_t errlen);
-int paradigm_select_queue(const paradigm_input *in, paradigm_output *out, char *err,
-                          size_t errlen);
-int paradigm_select_strip(const paradigm_input *in, paradigm_output *out, char *err,
-                          size_t errlen);
-int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out, char *err,
-                            size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_stack(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_queue(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_strip(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out,
+                                             char *err, size_t errlen);
 
 /* How a selection run keeps its boundary and searches for an apex. */
 typedef enum paradigm_select_order { PARADIGM_SELECT_STACK, PARADIGM_SELECT_QUEUE }
@@ -56,8 +60,8 @@ typedef struct paradigm_select_stats {
 
 /* One selection run on distinct points (as the runner hands them over);
 ** st may be NULL.  0, or -1 with a one-line message (out of memory). */
-int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
-                        paradigm_select_search search, paradigm_output *out,
-                        paradigm_select_stats *st, char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
+                                         paradigm_select_search search, paradigm_output *out,
+                                         paradigm_select_stats *st, char *err, size_t errlen);
 
 #endif

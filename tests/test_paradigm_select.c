@@ -2,7 +2,7 @@
 ** test_paradigm_select.c: the selection algorithms of 2.4 (paradigms/select.c).
 ** On thousands of small sets (uniform, grid draws with duplicates, integer
 ** points on circles, collinear-heavy) every selection row gives exactly the
-** incremental row's triangles for DT and three empty-shape rules, and makes
+** incremental row's triangles for DT and four empty-shape rules, and makes
 ** 3n - 3 - h edges (Euler, h the sites on the hull); the queue's boundary is
 ** smaller than the stack's (figure 2.11); the bucket grid examines at most
 ** the thesis's 2/p + 3/sqrt(p) + 1 buckets per triangle on uniform sites,
@@ -89,7 +89,7 @@ static void ts_compare(const geom_point *p, size_t n, const rule *r, int f) {
 
 static void test_small_sets(void **state) {
   (void)state;
-  const char *rules[] = {"DT", "ES:square", "ES:hexagon", "ES:triangle"};
+  const char *rules[] = {"DT", "ES:square", "ES:hexagon", "ES:triangle", "ES:ellipse:2 1 0.5"};
   geom_point p[40];
   testutil_rng g = {2024};
   int sets = testutil_reps(800);
@@ -224,27 +224,34 @@ static void test_bucket_formula(void **state) {
   }
 }
 
-/* A larger set: every row but the quadratic scans equals the incremental. */
+/* Larger sets: every row but the quadratic scans equals the incremental,
+** also at the ends of the coordinate contract and far from the origin
+** (the floating-point bounds of the strip and the grid scale with them). */
 static void test_large(void **state) {
   (void)state;
+  const double scale[] = {1, 0x1p-40, 0x1p90, 1}, shift[] = {0, 0, 0, 1e6};
   testutil_rng g = {5};
-  size_t n = 20000;
-  geom_point *p = ts_uniform(&g, n);
-  for (size_t i = 0; i < n / 4; i++) p[i].x = p[i].y;    /* a diagonal of collinear sites */
+  size_t n = 8000;
   rule dt = ts_rule("DT");
   char err[256];
-  paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_DELAUNAY, .threads = 1};
-  paradigm_result ref, res;
-  assert_int_equal(paradigm_run(paradigm_find("incremental"), &in, &ref, err, sizeof err), 0);
-  for (size_t i = 2; i < TS_ROWS; i++) {
-    if (paradigm_run(paradigm_find(ts_rows[i]), &in, &res, err, sizeof err) != 0)
-      fail_msg("%s", err);
-    assert_int_equal(res.ntri, ref.ntri);
-    assert_memory_equal(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri);
-    paradigm_result_free(&res);
+  for (size_t k = 0; k < sizeof scale / sizeof scale[0]; k++) {
+    geom_point *p = ts_uniform(&g, n);
+    for (size_t i = 0; i < n / 4; i++) p[i].x = p[i].y;    /* a diagonal of collinear sites */
+    for (size_t i = 0; i < n; i++)
+      p[i] = (geom_point){p[i].x * scale[k] + shift[k], p[i].y * scale[k] + shift[k]};
+    paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_DELAUNAY, .threads = 1};
+    paradigm_result ref, res;
+    assert_int_equal(paradigm_run(paradigm_find("incremental"), &in, &ref, err, sizeof err), 0);
+    for (size_t i = 2; i < TS_ROWS; i++) {
+      if (paradigm_run(paradigm_find(ts_rows[i]), &in, &res, err, sizeof err) != 0)
+        fail_msg("%s", err);
+      assert_int_equal(res.ntri, ref.ntri);
+      assert_memory_equal(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri);
+      paradigm_result_free(&res);
+    }
+    paradigm_result_free(&ref);
+    free(p);
   }
-  paradigm_result_free(&ref);
-  free(p);
 }
 
 static void test_bad_param(void **state) {
