@@ -31,7 +31,7 @@ int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, g
 
 /* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
 ** unfinished edges as a stack or a queue, and the apex search by a scan of
-** every site, an x-sorted strip, or a bucket grid. */
+** every site, an x-sorted strip, or a bucket grid; with constraints. */
 FLIPLAB_INTERNAL int paradigm_select_stack(const paradigm_input *in, paradigm_output *out,
                                            char *err, size_t errlen);
 FLIPLAB_INTERNAL int paradigm_select_queue(const paradigm_input *in, paradigm_output *out,
@@ -40,6 +40,9 @@ FLIPLAB_INTERNAL int paradigm_select_strip(const paradigm_input *in, paradigm_ou
                                            char *err, size_t errlen);
 FLIPLAB_INTERNAL int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out,
                                              char *err, size_t errlen);
+/* 2.4.2: the stack and the scan, each apex seen across no constraint. */
+FLIPLAB_INTERNAL int paradigm_select_constrained(const paradigm_input *in, paradigm_output *out,
+                                                 char *err, size_t errlen);
 
 /* How a selection run keeps its boundary and searches for an apex. */
 typedef enum paradigm_select_order { PARADIGM_SELECT_STACK, PARADIGM_SELECT_QUEUE }
@@ -58,8 +61,10 @@ typedef struct paradigm_select_stats {
   size_t buckets;
 } paradigm_select_stats;
 
-/* One selection run on distinct points (as the runner hands them over);
-** st may be NULL.  0, or -1 with a one-line message (out of memory). */
+/* One selection run on distinct points (as the runner hands them over),
+** with in->segments when in->problem is PARADIGM_CONSTRAINED; st may be
+** NULL.  0, or -1 with a one-line message (out of memory, a bucket size
+** out of range, crossing segments, a segment from a point to itself). */
 FLIPLAB_INTERNAL int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
                                          paradigm_select_search search, paradigm_output *out,
                                          paradigm_select_stats *st, char *err, size_t errlen);

@@ -73,6 +73,8 @@ struct sel_state {
   uint32_t *tri;
   size_t ntri;
   sel_grid g;
+  uint32_t *piece;                     /* constraints: 2 sites per piece */
+  size_t npiece;
 };
 
 /* ---- the apex order ---------------------------------------------------- */
@@ -105,10 +107,29 @@ static int sel_beats_es(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32
   return sg > 0 || tg < 0;
 }
 
-/* Site d against the best apex so far of edge ab: the new best. */
+/* Does the open segment uv cross the open piece k at one point inside
+** both?  Four orientation tests. */
+static int sel_crosses(sel_state *s, uint32_t u, uint32_t v, size_t k) {
+  geom_point pu = s->p[u], pv = s->p[v], p = s->p[s->piece[2 * k]], q = s->p[s->piece[2 * k + 1]];
+  if (ops_orient(s->c, pu, pv, p) * ops_orient(s->c, pu, pv, q) >= 0) return 0;
+  return ops_orient(s->c, p, q, pu) * ops_orient(s->c, p, q, pv) < 0;
+}
+
+/* 2.4.2: apex d of edge ab must see a and b, across no constraint (a
+** constraint inside triangle abd has its ends inside the circle, and they
+** are candidates themselves).  O(e) per site. */
+static int sel_visible(sel_state *s, uint32_t a, uint32_t b, uint32_t d) {
+  for (size_t k = 0; k < s->npiece; k++)
+    if (sel_crosses(s, a, d, k) || sel_crosses(s, b, d, k)) return 0;
+  return 1;
+}
+
+/* Site d against the best apex so far of edge ab: the new best (the best
+** of the visible sites, the cheaper in-shape test first). */
 static uint32_t sel_try(sel_state *s, uint32_t a, uint32_t b, uint32_t best, uint32_t d) {
   if (d == a || d == b || ops_orient(s->c, s->p[a], s->p[b], s->p[d]) <= 0) return best;
-  return best == SEL_NONE || s->beats(s, a, b, best, d) ? d : best;
+  if (best != SEL_NONE && !s->beats(s, a, b, best, d)) return best;
+  return s->npiece == 0 || sel_visible(s, a, b, d) ? d : best;
 }
 
 /* ---- the boundary: a stack or a queue, and the set of live edges -------- */
@@ -339,6 +360,70 @@ static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
   return best;
 }
 
+/* ---- constraints (2.4.2): the segments cut at the sites inside them ---- */
+
+static int sel_lex_less(geom_point p, geom_point q) {
+  return p.x < q.x || (p.x == q.x && p.y < q.y);
+}
+
+/* Append the pieces of segment (u, v): the sites strictly inside it
+** (collinear, and between the ends in the lexicographic order, which is
+** the order along the line) cut it, as lot/ cuts it.  O(n). */
+static int sel_cut(sel_state *s, uint32_t u, uint32_t v, sel_site *on, size_t *cap) {
+  if (sel_lex_less(s->p[v], s->p[u])) {
+    uint32_t w = u;
+    u = v, v = w;
+  }
+  size_t k = 0;
+  on[k++] = (sel_site){s->p[u], u};
+  for (size_t i = 0; i < s->n; i++)
+    if (sel_lex_less(s->p[u], s->p[i]) && sel_lex_less(s->p[i], s->p[v])
+        && ops_orient(s->c, s->p[u], s->p[v], s->p[i]) == 0)
+      on[k++] = (sel_site){s->p[i], (uint32_t)i};
+  qsort(on + 1, k - 1, sizeof *on, sel_lex_cmp);
+  on[k++] = (sel_site){s->p[v], v};
+  if (s->npiece + k > *cap) {
+    *cap = 2 * (s->npiece + k);
+    uint32_t *grown = realloc(s->piece, 2 * *cap * sizeof *grown);
+    if (grown == NULL) return -1;
+    s->piece = grown;
+  }
+  for (size_t j = 0; j + 1 < k; j++)
+    s->piece[2 * s->npiece] = on[j].i, s->piece[2 * s->npiece++ + 1] = on[j + 1].i;
+  return 0;
+}
+
+/* The pieces of every segment, refused when two of them cross (one point
+** inside both) or a segment's ends are one point.  O(n e + P^2), P pieces.
+** 0; -1 with the message; -2 out of memory. */
+static int sel_pieces(sel_state *s, const uint32_t *seg, size_t ns, char *err, size_t errlen) {
+  size_t cap = 0;
+  uint32_t *from = malloc((ns ? ns : 1) * sizeof *from);
+  sel_site *on = malloc((s->n + 1) * sizeof *on);
+  int rc = from && on ? 0 : -2;
+  for (size_t k = 0; k < ns && rc == 0; k++) {
+    if (seg[2 * k] == seg[2 * k + 1]) {
+      snprintf(err, errlen, "segment %zu: both ends are point %u", k, seg[2 * k]);
+      rc = -1;
+    } else if (sel_cut(s, seg[2 * k], seg[2 * k + 1], on, &cap) != 0) {
+      rc = -2;
+    }
+    if (rc == 0) from[k] = (uint32_t)s->npiece;      /* segment k's pieces end here */
+  }
+  for (size_t k = 0, i = 0; rc == 0 && i < s->npiece; i++) {
+    while (from[k] <= i) k++;                       /* piece i is segment k's */
+    for (size_t j = 0, l = 0; rc == 0 && j < i; j++) {
+      while (from[l] <= j) l++;
+      if (sel_crosses(s, s->piece[2 * i], s->piece[2 * i + 1], j)) {
+        snprintf(err, errlen, "segments %zu and %zu cross", l, k);
+        rc = -1;
+      }
+    }
+  }
+  free(from), free(on);
+  return rc;
+}
+
 /* ---- setting up -------------------------------------------------------- */
 
 /* The grid of about n / p cells of the bounding box's shape, p sites
@@ -374,7 +459,7 @@ static int sel_grid_make(sel_state *s, double p) {
 
 static void sel_free(sel_state *s) {
   free(s->ord), free(s->pos), free(s->hprev), free(s->edge), free(s->hkey);
-  free(s->g.start), free(s->g.site), free(s->g.stamp), free(s->g.queue);
+  free(s->g.start), free(s->g.site), free(s->g.stamp), free(s->g.queue), free(s->piece);
 }
 
 static int sel_alloc(sel_state *s, double p) {
@@ -392,6 +477,35 @@ static int sel_alloc(sel_state *s, double p) {
   return p > 0 ? sel_grid_make(s, p) : 0;
 }
 
+/* The search chosen once: its function, and the bucket size (0: no grid);
+** 0, or -1 with the message (a bucket size out of range). */
+static int sel_choose(sel_state *s, const paradigm_input *in, paradigm_select_search search,
+                      double *bucket, char *err, size_t errlen) {
+  *bucket = in->param == 0 ? 1 : in->param;
+  switch (search) {
+    case PARADIGM_SELECT_SCAN: s->search = sel_search_scan, *bucket = 0; break;
+    case PARADIGM_SELECT_STRIP: s->search = sel_search_strip, *bucket = 0; break;
+    case PARADIGM_SELECT_BUCKETS: s->search = sel_search_buckets; break;
+  }
+  if (*bucket != 0 && !(*bucket >= 0.0625 && *bucket <= 1e6)) {
+    snprintf(err, errlen, "select-buckets: the bucket size p = %g (sites per bucket) must lie "
+             "in [0.0625, 1e6]", *bucket);
+    return -1;
+  }
+  return 0;
+}
+
+/* Allocate, find the hull, cut the constraints: 0, or -1 with the message. */
+static int sel_setup(sel_state *s, const paradigm_input *in, double bucket, char *err,
+                     size_t errlen) {
+  int rc = sel_alloc(s, bucket) != 0 || sel_hull(s, s->hprev + in->n) != 0 ? -2 : 0;
+  if (rc == 0 && in->problem == PARADIGM_CONSTRAINED)
+    rc = sel_pieces(s, in->segments, in->nsegments, err, errlen);
+  if (rc == -2)
+    snprintf(err, errlen, "out of memory for the selection of %zu points", in->n);
+  return rc == 0 ? 0 : -1;
+}
+
 int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
                         paradigm_select_search search, paradigm_output *out,
                         paradigm_select_stats *st, char *err, size_t errlen) {
@@ -400,20 +514,10 @@ int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
   s.p = in->p, s.n = in->n, s.r = in->r, s.c = &out->ops;
   s.dt = rule_shape(in->r) == NULL;
   s.beats = s.dt ? sel_beats_dt : sel_beats_es;
-  double bucket = in->param == 0 ? 1 : in->param;
-  switch (search) {
-    case PARADIGM_SELECT_SCAN: s.search = sel_search_scan, bucket = 0; break;
-    case PARADIGM_SELECT_STRIP: s.search = sel_search_strip, bucket = 0; break;
-    case PARADIGM_SELECT_BUCKETS: s.search = sel_search_buckets; break;
-  }
-  if (bucket != 0 && !(bucket >= 0.0625 && bucket <= 1e6)) {
-    snprintf(err, errlen, "select-buckets: the bucket size p = %g (sites per bucket) must lie "
-             "in [0.0625, 1e6]", bucket);
-    return -1;
-  }
-  if (sel_alloc(&s, bucket) != 0 || sel_hull(&s, s.hprev + in->n) != 0) {
+  double bucket;
+  if (sel_choose(&s, in, search, &bucket, err, errlen) != 0) return -1;
+  if (sel_setup(&s, in, bucket, err, errlen) != 0) {
     sel_free(&s), free(s.tri);
-    snprintf(err, errlen, "out of memory for the selection of %zu points", in->n);
     return -1;
   }
   sel_wrap(&s, order);
@@ -447,5 +551,11 @@ int paradigm_select_strip(const paradigm_input *in, paradigm_output *out, char *
 int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen) {
   return paradigm_select_run(in, PARADIGM_SELECT_STACK, PARADIGM_SELECT_BUCKETS, out, NULL, err,
+                             errlen);
+}
+
+int paradigm_select_constrained(const paradigm_input *in, paradigm_output *out, char *err,
+                                size_t errlen) {
+  return paradigm_select_run(in, PARADIGM_SELECT_STACK, PARADIGM_SELECT_SCAN, out, NULL, err,
                              errlen);
 }

@@ -103,6 +103,63 @@ static void test_small_sets(void **state) {
   }
 }
 
+/* Do the open segments pq and rs cross at one point inside both? */
+static int ts_cross(geom_point p, geom_point q, geom_point r, geom_point s) {
+  return geom_orient(p, q, r) * geom_orient(p, q, s) < 0
+      && geom_orient(r, s, p) * geom_orient(r, s, q) < 0;
+}
+
+/* Random segments between the n points, kept when they cross no kept one
+** (but sites inside them, collinear overlaps and duplicate ends stay):
+** the number of segments, 2 indices each in seg. */
+static size_t ts_segments(testutil_rng *g, const geom_point *p, size_t n, uint32_t *seg) {
+  size_t ns = 0;
+  for (size_t t = 0; t < n; t++) {
+    uint32_t i = (uint32_t)(testutil_next(g) % n), j = (uint32_t)(testutil_next(g) % n);
+    int ok = i != j;
+    for (size_t k = 0; ok && k < ns; k++)
+      ok = !ts_cross(p[i], p[j], p[seg[2 * k]], p[seg[2 * k + 1]]);
+    if (ok) seg[2 * ns] = i, seg[2 * ns + 1] = j, ns++;
+  }
+  return ns;
+}
+
+/* 2.4.2: select-constrained gives lot's constrained triangulation (with
+** the triangles outside the segments kept) on small sets with random
+** segments, for DT and two empty-shape rules; duplicates among the points
+** check that the runner hands it the segments in the distinct points'
+** indices. */
+static void test_constrained(void **state) {
+  (void)state;
+  const char *rules[] = {"DT", "ES:square", "ES:hexagon"};
+  geom_point p[40];
+  uint32_t seg[80];
+  testutil_rng g = {31};
+  char err[256], err2[256];
+  int sets = testutil_reps(600), agreed = 0;
+  for (int st = 0; st < sets; st++) {
+    size_t n = ts_points(st % 4, &g, p), ns = ts_segments(&g, p, n, seg);
+    for (size_t ri = 0; ri < sizeof rules / sizeof rules[0]; ri++) {
+      rule r = ts_rule(rules[ri]);
+      paradigm_input in = {.p = p, .n = n, .r = &r, .problem = PARADIGM_CONSTRAINED,
+                           .segments = seg, .nsegments = ns, .threads = 1};
+      paradigm_result ref, res;
+      int rc = paradigm_run(paradigm_find("incremental"), &in, &ref, err, sizeof err);
+      int rs = paradigm_run(paradigm_find("select-constrained"), &in, &res, err2, sizeof err2);
+      if (rc != rs) fail_msg("set %d, %s: incremental %s; select-constrained %s", st,
+                             rules[ri], rc ? err : "ok", rs ? err2 : "ok");
+      if (rc != 0) continue;
+      if (res.ntri != ref.ntri || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri))
+        fail_msg("select-constrained differs from incremental: set %d, %s, %zu segments", st,
+                 rules[ri], ns);
+      agreed += ns > 0;
+      paradigm_result_free(&res), paradigm_result_free(&ref);
+    }
+  }
+  print_message("constrained: %d of %d sets x rules agreed with segments\n", agreed, 3 * sets);
+  assert_true(agreed > sets);
+}
+
 /* n uniform sites of the unit square. */
 static geom_point *ts_uniform(testutil_rng *g, size_t n) {
   geom_point *p = malloc(n * sizeof *p);
@@ -274,6 +331,7 @@ static void test_bad_param(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_small_sets),
+    cmocka_unit_test(test_constrained),
     cmocka_unit_test(test_boundary),
     cmocka_unit_test(test_bucket_formula),
     cmocka_unit_test(test_large),
