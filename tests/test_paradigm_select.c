@@ -208,12 +208,15 @@ static void ts_select(const geom_point *p, size_t n, double param, paradigm_sele
 static void test_boundary(void **state) {
   (void)state;
   testutil_rng g = {77};
-  size_t n = 4000;
+  size_t n = 10000;
   geom_point *p = ts_uniform(&g, n);
   paradigm_output os, oq;
   paradigm_select_stats ss, sq;
   ts_select(p, n, 0, PARADIGM_SELECT_STACK, PARADIGM_SELECT_BUCKETS, &os, &ss);
   ts_select(p, n, 0, PARADIGM_SELECT_QUEUE, PARADIGM_SELECT_BUCKETS, &oq, &sq);
+  print_message("boundary, %zu uniform sites: stack mean %.1f peak %zu, queue mean %.1f "
+                "peak %zu\n", n, ss.mean_boundary, ss.peak_boundary, sq.mean_boundary,
+                sq.peak_boundary);
   assert_true(sq.mean_boundary < ss.mean_boundary);
   assert_true(sq.peak_boundary < ss.peak_boundary);
   assert_true(ss.peak_boundary < 40 * sqrt((double)n));
