@@ -200,8 +200,7 @@ typedef struct sel_site { geom_point p; uint32_t i; } sel_site;
 
 static int sel_lex_cmp(const void *x, const void *y) {
   const sel_site *p = x, *q = y;
-  if (p->p.x != q->p.x) return p->p.x < q->p.x ? -1 : 1;
-  return p->p.y < q->p.y ? -1 : p->p.y > q->p.y;
+  return geom_lexless(p->p, q->p) ? -1 : geom_lexless(q->p, p->p);
 }
 
 /* The sites in lexicographic order, and the convex hull with the sites on
@@ -362,22 +361,18 @@ static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
 
 /* ---- constraints (2.4.2): the segments cut at the sites inside them ---- */
 
-static int sel_lex_less(geom_point p, geom_point q) {
-  return p.x < q.x || (p.x == q.x && p.y < q.y);
-}
-
 /* Append the pieces of segment (u, v): the sites strictly inside it
 ** (collinear, and between the ends in the lexicographic order, which is
 ** the order along the line) cut it, as lot/ cuts it.  O(n). */
 static int sel_cut(sel_state *s, uint32_t u, uint32_t v, sel_site *on, size_t *cap) {
-  if (sel_lex_less(s->p[v], s->p[u])) {
+  if (geom_lexless(s->p[v], s->p[u])) {
     uint32_t w = u;
     u = v, v = w;
   }
   size_t k = 0;
   on[k++] = (sel_site){s->p[u], u};
   for (size_t i = 0; i < s->n; i++)
-    if (sel_lex_less(s->p[u], s->p[i]) && sel_lex_less(s->p[i], s->p[v])
+    if (geom_lexless(s->p[u], s->p[i]) && geom_lexless(s->p[i], s->p[v])
         && ops_orient(s->c, s->p[u], s->p[v], s->p[i]) == 0)
       on[k++] = (sel_site){s->p[i], (uint32_t)i};
   qsort(on + 1, k - 1, sizeof *on, sel_lex_cmp);
