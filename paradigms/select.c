@@ -33,12 +33,17 @@
 
 typedef struct sel_edge { uint32_t u, v; } sel_edge;
 
-/* The part of the candidate's circle on the left of ab (DT), widened by
-** tol; bounded = 0: nothing is known (no candidate, an ES rule, or a
-** triangle too flat for the floating-point bound below). */
+/* Where the sites that beat the candidate can lie, widened by its
+** rounding error: SEL_DISC, the part of the circle on the left of ab (DT);
+** SEL_BOX, a box around the circumscribing homothet (ES, polygon K);
+** SEL_ANYWHERE when nothing is known (no candidate, an ellipse, a rounding
+** shape, or a triangle too flat for the floating-point bounds below).
+** xlo, xhi: its x-extent. */
+typedef enum sel_bound { SEL_ANYWHERE, SEL_DISC, SEL_BOX } sel_bound;
 typedef struct sel_cap {
-  int bounded;
-  double cx, cy, r, tol, xlo, xhi;
+  sel_bound bounded;
+  double cx, cy, r, tol, xlo, xhi, ylo, yhi;
+  double tx, ty, ts, big;              /* SEL_BOX: the homothet t + sK, |K|'s bound */
 } sel_cap;
 
 /* The bucket grid: gx * gy cells over the bounding box, the sites of cell k
@@ -61,6 +66,7 @@ struct sel_state {
   ops_counts *c;
   int dt;                              /* the rule is DT (bounds known) */
   int (*beats)(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d);
+  void (*cap)(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, sel_cap *k);
   sel_search_fn search;
   uint32_t *ord, *pos, *hprev;         /* lexicographic order, its inverse, hull links */
   uint32_t h0, h1;                     /* the first hull edge, interior on its left */
@@ -253,9 +259,8 @@ static uint32_t sel_search_scan(sel_state *s, uint32_t a, uint32_t b) {
 ** 2^-30 |t| + 2^-31 |c - b|, and the centre and the radius r to 2^-28 of
 ** |m| + |t| + |c - b| + |v|.  tol is 2^-24 of the sum of those magnitudes
 ** and r: 16 times the error, with room for the comparisons made with it. */
-static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, sel_cap *k) {
-  k->bounded = 0;
-  if (c == SEL_NONE || !s->dt) return;
+static void sel_cap_circle(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
+                           sel_cap *k) {
   geom_point pa = s->p[a], pb = s->p[b], pc = s->p[c];
   double vx = pb.x - pa.x, vy = pb.y - pa.y, len = hypot(vx, vy);
   double ax = pc.x - pa.x, ay = pc.y - pa.y, bx = pc.x - pb.x, by = pc.y - pb.y;
@@ -269,13 +274,75 @@ static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
   if (t - k->r * nx >= -k->tol) k->xlo = fmin(k->xlo, k->cx - k->r);  /* leftmost point on it */
   if (t + k->r * nx >= -k->tol) k->xhi = fmax(k->xhi, k->cx + k->r);  /* rightmost */
   k->xlo -= k->tol, k->xhi += k->tol;
-  k->bounded = 1;
+  k->bounded = SEL_DISC;
+}
+
+/* The 3 x 3 determinant of rows m[0..2] and its absolute twin (the same
+** sum of products with every term's magnitude). */
+static double sel_det3(const double m[3][3], double *twin) {
+  double a = m[1][1] * m[2][2], b = m[1][2] * m[2][1], c = m[1][0] * m[2][2];
+  double d = m[1][2] * m[2][0], e = m[1][0] * m[2][1], f = m[1][1] * m[2][0];
+  *twin = fabs(m[0][0]) * (fabs(a) + fabs(b)) + fabs(m[0][1]) * (fabs(c) + fabs(d))
+        + fabs(m[0][2]) * (fabs(e) + fabs(f));
+  return m[0][0] * (a - b) - m[0][1] * (c - d) + m[0][2] * (e - f);
+}
+
+/* ES, polygon K: a box around the circumscribing homothet t + sK of abc
+** (every site that beats c lies in it).  shape_circumscribe gives the
+** contact edges exactly; edge i (outward normal n_i, support value h_i of
+** K) holds its site P when n_i.P = n_i.t + s h_i, three linear equations
+** solved by Cramer's rule in doubles.  Each entry carries at most 3u of
+** its magnitude and each determinant 12u of its twin; when the system's
+** determinant D is at least 2^-20 of its twin (else nothing is bounded) D
+** is good to 2^-28 and t and s to 2^-27 of (twin of their numerator) / |D|.
+** tol is 2^-24 of the numerators' twins over |D|: 8 times that, and the
+** box t + s bbox(K) is widened by tol (1 + |K|) and 2^-40 of its size. */
+static void sel_cap_homothet(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
+                             sel_cap *k) {
+  const shape *K = rule_shape(s->r);
+  int e[3], corner;
+  if (shape_circumscribe(K, s->p[a], s->p[b], s->p[c], e, &corner) != 1) return;
+  double m[3][3], rhs[3], x[3], tw[3], dtw;
+  const uint32_t site[3] = {a, b, c};
+  for (int r = 0; r < 3; r++) {
+    geom_point v0 = K->v[e[r]], v1 = K->v[(e[r] + 1) % K->n], p = s->p[site[r]];
+    m[r][0] = v1.y - v0.y, m[r][1] = v0.x - v1.x;
+    m[r][2] = m[r][0] * v0.x + m[r][1] * v0.y, rhs[r] = m[r][0] * p.x + m[r][1] * p.y;
+  }
+  double d = sel_det3((const double (*)[3])m, &dtw);
+  if (!(fabs(d) >= 0x1p-20 * dtw)) return;
+  for (int j = 0; j < 3; j++) {              /* Cramer: column j replaced by rhs */
+    double mj[3][3];
+    memcpy(mj, m, sizeof mj);
+    for (int r = 0; r < 3; r++) mj[r][j] = rhs[r];
+    x[j] = sel_det3((const double (*)[3])mj, &tw[j]) / d;
+  }
+  if (!(x[2] > 0)) return;
+  double tol = 0x1p-24 * (tw[0] + tw[1] + tw[2]) / fabs(d), kx0 = K->v[0].x, kx1 = kx0;
+  double ky0 = K->v[0].y, ky1 = ky0;
+  for (int i = 1; i < K->n; i++) {
+    kx0 = fmin(kx0, K->v[i].x), kx1 = fmax(kx1, K->v[i].x);
+    ky0 = fmin(ky0, K->v[i].y), ky1 = fmax(ky1, K->v[i].y);
+  }
+  double big = fmax(fmax(fabs(kx0), fabs(kx1)), fmax(fabs(ky0), fabs(ky1)));
+  k->tol = tol * (1 + big) + 0x1p-40 * (fabs(x[0]) + fabs(x[1]) + x[2] * big);
+  k->xlo = x[0] + x[2] * kx0 - k->tol, k->xhi = x[0] + x[2] * kx1 + k->tol;
+  k->ylo = x[1] + x[2] * ky0 - k->tol, k->yhi = x[1] + x[2] * ky1 + k->tol;
+  k->tx = x[0], k->ty = x[1], k->ts = x[2], k->big = big;
+  k->bounded = SEL_BOX;
+}
+
+/* The bound of candidate c (none yet: SEL_NONE), by the rule's kind. */
+static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, sel_cap *k) {
+  k->bounded = SEL_ANYWHERE;
+  if (c != SEL_NONE && s->cap != NULL) s->cap(s, a, b, c, k);
 }
 
 /* The x-sorted strip (2.4.1, figure 2.13): the sites between a and b in x
 ** first, then outwards, the nearer side in x first, until both sides leave
 ** the cap's x-extent.  Expected O(sqrt n) sites per edge on uniform sites,
-** O(n^{3/2}) in all; no bound for ES (O(n) per edge). */
+** O(n^{3/2}) in all (DT); for ES the homothet's x-extent; an ellipse or a
+** rounding shape bounds nothing (O(n) per edge). */
 static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
   size_t i0 = s->pos[a] < s->pos[b] ? s->pos[a] : s->pos[b];
   size_t i1 = s->pos[a] ^ s->pos[b] ^ i0, l = i0, r = i1 + 1;
@@ -285,14 +352,36 @@ static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
   sel_cap k;
   sel_cap_make(s, a, b, best, &k);
   for (;;) {
-    int gol = l > 0 && (!k.bounded || s->p[s->ord[l - 1]].x >= k.xlo);
-    int gor = r < s->n && (!k.bounded || s->p[s->ord[r]].x <= k.xhi);
+    int gol = l > 0 && (k.bounded == SEL_ANYWHERE || s->p[s->ord[l - 1]].x >= k.xlo);
+    int gor = r < s->n && (k.bounded == SEL_ANYWHERE || s->p[s->ord[r]].x <= k.xhi);
     if (!gol && !gor) return best;
     size_t i = gol && (!gor || xlo - s->p[s->ord[l - 1]].x <= s->p[s->ord[r]].x - xhi)
              ? --l : r++;
     uint32_t nb = sel_try(s, a, b, best, s->ord[i]);
     if (nb != best) best = nb, sel_cap_make(s, a, b, best, &k);
   }
+}
+
+/* Does the rectangle [x0, x1] x [y0, y1] meet the homothet of k (ES,
+** polygon K)?  Separating axes: the box's, then each edge's outward normal
+** n (K of at most 64 edges): the rectangle's least n.x beyond the edge's
+** support value n.t + s h, with the slack of t, s (tol, as above) and
+** 2^-40 of the magnitudes for the rounding here. */
+static int sel_rect_meets_homothet(const sel_state *s, const sel_cap *k, double x0, double x1,
+                                   double y0, double y1) {
+  if (x1 < k->xlo || x0 > k->xhi || y1 < k->ylo || y0 > k->yhi) return 0;
+  const shape *K = rule_shape(s->r);
+  if (K->n > 64) return 1;
+  double mag = fabs(x0) + fabs(x1) + fabs(y0) + fabs(y1) + fabs(k->tx) + fabs(k->ty)
+             + k->ts * k->big;
+  for (int i = 0; i < K->n; i++) {
+    geom_point v0 = K->v[i], v1 = K->v[(i + 1) % K->n];
+    double nx = v1.y - v0.y, ny = v0.x - v1.x, h = nx * v0.x + ny * v0.y, nn = fabs(nx) + fabs(ny);
+    double least = nx * (nx > 0 ? x0 : x1) + ny * (ny > 0 ? y0 : y1);
+    double slack = k->tol * (nn + fabs(h)) + 0x1p-40 * nn * (mag + k->big);
+    if (least > nx * k->tx + ny * k->ty + k->ts * h + slack) return 0;
+  }
+  return 1;
 }
 
 /* Does cell (i, j), widened by the grid's rounding margin, meet the left
@@ -307,7 +396,8 @@ static int sel_cell_meets(const sel_state *s, uint32_t a, uint32_t b, const sel_
   double vx = s->p[b].x - pa.x, vy = s->p[b].y - pa.y;
   double cx = vx * ((vx > 0 ? y1 : y0) - pa.y) - vy * ((vy > 0 ? x0 : x1) - pa.x);
   if (cx < -0x1p-28 * hypot(vx, vy) * g->span) return 0;   /* the corner furthest left */
-  if (!k->bounded) return 1;
+  if (k->bounded == SEL_ANYWHERE) return 1;
+  if (k->bounded == SEL_BOX) return sel_rect_meets_homothet(s, k, x0, x1, y0, y1);
   double dx = fmax(fmax(x0 - k->cx, k->cx - x1), 0), dy = fmax(fmax(y0 - k->cy, k->cy - y1), 0);
   return dx * dx + dy * dy <= (k->r + k->tol) * (k->r + k->tol);
 }
@@ -340,7 +430,9 @@ static uint32_t sel_cell_visit(sel_state *s, uint32_t a, uint32_t b, uint32_t be
 ** meet the left half-plane and the current cap.  Every cell meeting the
 ** final cap is reached: those cells are 4-connected (closed cells), hold
 ** the midpoint's, and meet every earlier, larger cap.  O(1) expected cells
-** and sites per edge on uniform sites, O(n) in all; no bound for ES. */
+** and sites per edge on uniform sites, O(n) in all (DT, ES:square); for
+** other polygons a search ending on a rounding shape, and every search of
+** an ellipse, goes through every cell on the left (O(n / p)). */
 static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
   sel_grid *g = &s->g;
   size_t qh = 0, qt = 0, k0 = sel_cell_of(g, 0.5 * s->p[a].x + 0.5 * s->p[b].x,
@@ -509,6 +601,8 @@ int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
   s.p = in->p, s.n = in->n, s.r = in->r, s.c = &out->ops;
   s.dt = rule_shape(in->r) == NULL;
   s.beats = s.dt ? sel_beats_dt : sel_beats_es;
+  s.cap = s.dt ? sel_cap_circle
+        : rule_shape(in->r)->kind == SHAPE_POLYGON ? sel_cap_homothet : NULL;
   double bucket;
   if (sel_choose(&s, in, search, &bucket, err, errlen) != 0) return -1;
   if (sel_setup(&s, in, bucket, err, errlen) != 0) {

@@ -307,16 +307,18 @@ static void test_bucket_formula(void **state) {
 }
 
 /* Larger sets: every row but the quadratic scans equals the incremental,
-** also at the ends of the coordinate contract and far from the origin
-** (the floating-point bounds of the strip and the grid scale with them). */
+** for DT also at the ends of the coordinate contract and far from the
+** origin (the floating-point bounds of the strip and the grid scale with
+** them), and for two empty-shape rules (the homothet's box). */
 static void test_large(void **state) {
   (void)state;
-  const double scale[] = {1, 0x1p-40, 0x1p90, 1}, shift[] = {0, 0, 0, 1e6};
+  const double scale[] = {1, 0x1p-40, 0x1p90, 1, 1, 1}, shift[] = {0, 0, 0, 1e6, 0, 0};
+  const char *rules[] = {"DT", "DT", "DT", "DT", "ES:square", "ES:hexagon"};
   testutil_rng g = {5};
   size_t n = 8000;
-  rule dt = ts_rule("DT");
   char err[256];
   for (size_t k = 0; k < sizeof scale / sizeof scale[0]; k++) {
+    rule dt = ts_rule(rules[k]);
     geom_point *p = ts_uniform(&g, n);
     for (size_t i = 0; i < n / 4; i++) p[i].x = p[i].y;    /* a diagonal of collinear sites */
     for (size_t i = 0; i < n; i++)
