@@ -36,8 +36,8 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    paradigm_select_strip},
   {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints, polygons: not yet (2.4.2, 2.4.3)",
-   "O(n) expected on uniform sites (DT, ES:square); ES polygons: the homothet bounds all "
-   "but rounding shapes; O(n^2) for an ellipse",
+   "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
+   "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
    "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
   {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED,
    BOTH_RULES, "polygons: not yet (2.4.3)",

@@ -39,11 +39,13 @@ typedef struct sel_edge { uint32_t u, v; } sel_edge;
 ** SEL_ANYWHERE when nothing is known (no candidate, an ellipse, a rounding
 ** shape, or a triangle too flat for the floating-point bounds below).
 ** xlo, xhi: its x-extent. */
-typedef enum sel_bound { SEL_ANYWHERE, SEL_DISC, SEL_BOX } sel_bound;
+typedef enum sel_bound { SEL_ANYWHERE, SEL_DISC, SEL_BOX, SEL_CONE } sel_bound;
 typedef struct sel_cap {
   sel_bound bounded;
   double cx, cy, r, tol, xlo, xhi, ylo, yhi;
   double tx, ty, ts, big;              /* SEL_BOX: the homothet t + sK, |K|'s bound */
+  geom_point o, u, v;                  /* SEL_CONE: cross(P - o, v) >= xlo, */
+                                       /* cross(u, P - o) >= ylo */
 } sel_cap;
 
 /* The bucket grid: gx * gy cells over the bounding box, the sites of cell k
@@ -287,6 +289,41 @@ static double sel_det3(const double m[3][3], double *twin) {
   return m[0][0] * (a - b) - m[0][1] * (c - d) + m[0][2] * (e - f);
 }
 
+/* ES, polygon K, when the circumscribing shape of abc is the rounding
+** shape of corner c0 (sides u, v): in the coordinates X = cross(P - a, v),
+** Y = cross(u, P - a) (the map of docs/emptyshape.md) it is the branch
+** X > -beta, Y > -alpha of (X + beta)(Y + alpha) = const through the three
+** sites, so it lies in that quadrant: a cone with its apex at the
+** hyperbola's centre.  alpha X + beta Y + gamma = -X Y at the three sites:
+** Cramer's rule with the error argument of sel_cap_homothet (entries and
+** products of at most three rounded factors, 12u of the twins), tol 2^-24
+** of the numerators' twins over |D|. */
+static void sel_cap_cone(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, int c0,
+                         sel_cap *k) {
+  const shape *K = rule_shape(s->r);
+  geom_point kc = K->v[c0], k1 = K->v[(c0 + 1) % K->n], k2 = K->v[(c0 + K->n - 1) % K->n];
+  geom_point u = {k1.x - kc.x, k1.y - kc.y}, v = {k2.x - kc.x, k2.y - kc.y}, o = s->p[a];
+  const uint32_t site[3] = {a, b, c};
+  double m[3][3], rhs[3], x[2], tw[2], dtw;
+  for (int r = 0; r < 3; r++) {
+    double px = s->p[site[r]].x - o.x, py = s->p[site[r]].y - o.y;
+    m[r][0] = px * v.y - py * v.x, m[r][1] = u.x * py - u.y * px, m[r][2] = 1;
+    rhs[r] = -m[r][0] * m[r][1];
+  }
+  double d = sel_det3((const double (*)[3])m, &dtw);
+  if (!(fabs(d) >= 0x1p-20 * dtw)) return;
+  for (int j = 0; j < 2; j++) {
+    double mj[3][3];
+    memcpy(mj, m, sizeof mj);
+    for (int r = 0; r < 3; r++) mj[r][j] = rhs[r];
+    x[j] = sel_det3((const double (*)[3])mj, &tw[j]) / d;
+  }
+  k->tol = 0x1p-24 * (tw[0] + tw[1]) / fabs(d);
+  k->o = o, k->u = u, k->v = v;
+  k->xlo = -x[1], k->ylo = -x[0];                   /* X >= -beta, Y >= -alpha */
+  k->bounded = SEL_CONE;
+}
+
 /* ES, polygon K: a box around the circumscribing homothet t + sK of abc
 ** (every site that beats c lies in it).  shape_circumscribe gives the
 ** contact edges exactly; edge i (outward normal n_i, support value h_i of
@@ -300,8 +337,9 @@ static double sel_det3(const double m[3][3], double *twin) {
 static void sel_cap_homothet(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
                              sel_cap *k) {
   const shape *K = rule_shape(s->r);
-  int e[3], corner;
-  if (shape_circumscribe(K, s->p[a], s->p[b], s->p[c], e, &corner) != 1) return;
+  int e[3], corner, kind = shape_circumscribe(K, s->p[a], s->p[b], s->p[c], e, &corner);
+  if (kind == 0) sel_cap_cone(s, a, b, c, corner, k);
+  if (kind != 1) return;
   double m[3][3], rhs[3], x[3], tw[3], dtw;
   const uint32_t site[3] = {a, b, c};
   for (int r = 0; r < 3; r++) {
@@ -342,7 +380,7 @@ static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
 ** first, then outwards, the nearer side in x first, until both sides leave
 ** the cap's x-extent.  Expected O(sqrt n) sites per edge on uniform sites,
 ** O(n^{3/2}) in all (DT); for ES the homothet's x-extent; an ellipse or a
-** rounding shape bounds nothing (O(n) per edge). */
+** rounding shape's cone gives none (O(n) per edge). */
 static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
   size_t i0 = s->pos[a] < s->pos[b] ? s->pos[a] : s->pos[b];
   size_t i1 = s->pos[a] ^ s->pos[b] ^ i0, l = i0, r = i1 + 1;
@@ -352,8 +390,9 @@ static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
   sel_cap k;
   sel_cap_make(s, a, b, best, &k);
   for (;;) {
-    int gol = l > 0 && (k.bounded == SEL_ANYWHERE || s->p[s->ord[l - 1]].x >= k.xlo);
-    int gor = r < s->n && (k.bounded == SEL_ANYWHERE || s->p[s->ord[r]].x <= k.xhi);
+    int any = k.bounded == SEL_ANYWHERE || k.bounded == SEL_CONE;   /* no x-extent */
+    int gol = l > 0 && (any || s->p[s->ord[l - 1]].x >= k.xlo);
+    int gor = r < s->n && (any || s->p[s->ord[r]].x <= k.xhi);
     if (!gol && !gor) return best;
     size_t i = gol && (!gor || xlo - s->p[s->ord[l - 1]].x <= s->p[s->ord[r]].x - xhi)
              ? --l : r++;
@@ -384,6 +423,19 @@ static int sel_rect_meets_homothet(const sel_state *s, const sel_cap *k, double 
   return 1;
 }
 
+/* Does the rectangle [x0, x1] x [y0, y1] meet the cone of k?  The
+** rectangle's largest X and Y against the bounds, with tol and 2^-40 of
+** the magnitudes for the rounding here. */
+static int sel_rect_meets_cone(const sel_cap *k, double x0, double x1, double y0, double y1) {
+  geom_point o = k->o, u = k->u, v = k->v;
+  double mx = (v.y > 0 ? x1 : x0) - o.x, my = (v.x > 0 ? y0 : y1) - o.y;
+  double nx = (u.y > 0 ? x0 : x1) - o.x, ny = (u.x > 0 ? y1 : y0) - o.y;
+  double mag = (fabs(x0 - o.x) + fabs(x1 - o.x) + fabs(y0 - o.y) + fabs(y1 - o.y))
+             * (fabs(u.x) + fabs(u.y) + fabs(v.x) + fabs(v.y));
+  double slack = k->tol + 0x1p-40 * mag;
+  return mx * v.y - my * v.x >= k->xlo - slack && u.x * ny - u.y * nx >= k->ylo - slack;
+}
+
 /* Does cell (i, j), widened by the grid's rounding margin, meet the left
 ** half-plane of ab and the cap?  Bounds only, as for sel_cap_make: the
 ** corners' cross products carry at most 8u |v| span. */
@@ -398,6 +450,7 @@ static int sel_cell_meets(const sel_state *s, uint32_t a, uint32_t b, const sel_
   if (cx < -0x1p-28 * hypot(vx, vy) * g->span) return 0;   /* the corner furthest left */
   if (k->bounded == SEL_ANYWHERE) return 1;
   if (k->bounded == SEL_BOX) return sel_rect_meets_homothet(s, k, x0, x1, y0, y1);
+  if (k->bounded == SEL_CONE) return sel_rect_meets_cone(k, x0, x1, y0, y1);
   double dx = fmax(fmax(x0 - k->cx, k->cx - x1), 0), dy = fmax(fmax(y0 - k->cy, k->cy - y1), 0);
   return dx * dx + dy * dy <= (k->r + k->tol) * (k->r + k->tol);
 }
@@ -430,9 +483,9 @@ static uint32_t sel_cell_visit(sel_state *s, uint32_t a, uint32_t b, uint32_t be
 ** meet the left half-plane and the current cap.  Every cell meeting the
 ** final cap is reached: those cells are 4-connected (closed cells), hold
 ** the midpoint's, and meet every earlier, larger cap.  O(1) expected cells
-** and sites per edge on uniform sites, O(n) in all (DT, ES:square); for
-** other polygons a search ending on a rounding shape, and every search of
-** an ellipse, goes through every cell on the left (O(n / p)). */
+** and sites per edge on uniform sites, O(n) in all (DT, ES:square; other
+** polygons close to it, a rounding shape bounded by its cone only); every
+** search of an ellipse goes through every cell on the left (O(n / p)). */
 static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
   sel_grid *g = &s->g;
   size_t qh = 0, qt = 0, k0 = sel_cell_of(g, 0.5 * s->p[a].x + 0.5 * s->p[b].x,

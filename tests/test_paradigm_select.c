@@ -309,11 +309,12 @@ static void test_bucket_formula(void **state) {
 /* Larger sets: every row but the quadratic scans equals the incremental,
 ** for DT also at the ends of the coordinate contract and far from the
 ** origin (the floating-point bounds of the strip and the grid scale with
-** them), and for two empty-shape rules (the homothet's box). */
+** them), and for three empty-shape rules (the homothets and the rounding
+** shapes' cones). */
 static void test_large(void **state) {
   (void)state;
-  const double scale[] = {1, 0x1p-40, 0x1p90, 1, 1, 1}, shift[] = {0, 0, 0, 1e6, 0, 0};
-  const char *rules[] = {"DT", "DT", "DT", "DT", "ES:square", "ES:hexagon"};
+  const double scale[] = {1, 0x1p-40, 0x1p90, 1, 1, 1, 1}, shift[] = {0, 0, 0, 1e6, 0, 0, 0};
+  const char *rules[] = {"DT", "DT", "DT", "DT", "ES:square", "ES:hexagon", "ES:triangle"};
   testutil_rng g = {5};
   size_t n = 8000;
   char err[256];
