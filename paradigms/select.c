@@ -289,6 +289,16 @@ static double sel_det3(const double m[3][3], double *twin) {
   return m[0][0] * (a - b) - m[0][1] * (c - d) + m[0][2] * (e - f);
 }
 
+/* Unknown j of m x = rhs by Cramer's rule (d the determinant of m), and
+** the twin of its numerator in *tw. */
+static double sel_cramer(const double m[3][3], const double rhs[3], int j, double d,
+                         double *tw) {
+  double mj[3][3];
+  memcpy(mj, m, sizeof mj);
+  for (int r = 0; r < 3; r++) mj[r][j] = rhs[r];
+  return sel_det3((const double (*)[3])mj, tw) / d;
+}
+
 /* ES, polygon K, when the circumscribing shape of abc is the rounding
 ** shape of corner c0 (sides u, v): in the coordinates X = cross(P - a, v),
 ** Y = cross(u, P - a) (the map of docs/emptyshape.md) it is the branch
@@ -312,12 +322,7 @@ static void sel_cap_cone(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
   }
   double d = sel_det3((const double (*)[3])m, &dtw);
   if (!(fabs(d) >= 0x1p-20 * dtw)) return;
-  for (int j = 0; j < 2; j++) {
-    double mj[3][3];
-    memcpy(mj, m, sizeof mj);
-    for (int r = 0; r < 3; r++) mj[r][j] = rhs[r];
-    x[j] = sel_det3((const double (*)[3])mj, &tw[j]) / d;
-  }
+  for (int j = 0; j < 2; j++) x[j] = sel_cramer((const double (*)[3])m, rhs, j, d, &tw[j]);
   k->tol = 0x1p-24 * (tw[0] + tw[1]) / fabs(d);
   k->o = o, k->u = u, k->v = v;
   k->xlo = -x[1], k->ylo = -x[0];                   /* X >= -beta, Y >= -alpha */
@@ -349,12 +354,7 @@ static void sel_cap_homothet(const sel_state *s, uint32_t a, uint32_t b, uint32_
   }
   double d = sel_det3((const double (*)[3])m, &dtw);
   if (!(fabs(d) >= 0x1p-20 * dtw)) return;
-  for (int j = 0; j < 3; j++) {              /* Cramer: column j replaced by rhs */
-    double mj[3][3];
-    memcpy(mj, m, sizeof mj);
-    for (int r = 0; r < 3; r++) mj[r][j] = rhs[r];
-    x[j] = sel_det3((const double (*)[3])mj, &tw[j]) / d;
-  }
+  for (int j = 0; j < 3; j++) x[j] = sel_cramer((const double (*)[3])m, rhs, j, d, &tw[j]);
   if (!(x[2] > 0)) return;
   double tol = 0x1p-24 * (tw[0] + tw[1] + tw[2]) / fabs(d), kx0 = K->v[0].x, kx1 = kx0;
   double ky0 = K->v[0].y, ky1 = ky0;
