@@ -29,6 +29,26 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"dc-alternating", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
    PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
+  {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   NULL, paradigm_select_stack},
+  {"select-queue", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   NULL, paradigm_select_queue},
+  {"select-strip", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   "O(n^{3/2}) expected on uniform sites (DT); ES polygons: the homothet's extent; "
+   "O(n^2) for an ellipse", NULL,
+   paradigm_select_strip},
+  {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
+   "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
+   "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
+  {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED,
+   BOTH_RULES, "polygons: not yet (2.4.3)",
+   "O(n^2 e): a scan of every site per edge, e constraint pieces per site", NULL,
+   paradigm_select_constrained},
 };
 
 #define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])
@@ -179,6 +199,32 @@ static int paradigm_check(const geom_point *q, size_t m, const paradigm_input *i
   return -1;
 }
 
+/* The segments of a constrained problem in the distinct points' indices
+** (in->segments names input points, duplicates included): 0 with *seg
+** (NULL when there are none), or -1 with the message. */
+static int paradigm_segments(const paradigm_input *in, uint32_t **seg, char *err,
+                             size_t errlen) {
+  *seg = NULL;
+  if (in->problem != PARADIGM_CONSTRAINED || in->nsegments == 0) return 0;
+  for (size_t k = 0; k < 2 * in->nsegments; k++)
+    if (in->segments[k] >= in->n) {
+      snprintf(err, errlen, "segment %zu: point index %u out of range (%zu points)", k / 2,
+               in->segments[k], in->n);
+      return -1;
+    }
+  uint32_t *map = malloc(in->n * sizeof *map), m = 0;
+  *seg = malloc(2 * in->nsegments * sizeof **seg);
+  if (map == NULL || *seg == NULL || lot_distinct(in->p, in->n, map) < 0) {
+    free(map), free(*seg), *seg = NULL;
+    snprintf(err, errlen, "out of memory for %zu segments", in->nsegments);
+    return -1;
+  }
+  for (size_t i = 0; i < in->n; i++) map[i] = map[i] == i ? m++ : map[map[i]];
+  for (size_t k = 0; k < 2 * in->nsegments; k++) (*seg)[k] = map[in->segments[k]];
+  free(map);
+  return 0;
+}
+
 int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm_result *out,
                  char *err, size_t errlen) {
   memset(out, 0, sizeof *out);
@@ -188,8 +234,11 @@ int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm
   size_t m;
   if (paradigm_distinct(in, &q, &back, &m, err, errlen) != 0) return -1;
   int rc = paradigm_check(q, m, in, err, errlen);
+  uint32_t *seg = NULL;
+  if (rc == 0) rc = paradigm_segments(in, &seg, err, errlen);
   paradigm_input sub = *in;
   sub.p = q, sub.n = m;
+  if (seg != NULL) sub.segments = seg;
   paradigm_output o = {0};
   unsigned long exact0 = geom_exact_calls();
   double t0 = paradigm_now();
@@ -203,7 +252,7 @@ int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm
   } else {
     free(o.tri);
   }
-  free(q), free(back);
+  free(q), free(back), free(seg);
   return rc;
 }
 

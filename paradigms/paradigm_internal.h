@@ -45,5 +45,44 @@ int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char
   "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
   "has triangles with non-empty homothets, and merges would start at support-hull edges " \
   "(2.6.6); constraints: not yet (Chew's virtual sites, 2.6.2)"
+/* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
+** unfinished edges as a stack or a queue, and the apex search by a scan of
+** every site, an x-sorted strip, or a bucket grid; with constraints. */
+FLIPLAB_INTERNAL int paradigm_select_stack(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_queue(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_strip(const paradigm_input *in, paradigm_output *out,
+                                           char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_buckets(const paradigm_input *in, paradigm_output *out,
+                                             char *err, size_t errlen);
+/* 2.4.2: the stack and the scan, each apex seen across no constraint. */
+FLIPLAB_INTERNAL int paradigm_select_constrained(const paradigm_input *in, paradigm_output *out,
+                                                 char *err, size_t errlen);
+
+/* How a selection run keeps its boundary and searches for an apex. */
+typedef enum paradigm_select_order { PARADIGM_SELECT_STACK, PARADIGM_SELECT_QUEUE }
+  paradigm_select_order;
+typedef enum paradigm_select_search {
+  PARADIGM_SELECT_SCAN, PARADIGM_SELECT_STRIP, PARADIGM_SELECT_BUCKETS
+} paradigm_select_search;
+
+/* What figures 2.9-2.11 and the bucket count of 2.4.1 measure: the
+** boundary's size after each triangle (its mean) and its peak, the hull's
+** sites, the grid's buckets. */
+typedef struct paradigm_select_stats {
+  double mean_boundary;
+  size_t peak_boundary;
+  size_t hull;
+  size_t buckets;
+} paradigm_select_stats;
+
+/* One selection run on distinct points (as the runner hands them over),
+** with in->segments when in->problem is PARADIGM_CONSTRAINED; st may be
+** NULL.  0, or -1 with a one-line message (out of memory, a bucket size
+** out of range, crossing segments, a segment from a point to itself). */
+FLIPLAB_INTERNAL int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
+                                         paradigm_select_search search, paradigm_output *out,
+                                         paradigm_select_stats *st, char *err, size_t errlen);
 
 #endif
