@@ -9,11 +9,15 @@ web/explorer.js in window.__fliplabTimings; docs/explorer.md).  Run by hand:
 Prints, for the rule --rule (default ES:hexagon):
   1. a drag of one site among 12 (convex 12-gon and 12 random sites): per move
      the time from the mousemove to the next animation frame after the redraw
-     (re-triangulation on the server included), median and 95th percentile
-     over --moves moves, and the frames per second the median implies;
+     (the re-triangulation on the server, /api/tri, included), median and 95th
+     percentile over --moves moves one at a time, with the median of its parts
+     (fetch: the request's round trip; draw: the redraw); then the redraws per
+     second while the mouse moves at every animation frame for 2 s, and the
+     drop (mouseup to the flip graph's answer drawn);
   2. the flip graph of 10 sites (convex 10-gon, 1430 triangulations, and 10
      random sites) from request to drawn, median of --runs;
-  3. the LOT of 10^5 uniform points from the click to drawn, median of --runs.
+  3. the LOT of 10^5 uniform points from the click to drawn, median of --runs,
+     with the median of its parts (fetch, decode, draw on the canvases).
 The browser and the server are the browser test's (python/tests/browser_explorer.py).
 """
 import argparse
@@ -31,25 +35,38 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 import browser_explorer as bx   # noqa: E402  (exits 77 without chromium or selenium)
 from fliplab import explorer    # noqa: E402
 
-# One move at a time: dispatch the mousemove the page listens to, wait until
-# the page settles (no request pending) and its timing is recorded.
+# One move at a time: dispatch the mousemove the page listens to and wait
+# until its redraw is recorded; then one move per animation frame for 2 s,
+# counting the redraws; then the drop, until the flip graph's answer is drawn.
 DRAG_JS = """const [i, moves, done] = arguments;
 const c = document.querySelectorAll('#sites .site')[i], r = $('sites').getBoundingClientRect();
 const x = r.left + Number(c.getAttribute('cx')), y = r.top + Number(c.getAttribute('cy'));
-const idle = () => new Promise((ok) => { const f = () =>
-  (!S.pending && __fliplabTimings.length >= n) ? ok() : setTimeout(f, 1); f(); });
-let n = 0;
+const drags = () => __fliplabTimings.filter((t) => t.what === 'drag');
+const until = (f) => new Promise((ok) => { const g = () => f() ? ok() : setTimeout(g, 1); g(); });
+const move = (k) => window.dispatchEvent(new MouseEvent('mousemove',
+  {clientX: x + 8 * Math.sin(k / 5), clientY: y + 8 * Math.cos(k / 7) - 8}));
 __fliplabTimings.length = 0;
 c.dispatchEvent(new MouseEvent('mousedown', {bubbles: true, clientX: x, clientY: y}));
 (async () => {
   for (let k = 0; k < moves; k++) {
-    const dx = 8 * Math.sin(k / 5), dy = 8 * Math.cos(k / 7) - 8;
-    window.dispatchEvent(new MouseEvent('mousemove', {clientX: x + dx, clientY: y + dy}));
-    n++;
-    await idle();
+    move(k);
+    await until(() => drags().length > k);
   }
+  const one = drags();
+  await new Promise((ok) => setTimeout(ok, 50));
+  const n0 = drags().length, t0 = performance.now();
+  let k = moves;
+  await new Promise((ok) => { const f = () => {
+    if (performance.now() - t0 > 2000) return ok();
+    move(k++); requestAnimationFrame(f); }; f(); });
+  const fps = 1000 * (drags().length - n0) / (performance.now() - t0);
+  await until(() => !S.drag.busy);
+  __fliplabTimings.length = 0;
   window.dispatchEvent(new MouseEvent('mouseup', {}));
-  done(__fliplabTimings.map((t) => t.frame));
+  await until(() => __fliplabTimings.some((t) => t.what === 'graph'));
+  const drop = __fliplabTimings.find((t) => t.what === 'graph').frame;
+  done({frame: one.map((t) => t.frame), fetch: one.map((t) => t.fetch),
+        draw: one.map((t) => t.draw), fps: fps, moves: k - moves, drop: drop});
 })();"""
 
 
@@ -81,17 +98,19 @@ def drag(pg, sites, rule, moves):
     show(pg, sites, rule)
     n = census(pg)
     pg.d.set_script_timeout(600)
-    t = sorted(pg.d.execute_async_script(DRAG_JS, len(sites) // 2, moves))
-    med, p95 = statistics.median(t), t[min(len(t) - 1, math.ceil(0.95 * len(t)) - 1)]
-    return n, len(t), med, p95
+    r = pg.d.execute_async_script(DRAG_JS, len(sites) // 2, moves)
+    t = sorted(r["frame"])
+    r["median"], r["p95"] = statistics.median(t), t[min(len(t) - 1, math.ceil(0.95 * len(t)) - 1)]
+    return n, r
 
 
 def lot_click(pg, n):
+    """The LOT's timing entry: frame (click to drawn), fetch, decode, draw, bytes."""
     pg.d.execute_script("$('lot-n').value = arguments[0]; __fliplabTimings.length = 0;"
                         "$('lot-go').click();", n)
     pg.until(lambda: pg.d.execute_script(
         "return __fliplabTimings.some((t) => t.what === 'lot');"), "the LOT", 120)
-    return pg.d.execute_script("return __fliplabTimings.find((t) => t.what === 'lot').frame;")
+    return pg.d.execute_script("return __fliplabTimings.find((t) => t.what === 'lot');")
 
 
 def row(what, count, n, ms, target):
@@ -116,19 +135,28 @@ def main():
         print("%-32s %-34s %4s %10s   %s" % ("what", "triangulations", "n", "ms", "target"))
         for name, s in (("drag, convex 12-gon", convex(12)),
                         ("drag, 12 random sites", random_sites(12, 1))):
-            count, n, med, p95 = drag(pg, s, a.rule, a.moves)
+            count, r = drag(pg, s, a.rule, a.moves)
+            med, p95, n = r["median"], r["p95"], len(r["frame"])
             ok = "met" if p95 < 16 else "median met" if med < 16 else "not met"
-            row(name + " (median)", count, n, med, "16 ms: %s; %.0f frames/s" % (ok, 1000 / med))
+            row(name + " (median)", count, n, med, "16 ms: %s" % ok)
             row(name + " (95th pct)", count, n, p95, "")
+            row("  of which fetch (median)", "", n, statistics.median(r["fetch"]), "")
+            row("  of which draw (median)", "", n, statistics.median(r["draw"]), "")
+            row("  redraws/s, a move every frame", "", r["moves"], r["fps"], "frames/s")
+            row("  drop: the flip graph's answer", count, 1, r["drop"], "")
         for name, s in (("flip graph, convex 10-gon", convex(10)),
                         ("flip graph, 10 random sites", random_sites(10, 1))):
             t = [show(pg, s, a.rule) for _ in range(a.runs)]
             med = statistics.median(t)
             row(name, census(pg), a.runs, med, "1 s: %s" % ("met" if med < 1000 else "not met"))
         t = [lot_click(pg, 100000) for _ in range(a.runs)]
-        med = statistics.median(t)
+        med = statistics.median(x["frame"] for x in t)
         row("LOT of 10^5 uniform points", "-", a.runs, med,
             "1 s: %s" % ("met" if med < 1000 else "not met"))
+        for part in ("fetch", "decode", "draw"):
+            row("  of which " + part + " (median)", "", a.runs,
+                statistics.median(x[part] for x in t), "")
+        print("# the LOT's message: %d bytes" % t[0]["bytes"])
         print("# load %s at the end" % os.getloadavg()[0])
     finally:
         d.quit()

@@ -493,35 +493,80 @@ function screenXY(pts, size) {
   return out;
 }
 
-function triPath(path, xy, tris, k) {
-  const a = 2 * tris[3 * k], b = 2 * tris[3 * k + 1], c = 2 * tris[3 * k + 2];
-  path.moveTo(xy[a], xy[a + 1]);
-  path.lineTo(xy[b], xy[b + 1]);
-  path.lineTo(xy[c], xy[c + 1]);
-  path.closePath();
+/* A CSS colour as [r, g, b] (the canvas normalises what it is given to #rrggbb). */
+function rgb(css) {
+  const g = document.createElement("canvas").getContext("2d");
+  g.fillStyle = css;
+  return [1, 3, 5].map((i) => parseInt(g.fillStyle.substr(i, 2), 16));
 }
 
-/* The triangles on a canvas: filled by badness, one path per colour of the scale
-** (64 fills, not one per triangle), then every edge in one stroke.  O(triangles). */
+/* Triangle k filled with colour c (RGBA packed as the machine's uint32) on a w x h
+** image: each pixel whose centre lies in it (rows by the half-open rule on y, both
+** ends of a row included, so triangles tiling a region cover every centre in it).
+** O(rows + pixels) of the triangle. */
+function fillTriangle(px, w, h, xy, tris, k, c) {
+  const a = 2 * tris[3 * k], b = 2 * tris[3 * k + 1], d = 2 * tris[3 * k + 2];
+  const ya = xy[a + 1], yb = xy[b + 1], yd = xy[d + 1];
+  const y0 = Math.max(0, Math.ceil(Math.min(ya, yb, yd) - 0.5));
+  const y1 = Math.min(h - 1, Math.floor(Math.max(ya, yb, yd) - 0.5));
+  for (let y = y0; y <= y1; y++) {
+    const yc = y + 0.5;
+    let xl = Infinity, xr = -Infinity;
+    for (let j = 0; j < 3; j++) {
+      const p = j === 0 ? a : j === 1 ? b : d, q = j === 0 ? b : j === 1 ? d : a;
+      const yp = xy[p + 1], yq = xy[q + 1];
+      if ((yp <= yc && yc < yq) || (yq <= yc && yc < yp)) {
+        const x = xy[p] + (yc - yp) * (xy[q] - xy[p]) / (yq - yp);
+        if (x < xl) xl = x;
+        if (x > xr) xr = x;
+      }
+    }
+    const x1 = Math.min(w - 1, Math.floor(xr - 0.5));
+    for (let x = Math.max(0, Math.ceil(xl - 0.5)); x <= x1; x++) px[y * w + x] = c;
+  }
+}
+
+/* The segment a-b blended over the image at weight t, a pixel per step along its
+** longer axis.  O(its length in pixels). */
+function blendLine(rgba, w, h, xa, ya, xb, yb, c, t) {
+  const n = Math.max(1, Math.ceil(Math.max(Math.abs(xb - xa), Math.abs(yb - ya))));
+  for (let i = 0; i <= n; i++) {
+    const x = Math.floor(xa + (xb - xa) * i / n), y = Math.floor(ya + (yb - ya) * i / n);
+    if (x < 0 || y < 0 || x >= w || y >= h) continue;
+    const o = 4 * (y * w + x);
+    rgba[o] += t * (c[0] - rgba[o]);
+    rgba[o + 1] += t * (c[1] - rgba[o + 1]);
+    rgba[o + 2] += t * (c[2] - rgba[o + 2]);
+  }
+}
+
+/* The triangles on a canvas: filled by badness, one packed colour per bucket of the
+** scale, then every edge blended over (weight t), rasterised into one ImageData here (vector paths
+** of 2 * 10^5 triangles take seconds to minutes in chromium's software rasteriser).
+** O(triangles + pixels covered). */
 function drawCanvas(cv, xy, tris, badness) {
-  const g = cv.getContext("2d"), m = tris.length / 3, sc = S.names.scale;
-  g.clearRect(0, 0, cv.width, cv.height);
+  const w = cv.width, h = cv.height, m = tris.length / 3, g = cv.getContext("2d");
+  const img = g.createImageData(w, h), px = new Uint32Array(img.data.buffer);
+  const pack = (c) => new Uint32Array(new Uint8ClampedArray([c[0], c[1], c[2], 255]).buffer)[0];
+  px.fill(pack([255, 255, 255]));
   if (badness) {
-    const [lo, hi] = range(badness), fills = sc.map(() => new Path2D());
-    const grey = new Path2D();
+    const [lo, hi] = range(badness), grey = pack(rgb("#dddddd"));
+    const fills = S.names.scale.map((c) => pack(rgb(c)));
     for (let k = 0; k < m; k++) {
       const i = bucket(badness[k], lo, hi);
-      triPath(i < 0 ? grey : fills[i], xy, tris, k);
+      fillTriangle(px, w, h, xy, tris, k, i < 0 ? grey : fills[i]);
     }
-    fills.forEach((p, i) => { g.fillStyle = sc[i]; g.fill(p); });
-    g.fillStyle = "#dddddd";
-    g.fill(grey);
   }
-  const edges = new Path2D();
-  for (let k = 0; k < m; k++) triPath(edges, xy, tris, k);
-  g.strokeStyle = "#1f4e79";
-  g.lineWidth = 0.4;
-  g.stroke(edges);
+  /* Edges fade as triangles shrink below 16 pixels (about the picture's area over m), so
+  ** that the shading of 10^5 points still shows through them. */
+  const edge = rgb("#1f4e79"), t = 0.4 * Math.min(1, 0.8 * w * h / m / 16);
+  for (let k = 0; k < m; k++) {
+    for (let j = 0; j < 3; j++) {
+      const a = 2 * tris[3 * k + j], b = 2 * tris[3 * k + (j + 1) % 3];
+      blendLine(img.data, w, h, xy[a], xy[a + 1], xy[b], xy[b + 1], edge, t);
+    }
+  }
+  g.putImageData(img, 0, 0);
 }
 
 /* The same picture as SVG, made only when exported: the LOT and DT side by side. */
