@@ -316,7 +316,7 @@ async function refreshOnce() {
     return;
   }
   const t0 = performance.now();
-  const old = currentTriangles().map((t) => t.v + "");
+  const old = currentTriangles().map((t) => t.v);
   try {
     const g = await api("/api/graph", ruleBody({sites: sites}));
     S.graph = g; S.lotOnly = null; S.node = 0;
@@ -336,13 +336,17 @@ async function refreshOnce() {
   timed("graph", t0);
 }
 
+/* A triangulation as a string, whatever the order of its triangles and their vertices
+** (the graph's triangles are in the enumeration's order, a LOT's anticlockwise). */
+const triKey = (tris) => tris.map((v) => v.slice().sort((a, b) => a - b) + "").sort().join(";");
+
 /* After an edit, stay on the triangulation with the same triangles if there is one
 ** (after a drag: the LOT drawn while dragging). */
 function keepNode(old) {
   if (!old.length) return;
-  const want = old.slice().sort().join(";"), g = S.graph;
+  const want = triKey(old), g = S.graph;
   for (let u = 0; u < g.nodes.length; u++) {
-    if (g.nodes[u].map((t) => g.triangles[t].v + "").sort().join(";") === want) {
+    if (triKey(g.nodes[u].map((t) => g.triangles[t].v)) === want) {
       S.node = u; return;
     }
   }
