@@ -11,13 +11,14 @@ Prints, for the rule --rule (default ES:hexagon):
      the time from the mousemove to the next animation frame after the redraw
      (the re-triangulation on the server, /api/tri, included), median and 95th
      percentile over --moves moves one at a time, with the median of its parts
-     (fetch: the request's round trip; draw: the redraw); then the redraws per
+     (fetch: the request's round trip, of which server: the server's own time from
+     its Server-Timing header; draw: the redraw); then the redraws per
      second while the mouse moves at every animation frame for 2 s, and the
      drop (mouseup to the flip graph's answer drawn);
   2. the flip graph of 10 sites (convex 10-gon, 1430 triangulations, and 10
      random sites) from request to drawn, median of --runs;
   3. the LOT of 10^5 uniform points from the click to drawn, median of --runs,
-     with the median of its parts (fetch, decode, draw on the canvases).
+     with the median of its parts (fetch, server, decode, draw on the canvases).
 The browser and the server are the browser test's (python/tests/browser_explorer.py).
 """
 import argparse
@@ -66,6 +67,7 @@ c.dispatchEvent(new MouseEvent('mousedown', {bubbles: true, clientX: x, clientY:
   await until(() => __fliplabTimings.some((t) => t.what === 'graph'));
   const drop = __fliplabTimings.find((t) => t.what === 'graph').frame;
   done({frame: one.map((t) => t.frame), fetch: one.map((t) => t.fetch),
+        server: one.map((t) => t.server),
         draw: one.map((t) => t.draw), fps: fps, moves: k - moves, drop: drop});
 })();"""
 
@@ -122,6 +124,7 @@ def main():
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--moves", type=int, default=60)
     ap.add_argument("--rule", default="ES:hexagon")
+    ap.add_argument("--only", choices=("drag", "graph", "lot"), help="one of the three parts")
     a = ap.parse_args()
     srv = explorer.Server(0, time_limit=60)
     threading.Thread(target=srv.serve_forever, daemon=True).start()
@@ -135,28 +138,34 @@ def main():
         print("%-32s %-34s %4s %10s   %s" % ("what", "triangulations", "n", "ms", "target"))
         for name, s in (("drag, convex 12-gon", convex(12)),
                         ("drag, 12 random sites", random_sites(12, 1))):
+            if a.only not in (None, "drag"):
+                break
             count, r = drag(pg, s, a.rule, a.moves)
             med, p95, n = r["median"], r["p95"], len(r["frame"])
             ok = "met" if p95 < 16 else "median met" if med < 16 else "not met"
             row(name + " (median)", count, n, med, "16 ms: %s" % ok)
             row(name + " (95th pct)", count, n, p95, "")
             row("  of which fetch (median)", "", n, statistics.median(r["fetch"]), "")
+            row("    of which the server (median)", "", n, statistics.median(r["server"]), "")
             row("  of which draw (median)", "", n, statistics.median(r["draw"]), "")
             row("  redraws/s, a move every frame", "", r["moves"], r["fps"], "frames/s")
             row("  drop: the flip graph's answer", count, 1, r["drop"], "")
         for name, s in (("flip graph, convex 10-gon", convex(10)),
                         ("flip graph, 10 random sites", random_sites(10, 1))):
+            if a.only not in (None, "graph"):
+                break
             t = [show(pg, s, a.rule) for _ in range(a.runs)]
             med = statistics.median(t)
             row(name, census(pg), a.runs, med, "1 s: %s" % ("met" if med < 1000 else "not met"))
-        t = [lot_click(pg, 100000) for _ in range(a.runs)]
-        med = statistics.median(x["frame"] for x in t)
+        t = [lot_click(pg, 100000) for _ in range(a.runs if a.only in (None, "lot") else 0)]
+        med = statistics.median(x["frame"] for x in t) if t else math.nan
         row("LOT of 10^5 uniform points", "-", a.runs, med,
             "1 s: %s" % ("met" if med < 1000 else "not met"))
-        for part in ("fetch", "decode", "draw"):
+        for part in ("fetch", "server", "decode", "draw") if t else ():
             row("  of which " + part + " (median)", "", a.runs,
                 statistics.median(x[part] for x in t), "")
-        print("# the LOT's message: %d bytes" % t[0]["bytes"])
+        if t:
+            print("# the LOT's message: %d bytes" % t[0]["bytes"])
         print("# load %s at the end" % os.getloadavg()[0])
     finally:
         d.quit()

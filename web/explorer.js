@@ -41,9 +41,15 @@ function say(text, ok) {
   $("message").className = ok ? "ok" : "";
 }
 
+/* The server's own time of the last answer in ms (its Server-Timing header), which
+** the timings set beside the round trip. */
+let serverMs = null;
+
 async function api(path, body, binary) {
   const r = await fetch(path, body === undefined ? {} : {
     method: "POST", headers: {"Content-Type": "application/json"}, body: JSON.stringify(body)});
+  const st = /dur=([0-9.]+)/.exec(r.headers.get("Server-Timing") || "");
+  serverMs = st ? Number(st[1]) : null;
   if (binary && r.ok) return await r.arrayBuffer();
   let data;
   try { data = await r.json(); } catch (e) { throw new Error(path + ": HTTP " + r.status); }
@@ -447,7 +453,7 @@ async function retriangulate(d) {
         "; the flip graph when the site is dropped", true);
     $("graph").classList.add("stale");
     drawTriangles();
-    timed("drag", t0, {fetch: t1 - t0, draw: performance.now() - t1});
+    timed("drag", t0, {fetch: t1 - t0, server: serverMs, draw: performance.now() - t1});
   }
   if (d.dirty) { d.t0 = d.t0 === null ? t1 : d.t0; retriangulate(d); }
 }
@@ -596,7 +602,7 @@ async function lot(body) {
   const t0 = performance.now();
   try {
     const buf = await api("/api/lot.bin", ruleBody(body), true);
-    const t1 = performance.now(), r = unpack(buf), t2 = performance.now();
+    const t1 = performance.now(), server = serverMs, r = unpack(buf), t2 = performance.now();
     S.lot = r; S.lastLot = body;
     const xy = screenXY(r.points, 420);
     drawCanvas($("lot-canvas"), xy, r.triangles, r.badness || null);
@@ -608,7 +614,8 @@ async function lot(body) {
       c.triangles_common + " of " + c.triangles_b + " triangles shared (" +
       (100 * c.triangles_common / Math.max(1, c.triangles_b)).toFixed(2) + "% of triangles)";
     say("", true);
-    timed("lot", t0, {fetch: t1 - t0, decode: t2 - t1, draw: t3 - t2, bytes: buf.byteLength});
+    timed("lot", t0, {fetch: t1 - t0, server: server, decode: t2 - t1, draw: t3 - t2,
+                      bytes: buf.byteLength});
   } catch (e) { say(e.message); }
 }
 

@@ -40,6 +40,7 @@ import shlex
 import signal
 import sys
 import threading
+import time
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Any, Callable
 
@@ -421,7 +422,6 @@ def run_limited(fn: Callable[[dict], Any], body: dict,
                 limit: float) -> tuple[int, str, bytes]:
     """fn(body) in a forked child within limit seconds: answer()'s triple.
     The child is killed when the limit passes."""
-    import time
     r, w = os.pipe()
     pid = os.fork()
     if pid == 0:
@@ -459,6 +459,9 @@ def _error(msg: str) -> bytes:
 class Handler(BaseHTTPRequestHandler):
     """GET the page and /api/names; POST the computing requests."""
     server_version = "fliplab-explorer"
+    protocol_version = "HTTP/1.1"     # keep-alive: a drag's requests share one connection
+    timeout = 60                      # seconds an idle connection is kept
+    disable_nagle_algorithm = True    # headers and body go out at once, not 40 ms apart
     error_content_type = "application/json"
     error_message_format = '{"error": "%(code)d %(message)s"}'
 
@@ -466,8 +469,11 @@ class Handler(BaseHTTPRequestHandler):
         if self.server.verbose:          # type: ignore[attr-defined]
             super().log_message(format, *args)
 
-    def _send(self, status: int, data: bytes, ctype: str = "application/json") -> None:
+    def _send(self, status: int, data: bytes, ctype: str = "application/json",
+              ms: float | None = None) -> None:
         self.send_response(status)
+        if ms is not None:                # the page splits its round trip with it
+            self.send_header("Server-Timing", "compute;dur=%.3f" % ms)
         self.send_header("Content-Type", ctype if ctype == BINARY else ctype + "; charset=utf-8")
         self.send_header("Content-Length", str(len(data)))
         self.send_header("Cache-Control", "no-store")
@@ -494,8 +500,9 @@ class Handler(BaseHTTPRequestHandler):
         except Refusal as e:
             self.close_connection = True
             return self._send(e.status, _error(str(e)))
+        t0 = time.perf_counter()
         status, ctype, data = self.server.compute(self.path, fn, body)  # type: ignore
-        self._send(status, data, ctype)
+        self._send(status, data, ctype, 1000 * (time.perf_counter() - t0))
 
     def _body(self) -> dict:
         n = self.headers.get("Content-Length")
