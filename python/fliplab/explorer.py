@@ -477,6 +477,8 @@ class Handler(BaseHTTPRequestHandler):
         self.send_header("Content-Type", ctype if ctype == BINARY else ctype + "; charset=utf-8")
         self.send_header("Content-Length", str(len(data)))
         self.send_header("Cache-Control", "no-store")
+        if self.close_connection:
+            self.send_header("Connection", "close")
         self.end_headers()
         self.wfile.write(data)
 
@@ -494,6 +496,7 @@ class Handler(BaseHTTPRequestHandler):
     def do_POST(self) -> None:
         fn = ROUTES.get(self.path)
         if fn is None:
+            self.close_connection = True  # its body unread: not the next request's start
             return self._send(404, _error("no such request: %s" % self.path[:80]))
         try:
             body = self._body()
@@ -519,6 +522,7 @@ class Handler(BaseHTTPRequestHandler):
         return body
 
     def _refuse_method(self) -> None:
+        self.close_connection = True      # a body, if any, is not read
         self._send(405, _error("method %s not allowed: GET or POST" % self.command))
 
     do_PUT = do_DELETE = do_PATCH = do_OPTIONS = do_HEAD = _refuse_method

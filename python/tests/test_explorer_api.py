@@ -465,3 +465,19 @@ def test_graph_cache():
     finally:
         srv.shutdown()
         srv.server_close()
+
+
+def test_keep_alive_after_a_refusal(server):
+    """One connection: a refused request's unread body is not taken for the next
+    request (the server closes it), and good requests share the connection."""
+    c = http.client.HTTPConnection("127.0.0.1", server.server_address[1], timeout=10)
+    body = json.dumps({"sites": [[0, 0], [1, 0], [0, 1]], "rule": "DT"})
+    for _ in range(3):
+        c.request("POST", "/api/tri", body=body)
+        r = c.getresponse()
+        assert r.status == 200 and json.loads(r.read())["triangles"] == [[0, 1, 2]]
+    c.request("POST", "/api/nothing", body="GET /api/names HTTP/1.1\r\n\r\n")
+    r = c.getresponse()
+    assert r.status == 404 and r.getheader("Connection") == "close"
+    r.read()
+    c.close()
