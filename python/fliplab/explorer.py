@@ -51,7 +51,7 @@ LOT_MAX = 100000                  # random points of the LOT view
 BODY_MAX = 65536                  # bytes of a request body
 NODES_MAX = 5000                  # triangulations drawn; more: the LOT only
 TIME_LIMIT = 10.0                 # seconds per computing request
-DRAG_FLIPS = 10000                # flip budget of /api/tri (a LOT of 12 sites: < 100)
+DRAG_FLIPS = 10000                # flip budget of /api/tri (a LOT of 12 sites: about 20)
 GRAPH_CACHE = 32                  # /api/graph answers kept (LRU)
 PAGES = {"/": ("index.html", "text/html"), "/index.html": ("index.html", "text/html"),
          "/explorer.js": ("explorer.js", "text/javascript"),
