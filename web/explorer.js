@@ -436,9 +436,9 @@ function dragFrame(d) {
 }
 
 async function retriangulate(d) {
-  const t0 = d.t0, sites = S.sites.map((p) => p.slice());
+  const t0 = d.t0, sites = S.sites.map((p) => p.slice()), tq = performance.now();
   d.busy = true; d.dirty = false; d.t0 = null;
-  let tri = null, t1 = t0;
+  let tri = null, t1 = tq;
   try {
     tri = await api("/api/tri", ruleBody({sites: sites}));
     t1 = performance.now();
@@ -453,9 +453,10 @@ async function retriangulate(d) {
         "; the flip graph when the site is dropped", true);
     $("graph").classList.add("stale");
     drawTriangles();
-    timed("drag", t0, {fetch: t1 - t0, server: serverMs, draw: performance.now() - t1});
+    timed("drag", t0, {wait: tq - t0, fetch: t1 - tq, server: serverMs,
+                       draw: performance.now() - t1});
   }
-  if (d.dirty) { d.t0 = d.t0 === null ? t1 : d.t0; retriangulate(d); }
+  if (d.dirty) retriangulate(d);
 }
 
 function endDrag() {
