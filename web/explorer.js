@@ -541,8 +541,9 @@ function fillTriangle(px, w, h, xy, tris, k, c) {
 ** longer axis.  O(its length in pixels). */
 function blendLine(rgba, w, h, xa, ya, xb, yb, c, t) {
   const n = Math.max(1, Math.ceil(Math.max(Math.abs(xb - xa), Math.abs(yb - ya))));
+  const dx = (xb - xa) / n, dy = (yb - ya) / n;
   for (let i = 0; i <= n; i++) {
-    const x = Math.floor(xa + (xb - xa) * i / n), y = Math.floor(ya + (yb - ya) * i / n);
+    const x = Math.floor(xa + dx * i), y = Math.floor(ya + dy * i);
     if (x < 0 || y < 0 || x >= w || y >= h) continue;
     const o = 4 * (y * w + x);
     rgba[o] += t * (c[0] - rgba[o]);
@@ -552,10 +553,12 @@ function blendLine(rgba, w, h, xa, ya, xb, yb, c, t) {
 }
 
 /* The triangles on a canvas: filled by badness, one packed colour per bucket of the
-** scale, then every edge blended over (weight t), rasterised into one ImageData here (vector paths
-** of 2 * 10^5 triangles take seconds to minutes in chromium's software rasteriser).
-** O(triangles + pixels covered). */
-function drawCanvas(cv, xy, tris, badness) {
+** scale, then every edge blended over once (weight t): an interior edge is a-b in one
+** anticlockwise triangle and b-a in the other, so each triangle draws its edges with
+** a < b, and the hull (anticlockwise too) the hull edges its triangle left out.  All is
+** rasterised into one ImageData here: chromium's vector paths take seconds for 2 * 10^5
+** triangles on its software rasteriser (minutes in one path).  O(triangles + pixels). */
+function drawCanvas(cv, xy, tris, badness, hull) {
   const w = cv.width, h = cv.height, m = tris.length / 3, g = cv.getContext("2d");
   const img = g.createImageData(w, h), px = new Uint32Array(img.data.buffer);
   const pack = (c) => new Uint32Array(new Uint8ClampedArray([c[0], c[1], c[2], 255]).buffer)[0];
@@ -570,13 +573,16 @@ function drawCanvas(cv, xy, tris, badness) {
   }
   /* Edges fade as triangles shrink below 16 pixels (about the picture's area over m), so
   ** that the shading of 10^5 points still shows through them. */
-  const edge = rgb("#1f4e79"), t = 0.4 * Math.min(1, 0.8 * w * h / m / 16);
+  const edge = rgb("#1f4e79"), t = 0.65 * Math.min(1, 0.8 * w * h / m / 16);
+  const line = (a, b) => blendLine(img.data, w, h, xy[2 * a], xy[2 * a + 1], xy[2 * b],
+                                    xy[2 * b + 1], edge, t);
   for (let k = 0; k < m; k++) {
     for (let j = 0; j < 3; j++) {
-      const a = 2 * tris[3 * k + j], b = 2 * tris[3 * k + (j + 1) % 3];
-      blendLine(img.data, w, h, xy[a], xy[a + 1], xy[b], xy[b + 1], edge, t);
+      const a = tris[3 * k + j], b = tris[3 * k + (j + 1) % 3];
+      if (a < b) line(a, b);
     }
   }
+  hull.forEach((a, i) => { const b = hull[(i + 1) % hull.length]; if (a > b) line(a, b); });
   g.putImageData(img, 0, 0);
 }
 
@@ -606,8 +612,8 @@ async function lot(body) {
     const t1 = performance.now(), server = serverMs, r = unpack(buf), t2 = performance.now();
     S.lot = r; S.lastLot = body;
     const xy = screenXY(r.points, 420);
-    drawCanvas($("lot-canvas"), xy, r.triangles, r.badness || null);
-    drawCanvas($("dt-canvas"), xy, r.dt, null);
+    drawCanvas($("lot-canvas"), xy, r.triangles, r.badness || null, r.hull);
+    drawCanvas($("dt-canvas"), xy, r.dt, null, r.hull);
     const t3 = performance.now(), c = r.compare, n = r.points.length / 2;
     $("lot-figures").textContent = "LOT(" + r.rule + ") left, DT right: " + n +
       " points, " + r.triangles.length / 3 + " triangles, " + r.flips + " flips, " + r.status +

@@ -307,9 +307,10 @@ def pack_arrays(head: dict[str, Any], arrays: list[tuple[str, Any]]) -> bytes:
 
 def api_lot_bin(body: dict) -> bytes:
     """api_lot's answer as pack_arrays: float64 points, int32 triangles of the
-    LOT and of DT, float64 badness (triangle rules)."""
+    LOT and of DT (anticlockwise), the hull's vertices (anticlockwise), float64
+    badness (triangle rules)."""
     r, p, t, d = _lots(body)
-    arrays = [("points", p), ("triangles", t.triangles), ("dt", d.triangles)]
+    arrays = [("points", p), ("triangles", t.triangles), ("dt", d.triangles), ("hull", d.hull)]
     if r.is_triangle:
         arrays.append(("badness", t.badness))
     return pack_arrays({"rule": r.name, "status": t.status, "flips": int(t.flips),

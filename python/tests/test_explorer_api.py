@@ -385,6 +385,7 @@ def test_lot_bin_is_the_librarys(server, body, local):
     t, d = fliplab.lot(p, local), fliplab.lot(p, "DT")
     assert np.array_equal(m["points"], p) and m["points"].dtype == np.float64
     assert np.array_equal(m["triangles"], t.triangles) and np.array_equal(m["dt"], d.triangles)
+    assert np.array_equal(m["hull"], d.hull) and np.array_equal(m["hull"], t.hull)
     assert m["compare"] == t.compare(d) and m["status"] == t.status and m["flips"] == t.flips
     if t.rule.is_triangle:
         assert np.array_equal(m["badness"], t.badness, equal_nan=True)
