@@ -12,7 +12,8 @@ node of the flip graph, drags a site onto another and types a bad formula
 and a bad shape (a message, the page still works), exports SVG, CSV and the
 command line (the command runs and gives the page's sinks), runs the LOT
 panel (the figures are lot()'s; the triangles the canvases hold, read through
-window.__fliplabLot, are the CLI's lot --out), drags a site (while dragging
+window.__fliplabLot, are the CLI's lot --out; its SVG export draws every
+triangle), drags a site (while dragging
 the triangles are lot()'s of the moved sites; the drop recomputes the flip
 graph: its counts are flipgraph()'s and the current node is the dragged LOT),
 and times site drags (frames per second of the redraw, printed and kept in
@@ -219,7 +220,7 @@ def exports(pg, downloads, g):
     assert sinks == ["sinks: %d" % len(g.sinks)], (out, g)
 
 
-def lot_panel(pg):
+def lot_panel(pg, downloads):
     n = pg.el("lot-n")
     n.clear()
     n.send_keys("20000")
@@ -239,6 +240,10 @@ def lot_panel(pg):
                        capture_output=True, check=True)
         cli = np.genfromtxt(out, delimiter=",", skip_header=1, usecols=(0, 1, 2), dtype=np.int64)
         assert held[key] == cli.ravel().tolist(), key
+    pg.el("export-lot").click()                  # the SVG, made from the held arrays
+    svg = os.path.join(downloads, "lot.svg")
+    pg.until(lambda: os.path.exists(svg) and open(svg).read().endswith("</svg>\n"), "lot.svg")
+    assert open(svg).read().count("Z") == len(t.triangles) + len(d.triangles)  # path closes
     pg.shot("lot")
 
 
@@ -316,7 +321,7 @@ def main():
         step_and_run(pg, g)
         exports(pg, downloads, g)
         bad_input(pg)
-        lot_panel(pg)
+        lot_panel(pg, downloads)
         drag_and_drop(pg, "ES:hexagon")
         drag_fps(pg)
         errors = [x for x in d.get_log("browser") if x["level"] == "SEVERE"
