@@ -11,20 +11,27 @@ server, which answers JSON:
     POST /api/graph    {sites, rule[, define]}: the flip graph, its flips with the
                        rule's decisions and joint values, each triangle's badness,
                        the census counts of the set and a layout
+    POST /api/tri      {sites, rule[, define]}: the rule's LOT of the sites alone
+                       (a drag's re-triangulation: no flip graph, no child
+                       process unless a formula is defined)
     POST /api/lot      {sites | random: {n, sampler, seed}, rule[, define]}: LOT
                        and DT with lot --compare DT's figures
+    POST /api/lot.bin  the same, as one binary message (pack_arrays): typed arrays
     POST /api/sample   {kind, n, seed}: sites from a sampler
     POST /api/export   {sites | random, rule[, define]}: the sites as CSV and the
                        fliplab command lines that reproduce the view
 
-Each computing request runs in a child process forked for it: the time limit
-kills it (503), a formula's define() dies with it (names stay free), and a
-crash in it cannot take the server down.  Bad input gets a 4xx with one line
-of JSON, {"error": "..."}; the server binds 127.0.0.1 only.
+Each computing request of unbounded work runs in a child process forked for
+it: the time limit kills it (503), a formula's define() dies with it (names
+stay free), and a crash in it cannot take the server down.  /api/tri without
+a formula is bounded work (at most 12 sites and DRAG_FLIPS flips) and runs in
+the server; /api/graph answers are kept in a small LRU cache.  Bad input gets
+a 4xx with one line of JSON, {"error": "..."}; the server binds 127.0.0.1 only.
 """
 from __future__ import annotations
 
 import argparse
+import collections
 import json
 import math
 import os
@@ -32,6 +39,8 @@ import select
 import shlex
 import signal
 import sys
+import threading
+import time
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Any, Callable
 
@@ -42,6 +51,8 @@ LOT_MAX = 100000                  # random points of the LOT view
 BODY_MAX = 65536                  # bytes of a request body
 NODES_MAX = 5000                  # triangulations drawn; more: the LOT only
 TIME_LIMIT = 10.0                 # seconds per computing request
+DRAG_FLIPS = 10000                # flip budget of /api/tri (a LOT of 12 sites: about 20)
+GRAPH_CACHE = 32                  # /api/graph answers kept (LRU)
 PAGES = {"/": ("index.html", "text/html"), "/index.html": ("index.html", "text/html"),
          "/explorer.js": ("explorer.js", "text/javascript"),
          "/explorer.css": ("explorer.css", "text/css")}
@@ -100,6 +111,15 @@ def _sites(v: Any, lo: int = SITES_MIN, hi: int = SITES_MAX) -> list[list[float]
             raise Refusal(400, "sites: site %d is not a pair of finite numbers" % (i + 1))
         out.append([float(p[0]), float(p[1])])
     return out
+
+
+def _distinct(p: list[list[float]]) -> None:
+    """Refuse two equal sites (lot() would merge them silently)."""
+    seen: dict[tuple[float, float], int] = {}
+    for i, q in enumerate(p):
+        j = seen.setdefault((q[0], q[1]), i)
+        if j != i:
+            raise Refusal(400, "sites: site %d equals site %d" % (i + 1, j + 1))
 
 
 def _random(v: Any) -> tuple[int, str, int]:
@@ -218,9 +238,22 @@ def api_graph(body: dict) -> dict[str, Any]:
 
 # ---- LOTs ------------------------------------------------------------------
 
-def api_lot(body: dict) -> dict[str, Any]:
-    """LOT(rule) of the sites or of random points, beside DT, with the figures
-    of lot --compare DT."""
+def api_tri(body: dict) -> dict[str, Any]:
+    """The rule's LOT of the sites alone, as a drag redraws it: no flip graph.
+    Bounded: at most SITES_MAX sites and DRAG_FLIPS flips (status 'budget
+    exhausted' past it), so the server runs it itself (docs/explorer.md)."""
+    import fliplab
+    sites = _sites(body.get("sites"))
+    _distinct(sites)
+    r = _rule(body)
+    t = fliplab.lot(np.array(sites), r, max_flips=DRAG_FLIPS)
+    return {"rule": r.name, "status": t.status, "flips": int(t.flips),
+            "triangles": t.triangles.tolist(),
+            "badness": [_num(b) for b in t.badness.tolist()] if r.is_triangle else None}
+
+
+def _lots(body: dict) -> tuple[Any, Any, Any, Any]:
+    """(rule, points, LOT(rule), DT) of a LOT request."""
     import fliplab
     r = _rule(body)
     if "random" in body:
@@ -228,14 +261,61 @@ def api_lot(body: dict) -> dict[str, Any]:
         p = fliplab.samplers.points(n, kind, seed)
     else:
         p = np.array(_sites(body.get("sites"), 3, LOT_MAX))
-    t = fliplab.lot(p, r)
-    d = fliplab.lot(p, "DT")
+    # DT in a second thread meanwhile (ctypes lets the GIL go; the two runs share
+    # nothing but the points, which neither writes): for 10^5 points DT's 0.09 s
+    # (at load 1) is hidden behind the LOT's 0.16 s on a second core.
+    d: list[Any] = []
+    th = threading.Thread(target=lambda: d.append(fliplab.lot(p, "DT")))
+    th.start()
+    try:
+        t = fliplab.lot(p, r)
+    finally:
+        th.join()
+    if not d:
+        raise MemoryError("the Delaunay triangulation beside the LOT failed")
+    return r, p, t, d[0]
+
+
+def api_lot(body: dict) -> dict[str, Any]:
+    """LOT(rule) of the sites or of random points, beside DT, with the figures
+    of lot --compare DT."""
+    r, p, t, d = _lots(body)
     out = {"rule": r.name, "status": t.status, "flips": int(t.flips),
            "triangles": t.triangles.tolist(), "dt": d.triangles.tolist(),
            "compare": t.compare(d)}
     out["points"] = p.tolist()
     out["badness"] = [_num(b) for b in t.badness.tolist()] if r.is_triangle else None
     return out
+
+
+def pack_arrays(head: dict[str, Any], arrays: list[tuple[str, Any]]) -> bytes:
+    """head and arrays as one message: a little-endian uint32 n, n bytes of
+    JSON (head plus "arrays": [{name, dtype, shape, offset}], padded with
+    spaces so that 4 + n is a multiple of 8), then each array's bytes,
+    little-endian, at offset (a multiple of 8) from the end of the JSON.
+    The page reads them as typed arrays without copying (docs/explorer.md)."""
+    meta, parts, at = [], [], 0
+    for name, a in arrays:
+        kind = "<f8" if np.asarray(a).dtype.kind == "f" else "<i4"
+        data = np.ascontiguousarray(a, dtype=kind).tobytes()
+        meta.append({"name": name, "dtype": kind, "shape": list(np.shape(a)), "offset": at})
+        parts.append(data + b"\0" * (-len(data) % 8))
+        at += len(parts[-1])
+    j = json.dumps(dict(head, arrays=meta), allow_nan=False, separators=(",", ":")).encode()
+    j += b" " * (-(4 + len(j)) % 8)
+    return len(j).to_bytes(4, "little") + j + b"".join(parts)
+
+
+def api_lot_bin(body: dict) -> bytes:
+    """api_lot's answer as pack_arrays: float64 points, int32 triangles of the
+    LOT and of DT (anticlockwise), the hull's vertices (anticlockwise), float64
+    badness (triangle rules)."""
+    r, p, t, d = _lots(body)
+    arrays = [("points", p), ("triangles", t.triangles), ("dt", d.triangles), ("hull", d.hull)]
+    if r.is_triangle:
+        arrays.append(("badness", t.badness))
+    return pack_arrays({"rule": r.name, "status": t.status, "flips": int(t.flips),
+                        "compare": t.compare(d)}, arrays)
 
 
 # ---- samplers and exports ----------------------------------------------------
@@ -301,15 +381,17 @@ def api_names() -> dict[str, Any]:
                        "nodes_max": NODES_MAX, "body_max": BODY_MAX}}
 
 
-ROUTES: dict[str, Callable[[dict], dict[str, Any]]] = {
-    "/api/graph": api_graph, "/api/lot": api_lot, "/api/sample": api_sample,
-    "/api/export": api_export}
+ROUTES: dict[str, Callable[[dict], Any]] = {
+    "/api/graph": api_graph, "/api/tri": api_tri, "/api/lot": api_lot,
+    "/api/lot.bin": api_lot_bin, "/api/sample": api_sample, "/api/export": api_export}
+BINARY = "application/octet-stream"
 
 
 # ---- running a request in a child ------------------------------------------
 
-def _child(fn: Callable[[dict], dict[str, Any]], body: dict, w: int) -> None:
-    """In the forked child: the answer as (status, JSON) on w, then exit."""
+def answer(fn: Callable[[dict], Any], body: dict) -> tuple[int, str, bytes]:
+    """fn(body) as (status, content type, body): JSON, or bytes as BINARY;
+    a refusal or the library's ValueError as a 4xx line of JSON."""
     try:
         status, out = 200, fn(body)
     except Refusal as e:
@@ -318,11 +400,19 @@ def _child(fn: Callable[[dict], dict[str, Any]], body: dict, w: int) -> None:
         status, out = 400, {"error": str(e).splitlines()[0] if str(e) else "bad request"}
     except MemoryError as e:
         status, out = 503, {"error": "out of memory: %s" % e}
-    except BaseException as e:    # noqa: B036 (the child never returns)
+    except Exception as e:
         status, out = 500, {"error": "internal error: %s" % type(e).__name__}
-    data = json.dumps(out, allow_nan=False, separators=(",", ":")).encode()
+    if isinstance(out, bytes):
+        return status, BINARY, out
+    return status, "application/json", json.dumps(out, allow_nan=False,
+                                                  separators=(",", ":")).encode()
+
+
+def _child(fn: Callable[[dict], Any], body: dict, w: int) -> None:
+    """In the forked child: "status content-type\\n" and the answer on w, then exit."""
     try:
-        os.write(w, b"%d\n" % status)
+        status, ctype, data = answer(fn, body)
+        os.write(w, b"%d %s\n" % (status, ctype.encode()))
         view = memoryview(data)
         while view:
             view = view[os.write(w, view):]
@@ -330,11 +420,10 @@ def _child(fn: Callable[[dict], dict[str, Any]], body: dict, w: int) -> None:
         os._exit(0)
 
 
-def run_limited(fn: Callable[[dict], dict[str, Any]], body: dict,
-                limit: float) -> tuple[int, bytes]:
-    """fn(body) in a forked child within limit seconds: (status, JSON bytes).
+def run_limited(fn: Callable[[dict], Any], body: dict,
+                limit: float) -> tuple[int, str, bytes]:
+    """fn(body) in a forked child within limit seconds: answer()'s triple.
     The child is killed when the limit passes."""
-    import time
     r, w = os.pipe()
     pid = os.fork()
     if pid == 0:
@@ -347,7 +436,8 @@ def run_limited(fn: Callable[[dict], dict[str, Any]], body: dict,
             left = deadline - time.monotonic()
             if left <= 0 or not select.select([r], [], [], left)[0]:
                 os.kill(pid, signal.SIGKILL)
-                return 503, _error("time limit of %g s passed: try fewer sites" % limit)
+                return 503, "application/json", _error(
+                    "time limit of %g s passed: try fewer sites" % limit)
             chunk = os.read(r, 1 << 16)
             if not chunk:
                 break
@@ -357,8 +447,9 @@ def run_limited(fn: Callable[[dict], dict[str, Any]], body: dict,
         os.waitpid(pid, 0)
     head, _, data = b"".join(chunks).partition(b"\n")
     if not head:
-        return 500, _error("internal error: the worker died")
-    return int(head), data
+        return 500, "application/json", _error("internal error: the worker died")
+    status, ctype = head.decode().split(" ", 1)
+    return int(status), ctype, data
 
 
 def _error(msg: str) -> bytes:
@@ -370,6 +461,9 @@ def _error(msg: str) -> bytes:
 class Handler(BaseHTTPRequestHandler):
     """GET the page and /api/names; POST the computing requests."""
     server_version = "fliplab-explorer"
+    protocol_version = "HTTP/1.1"     # keep-alive: a drag's requests share one connection
+    timeout = 60                      # seconds an idle connection is kept
+    disable_nagle_algorithm = True    # headers and body go out at once, not 40 ms apart
     error_content_type = "application/json"
     error_message_format = '{"error": "%(code)d %(message)s"}'
 
@@ -377,11 +471,16 @@ class Handler(BaseHTTPRequestHandler):
         if self.server.verbose:          # type: ignore[attr-defined]
             super().log_message(format, *args)
 
-    def _send(self, status: int, data: bytes, ctype: str = "application/json") -> None:
+    def _send(self, status: int, data: bytes, ctype: str = "application/json",
+              ms: float | None = None) -> None:
         self.send_response(status)
-        self.send_header("Content-Type", ctype + "; charset=utf-8")
+        if ms is not None:                # the page splits its round trip with it
+            self.send_header("Server-Timing", "compute;dur=%.3f" % ms)
+        self.send_header("Content-Type", ctype if ctype == BINARY else ctype + "; charset=utf-8")
         self.send_header("Content-Length", str(len(data)))
         self.send_header("Cache-Control", "no-store")
+        if self.close_connection:
+            self.send_header("Connection", "close")
         self.end_headers()
         self.wfile.write(data)
 
@@ -399,14 +498,16 @@ class Handler(BaseHTTPRequestHandler):
     def do_POST(self) -> None:
         fn = ROUTES.get(self.path)
         if fn is None:
+            self.close_connection = True  # its body unread: not the next request's start
             return self._send(404, _error("no such request: %s" % self.path[:80]))
         try:
             body = self._body()
         except Refusal as e:
             self.close_connection = True
             return self._send(e.status, _error(str(e)))
-        status, data = run_limited(fn, body, self.server.time_limit)  # type: ignore
-        self._send(status, data)
+        t0 = time.perf_counter()
+        status, ctype, data = self.server.compute(self.path, fn, body)  # type: ignore
+        self._send(status, data, ctype, 1000 * (time.perf_counter() - t0))
 
     def _body(self) -> dict:
         n = self.headers.get("Content-Length")
@@ -423,6 +524,7 @@ class Handler(BaseHTTPRequestHandler):
         return body
 
     def _refuse_method(self) -> None:
+        self.close_connection = True      # a body, if any, is not read
         self._send(405, _error("method %s not allowed: GET or POST" % self.command))
 
     do_PUT = do_DELETE = do_PATCH = do_OPTIONS = do_HEAD = _refuse_method
@@ -436,7 +538,34 @@ class Server(ThreadingHTTPServer):
                  verbose: bool = False) -> None:
         self.time_limit, self.verbose = time_limit, verbose
         self.web, self.names = web_dir(), api_names()
+        self.cache: collections.OrderedDict[str, tuple[int, str, bytes]] = \
+            collections.OrderedDict()
+        self.lock = threading.Lock()      # the cache, and the library in this process
         super().__init__(("127.0.0.1", port), Handler)
+
+    def compute(self, path: str, fn: Callable[[dict], Any],
+                body: dict) -> tuple[int, str, bytes]:
+        """A computing request's answer: /api/tri without a formula here (bounded
+        work, a few hundred microseconds), /api/graph from the cache when the same
+        sites, rule and formula were asked before, the rest in a child."""
+        if path == "/api/tri" and body.get("define") in (None, ""):
+            with self.lock:
+                return answer(fn, body)
+        if path != "/api/graph":
+            return run_limited(fn, body, self.time_limit)
+        key = json.dumps([body.get("sites"), body.get("rule"), body.get("define")])
+        with self.lock:
+            hit = self.cache.get(key)
+            if hit:
+                self.cache.move_to_end(key)
+                return hit
+        out = run_limited(fn, body, self.time_limit)
+        if out[0] != 503:                 # a time limit may pass another time
+            with self.lock:
+                self.cache[key] = out
+                while len(self.cache) > GRAPH_CACHE:
+                    self.cache.popitem(last=False)
+        return out
 
 
 def main(argv: list[str] | None = None) -> int:

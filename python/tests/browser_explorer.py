@@ -11,8 +11,13 @@ reaches), steps and runs to a sink (one of the library's sinks), clicks a
 node of the flip graph, drags a site onto another and types a bad formula
 and a bad shape (a message, the page still works), exports SVG, CSV and the
 command line (the command runs and gives the page's sinks), runs the LOT
-panel (the figures are lot()'s), and times site drags (frames per second
-of the redraw, printed and kept in drag-fps.txt).  Screenshots of the main views go to
+panel (the figures are lot()'s; the triangles the canvases hold, read through
+window.__fliplabLot, are the CLI's lot --out; its SVG export draws every
+triangle), drags a site (while dragging
+the triangles are lot()'s of the moved sites; the drop recomputes the flip
+graph: its counts are flipgraph()'s and the current node is the dragged LOT),
+and times site drags (frames per second of the redraw, printed and kept in
+drag-fps.txt).  Screenshots of the main views go to
 FLIPLAB_ARTEFACTS (default: the build's explorer-artefacts/).
 """
 import os
@@ -215,7 +220,7 @@ def exports(pg, downloads, g):
     assert sinks == ["sinks: %d" % len(g.sinks)], (out, g)
 
 
-def lot_panel(pg):
+def lot_panel(pg, downloads):
     n = pg.el("lot-n")
     n.clear()
     n.send_keys("20000")
@@ -226,12 +231,55 @@ def lot_panel(pg):
     c = t.compare(d)
     assert ("%d of %d triangles" % (c["triangles_common"], c["triangles_b"])
             in pg.text("lot-figures"))
+    held = pg.d.execute_script("return window.__fliplabLot();")
+    assert held["points"] == p.ravel().tolist()
+    for key, rule in (("triangles", "ES:hexagon"), ("dt", "DT")):
+        out = os.path.join(tempfile.mkdtemp(prefix="fliplab-lot-"), "t.csv")
+        subprocess.run([os.environ["FLIPLAB_BIN"], "lot", "--random", "20000", "--sampler",
+                        "uniform", "--seed", "1", "--rule", rule, "--out", out],
+                       capture_output=True, check=True)
+        cli = np.genfromtxt(out, delimiter=",", skip_header=1, usecols=(0, 1, 2), dtype=np.int64)
+        assert held[key] == cli.ravel().tolist(), key
+    pg.el("export-lot").click()                  # the SVG, made from the held arrays
+    svg = os.path.join(downloads, "lot.svg")
+    pg.until(lambda: os.path.exists(svg) and open(svg).read().endswith("</svg>\n"), "lot.svg")
+    assert open(svg).read().count("Z") == len(t.triangles) + len(d.triangles)  # path closes
     pg.shot("lot")
+
+
+DRAG_JS = """const [i, done] = arguments;
+const c = document.querySelectorAll('#sites .site')[i], r = $('sites').getBoundingClientRect();
+const x = r.left + Number(c.getAttribute('cx')), y = r.top + Number(c.getAttribute('cy'));
+const until = (f) => new Promise((ok) => { const g = () => f() ? ok() : setTimeout(g, 5); g(); });
+__fliplabTimings.length = 0;
+c.dispatchEvent(new MouseEvent('mousedown', {bubbles: true, clientX: x, clientY: y}));
+window.dispatchEvent(new MouseEvent('mousemove', {clientX: x + 23, clientY: y - 17}));
+until(() => __fliplabTimings.some((t) => t.what === 'drag') && !S.drag.busy).then(() =>
+  done({sites: S.sites, tri: S.dragTri.triangles, stale: $('graph').classList.contains('stale')}));
+"""
+
+
+def drag_and_drop(pg, rule):
+    """A site dragged: the triangles drawn meanwhile are lot()'s of the moved sites
+    (the flip graph greyed); the drop recomputes the flip graph (flipgraph()'s
+    counts) and stays on the dragged LOT."""
+    r = pg.d.execute_async_script(DRAG_JS, 2)
+    t = fliplab.lot(np.array(r["sites"]), rule)
+    assert r["tri"] == t.triangles.tolist() and r["stale"], r
+    pg.d.execute_script("window.dispatchEvent(new MouseEvent('mouseup', {}));")
+    pg.settle()
+    g = check_counts(pg, rule)
+    assert g.points.tolist() == r["sites"]
+    now = pg.d.execute_script("""const g = S.graph;
+        return g.nodes[S.node].map((k) => g.triangles[k].v.slice().sort((a, b) => a - b));""")
+    assert sorted(now) == sorted(sorted(x) for x in t.triangles.tolist()), (now, t.triangles)
+    assert not pg.d.execute_script("return $('graph').classList.contains('stale');")
 
 
 def drag_fps(pg):
     """Redraws of the triangulation while a site is dragged, per second."""
     e = pg.d.find_elements(By.CSS_SELECTOR, "#sites .site")[4]
+    pg.d.execute_script("__fliplabTimings.length = 0;")
     t0 = time.perf_counter()
     moves = 30
     chain = ActionChains(pg.d, duration=5).click_and_hold(e)
@@ -240,15 +288,19 @@ def drag_fps(pg):
     chain.release().perform()
     pg.settle()
     dt = time.perf_counter() - t0
+    drags = pg.d.execute_script("return __fliplabTimings.filter((t) => t.what === 'drag')"
+                                ".map((t) => t.frame).sort((a, b) => a - b);")
     ms = pg.d.execute_script("""const t = performance.now();
         for (let k = 0; k < 50; k++) drawSites();
         return (performance.now() - t) / 50;""")
     rt = pg.d.execute_async_script("""const done = arguments[0], t = performance.now();
         (async () => { for (let k = 0; k < 10; k++) await refreshOnce();
                        done((performance.now() - t) / 10); })();""")
-    line = ("explorer_browser: drag of %d moves in %.2f s; one redraw of %d sites %.2f ms "
-            "(%.0f frames/s); one round trip to the server (graph and redraw) %.1f ms"
-            % (moves, dt, len(pg.sites()), ms, 1000 / max(ms, 1e-3), rt))
+    line = ("explorer_browser: drag of %d moves in %.2f s, %d redrawn (median %.1f ms from the "
+            "move to the frame); one redraw of %d sites %.2f ms (%.0f frames/s); one round "
+            "trip to the server (graph and redraw) %.1f ms"
+            % (moves, dt, len(drags), drags[len(drags) // 2] if drags else float("nan"),
+               len(pg.sites()), ms, 1000 / max(ms, 1e-3), rt))
     print(line)
     with open(os.path.join(OUT, "drag-fps.txt"), "w") as f:   # beside the screenshots
         f.write(line + "\n")
@@ -269,7 +321,8 @@ def main():
         step_and_run(pg, g)
         exports(pg, downloads, g)
         bad_input(pg)
-        lot_panel(pg)
+        lot_panel(pg, downloads)
+        drag_and_drop(pg, "ES:hexagon")
         drag_fps(pg)
         errors = [x for x in d.get_log("browser") if x["level"] == "SEVERE"
                   and "status of 4" not in x["message"]]

@@ -9,6 +9,13 @@ library called directly.
   first directed flip out of a node) ends at one of the library's sinks.
 - /api/lot: the library's lot() of the same points, and compare figures
   counted here by brute force and printed by the program's lot --compare DT.
+- /api/lot.bin: decoded here (unpack, numpy over the bytes) it is /api/lot's
+  answer and lot()'s arrays exactly; bad requests get the same JSON errors.
+- /api/tri (a drag's re-triangulation): lot() of the sites, also with a
+  formula (in a child); run in the server without a child otherwise; equal,
+  collinear and too many sites refused.
+- The /api/graph cache: the same request gets the same bytes from the cache,
+  at most GRAPH_CACHE answers are kept, and a time limit is not kept.
 - /api/export: the printed command lines run and give the same sinks and
   figures; the CSV reads back bit for bit.
 - Refusals: malformed, oversized, unknown and hostile requests get a 4xx
@@ -54,13 +61,15 @@ def server():
 
 
 def request(srv, method, path, body=None, raw=None, headers=None):
-    """(status, parsed JSON or text, raw body) of one request."""
+    """(status, parsed JSON or text (None when binary), raw body) of one request."""
     c = http.client.HTTPConnection("127.0.0.1", srv.server_address[1], timeout=60)
     data = raw if raw is not None else None if body is None else json.dumps(body).encode()
     c.request(method, path, body=data, headers=headers or {})
     r = c.getresponse()
     text = r.read()
     c.close()
+    if r.getheader("Content-Type") == explorer.BINARY:
+        return r.status, None, text
     try:
         return r.status, json.loads(text), text
     except ValueError:
@@ -345,3 +354,131 @@ def test_es_triangles_carry_their_circumscribing_shape(server):
         fliplab.Rule("DT").circumscribe([[0, 0], [1, 0], [0, 1]])
     with pytest.raises(ValueError):
         fliplab.Rule("ES:square").circumscribe([[0, 0], [1, 1], [2, 2]])
+
+
+def unpack(raw):
+    """pack_arrays' message read back: the header and numpy arrays over the bytes."""
+    n = int.from_bytes(raw[:4], "little")
+    assert (4 + n) % 8 == 0
+    head = json.loads(raw[4:4 + n].decode())
+    for a in head["arrays"]:
+        assert a["offset"] % 8 == 0
+        count = int(np.prod(a["shape"]))
+        head[a["name"]] = np.frombuffer(raw, dtype=a["dtype"], count=count,
+                                        offset=4 + n + a["offset"]).reshape(a["shape"])
+    return head
+
+
+@pytest.mark.parametrize("body,local", [
+    ({"random": {"n": 3000, "sampler": "disc", "seed": 4}, "rule": "P_1"}, "P_1"),
+    ({"random": {"n": 500, "sampler": "grid", "seed": 2}, "rule": "ES:hexagon"}, "ES:hexagon"),
+    (dict(explorer.PRESETS["fig38"]), "webnegR_1")])
+def test_lot_bin_is_the_librarys(server, body, local):
+    st, r, raw = post(server, "/api/lot.bin", body)
+    assert st == 200, r
+    m = unpack(raw)
+    if "random" in body:
+        p = fliplab.samplers.points(body["random"]["n"], body["random"]["sampler"],
+                                    body["random"]["seed"])
+    else:
+        p = np.array(body["sites"], dtype=float)
+    t, d = fliplab.lot(p, local), fliplab.lot(p, "DT")
+    assert np.array_equal(m["points"], p) and m["points"].dtype == np.float64
+    assert np.array_equal(m["triangles"], t.triangles) and np.array_equal(m["dt"], d.triangles)
+    assert np.array_equal(m["hull"], d.hull) and np.array_equal(m["hull"], t.hull)
+    assert m["compare"] == t.compare(d) and m["status"] == t.status and m["flips"] == t.flips
+    if t.rule.is_triangle:
+        assert np.array_equal(m["badness"], t.badness, equal_nan=True)
+    else:
+        assert "badness" not in m
+    st, j, _ = post(server, "/api/lot", body)          # the JSON answer says the same
+    assert j["triangles"] == m["triangles"].tolist() and j["compare"] == m["compare"]
+
+
+def test_lot_bin_refusals(server):
+    for body, word in (({"random": {"n": 10 ** 9}, "rule": "DT"}, "random"),
+                       ({"random": {"n": 50, "sampler": "nope"}, "rule": "DT"}, "nope"),
+                       ({"sites": [[0, 0], [1, 1], [2, 2]], "rule": "DT"}, "collinear"),
+                       ({"sites": [[0, 0], [1, 0], [0, 1]], "rule": "Q_1"}, "measure"),
+                       ({"random": "x", "rule": "DT"}, "random")):
+        st, r, raw = post(server, "/api/lot.bin", body)
+        assert 400 <= st < 500 and word in r["error"], (st, raw)
+    st, r, _ = request(server, "POST", "/api/lot.bin", raw=b"{bad")
+    assert st == 400 and "JSON" in r["error"]
+
+
+@pytest.mark.parametrize("sites,rule,define,local", SETS[:2] + SETS[3:6])
+def test_tri_is_the_librarys(server, sites, rule, define, local):
+    st, r, _ = post(server, "/api/tri", {"sites": sites, "rule": rule, "define": define})
+    assert st == 200, r
+    t = fliplab.lot(np.array(sites), local)
+    assert r["triangles"] == t.triangles.tolist() and r["status"] == t.status
+    if t.rule.is_triangle:
+        assert r["badness"] == t.badness.tolist()
+
+
+def test_tri_runs_in_the_server(server, monkeypatch):
+    """Without a formula /api/tri forks no child (bounded work); with one it does."""
+    def no_child(*a):
+        raise AssertionError("a child for a bounded request")
+    monkeypatch.setattr(explorer, "run_limited", no_child)
+    th = 2 * np.pi * np.arange(12) / 12
+    st, r, _ = post(server, "/api/tri", {"sites": np.c_[np.cos(th), np.sin(th)].tolist(),
+                                         "rule": "P_1"})
+    assert st == 200 and len(r["triangles"]) == 10
+    monkeypatch.undo()
+    st, r, _ = post(server, "/api/tri", dict(explorer.PRESETS["fig38"]))
+    assert st == 200 and len(r["triangles"]) == 6
+
+
+def test_tri_refusals(server):
+    for sites, word in (([[0, 0], [1, 0], [0, 1], [1, 0]], "site 4 equals site 2"),
+                        ([[0, 0], [1, 1], [2, 2]], "collinear"),
+                        ([[i, i * i] for i in range(13)], "3 to 12"),
+                        ([[0, 0], [1, 0], [0, float("inf")]], "site 3")):
+        st, r, raw = post(server, "/api/tri", {"sites": sites, "rule": "P_1"})
+        assert 400 <= st < 500 and word in r["error"], (st, raw)
+    st, r, _ = post(server, "/api/tri", {"sites": [[0, 0], [1, 0], [0, 1]], "rule": "nope"})
+    assert st == 400 and r["error"]
+
+
+def test_graph_cache():
+    srv = _start(time_limit=30)
+    try:
+        body = {"sites": explorer.PRESETS["fig38"]["sites"], "rule": "P_1"}
+        st, a, raw = post(srv, "/api/graph", body)
+        assert st == 200 and len(srv.cache) == 1
+        st, b, raw2 = post(srv, "/api/graph", body)
+        assert raw2 == raw and len(srv.cache) == 1
+        g = fliplab.flipgraph(np.array(body["sites"]), "P_1")
+        assert b["census"]["triangulations"] == len(g.nodes) and b["sinks"] == g.sinks.tolist()
+        for k in range(explorer.GRAPH_CACHE + 3):          # the oldest go first
+            post(srv, "/api/graph", {"sites": [[0, 0], [1, 0], [0, 1 + k]], "rule": "DT"})
+        assert len(srv.cache) == explorer.GRAPH_CACHE
+        assert json.dumps([body["sites"], "P_1", None]) not in srv.cache
+        srv.time_limit = 0.02
+        th = 2 * np.pi * np.arange(12) / 12
+        big = {"sites": np.c_[np.cos(th), np.sin(th)].tolist(), "rule": "P_1"}
+        assert post(srv, "/api/graph", big)[0] == 503
+        srv.time_limit = 30
+        st, r, _ = post(srv, "/api/graph", big)
+        assert st == 200 and r["too_large"] and r["triangulations"] == 16796
+    finally:
+        srv.shutdown()
+        srv.server_close()
+
+
+def test_keep_alive_after_a_refusal(server):
+    """One connection: a refused request's unread body is not taken for the next
+    request (the server closes it), and good requests share the connection."""
+    c = http.client.HTTPConnection("127.0.0.1", server.server_address[1], timeout=10)
+    body = json.dumps({"sites": [[0, 0], [1, 0], [0, 1]], "rule": "DT"})
+    for _ in range(3):
+        c.request("POST", "/api/tri", body=body)
+        r = c.getresponse()
+        assert r.status == 200 and json.loads(r.read())["triangles"] == [[0, 1, 2]]
+    c.request("POST", "/api/nothing", body="GET /api/names HTTP/1.1\r\n\r\n")
+    r = c.getresponse()
+    assert r.status == 404 and r.getheader("Connection") == "close"
+    r.read()
+    c.close()
