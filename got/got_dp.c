@@ -306,7 +306,7 @@ size_t got_memory_needed(size_t n, int measure) {
        + n * (sizeof(got_node) + 64);             /* backtracking, buffers */
 }
 
-static size_t got_phys_memory(void) {
+size_t got_phys_memory(void) {
   long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
   if (pages <= 0 || psize <= 0) return (size_t)8 << 30;   /* assume 8 GiB */
   return (size_t)pages * (size_t)psize;

@@ -49,6 +49,9 @@ FLIPLAB_INTERNAL
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op);
 
+/* Bytes of physical memory (got_check_memory allows 3/4 of it). */
+FLIPLAB_INTERNAL size_t got_phys_memory(void);
+
 /* got_solve, with force_mask = 1 running the simple-polygon (masked)
 ** programme even on convex input (tests and benchmarks compare the two). */
 FLIPLAB_INTERNAL
