@@ -15,6 +15,7 @@
 #include "geom.h"
 #include "report.h"
 #include "rule.h"
+#include "sampler.h"
 
 int cli_is_help(const char *opt) {
   return strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0 || strcmp(opt, "help") == 0;
@@ -125,6 +126,14 @@ int cli_option_format(const char *cmd, const cli_option *o, const char *v, void 
 
 int cli_rules_add(const char *cmd, const char *list, cli_rules *rules) {
   return cli_parse_rule_list(cmd, list, rules->r, &rules->n, rules->cap);
+}
+
+int cli_option_points_sampler(const char *cmd, const cli_option *o, const char *v, void *dst) {
+  int k = v != NULL ? sampler_points_find(v) : o->idef;
+  if (k < 0 && v != NULL)
+    return cli_error(cmd, "unknown sampler '%s' (valid: %s)", v, sampler_points_names);
+  *(int *)dst = k;
+  return 0;
 }
 
 int cli_option_rules(const char *cmd, const cli_option *o, const char *v, void *dst) {

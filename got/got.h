@@ -89,12 +89,12 @@ typedef struct got_result {
   double seconds;       /* wall time: validation, diagonals, DP, backtracking */
   int threads;          /* threads used */
   /* A point set's GOT (got_points_solve; 0 for a polygon's): the skeleton used
-  ** (got_skeleton), its candidate edges after the exclusion test, the edges kept and
-  ** those certain; the bounded faces of the certain edges, those left to solve (more
-  ** than a triangle), those with points inside or not simple (got_face_solve), the
+  ** (got_skeleton), its candidate edges after the exclusion test, the edges kept, those
+  ** certain and its rounds; the bounded faces of the certain edges, those left to solve
+  ** (more than a triangle), those with points inside or not simple (got_face_solve), the
   ** points of the largest; the search states of those faces; seconds per stage. */
   int points, skeleton;
-  size_t candidates, edges, certain;
+  size_t candidates, edges, certain, rounds;
   size_t faces, faces_left, faces_general, largest_face, face_states;
   double seconds_candidates, seconds_lmt, seconds_faces, seconds_solve;
 } got_result;

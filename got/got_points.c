@@ -745,6 +745,7 @@ static void got_points_stats(got_result *out, const got_skel *s, const got_graph
                              const got_faces *fc, const unsigned char *polygon) {
   out->candidates = s->candidates;
   out->edges = s->nedges;
+  out->rounds = s->rounds;
   for (size_t e = 0; e < s->nedges; e++) out->certain += s->state[e] == GOT_EDGE_CERTAIN;
   out->faces = g->nfaces;
   for (size_t f = 0; f < g->nfaces; f++) {
