@@ -189,11 +189,12 @@ static int got_face_canon(const uint32_t *raw, uint32_t *out) {
 ** edges hold no third point. */
 static int got_face_in_sector(const geom_point *P, uint32_t v, uint32_t q, uint32_t p,
                               uint32_t x) {
+  if (x == q || x == p) return 0;   /* on a side: not strictly inside */
   geom_point V = P[v], Q = P[q], Pp = P[p], X = P[x];
   int t = geom_orient(V, Q, Pp);
   if (t > 0) return geom_orient(V, Q, X) > 0 && geom_orient(V, X, Pp) > 0;
   if (t < 0) return !(geom_orient(V, Pp, X) >= 0 && geom_orient(V, X, Q) >= 0);
-  if (q == p) return x != q;
+  if (q == p) return 1;
   return geom_orient(V, Q, X) > 0;   /* a straight corner */
 }
 
@@ -201,6 +202,7 @@ static int got_face_in_sector(const geom_point *P, uint32_t v, uint32_t q, uint3
 ** anticlockwise to v -> x2 (less than pi). */
 static int got_face_in_cone(const geom_point *P, uint32_t v, uint32_t x1, uint32_t x2,
                             uint32_t y) {
+  if (y == x1 || y == x2) return 0;   /* (and no exact evaluation of a zero) */
   return geom_orient(P[v], P[x1], P[y]) > 0 && geom_orient(P[v], P[y], P[x2]) > 0;
 }
 
@@ -262,16 +264,19 @@ static int got_face_locate(const got_face_view *w, size_t rel, uint32_t *k, size
 
 /* 1 when no walk vertex or inner point other than a, b, c lies in the
 ** closed triangle a b c (anticlockwise) and no walk edge crosses a c or
-** b c.  O(walk vertices + points). */
+** b c.  O(walk vertices + points); what lies outside the triangle's
+** bounding box (exact comparisons) is skipped without an orientation. */
 static int got_face_tri_empty(const got_face_ctx *x, const got_face_view *w, uint32_t a,
                               uint32_t b, uint32_t c) {
   const geom_point *P = x->p;
   geom_point A = P[a], B = P[b], C = P[c];
+  double x0 = geom_min3(A.x, B.x, C.x), x1 = geom_max3(A.x, B.x, C.x);
+  double y0 = geom_min3(A.y, B.y, C.y), y1 = geom_max3(A.y, B.y, C.y);
   for (size_t i = 0; i < w->nv + w->npt; i++) {
     uint32_t q = i < w->nv ? w->v[i] : w->pt[i - w->nv];
-    if (q == a || q == b || q == c) continue;
-    if (geom_orient(A, B, P[q]) >= 0 && geom_orient(B, C, P[q]) >= 0 &&
-        geom_orient(C, A, P[q]) >= 0)
+    geom_point Q = P[q];
+    if (Q.x < x0 || Q.x > x1 || Q.y < y0 || Q.y > y1 || q == a || q == b || q == c) continue;
+    if (geom_orient(A, B, Q) >= 0 && geom_orient(B, C, Q) >= 0 && geom_orient(C, A, Q) >= 0)
       return 0;
   }
   size_t off = 0;
@@ -279,8 +284,12 @@ static int got_face_tri_empty(const got_face_ctx *x, const got_face_view *w, uin
     const uint32_t *wk = w->v + off;
     for (size_t i = 0; i < w->len[k]; i++) {
       uint32_t u = wk[i], v = wk[(i + 1) % w->len[k]];
-      if (u != a && u != c && v != a && v != c && got_face_cross(A, C, P[u], P[v])) return 0;
-      if (u != b && u != c && v != b && v != c && got_face_cross(B, C, P[u], P[v])) return 0;
+      geom_point U = P[u], V = P[v];
+      if ((U.x < x0 && V.x < x0) || (U.x > x1 && V.x > x1) || (U.y < y0 && V.y < y0) ||
+          (U.y > y1 && V.y > y1))
+        continue;
+      if (u != a && u != c && v != a && v != c && got_face_cross(A, C, U, V)) return 0;
+      if (u != b && u != c && v != b && v != c && got_face_cross(B, C, U, V)) return 0;
     }
     off += w->len[k];
   }

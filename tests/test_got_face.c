@@ -226,6 +226,10 @@ static void tf_solve(const tf_face *f, const rule *r, got_face_out *o) {
   }
 }
 
+/* What the checks met: faces with inner points, exact ties (the
+** enumeration's two least totals equal), certified unique optima. */
+static struct { int inner, ties, unique, checks; } tf_seen;
+
 /* Solve f under r and compare with enumeration. */
 static void tf_check(const siteflip_graph *g, const tf_face *f, const rule *r) {
   tf_enum e = tf_enumerate(g, f, r);
@@ -244,6 +248,8 @@ static void tf_check(const siteflip_graph *g, const tf_face *f, const rule *r) {
     fail_msg("%s n=%zu: certified unique but tied in enumeration", rule_name(r), f->n);
   if (e.has2 && isfinite(o.err) && e.gap > 1e-9 * (1 + fabs(e.best))) assert_true(o.unique);
   if (!e.has2 || e.gap > 1e-9 * (1 + fabs(e.best))) tf_same_triangles(g, f, &e, &o);
+  tf_seen.checks++, tf_seen.inner += f->ninner > 0, tf_seen.unique += o.unique;
+  tf_seen.ties += e.has2 && e.gap == 0;
   got_face_out_free(&o);
 }
 
@@ -295,13 +301,18 @@ static void tf_points(testutil_rng *g, int kind, tf_face *f) {
 static void test_hull_faces(void **state) {
   (void)state;
   testutil_rng g = {38};
-  int reps = testutil_reps(150);
+  int reps = testutil_reps(300);
   for (int kind = 0; kind < 4; kind++)
     for (int s = 0; s < reps; s++) {
       tf_face f;
       tf_points(&g, kind, &f);
       tf_check_rules(&f);
     }
+  print_message("hull faces: %d checks, %d with inner points, %d exact ties, %d unique\n",
+                tf_seen.checks, tf_seen.inner, tf_seen.ties, tf_seen.unique);
+  assert_true(tf_seen.inner > tf_seen.checks / 2);
+  assert_true(tf_seen.ties > tf_seen.checks / 50);
+  assert_true(tf_seen.unique > tf_seen.checks / 2);
 }
 
 /* A square under P_1 (two diagonals of one length), and -A_1 (every
