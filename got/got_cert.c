@@ -188,6 +188,15 @@ static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, doub
   return 0;
 }
 
+int got_cert_key_model(const rule *r, const geom_point *p, size_t n, double *rho,
+                       double *alpha) {
+  double wx, wy;
+  const joint *J = joint_get(rule_joint(r));
+  if (!rule_is_triangle(r) || J == NULL || !got_cert_scale(p, n, &wx, &wy)) return -1;
+  return got_key_model(rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, wx, wy, rho,
+                       alpha);
+}
+
 /* E(K) for a triangulation whose floating key is K. */
 static double got_cert_bound(double K, size_t m, joint_keyop op, double rho, double alpha) {
   double E;

@@ -42,8 +42,14 @@ typedef enum got_keyfn {
   GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (got_measure_has_square) */
 } got_keyfn;
 
-/* The key shape of a joint's key for measures of sign s (got_dp.c). */
+/* The key shape of a joint's row for measures of sign s (got_dp.c). */
 FLIPLAB_INTERNAL got_keyfn got_keyfn_of(joint_shape sh, int s);
+/* The error model of keys rule_key(r, measure_eval(t)) of triangles t of
+** the points p[0..n-1] (got_cert.c): |k^ - k| <= rho |k^| + alpha for the
+** exact key k; 0, or -1 when there is none (docs/got.md, "Certified
+** verdicts": that measure and joint, a user measure, the scale guard). */
+FLIPLAB_INTERNAL int got_cert_key_model(const rule *r, const geom_point *p, size_t n,
+                                        double *rho, double *alpha);
 
 /* The certified verdict (got_cert.c): from the DP's keys, the rule's key
 ** shape and the polygon, fill res->cert_* (see got.h). */
