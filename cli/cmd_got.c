@@ -490,8 +490,8 @@ static int cli_got_table(const cli_got_args *a) {
     else
       printf("%-12s %12.4e [%11.4e, %11.4e] %12.4e %8.1f%% [%6.1f%%, %6.1f%%] %10.2f\n",
              rule_name(&rules[i]), row.mean, row.lo, row.hi, row.max,
-             100.0 * (double)row.equal / (double)row.sets, 100 * row.equal_lo,
-             100 * row.equal_hi, row.seconds);
+             100.0 * (double)row.equal / (double)row.sets, row.equal_lo, row.equal_hi,
+             row.seconds);
   }
   free(rules);
   return rc;

@@ -178,7 +178,7 @@ typedef struct study_gap_row {
   double mean, lo, hi;    /* the mean gap and its 95% normal interval (1.96 s / sqrt(sets)) */
   double max;             /* the largest gap */
   uint64_t equal;         /* sets whose LOT is a GOT */
-  double equal_lo, equal_hi;   /* the Wilson 95% interval of equal / sets */
+  double equal_lo, equal_hi;   /* the Wilson 95% interval of equal / sets, in percent */
   uint64_t certified;     /* sets whose GOT is certified unique */
   double seconds;
 } study_gap_row;
