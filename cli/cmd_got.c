@@ -362,21 +362,9 @@ static int cli_got_outputs(const cli_got_args *a, const rule *r, const geom_poin
 static int cli_got_points_in(const cli_got_args *a, geom_point **p, size_t *n, char *desc,
                              size_t desclen) {
   char err[512];
-  if (a->points) {
-    if (report_points_read(a->points, p, NULL, n, err, sizeof err) != 0)
-      return cli_error(CMD, "%s", err);
-    snprintf(desc, desclen, "%zu points from %s", *n, a->points);
-  } else {
-    *n = (size_t)a->random;
-    if (got_points_check_memory(*n, err, sizeof err) != 0)
-      return cli_error(CMD, "--random: %s", err);
-    *p = malloc(*n * sizeof **p);
-    if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
-    sampler_points((sampler_points_kind)a->distribution, a->seed, *n, *p);
-    snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
-             sampler_points_name((sampler_points_kind)a->distribution),
-             (unsigned long long)a->seed);
-  }
+  if (cli_points_get(CMD, a->points, a->random, a->distribution, a->seed,
+                     got_points_check_memory, p, n, desc, desclen) != 0)
+    return 2;
   if (got_points_check_memory(*n, err, sizeof err) != 0) return cli_error(CMD, "%s", err);
   return 0;
 }

@@ -218,22 +218,8 @@ static int cli_lot_rules(const cli_lot_args *a, rule **r) {
 /* The points, read or sampled; desc names them. */
 static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char *desc,
                           size_t desclen) {
-  char err[512];
-  if (a->points) {
-    if (report_points_read(a->points, p, NULL, n, err, sizeof err) != 0)
-      return cli_error(CMD, "%s", err);
-    snprintf(desc, desclen, "%zu points from %s", *n, a->points);
-    return 0;
-  }
-  *n = (size_t)a->random;
-  if (lot_check_memory(*n, err, sizeof err) != 0) return cli_error(CMD, "--random: %s", err);
-  *p = malloc(*n * sizeof **p);
-  if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
-  int k = a->sampler;
-  sampler_points((sampler_points_kind)k, a->seed, *n, *p);
-  snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
-           sampler_points_name((sampler_points_kind)k), (unsigned long long)a->seed);
-  return 0;
+  return cli_points_get(CMD, a->points, a->random, a->sampler, a->seed, lot_check_memory, p, n,
+                        desc, desclen);
 }
 
 /* --poly: the file's graph into *in (vertex attributes, boundary markers

@@ -344,8 +344,10 @@ static void got_grid_box(const got_graph *g, const got_grid *gr, size_t f, size_
     geom_point q = g->p[g->wv[i]];
     bx0 = fmin(bx0, q.x), bx1 = fmax(bx1, q.x), by0 = fmin(by0, q.y), by1 = fmax(by1, q.y);
   }
-  c[0] = got_grid_cell(bx0, gr->x0, gr->sx, gr->G), c[1] = got_grid_cell(bx1, gr->x0, gr->sx, gr->G);
-  c[2] = got_grid_cell(by0, gr->y0, gr->sy, gr->G), c[3] = got_grid_cell(by1, gr->y0, gr->sy, gr->G);
+  c[0] = got_grid_cell(bx0, gr->x0, gr->sx, gr->G);
+  c[1] = got_grid_cell(bx1, gr->x0, gr->sx, gr->G);
+  c[2] = got_grid_cell(by0, gr->y0, gr->sy, gr->G);
+  c[3] = got_grid_cell(by1, gr->y0, gr->sy, gr->G);
 }
 
 /* Register every face in the cells its box meets (two passes: count, fill). */

@@ -220,7 +220,8 @@ static int tgp_ll_cmp(const void *a, const void *b) {
 
 static int tgp_node_equal(const got_result *a, const got_result *b) {
   long long ka[64], kb[64];
-  for (size_t q = 0; q < a->ntri; q++) tgp_tri_key(&a->tri[q], &ka[q]), tgp_tri_key(&b->tri[q], &kb[q]);
+  for (size_t q = 0; q < a->ntri; q++)
+    tgp_tri_key(&a->tri[q], &ka[q]), tgp_tri_key(&b->tri[q], &kb[q]);
   qsort(ka, a->ntri, sizeof *ka, tgp_ll_cmp);
   qsort(kb, b->ntri, sizeof *kb, tgp_ll_cmp);
   return memcmp(ka, kb, a->ntri * sizeof *ka) == 0;

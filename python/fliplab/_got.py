@@ -181,19 +181,26 @@ def got(polygon: npt.ArrayLike, rule: str | Rule, threads: int = 0,
     e = _lib.errbuf()
     if lib.got_check_memory(n, r._c.measure, e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
+    return _solve(lambda opt, res: lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), opt,
+                                                 res, e, _lib.ERRLEN),
+                  nthreads, eps, e, lambda res: Got(res, (n - np.arange(n)) % n, rev, r))
+
+
+def _solve(call: Any, nthreads: int, eps: float, e: Any, make: Any) -> Got:
+    """call(opt, res) (got_solve or got_points_solve) with the options set, e its error
+    buffer; make(res) the result.  Errors raised as the library words them."""
     opt, res = lib.got_options_new(), lib.got_result_new()
     try:
         if not opt or not res:
             raise MemoryError("got: out of memory")
         lib.got_options_set_threads(opt, nthreads)
         lib.got_options_set_tie_eps(opt, eps)
-        if lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), opt, res, e,
-                         _lib.ERRLEN) != 0:
+        if call(opt, res) != 0:
             _raise_user_errors()        # a Python measure's own error comes first
             msg = _lib.text(e)
             raise (MemoryError if "out of memory" in msg else ValueError)(msg)
         _raise_user_errors()
-        return Got(res, (n - np.arange(n)) % n, rev, r)
+        return make(res)
     finally:
         lib.got_options_free(opt)
         lib.got_result_delete(res)
@@ -246,19 +253,7 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     e = _lib.errbuf()
     if lib.got_points_check_memory(len(p), e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
-    opt, res = lib.got_options_new(), lib.got_result_new()
-    try:
-        if not opt or not res:
-            raise MemoryError("got_points: out of memory")
-        lib.got_options_set_threads(opt, nthreads)
-        lib.got_options_set_tie_eps(opt, eps)
-        if lib.got_points_solve(points_ptr(p), len(p), ctypes.byref(r._c), opt, sk, res, e,
-                                _lib.ERRLEN) != 0:
-            _raise_user_errors()
-            msg = _lib.text(e)
-            raise (MemoryError if "out of memory" in msg else ValueError)(msg)
-        _raise_user_errors()
-        return Got(res, np.arange(len(p)), False, r)
-    finally:
-        lib.got_options_free(opt)
-        lib.got_result_delete(res)
+    return _solve(lambda opt, res: lib.got_points_solve(points_ptr(p), len(p),
+                                                        ctypes.byref(r._c), opt, sk, res, e,
+                                                        _lib.ERRLEN),
+                  nthreads, eps, e, lambda res: Got(res, np.arange(len(p)), False, r))
