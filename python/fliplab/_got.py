@@ -25,7 +25,7 @@ _NUMBERS = ("n", "key", "total", "key2", "total2", "gap", "rel_gap", "tie_eps", 
 _POINT_STATS = ("candidates", "edges", "certain", "rounds", "faces", "faces_left",
                 "faces_general", "largest_face", "face_states", "seconds_candidates",
                 "seconds_lmt", "seconds_faces", "seconds_solve")
-_SKELETONS = ("auto", "all", "lmt")
+SKELETONS = ("auto", "all", "lmt")   # got_skeleton's names, in its order
 
 
 class Got:
@@ -112,7 +112,7 @@ class Got:
         self.seconds, self.threads = v["seconds"], int(v["threads"])
         self.points = bool(_lib.get_value(res, "points", _GETTERS))
         sk = int(_lib.get_value(res, "skeleton", _GETTERS))
-        self.skeleton = _SKELETONS[sk] if self.points else None
+        self.skeleton = SKELETONS[sk] if self.points else None
         for f in _POINT_STATS:
             x = _lib.get_value(res, f, _GETTERS)
             setattr(self, f, x if f.startswith("seconds") else int(x))
@@ -219,10 +219,12 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     points : array_like, shape (n, 2)
         Distinct points, not all collinear, within the coordinate contract.
     rule : str or Rule
-        A sum rule MEASURE_JOINT (e.g. "P_1", the minimum-weight
-        triangulation).
+        A sum rule: a Rule or a name MEASURE_JOINT (e.g. "P_1", the
+        minimum-weight triangulation; not "DT", ES:SHAPE or a joint min or
+        max).
     skeleton : str
-        "auto" or "lmt" (the LMT-skeleton), "all" (every edge: tiny sets).
+        One of SKELETONS: "auto" or "lmt" (the LMT-skeleton), "all" (every
+        edge: tiny sets).
     threads : int
         0 (all cores) or 1 .. 1024; the result does not depend on it.
     tie_eps : float, optional
@@ -246,7 +248,8 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     r = as_rule(rule)
     sk = lib.got_skeleton_find(skeleton.encode()) if isinstance(skeleton, str) else -1
     if sk < 0:
-        raise ValueError("skeleton: expected one of auto, all, lmt, got %r" % (skeleton,))
+        raise ValueError("skeleton: expected one of %s, got %r" % (", ".join(SKELETONS),
+                                                                   skeleton))
     eps = tie_eps_arg(tie_eps, r.tie_eps)
     nthreads = threads_arg(threads)
     p = as_coords(points, "points", (-1, 2))
