@@ -60,6 +60,7 @@ static void bench_row(const rule *r, size_t n, int reps, int threads) {
          g->seconds_faces, g->seconds_solve, g->candidates,
          100.0 * (double)g->certain / (double)tedges, g->faces_left, g->largest_face,
          g->cert_unique ? "unique" : "tie not excluded");
+  fflush(stdout);             /* a row at a time: the large sizes take minutes */
   for (int k = 0; k < reps; k++) got_result_free(&res[k]);
   free(p);
 }
