@@ -38,22 +38,27 @@
 ** piece at its runner-up), the recurrence of got_dp.c for a monotone +.
 ** Ties go to the apex met first in the region's code (outer walk from the
 ** pivot on, then the holes, then the inner points by index): deterministic,
-** single-threaded.  Keys are rule_key(measure_eval(...)), added in the
-** order key(abc) + best(first piece) + best(second piece); + rounded to
-** nearest is monotone, so the optimum found is the floating total of the
-** triangulation returned and the runner-up the least floating total of the
-** others, and got_cert_err_sum bounds both (got_cert.c).
+** single-threaded, and reentrant (no state outside the call), so a caller
+** may solve several faces at once on its threads.  Keys are rule_key of
+** measure_eval's value (through measure_points, bit for bit the same),
+** added in the order key(abc) + best(first piece) + best(second piece);
+** + rounded to nearest is monotone, so the optimum found is the floating
+** total of the triangulation returned and the runner-up the least floating
+** total of the others, and got_cert_err_sum bounds both (got_cert.c).
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom_mem_internal.h"
 #include "measure.h"
 #include "got_internal.h"
 #include "got_face.h"
 
-/* The regions a face may visit: about 100 bytes of code and entry each. */
-#define GOT_FACE_MAX_STATES ((size_t)1 << 21)
+/* The regions a face may visit: each costs its code (4 bytes a vertex or
+** point), an entry (48 bytes) and two hash slots: for faces of 50 vertices
+** about 300 MB at most. */
+#define GOT_FACE_MAX_STATES ((size_t)1 << 20)
 
 /* A region's code: [nw, npt, len[0..nw-1], walk vertices..., points...]. */
 typedef struct got_face_view {
@@ -74,6 +79,7 @@ typedef struct got_face_ctx {
   const geom_point *p;
   const rule *r;
   int measure;
+  measure_points_fn fast;   /* the measure from three points, bit for bit (NULL: none) */
   uint64_t *edge;       /* allowed edges, lo << 32 | hi, ascending */
   size_t nedges;
   uint32_t *arena;
@@ -137,8 +143,8 @@ static int got_face_u64_cmp(const void *x, const void *y) {
 }
 
 /* Holes sorted by their least half-edge: (first, second) of the rotated
-** walk, packed with the hole's index. */
-typedef struct got_face_hole { uint64_t key; uint32_t k; } got_face_hole;
+** walk, packed, with the hole's index, start and rotation. */
+typedef struct got_face_hole { uint64_t key; uint32_t k; size_t off, rot; } got_face_hole;
 
 static int got_face_hole_cmp(const void *x, const void *y) {
   const got_face_hole *a = x, *b = y;
@@ -146,38 +152,27 @@ static int got_face_hole_cmp(const void *x, const void *y) {
 }
 
 /* Write the canonical code of the region raw (same layout, any rotation
-** and order) into out (as long as raw); 0, or -1 when out of memory. */
-static int got_face_canon(const uint32_t *raw, uint32_t *out) {
+** and order) into out (as long as raw), with h room for its walks. */
+static void got_face_canon(const uint32_t *raw, uint32_t *out, got_face_hole *h) {
   got_face_view w = got_face_view_of(raw);
-  size_t *start = malloc((w.nw + 1) * sizeof *start);
-  got_face_hole *h = malloc((w.nw + 1) * sizeof *h);
-  if (start == NULL || h == NULL) {
-    free(start), free(h);
-    return -1;
-  }
   size_t off = 0;
   for (uint32_t k = 0; k < w.nw; k++) {
     const uint32_t *wk = w.v + off;
     size_t s = got_face_walk_start(wk, w.len[k]);
-    h[k].key = (uint64_t)wk[s] << 32 | wk[(s + 1) % w.len[k]];
-    h[k].k = k;
-    start[k] = off;
+    h[k] = (got_face_hole){(uint64_t)wk[s] << 32 | wk[(s + 1) % w.len[k]], k, off, s};
     off += w.len[k];
   }
   if (w.nw > 2) qsort(h + 1, w.nw - 1, sizeof *h, got_face_hole_cmp);
   out[0] = w.nw, out[1] = w.npt;
   uint32_t *o = out + 2 + w.nw;
   for (uint32_t q = 0; q < w.nw; q++) {
-    uint32_t k = h[q].k, n = w.len[k];
-    const uint32_t *wk = w.v + start[k];
-    size_t s = got_face_walk_start(wk, n);
+    uint32_t n = w.len[h[q].k];
+    const uint32_t *wk = w.v + h[q].off;
     out[2 + q] = n;
-    for (uint32_t i = 0; i < n; i++) *o++ = wk[(s + i) % n];
+    for (uint32_t i = 0; i < n; i++) *o++ = wk[(h[q].rot + i) % n];
   }
   memcpy(o, w.pt, w.npt * sizeof *o);
   qsort(o, w.npt, sizeof *o, got_face_u32_cmp);
-  free(start), free(h);
-  return 0;
 }
 
 /* ---- exact geometry ------------------------------------------------- */
@@ -394,18 +389,27 @@ static void got_face_split(const got_face_view *w, size_t j, uint32_t *o1, size_
 typedef struct got_face_step {
   uint32_t *raw[2], *kid[2], *o1, *o2;
   unsigned char *hsel, *psel;
+  got_face_hole *hole;
   size_t cap;
 } got_face_step;
 
 static int got_face_step_new(got_face_step *st, const got_face_view *w, size_t len) {
   st->cap = len + 8;
+  st->hole = malloc((w->nw + 1) * sizeof *st->hole);
   uint32_t *m = malloc(6 * st->cap * sizeof *m + w->nw + w->npt + 2);
-  if (m == NULL) return -1;
+  if (m == NULL || st->hole == NULL) {
+    free(m), free(st->hole);
+    return -1;
+  }
   st->raw[0] = m, st->raw[1] = m + st->cap, st->kid[0] = m + 2 * st->cap;
   st->kid[1] = m + 3 * st->cap, st->o1 = m + 4 * st->cap, st->o2 = m + 5 * st->cap;
   st->hsel = (unsigned char *)(m + 6 * st->cap);
   st->psel = st->hsel + w->nw + 1;
   return 0;
+}
+
+static void got_face_step_free(got_face_step *st) {
+  free(st->raw[0]), free(st->hole);
 }
 
 /* Which of the two walks o1, o2 each hole and point lies in (0, 1). */
@@ -421,8 +425,8 @@ static void got_face_assign(const got_face_ctx *x, const got_face_view *w, got_f
 }
 
 /* The pieces left by the triangle on the pivot with apex at position rel,
-** canonical, into st->kid[0..]; their number (0, 1, 2), or -1 when out of
-** memory.  *c receives the apex. */
+** canonical, into st->kid[0..]; their number (0, 1, 2).  *c receives the
+** apex. */
 static int got_face_children(const got_face_ctx *x, const got_face_view *w, size_t rel,
                              got_face_step *st, uint32_t *c) {
   uint32_t k = 0;
@@ -442,12 +446,12 @@ static int got_face_children(const got_face_ctx *x, const got_face_view *w, size
     l1 = got_face_merge(w, *c, on, k, i, s, st->o1);
     got_face_write(st->raw[n++], st->o1, l1, w, st->hsel, st->psel, 0);
   }
-  for (int q = 0; q < n; q++)
-    if (got_face_canon(st->raw[q], st->kid[q]) != 0) return -1;
+  for (int q = 0; q < n; q++) got_face_canon(st->raw[q], st->kid[q], st->hole);
   return n;
 }
 
 static double got_face_tri_key(const got_face_ctx *x, uint32_t a, uint32_t b, uint32_t c) {
+  if (x->fast != NULL) return rule_key(x->r, x->fast(x->p[a], x->p[b], x->p[c]));
   geom_tri t;
   geom_tri_make(&t, x->p[a], x->p[b], x->p[c]);
   return rule_key(x->r, measure_eval(x->measure, &t));
@@ -464,16 +468,6 @@ static long got_face_lookup(const got_face_ctx *x, const uint32_t *code, size_t 
     if (e->hash == h && e->len == len && memcmp(x->arena + e->off, code, len * 4) == 0)
       return (long)(x->slot[q] - 1);
   }
-}
-
-static int got_face_grow(void **p, size_t *cap, size_t need, size_t size) {
-  if (need <= *cap) return 0;
-  size_t c = *cap ? *cap : 256;
-  while (c < need) c *= 2;
-  void *q = realloc(*p, c * size);
-  if (q == NULL) return -1;
-  *p = q, *cap = c;
-  return 0;
 }
 
 /* Rehash into twice the slots when half full. */
@@ -495,8 +489,8 @@ static int got_face_rehash(got_face_ctx *x) {
 /* Store a solved region; its index, or -1 when out of memory. */
 static long got_face_insert(got_face_ctx *x, const uint32_t *code, size_t len, uint64_t h,
                             const got_face_entry *e) {
-  if (got_face_grow((void **)&x->arena, &x->arena_cap, x->arena_len + len, 4) != 0 ||
-      got_face_grow((void **)&x->ent, &x->ent_cap, x->nent + 1, sizeof *x->ent) != 0 ||
+  if (geom_grow((void **)&x->arena, &x->arena_cap, x->arena_len + len, 4) != 0 ||
+      geom_grow((void **)&x->ent, &x->ent_cap, x->nent + 1, sizeof *x->ent) != 0 ||
       got_face_rehash(x) != 0) {
     x->fail = 2;
     return -1;
@@ -542,7 +536,6 @@ static int got_face_try(got_face_ctx *x, const got_face_view *w, size_t rel,
                         got_face_step *st, got_face_entry *e, got_face_other *other) {
   uint32_t c;
   int n = got_face_children(x, w, rel, st, &c);
-  if (n < 0) return x->fail = 2, -1;
   long ci[2] = {-1, -1};
   for (int q = 0; q < n; q++)
     if ((ci[q] = got_face_solve_code(x, st->kid[q])) < 0) return -1;
@@ -577,11 +570,11 @@ static long got_face_solve_code(got_face_ctx *x, const uint32_t *code) {
   for (size_t rel = 2; rel < w.nv + w.npt; rel++) {
     if (!got_face_apex_ok(x, &w, rel)) continue;
     if (got_face_try(x, &w, rel, &st, &e, &other) != 0) {
-      free(st.raw[0]);
+      got_face_step_free(&st);
       return -1;
     }
   }
-  free(st.raw[0]);
+  got_face_step_free(&st);
   if (e.feasible && other.has) {
     e.second = e.has2 ? fmin(e.second, other.v) : other.v;
     e.has2 = 1;
@@ -590,7 +583,7 @@ static long got_face_solve_code(got_face_ctx *x, const uint32_t *code) {
 }
 
 /* The triangles of region idx's optimum into tri (3 each, room for cap), in
-** the order the search met them; 0, or -1 when out of memory. */
+** the order the search met them; 0, -1 when out of memory, -2 past cap. */
 static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t *ntri,
                               size_t cap) {
   const got_face_entry *e = &x->ent[idx];
@@ -599,8 +592,7 @@ static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t
   got_face_step st;
   if (got_face_step_new(&st, &w, e->len) != 0) return -1;
   uint32_t c;
-  int n = got_face_children(x, &w, e->choice - 2 - w.nw, &st, &c), rc = n < 0 ? -1 : 0;
-  if (n >= 0 && *ntri >= cap) rc = -1;
+  int n = got_face_children(x, &w, e->choice - 2 - w.nw, &st, &c), rc = *ntri < cap ? 0 : -2;
   if (rc == 0) {
     tri[3 * *ntri] = w.v[0], tri[3 * *ntri + 1] = w.v[1], tri[3 * *ntri + 2] = c;
     ++*ntri;
@@ -610,7 +602,7 @@ static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t
     long ci = got_face_lookup(x, st.kid[q], len, got_face_hash(st.kid[q], len));
     rc = ci < 0 ? -1 : got_face_backtrack(x, (size_t)ci, tri, ntri, cap);
   }
-  free(st.raw[0]);
+  got_face_step_free(&st);
   return rc;
 }
 
@@ -691,8 +683,13 @@ static void got_face_ctx_free(got_face_ctx *x) {
 /* The search from the root code into out; 0, or -1 with a message. */
 static int got_face_run(got_face_ctx *x, const got_face_in *in, size_t nv, uint32_t *root,
                         got_face_out *out, char *err, size_t errlen) {
-  long idx = got_face_canon(root, root + got_face_code_len(root)) == 0
-                 ? got_face_solve_code(x, root + got_face_code_len(root)) : (x->fail = 2, -1);
+  got_face_hole *h = malloc((in->nwalks + 1) * sizeof *h);
+  long idx = -1;
+  if (h != NULL) {
+    got_face_canon(root, root + got_face_code_len(root), h);
+    idx = got_face_solve_code(x, root + got_face_code_len(root));
+    free(h);
+  }
   out->states = x->nent;
   if (idx < 0 && x->fail == 1) {
     snprintf(err, errlen, "got_face_solve: a face of %zu boundary vertices and %zu inner "
@@ -707,9 +704,15 @@ static int got_face_run(got_face_ctx *x, const got_face_in *in, size_t nv, uint3
   }
   size_t m = nv + 2 * in->ninner + 2 * in->nwalks - 4;
   out->tri = idx >= 0 ? malloc(3 * (m + 1) * sizeof *out->tri) : NULL;
-  if (out->tri == NULL || got_face_backtrack(x, (size_t)idx, out->tri, &out->ntri, m) != 0 ||
-      out->ntri != m) {
+  int rc = out->tri == NULL ? -1
+                            : got_face_backtrack(x, (size_t)idx, out->tri, &out->ntri, m);
+  if (rc == -1) {
     snprintf(err, errlen, "got_face_solve: out of memory");
+    return -1;
+  }
+  if (rc != 0 || out->ntri != m) {   /* walks bounding no face as described */
+    snprintf(err, errlen, "got_face_solve: the face's walks are inconsistent (%zu triangles "
+             "found, %zu expected from its vertices and points)", out->ntri, m);
     return -1;
   }
   out->key = x->ent[idx].best;
@@ -726,6 +729,7 @@ int got_face_solve_limit(const got_face_in *in, const rule *r, size_t max_states
   if (raw == NULL) return -1;
   got_face_ctx x = {0};
   x.p = in->p, x.r = r, x.measure = rule_measure(r), x.limit = max_states;
+  x.fast = measure_points(x.measure);
   size_t nv = 0, len = got_face_code_len(raw);
   for (size_t k = 0; k < in->nwalks; k++) nv += in->walk_len[k];
   uint32_t *root = malloc(2 * len * sizeof *root);

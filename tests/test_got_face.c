@@ -441,9 +441,15 @@ static void test_refusals(void **state) {
   assert_int_equal(rule_parse("P_inf", &r, err, sizeof err), 0);
   assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
   assert_non_null(strstr(err, "not a sum rule"));
+  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
+  uint32_t cw[TF_MAXN];   /* the hull walked clockwise: the face would be outside */
+  for (size_t i = 0; i < f.walk_len[0]; i++) cw[i] = f.walk[f.walk_len[0] - 1 - i];
+  in.walk = cw;
+  assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
+  assert_null(strchr(err, '\n'));
+  in.walk = f.walk;
   size_t bad = 2;
   in.walk_len = &bad;
-  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
   assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
   assert_null(strchr(err, '\n'));
 }
