@@ -56,8 +56,8 @@
 #include "got_face.h"
 
 /* The regions a face may visit: each costs its code (4 bytes a vertex or
-** point), an entry (48 bytes) and two hash slots: for faces of 50 vertices
-** about 300 MB at most. */
+** point), an entry (48 bytes) and two to four hash slots of 8 bytes: for
+** faces of 50 vertices about 300 MB at most.  Entry indices fit 32 bits. */
 #define GOT_FACE_MAX_STATES ((size_t)1 << 20)
 
 /* A region's code: [nw, npt, len[0..nw-1], walk vertices..., points...]. */
@@ -86,7 +86,7 @@ typedef struct got_face_ctx {
   size_t arena_len, arena_cap;
   got_face_entry *ent;
   size_t nent, ent_cap;
-  uint32_t *slot;       /* hash slots: entry index + 1, 0 when free */
+  uint64_t *slot;       /* hash slots: the hash's top 32 bits, entry index + 1 (0: free) */
   size_t nslot;
   size_t limit;
   int fail;             /* 1: too many regions; 2: out of memory */
@@ -109,6 +109,8 @@ static size_t got_face_code_len(const uint32_t *code) {
   return 2 + w.nw + w.nv + w.npt;
 }
 
+/* The words mixed one by one, then the bits avalanched (MurmurHash3's
+** finaliser): the slot index takes the low bits, the slot check the high. */
 static uint64_t got_face_hash(const uint32_t *code, size_t len) {
   uint64_t h = 0x9e3779b97f4a7c15u;
   for (size_t i = 0; i < len; i++) {
@@ -116,7 +118,9 @@ static uint64_t got_face_hash(const uint32_t *code, size_t len) {
     h *= 0xff51afd7ed558ccdu;
     h ^= h >> 32;
   }
-  return h;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53u;
+  return h ^ (h >> 33);
 }
 
 /* ---- canonical codes ------------------------------------------------ */
@@ -459,28 +463,38 @@ static double got_face_tri_key(const got_face_ctx *x, uint32_t a, uint32_t b, ui
 
 /* ---- the memo --------------------------------------------------------- */
 
+/* A slot holds the hash's top half beside the entry index, so that a probe
+** rarely loads an entry it does not want. */
+static uint64_t got_face_slot(uint64_t h, size_t e) {
+  return (h & 0xffffffff00000000u) | (uint64_t)(e + 1);
+}
+
 static long got_face_lookup(const got_face_ctx *x, const uint32_t *code, size_t len,
                             uint64_t h) {
   if (x->nslot == 0) return -1;
   for (size_t q = h & (x->nslot - 1);; q = (q + 1) & (x->nslot - 1)) {
-    if (x->slot[q] == 0) return -1;
-    const got_face_entry *e = &x->ent[x->slot[q] - 1];
+    uint64_t sl = x->slot[q];
+    if (sl == 0) return -1;
+    if ((sl ^ h) >> 32 != 0) continue;
+    const got_face_entry *e = &x->ent[(uint32_t)sl - 1];
     if (e->hash == h && e->len == len && memcmp(x->arena + e->off, code, len * 4) == 0)
-      return (long)(x->slot[q] - 1);
+      return (long)((uint32_t)sl - 1);
   }
+}
+
+static void got_face_place(uint64_t *s, size_t ns, uint64_t h, size_t e) {
+  size_t q = h & (ns - 1);
+  while (s[q] != 0) q = (q + 1) & (ns - 1);
+  s[q] = got_face_slot(h, e);
 }
 
 /* Rehash into twice the slots when half full. */
 static int got_face_rehash(got_face_ctx *x) {
   if (2 * (x->nent + 1) <= x->nslot) return 0;
   size_t ns = x->nslot ? 2 * x->nslot : 1024;
-  uint32_t *s = calloc(ns, sizeof *s);
+  uint64_t *s = calloc(ns, sizeof *s);
   if (s == NULL) return -1;
-  for (size_t e = 0; e < x->nent; e++) {
-    size_t q = x->ent[e].hash & (ns - 1);
-    while (s[q] != 0) q = (q + 1) & (ns - 1);
-    s[q] = (uint32_t)(e + 1);
-  }
+  for (size_t e = 0; e < x->nent; e++) got_face_place(s, ns, x->ent[e].hash, e);
   free(x->slot);
   x->slot = s, x->nslot = ns;
   return 0;
@@ -500,9 +514,7 @@ static long got_face_insert(got_face_ctx *x, const uint32_t *code, size_t len, u
   *d = *e;
   d->off = x->arena_len, d->len = len, d->hash = h;
   x->arena_len += len;
-  size_t q = h & (x->nslot - 1);
-  while (x->slot[q] != 0) q = (q + 1) & (x->nslot - 1);
-  x->slot[q] = (uint32_t)(x->nent + 1);
+  got_face_place(x->slot, x->nslot, h, x->nent);
   return (long)x->nent++;
 }
 
