@@ -92,6 +92,7 @@ typedef struct got_face_ctx {
   int fail;             /* 1: too many regions; 2: out of memory */
 } got_face_ctx;
 
+/* The parts of a code, in place. */
 static got_face_view got_face_view_of(const uint32_t *code) {
   got_face_view w;
   w.nw = code[0];
@@ -397,6 +398,10 @@ typedef struct got_face_step {
   size_t cap;
 } got_face_step;
 
+/* Scratch for the steps of region w (code of len words): a child's code is
+** never longer (a merged hole repeats its apex but loses its length word; a
+** point joining the walk leaves the points), with no more walks or points.
+** 0, or -1 when out of memory. */
 static int got_face_step_new(got_face_step *st, const got_face_view *w, size_t len) {
   st->cap = len + 8;
   st->hole = malloc((w->nw + 1) * sizeof *st->hole);
