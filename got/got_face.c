@@ -37,7 +37,8 @@
 ** triangulation (the second smallest over apexes, or the best apex with one
 ** piece at its runner-up), the recurrence of got_dp.c for a monotone +.
 ** Ties go to the apex met first in the region's code (outer walk from the
-** pivot on, then the holes, then the inner points by index): deterministic,
+** pivot on, then the holes, then the inner points; vertices numbered as
+** got_face_number says, from the input's order): deterministic,
 ** single-threaded, and reentrant (no state outside the call), so a caller
 ** may solve several faces at once on its threads.  Keys are rule_key of
 ** measure_eval's value (through measure_points, bit for bit the same),
