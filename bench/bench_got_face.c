@@ -4,8 +4,9 @@
 ** to 40 boundary vertices (star-shaped polygons, sampler_star) with 0 to 5
 ** points inside (drawn in the polygon's kernel near the centre), every
 ** segment allowed (the worst case: a skeleton's faces allow fewer), under
-** P_1 and -alpha_1.  Medians over FACES faces per row.  The load average
-** is printed: on a shared machine wall times grow with it.
+** P_1 and -alpha_1.  Medians over FACES faces per row of the regions, the
+** wall time and the CPU time (one thread: on a shared machine the wall
+** time grows with the load average, printed, and the CPU time less).
 ** Usage: bench_got_face [--quick] (at most 30 vertices, 3 inner points).
 */
 #include <stdio.h>
@@ -53,24 +54,25 @@ static void bench_make(sampler_rng *g, size_t nb, size_t k, bench_face *f) {
 }
 
 static void bench_row(sampler_rng *g, size_t nb, size_t k, const rule *r) {
-  double t[FACES], st[FACES];
+  double t[FACES], cpu[FACES], st[FACES];
   for (int q = 0; q < FACES; q++) {
     bench_face f;
     bench_make(g, nb, k, &f);
     got_face_in in = {f.p, 1, &f.len, f.walk, f.inner, f.ninner, f.edge, f.nedges};
     got_face_out o;
     char err[256];
-    double t0 = bench_wall();
+    double c0 = bench_cpu(), t0 = bench_wall();
     if (got_face_solve(&in, r, &o, err, sizeof err) != 0) {
       fprintf(stderr, "bench_got_face: %s\n", err);
       exit(1);
     }
     t[q] = bench_wall() - t0;
+    cpu[q] = bench_cpu() - c0;
     st[q] = (double)o.states;
     got_face_out_free(&o);
   }
-  printf("%-9s %9zu %6zu %12.0f %12.4f\n", rule_name(r), nb, k, bench_median(st, FACES),
-         bench_median(t, FACES));
+  printf("%-9s %9zu %6zu %12.0f %12.4f %12.4f\n", rule_name(r), nb, k, bench_median(st, FACES),
+         bench_median(t, FACES), bench_median(cpu, FACES));
 }
 
 int main(int argc, char **argv) {
@@ -79,7 +81,8 @@ int main(int argc, char **argv) {
   const size_t nbs[] = {10, 20, 30, 40}, ks[] = {0, 1, 2, 3, 5};
   printf("# bench_got_face: load average %.2f; medians of %d faces per row\n", bench_load(),
          FACES);
-  printf("%-9s %9s %6s %12s %12s\n", "rule", "vertices", "inner", "regions", "seconds");
+  printf("%-9s %9s %6s %12s %12s %12s\n", "rule", "vertices", "inner", "regions", "seconds",
+         "cpu-seconds");
   for (size_t q = 0; q < 2; q++) {
     rule r;
     char err[256];

@@ -37,23 +37,29 @@
 ** triangulation (the second smallest over apexes, or the best apex with one
 ** piece at its runner-up), the recurrence of got_dp.c for a monotone +.
 ** Ties go to the apex met first in the region's code (outer walk from the
-** pivot on, then the holes, then the inner points by index): deterministic,
-** single-threaded.  Keys are rule_key(measure_eval(...)), added in the
-** order key(abc) + best(first piece) + best(second piece); + rounded to
-** nearest is monotone, so the optimum found is the floating total of the
-** triangulation returned and the runner-up the least floating total of the
-** others, and got_cert_err_sum bounds both (got_cert.c).
+** pivot on, then the holes, then the inner points; vertices numbered as
+** got_face_number says, from the input's order): deterministic,
+** single-threaded, and reentrant (no state outside the call), so a caller
+** may solve several faces at once on its threads.  Keys are rule_key of
+** measure_eval's value (through measure_points, bit for bit the same),
+** added in the order key(abc) + best(first piece) + best(second piece);
+** + rounded to nearest is monotone, so the optimum found is the floating
+** total of the triangulation returned and the runner-up the least floating
+** total of the others, and got_cert_err_sum bounds both (got_cert.c).
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom_mem_internal.h"
 #include "measure.h"
 #include "got_internal.h"
 #include "got_face.h"
 
-/* The regions a face may visit: about 100 bytes of code and entry each. */
-#define GOT_FACE_MAX_STATES ((size_t)1 << 21)
+/* The regions a face may visit: each costs its code (4 bytes a vertex or
+** point), an entry (48 bytes) and two to four hash slots of 8 bytes: for
+** faces of 50 vertices about 300 MB at most.  Entry indices fit 32 bits. */
+#define GOT_FACE_MAX_STATES ((size_t)1 << 20)
 
 /* A region's code: [nw, npt, len[0..nw-1], walk vertices..., points...]. */
 typedef struct got_face_view {
@@ -71,21 +77,25 @@ typedef struct got_face_entry {
 } got_face_entry;
 
 typedef struct got_face_ctx {
-  const geom_point *p;
+  const geom_point *p;      /* the face's points by local number (got_face_number) */
+  geom_point *lp;           /* ... owned */
+  uint32_t *glob;           /* local number -> index in the caller's points */
   const rule *r;
   int measure;
+  measure_points_fn fast;   /* the measure from three points, bit for bit (NULL: none) */
   uint64_t *edge;       /* allowed edges, lo << 32 | hi, ascending */
   size_t nedges;
   uint32_t *arena;
   size_t arena_len, arena_cap;
   got_face_entry *ent;
   size_t nent, ent_cap;
-  uint32_t *slot;       /* hash slots: entry index + 1, 0 when free */
+  uint64_t *slot;       /* hash slots: the hash's top 32 bits, entry index + 1 (0: free) */
   size_t nslot;
   size_t limit;
   int fail;             /* 1: too many regions; 2: out of memory */
 } got_face_ctx;
 
+/* The parts of a code, in place. */
 static got_face_view got_face_view_of(const uint32_t *code) {
   got_face_view w;
   w.nw = code[0];
@@ -103,6 +113,8 @@ static size_t got_face_code_len(const uint32_t *code) {
   return 2 + w.nw + w.nv + w.npt;
 }
 
+/* The words mixed one by one, then the bits avalanched (MurmurHash3's
+** finaliser): the slot index takes the low bits, the slot check the high. */
 static uint64_t got_face_hash(const uint32_t *code, size_t len) {
   uint64_t h = 0x9e3779b97f4a7c15u;
   for (size_t i = 0; i < len; i++) {
@@ -110,7 +122,9 @@ static uint64_t got_face_hash(const uint32_t *code, size_t len) {
     h *= 0xff51afd7ed558ccdu;
     h ^= h >> 32;
   }
-  return h;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53u;
+  return h ^ (h >> 33);
 }
 
 /* ---- canonical codes ------------------------------------------------ */
@@ -137,8 +151,8 @@ static int got_face_u64_cmp(const void *x, const void *y) {
 }
 
 /* Holes sorted by their least half-edge: (first, second) of the rotated
-** walk, packed with the hole's index. */
-typedef struct got_face_hole { uint64_t key; uint32_t k; } got_face_hole;
+** walk, packed, with the hole's index, start and rotation. */
+typedef struct got_face_hole { uint64_t key; uint32_t k; size_t off, rot; } got_face_hole;
 
 static int got_face_hole_cmp(const void *x, const void *y) {
   const got_face_hole *a = x, *b = y;
@@ -146,38 +160,27 @@ static int got_face_hole_cmp(const void *x, const void *y) {
 }
 
 /* Write the canonical code of the region raw (same layout, any rotation
-** and order) into out (as long as raw); 0, or -1 when out of memory. */
-static int got_face_canon(const uint32_t *raw, uint32_t *out) {
+** and order) into out (as long as raw), with h room for its walks. */
+static void got_face_canon(const uint32_t *raw, uint32_t *out, got_face_hole *h) {
   got_face_view w = got_face_view_of(raw);
-  size_t *start = malloc((w.nw + 1) * sizeof *start);
-  got_face_hole *h = malloc((w.nw + 1) * sizeof *h);
-  if (start == NULL || h == NULL) {
-    free(start), free(h);
-    return -1;
-  }
   size_t off = 0;
   for (uint32_t k = 0; k < w.nw; k++) {
     const uint32_t *wk = w.v + off;
     size_t s = got_face_walk_start(wk, w.len[k]);
-    h[k].key = (uint64_t)wk[s] << 32 | wk[(s + 1) % w.len[k]];
-    h[k].k = k;
-    start[k] = off;
+    h[k] = (got_face_hole){(uint64_t)wk[s] << 32 | wk[(s + 1) % w.len[k]], k, off, s};
     off += w.len[k];
   }
   if (w.nw > 2) qsort(h + 1, w.nw - 1, sizeof *h, got_face_hole_cmp);
   out[0] = w.nw, out[1] = w.npt;
   uint32_t *o = out + 2 + w.nw;
   for (uint32_t q = 0; q < w.nw; q++) {
-    uint32_t k = h[q].k, n = w.len[k];
-    const uint32_t *wk = w.v + start[k];
-    size_t s = got_face_walk_start(wk, n);
+    uint32_t n = w.len[h[q].k];
+    const uint32_t *wk = w.v + h[q].off;
     out[2 + q] = n;
-    for (uint32_t i = 0; i < n; i++) *o++ = wk[(s + i) % n];
+    for (uint32_t i = 0; i < n; i++) *o++ = wk[(h[q].rot + i) % n];
   }
   memcpy(o, w.pt, w.npt * sizeof *o);
   qsort(o, w.npt, sizeof *o, got_face_u32_cmp);
-  free(start), free(h);
-  return 0;
 }
 
 /* ---- exact geometry ------------------------------------------------- */
@@ -394,18 +397,31 @@ static void got_face_split(const got_face_view *w, size_t j, uint32_t *o1, size_
 typedef struct got_face_step {
   uint32_t *raw[2], *kid[2], *o1, *o2;
   unsigned char *hsel, *psel;
+  got_face_hole *hole;
   size_t cap;
 } got_face_step;
 
+/* Scratch for the steps of region w (code of len words): a child's code is
+** never longer (a merged hole repeats its apex but loses its length word; a
+** point joining the walk leaves the points), with no more walks or points.
+** 0, or -1 when out of memory. */
 static int got_face_step_new(got_face_step *st, const got_face_view *w, size_t len) {
   st->cap = len + 8;
+  st->hole = malloc((w->nw + 1) * sizeof *st->hole);
   uint32_t *m = malloc(6 * st->cap * sizeof *m + w->nw + w->npt + 2);
-  if (m == NULL) return -1;
+  if (m == NULL || st->hole == NULL) {
+    free(m), free(st->hole);
+    return -1;
+  }
   st->raw[0] = m, st->raw[1] = m + st->cap, st->kid[0] = m + 2 * st->cap;
   st->kid[1] = m + 3 * st->cap, st->o1 = m + 4 * st->cap, st->o2 = m + 5 * st->cap;
   st->hsel = (unsigned char *)(m + 6 * st->cap);
   st->psel = st->hsel + w->nw + 1;
   return 0;
+}
+
+static void got_face_step_free(got_face_step *st) {
+  free(st->raw[0]), free(st->hole);
 }
 
 /* Which of the two walks o1, o2 each hole and point lies in (0, 1). */
@@ -421,8 +437,8 @@ static void got_face_assign(const got_face_ctx *x, const got_face_view *w, got_f
 }
 
 /* The pieces left by the triangle on the pivot with apex at position rel,
-** canonical, into st->kid[0..]; their number (0, 1, 2), or -1 when out of
-** memory.  *c receives the apex. */
+** canonical, into st->kid[0..]; their number (0, 1, 2).  *c receives the
+** apex. */
 static int got_face_children(const got_face_ctx *x, const got_face_view *w, size_t rel,
                              got_face_step *st, uint32_t *c) {
   uint32_t k = 0;
@@ -442,12 +458,12 @@ static int got_face_children(const got_face_ctx *x, const got_face_view *w, size
     l1 = got_face_merge(w, *c, on, k, i, s, st->o1);
     got_face_write(st->raw[n++], st->o1, l1, w, st->hsel, st->psel, 0);
   }
-  for (int q = 0; q < n; q++)
-    if (got_face_canon(st->raw[q], st->kid[q]) != 0) return -1;
+  for (int q = 0; q < n; q++) got_face_canon(st->raw[q], st->kid[q], st->hole);
   return n;
 }
 
 static double got_face_tri_key(const got_face_ctx *x, uint32_t a, uint32_t b, uint32_t c) {
+  if (x->fast != NULL) return rule_key(x->r, x->fast(x->p[a], x->p[b], x->p[c]));
   geom_tri t;
   geom_tri_make(&t, x->p[a], x->p[b], x->p[c]);
   return rule_key(x->r, measure_eval(x->measure, &t));
@@ -455,38 +471,38 @@ static double got_face_tri_key(const got_face_ctx *x, uint32_t a, uint32_t b, ui
 
 /* ---- the memo --------------------------------------------------------- */
 
+/* A slot holds the hash's top half beside the entry index, so that a probe
+** rarely loads an entry it does not want. */
+static uint64_t got_face_slot(uint64_t h, size_t e) {
+  return (h & 0xffffffff00000000u) | (uint64_t)(e + 1);
+}
+
 static long got_face_lookup(const got_face_ctx *x, const uint32_t *code, size_t len,
                             uint64_t h) {
   if (x->nslot == 0) return -1;
   for (size_t q = h & (x->nslot - 1);; q = (q + 1) & (x->nslot - 1)) {
-    if (x->slot[q] == 0) return -1;
-    const got_face_entry *e = &x->ent[x->slot[q] - 1];
+    uint64_t sl = x->slot[q];
+    if (sl == 0) return -1;
+    if ((sl ^ h) >> 32 != 0) continue;
+    const got_face_entry *e = &x->ent[(uint32_t)sl - 1];
     if (e->hash == h && e->len == len && memcmp(x->arena + e->off, code, len * 4) == 0)
-      return (long)(x->slot[q] - 1);
+      return (long)((uint32_t)sl - 1);
   }
 }
 
-static int got_face_grow(void **p, size_t *cap, size_t need, size_t size) {
-  if (need <= *cap) return 0;
-  size_t c = *cap ? *cap : 256;
-  while (c < need) c *= 2;
-  void *q = realloc(*p, c * size);
-  if (q == NULL) return -1;
-  *p = q, *cap = c;
-  return 0;
+static void got_face_place(uint64_t *s, size_t ns, uint64_t h, size_t e) {
+  size_t q = h & (ns - 1);
+  while (s[q] != 0) q = (q + 1) & (ns - 1);
+  s[q] = got_face_slot(h, e);
 }
 
 /* Rehash into twice the slots when half full. */
 static int got_face_rehash(got_face_ctx *x) {
   if (2 * (x->nent + 1) <= x->nslot) return 0;
   size_t ns = x->nslot ? 2 * x->nslot : 1024;
-  uint32_t *s = calloc(ns, sizeof *s);
+  uint64_t *s = calloc(ns, sizeof *s);
   if (s == NULL) return -1;
-  for (size_t e = 0; e < x->nent; e++) {
-    size_t q = x->ent[e].hash & (ns - 1);
-    while (s[q] != 0) q = (q + 1) & (ns - 1);
-    s[q] = (uint32_t)(e + 1);
-  }
+  for (size_t e = 0; e < x->nent; e++) got_face_place(s, ns, x->ent[e].hash, e);
   free(x->slot);
   x->slot = s, x->nslot = ns;
   return 0;
@@ -495,8 +511,8 @@ static int got_face_rehash(got_face_ctx *x) {
 /* Store a solved region; its index, or -1 when out of memory. */
 static long got_face_insert(got_face_ctx *x, const uint32_t *code, size_t len, uint64_t h,
                             const got_face_entry *e) {
-  if (got_face_grow((void **)&x->arena, &x->arena_cap, x->arena_len + len, 4) != 0 ||
-      got_face_grow((void **)&x->ent, &x->ent_cap, x->nent + 1, sizeof *x->ent) != 0 ||
+  if (geom_grow((void **)&x->arena, &x->arena_cap, x->arena_len + len, 4) != 0 ||
+      geom_grow((void **)&x->ent, &x->ent_cap, x->nent + 1, sizeof *x->ent) != 0 ||
       got_face_rehash(x) != 0) {
     x->fail = 2;
     return -1;
@@ -506,9 +522,7 @@ static long got_face_insert(got_face_ctx *x, const uint32_t *code, size_t len, u
   *d = *e;
   d->off = x->arena_len, d->len = len, d->hash = h;
   x->arena_len += len;
-  size_t q = h & (x->nslot - 1);
-  while (x->slot[q] != 0) q = (q + 1) & (x->nslot - 1);
-  x->slot[q] = (uint32_t)(x->nent + 1);
+  got_face_place(x->slot, x->nslot, h, x->nent);
   return (long)x->nent++;
 }
 
@@ -542,7 +556,6 @@ static int got_face_try(got_face_ctx *x, const got_face_view *w, size_t rel,
                         got_face_step *st, got_face_entry *e, got_face_other *other) {
   uint32_t c;
   int n = got_face_children(x, w, rel, st, &c);
-  if (n < 0) return x->fail = 2, -1;
   long ci[2] = {-1, -1};
   for (int q = 0; q < n; q++)
     if ((ci[q] = got_face_solve_code(x, st->kid[q])) < 0) return -1;
@@ -577,11 +590,11 @@ static long got_face_solve_code(got_face_ctx *x, const uint32_t *code) {
   for (size_t rel = 2; rel < w.nv + w.npt; rel++) {
     if (!got_face_apex_ok(x, &w, rel)) continue;
     if (got_face_try(x, &w, rel, &st, &e, &other) != 0) {
-      free(st.raw[0]);
+      got_face_step_free(&st);
       return -1;
     }
   }
-  free(st.raw[0]);
+  got_face_step_free(&st);
   if (e.feasible && other.has) {
     e.second = e.has2 ? fmin(e.second, other.v) : other.v;
     e.has2 = 1;
@@ -590,7 +603,7 @@ static long got_face_solve_code(got_face_ctx *x, const uint32_t *code) {
 }
 
 /* The triangles of region idx's optimum into tri (3 each, room for cap), in
-** the order the search met them; 0, or -1 when out of memory. */
+** the order the search met them; 0, -1 when out of memory, -2 past cap. */
 static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t *ntri,
                               size_t cap) {
   const got_face_entry *e = &x->ent[idx];
@@ -599,8 +612,7 @@ static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t
   got_face_step st;
   if (got_face_step_new(&st, &w, e->len) != 0) return -1;
   uint32_t c;
-  int n = got_face_children(x, &w, e->choice - 2 - w.nw, &st, &c), rc = n < 0 ? -1 : 0;
-  if (n >= 0 && *ntri >= cap) rc = -1;
+  int n = got_face_children(x, &w, e->choice - 2 - w.nw, &st, &c), rc = *ntri < cap ? 0 : -2;
   if (rc == 0) {
     tri[3 * *ntri] = w.v[0], tri[3 * *ntri + 1] = w.v[1], tri[3 * *ntri + 2] = c;
     ++*ntri;
@@ -610,7 +622,7 @@ static int got_face_backtrack(got_face_ctx *x, size_t idx, uint32_t *tri, size_t
     long ci = got_face_lookup(x, st.kid[q], len, got_face_hash(st.kid[q], len));
     rc = ci < 0 ? -1 : got_face_backtrack(x, (size_t)ci, tri, ntri, cap);
   }
-  free(st.raw[0]);
+  got_face_step_free(&st);
   return rc;
 }
 
@@ -643,16 +655,82 @@ static uint32_t *got_face_root(const got_face_in *in, char *err, size_t errlen) 
   return raw;
 }
 
-/* The allowed edges, lo << 32 | hi, ascending, into x. */
-static int got_face_edges(got_face_ctx *x, const got_face_in *in) {
-  x->edge = malloc((in->nedges + 1) * sizeof *x->edge);
-  if (x->edge == NULL) return -1;
-  for (size_t e = 0; e < in->nedges; e++) {
-    uint32_t u = in->edge[2 * e], v = in->edge[2 * e + 1];
-    x->edge[e] = u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+/* ---- local numbers -------------------------------------------------------
+** The search numbers the face's vertices 0 .. V-1: the points inside first,
+** in the order given, then the walks' vertices in order of first
+** appearance.  Why: the pivot is the least half-edge, so the chords to the
+** points inside are taken early and fewer regions arise (star-shaped
+** 40-gons with 5 points inside: half the regions, bench_got_face), and the
+** points are contiguous in memory.  Ties follow these numbers. */
+typedef struct got_face_num { uint32_t g, pos; } got_face_num;
+
+static int got_face_num_cmp(const void *x, const void *y) {
+  const got_face_num *a = x, *b = y;
+  if (a->g != b->g) return a->g < b->g ? -1 : 1;
+  return a->pos < b->pos ? -1 : a->pos > b->pos;
+}
+
+/* The local number of global index g in map[0..V) (sorted by g, pos the
+** local number); V when g is no vertex of the face. */
+static uint32_t got_face_local(const got_face_num *map, uint32_t V, uint32_t g) {
+  uint32_t lo = 0, hi = V;
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (map[mid].g < g) lo = mid + 1;
+    else hi = mid;
   }
-  qsort(x->edge, in->nedges, sizeof *x->edge, got_face_u64_cmp);
-  x->nedges = in->nedges;
+  return lo < V && map[lo].g == g ? map[lo].pos : V;
+}
+
+/* The distinct vertices of the occurrences a[0..m) (g the caller's index,
+** pos the occurrence: points first, then walks), numbered by first
+** occurrence into x->glob and x->lp; a becomes the map, sorted by g with
+** pos the local number.  Their count V; a needs room for 2m entries. */
+static uint32_t got_face_distinct(got_face_ctx *x, const geom_point *p, got_face_num *a,
+                                  size_t m) {
+  qsort(a, m, sizeof *a, got_face_num_cmp);
+  uint32_t V = 0;
+  for (size_t i = 0; i < m; i++)   /* each vertex's first occurrence */
+    if (i == 0 || a[i].g != a[i - 1].g) a[V++] = a[i];
+  got_face_num *b = a + V;         /* (first occurrence, place in a) */
+  for (uint32_t i = 0; i < V; i++) b[i] = (got_face_num){a[i].pos, i};
+  qsort(b, V, sizeof *b, got_face_num_cmp);
+  for (uint32_t r = 0; r < V; r++) {
+    got_face_num *v = &a[b[r].pos];
+    x->glob[r] = v->g;
+    x->lp[r] = p[v->g];
+    v->pos = r;
+  }
+  return V;
+}
+
+/* Renumber the root code raw (walks, then points) and the allowed edges
+** (x->edge: lo << 32 | hi, ascending; edges leaving the face dropped) in
+** local numbers.  0, or -1 when out of memory. */
+static int got_face_number(got_face_ctx *x, const got_face_in *in, uint32_t *raw) {
+  got_face_view w = got_face_view_of(raw);
+  size_t m = w.nv + w.npt;
+  got_face_num *a = malloc(2 * (m + 1) * sizeof *a);
+  x->glob = malloc((m + 1) * sizeof *x->glob);
+  x->lp = malloc((m + 1) * sizeof *x->lp);
+  x->edge = malloc((in->nedges + 1) * sizeof *x->edge);
+  if (a == NULL || x->glob == NULL || x->lp == NULL || x->edge == NULL) {
+    free(a);
+    return -1;
+  }
+  uint32_t *occ = raw + 2 + w.nw;   /* walks, then points */
+  for (size_t i = 0; i < m; i++) a[i] = (got_face_num){occ[i], (uint32_t)((i + w.npt) % m)};
+  uint32_t V = got_face_distinct(x, in->p, a, m);
+  for (size_t i = 0; i < m; i++) occ[i] = got_face_local(a, V, occ[i]);
+  x->p = x->lp, x->nedges = 0;
+  for (size_t e = 0; e < in->nedges; e++) {
+    uint32_t u = got_face_local(a, V, in->edge[2 * e]);
+    uint32_t v = got_face_local(a, V, in->edge[2 * e + 1]);
+    if (u < V && v < V)
+      x->edge[x->nedges++] = u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+  }
+  qsort(x->edge, x->nedges, sizeof *x->edge, got_face_u64_cmp);
+  free(a);
   return 0;
 }
 
@@ -685,14 +763,19 @@ static void got_face_certify(const got_face_in *in, const rule *r, size_t nv,
 }
 
 static void got_face_ctx_free(got_face_ctx *x) {
-  free(x->edge), free(x->arena), free(x->ent), free(x->slot);
+  free(x->edge), free(x->arena), free(x->ent), free(x->slot), free(x->glob), free(x->lp);
 }
 
 /* The search from the root code into out; 0, or -1 with a message. */
 static int got_face_run(got_face_ctx *x, const got_face_in *in, size_t nv, uint32_t *root,
                         got_face_out *out, char *err, size_t errlen) {
-  long idx = got_face_canon(root, root + got_face_code_len(root)) == 0
-                 ? got_face_solve_code(x, root + got_face_code_len(root)) : (x->fail = 2, -1);
+  got_face_hole *h = malloc((in->nwalks + 1) * sizeof *h);
+  long idx = -1;
+  if (h != NULL) {
+    got_face_canon(root, root + got_face_code_len(root), h);
+    idx = got_face_solve_code(x, root + got_face_code_len(root));
+    free(h);
+  }
   out->states = x->nent;
   if (idx < 0 && x->fail == 1) {
     snprintf(err, errlen, "got_face_solve: a face of %zu boundary vertices and %zu inner "
@@ -707,9 +790,15 @@ static int got_face_run(got_face_ctx *x, const got_face_in *in, size_t nv, uint3
   }
   size_t m = nv + 2 * in->ninner + 2 * in->nwalks - 4;
   out->tri = idx >= 0 ? malloc(3 * (m + 1) * sizeof *out->tri) : NULL;
-  if (out->tri == NULL || got_face_backtrack(x, (size_t)idx, out->tri, &out->ntri, m) != 0 ||
-      out->ntri != m) {
+  int rc = out->tri == NULL ? -1
+                            : got_face_backtrack(x, (size_t)idx, out->tri, &out->ntri, m);
+  if (rc == -1) {
     snprintf(err, errlen, "got_face_solve: out of memory");
+    return -1;
+  }
+  if (rc != 0 || out->ntri != m) {   /* walks bounding no face as described */
+    snprintf(err, errlen, "got_face_solve: the face's walks are inconsistent (%zu triangles "
+             "found, %zu expected from its vertices and points)", out->ntri, m);
     return -1;
   }
   out->key = x->ent[idx].best;
@@ -725,16 +814,18 @@ int got_face_solve_limit(const got_face_in *in, const rule *r, size_t max_states
   uint32_t *raw = got_face_root(in, err, errlen);
   if (raw == NULL) return -1;
   got_face_ctx x = {0};
-  x.p = in->p, x.r = r, x.measure = rule_measure(r), x.limit = max_states;
+  x.r = r, x.measure = rule_measure(r), x.limit = max_states;
+  x.fast = measure_points(x.measure);
   size_t nv = 0, len = got_face_code_len(raw);
   for (size_t k = 0; k < in->nwalks; k++) nv += in->walk_len[k];
   uint32_t *root = malloc(2 * len * sizeof *root);
   int rc = -1;
-  if (root == NULL || got_face_edges(&x, in) != 0) {
+  if (root == NULL || got_face_number(&x, in, raw) != 0) {
     snprintf(err, errlen, "got_face_solve: out of memory");
   } else {
     memcpy(root, raw, len * sizeof *root);
     rc = got_face_run(&x, in, nv, root, out, err, errlen);
+    for (size_t t = 0; rc == 0 && t < 3 * out->ntri; t++) out->tri[t] = x.glob[out->tri[t]];
   }
   if (rc == 0) got_face_certify(in, r, nv, out);
   else got_face_out_free(out);

@@ -38,7 +38,7 @@ int got_face_solve(const got_face_in *in, const rule *r, got_face_out *out, char
                    size_t errlen);
 FLIPLAB_INTERNAL
 void got_face_out_free(got_face_out *o);
-/* got_face_solve with another limit on the regions searched (got_face_solve: 2^21; tests
+/* got_face_solve with another limit on the regions searched (got_face_solve: 2^20; tests
 ** use small ones to see the refusal). */
 FLIPLAB_INTERNAL
 int got_face_solve_limit(const got_face_in *in, const rule *r, size_t max_states,

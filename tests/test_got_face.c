@@ -14,7 +14,8 @@
 ** hole (an inner segment or triangle walked as a second walk) and with a
 ** dangling edge (a hull vertex to an inner point, walked twice) are checked
 ** against the triangulations containing those edges.  A face larger than
-** the search's limit is refused with one line.
+** the search's limit is refused with one line.  A triangle hole pinned to
+** the outer walk at one vertex (visited twice) is checked the same way.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -351,6 +352,20 @@ static void tf_drop_inner(tf_face *f, uint32_t u) {
   f->ninner = m;
 }
 
+/* 1 when u v w is a proper triangle with clear sides and no point inside. */
+static int tf_empty_triangle(const tf_face *f, uint32_t u, uint32_t v, uint32_t w) {
+  int o = geom_orient(f->p[u], f->p[v], f->p[w]);
+  if (o == 0 || !tf_segment_clear(f, u, v) || !tf_segment_clear(f, v, w) ||
+      !tf_segment_clear(f, w, u))
+    return 0;
+  for (size_t k = 0; k < f->n; k++)
+    if (k != u && k != v && k != w && geom_orient(f->p[u], f->p[v], f->p[k]) == o &&
+        geom_orient(f->p[v], f->p[w], f->p[k]) == o &&
+        geom_orient(f->p[w], f->p[u], f->p[k]) == o)
+      return 0;
+  return 1;
+}
+
 /* A second walk: the inner segment u v (walked both ways), or the empty
 ** inner triangle u v w (clockwise: the face on its left, outside). */
 static int tf_add_hole(tf_face *f, int tri) {
@@ -362,12 +377,7 @@ static int tf_add_hole(tf_face *f, int tri) {
     h[0] = u, h[1] = v;
   } else {
     int o = geom_orient(f->p[u], f->p[v], f->p[w]);
-    if (o == 0 || !tf_segment_clear(f, v, w) || !tf_segment_clear(f, w, u)) return 0;
-    for (size_t k = 0; k < f->n; k++)
-      if (k != u && k != v && k != w && geom_orient(f->p[u], f->p[v], f->p[k]) == o &&
-          geom_orient(f->p[v], f->p[w], f->p[k]) == o &&
-          geom_orient(f->p[w], f->p[u], f->p[k]) == o)
-        return 0;
+    if (!tf_empty_triangle(f, u, v, w)) return 0;
     if (o > 0) h[0] = u, h[1] = w, h[2] = v;
     else h[0] = u, h[1] = v, h[2] = w;
     tf_need(f, v, w), tf_need(f, w, u);
@@ -400,21 +410,46 @@ static int tf_add_dangling(tf_face *f, int chain) {
   return 1;
 }
 
+/* A hole pinned to the outer walk's vertex 0: the empty triangle h x y
+** with x, y inside, walked clockwise from h (h visited twice). */
+static int tf_add_pinned(tf_face *f) {
+  if (f->nwalks != 1 || f->ninner < 2) return 0;
+  uint32_t h = f->walk[0], x = f->inner[0], y = f->inner[1];
+  if (!tf_empty_triangle(f, h, x, y)) return 0;
+  if (geom_orient(f->p[h], f->p[x], f->p[y]) > 0) {
+    uint32_t t = x;
+    x = y, y = t;
+  }
+  size_t L = f->walk_len[0];
+  uint32_t w[3 * TF_MAXN];
+  w[0] = h, w[1] = x, w[2] = y;
+  memcpy(w + 3, f->walk, L * sizeof *w);
+  memcpy(f->walk, w, (L + 3) * sizeof *w);
+  f->walk_len[0] = L + 3, f->nwalk = L + 3;
+  tf_need(f, h, x), tf_need(f, x, y), tf_need(f, y, h);
+  f->hole[0] = (int)h, f->hole[1] = (int)x, f->hole[2] = (int)y;
+  tf_drop_inner(f, x), tf_drop_inner(f, y);
+  return 1;
+}
+
 static void test_holes_and_dangling(void **state) {
   (void)state;
   testutil_rng g = {3801};
-  int reps = testutil_reps(200), done[4] = {0};
+  int reps = testutil_reps(200), done[5] = {0};
   for (int s = 0; s < reps; s++) {
-    for (int mode = 0; mode < 4; mode++) {
+    for (int mode = 0; mode < 5; mode++) {
       tf_face f;
       tf_points(&g, s % 2 == 0 ? 0 : 3, &f);
-      int ok = mode < 2 ? tf_add_hole(&f, mode) : tf_add_dangling(&f, mode - 2);
+      int ok = mode < 2 ? tf_add_hole(&f, mode)
+             : mode < 4 ? tf_add_dangling(&f, mode - 2) : tf_add_pinned(&f);
       if (!ok) continue;
       done[mode]++;
       tf_check_rules(&f);
     }
   }
-  for (int mode = 0; mode < 4; mode++) assert_true(done[mode] >= reps / 10);
+  print_message("faces: %d segment holes, %d triangle holes, %d dangling edges, %d chains, "
+                "%d pinned triangles\n", done[0], done[1], done[2], done[3], done[4]);
+  for (int mode = 0; mode < 5; mode++) assert_true(done[mode] >= reps / 10);
 }
 
 /* ---- refusals ---- */
@@ -441,9 +476,15 @@ static void test_refusals(void **state) {
   assert_int_equal(rule_parse("P_inf", &r, err, sizeof err), 0);
   assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
   assert_non_null(strstr(err, "not a sum rule"));
+  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
+  uint32_t cw[TF_MAXN];   /* the hull walked clockwise: the face would be outside */
+  for (size_t i = 0; i < f.walk_len[0]; i++) cw[i] = f.walk[f.walk_len[0] - 1 - i];
+  in.walk = cw;
+  assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
+  assert_null(strchr(err, '\n'));
+  in.walk = f.walk;
   size_t bad = 2;
   in.walk_len = &bad;
-  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
   assert_int_equal(got_face_solve(&in, &r, &o, err, sizeof err), -1);
   assert_null(strchr(err, '\n'));
 }
