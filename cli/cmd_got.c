@@ -120,11 +120,14 @@ static const cli_option cli_got_opts[] = {
 #undef T
 
 static const cli_spec cli_got_spec = {
-  CMD, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]",
+  CMD, "usage: fliplab got --rule RULE (--polygon FILE.csv | --random N) [options]\n"
+  "       fliplab got --rule RULE (--points FILE.csv | --random N --distribution NAME)\n"
+  "       fliplab got --gap-table SETS --random N --rule RULE,... [options]",
   "Globally optimal triangulation GOT(b_f) of a simple polygon (convex or not):\n"
   "the thesis's Algorithm 1 over the polygon's valid diagonals, Theta(n^3) time\n"
-  "and Theta(n^2) memory, ties broken towards the smallest split vertex k\n"
-  "(docs/got.md).\n",
+  "and Theta(n^2) memory, ties broken towards the smallest split vertex k; of a\n"
+  "point set, for a sum rule: the skeleton's certain edges, then each face they\n"
+  "leave solved exactly (docs/got.md).\n",
   cli_got_opts, CLI_NOPTS(cli_got_opts), NULL};
 
 /* Point sets: --points FILE or --random N --distribution NAME (or --gap-table). */
