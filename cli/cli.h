@@ -136,6 +136,16 @@ int cli_option_memory(const char *cmd, const cli_option *o, const char *v, void 
   {.name = "--format", .arg = "F", .dflt = D, .help = H, .kind = CLI_CALL, \
    .off = CLI_AT(T, F, report_format), .idef = DEF, .bad = BAD, .call = cli_option_format}
 int cli_option_format(const char *cmd, const cli_option *o, const char *v, void *dst);
+/* A point sampler's name (samplers/sampler.h, sampler_points_find) into an int: its
+** sampler_points_kind, o->idef when not given. */
+int cli_option_points_sampler(const char *cmd, const cli_option *o, const char *v, void *dst);
+/* The points of --points FILE.csv (path not NULL) or of --random N (sampler kind, seed),
+** *p malloc'ed, desc naming them; check (lot_check_memory, got_points_check_memory)
+** refuses a --random N that does not fit.  0, or 2 after the one-line error. */
+struct geom_point;
+int cli_points_get(const char *cmd, const char *path, uint64_t random, int kind, uint64_t seed,
+                   int (*check)(size_t n, char *err, size_t errlen), struct geom_point **p,
+                   size_t *n, char *desc, size_t desclen);
 /* Rules, repeatable and comma lists (cli_parse_rule_list), appended to a
 ** cli_rules whose r and cap the command sets before parsing (n = 0 by
 ** default); cli_option_rules is the setter, cli_rules_add the same for a

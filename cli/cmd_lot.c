@@ -50,15 +50,6 @@ static const char *const cli_lot_algorithms[] = {"incremental", "flip", "sweep",
 static const char *const cli_lot_order_name[] = {"spatial", "input", "random", NULL};
 static const char *const cli_lot_compares[] = {"DT", "GOT", NULL};
 
-/* --sampler: a sampler_points_kind, SAMPLER_UNIFORM by default. */
-static int cli_lot_sampler(const char *cmd, const cli_option *o, const char *v, void *dst) {
-  (void)o;
-  int k = v != NULL ? sampler_points_find(v) : SAMPLER_UNIFORM;
-  if (k < 0) return cli_error(cmd, "unknown sampler '%s' (valid: %s)", v, sampler_points_names);
-  *(int *)dst = k;
-  return 0;
-}
-
 #define T cli_lot_args
 static const cli_option cli_lot_opts[] = {
   CLI_OPT_STRING("--rule", "RULE,...", "required",
@@ -95,7 +86,8 @@ static const cli_option cli_lot_opts[] = {
    .help = "uniform (unit square), normal, disc, grid (integer grid,\n"
            "                     row by row), parabola ((i, i^2), i = N..1), circle,\n"
            "                     clustered, jittered, lines, dups (docs/sampling.md)",
-   .kind = CLI_CALL, .off = CLI_AT(T, sampler, int), .call = cli_lot_sampler},
+   .kind = CLI_CALL, .off = CLI_AT(T, sampler, int), .idef = SAMPLER_UNIFORM,
+   .call = cli_option_points_sampler},
   CLI_OPT_SEED("the sampler's and the random order's seed", T, seed),
   {.name = "--algorithm", .arg = "A",
    .help = "incremental: insert, then flip back to a LOT; flip: a\n"
@@ -226,22 +218,8 @@ static int cli_lot_rules(const cli_lot_args *a, rule **r) {
 /* The points, read or sampled; desc names them. */
 static int cli_lot_points(const cli_lot_args *a, geom_point **p, size_t *n, char *desc,
                           size_t desclen) {
-  char err[512];
-  if (a->points) {
-    if (report_points_read(a->points, p, NULL, n, err, sizeof err) != 0)
-      return cli_error(CMD, "%s", err);
-    snprintf(desc, desclen, "%zu points from %s", *n, a->points);
-    return 0;
-  }
-  *n = (size_t)a->random;
-  if (lot_check_memory(*n, err, sizeof err) != 0) return cli_error(CMD, "--random: %s", err);
-  *p = malloc(*n * sizeof **p);
-  if (*p == NULL) return cli_error(CMD, "out of memory for %zu points", *n);
-  int k = a->sampler;
-  sampler_points((sampler_points_kind)k, a->seed, *n, *p);
-  snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
-           sampler_points_name((sampler_points_kind)k), (unsigned long long)a->seed);
-  return 0;
+  return cli_points_get(CMD, a->points, a->random, a->sampler, a->seed, lot_check_memory, p, n,
+                        desc, desclen);
 }
 
 /* --poly: the file's graph into *in (vertex attributes, boundary markers

@@ -9,12 +9,14 @@
 ** you mean" of an unknown option (cli/hint.c) searches the rows' names.
 ** The setters of the shared rows (--shard, --format, rule lists) are here.
 */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
 #include "geom.h"
 #include "report.h"
 #include "rule.h"
+#include "sampler.h"
 
 int cli_is_help(const char *opt) {
   return strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0 || strcmp(opt, "help") == 0;
@@ -125,6 +127,34 @@ int cli_option_format(const char *cmd, const cli_option *o, const char *v, void 
 
 int cli_rules_add(const char *cmd, const char *list, cli_rules *rules) {
   return cli_parse_rule_list(cmd, list, rules->r, &rules->n, rules->cap);
+}
+
+int cli_option_points_sampler(const char *cmd, const cli_option *o, const char *v, void *dst) {
+  int k = v != NULL ? sampler_points_find(v) : o->idef;
+  if (k < 0 && v != NULL)
+    return cli_error(cmd, "unknown sampler '%s' (valid: %s)", v, sampler_points_names);
+  *(int *)dst = k;
+  return 0;
+}
+
+int cli_points_get(const char *cmd, const char *path, uint64_t random, int kind, uint64_t seed,
+                   int (*check)(size_t n, char *err, size_t errlen), struct geom_point **p,
+                   size_t *n, char *desc, size_t desclen) {
+  char err[512];
+  if (path) {
+    if (report_points_read(path, p, NULL, n, err, sizeof err) != 0)
+      return cli_error(cmd, "%s", err);
+    snprintf(desc, desclen, "%zu points from %s", *n, path);
+    return 0;
+  }
+  *n = (size_t)random;
+  if (check(*n, err, sizeof err) != 0) return cli_error(cmd, "--random: %s", err);
+  *p = malloc(*n * sizeof **p);
+  if (*p == NULL) return cli_error(cmd, "out of memory for %zu points", *n);
+  sampler_points((sampler_points_kind)kind, seed, *n, *p);
+  snprintf(desc, desclen, "%zu %s points (seed %llu)", *n,
+           sampler_points_name((sampler_points_kind)kind), (unsigned long long)seed);
+  return 0;
 }
 
 int cli_option_rules(const char *cmd, const cli_option *o, const char *v, void *dst) {

@@ -603,6 +603,64 @@ GEOM_COLD int geom_power_exact(geom_point a, geom_point b, geom_point c, geom_po
   return geom_lifted_exact(GEOM_PRED_POWER, p, w);
 }
 
+/* ---- comparing squared lengths -------------------------------------------
+**
+** The sign of |ab|^2 - |cd|^2 (predicates.h).  Filter: each rounded
+** difference carries a relative error of at most eps, its square one more
+** rounding and the sum of two squares one more, so each rounded squared
+** length L^ is within (1 + eps)^4 - 1 < 4.01 eps of its exact value, and the
+** final subtraction adds eps |L1^ - L2^|: |fl(L1^ - L2^) - (L1 - L2)| <=
+** 5.1 eps (L1^ + L2^) (first-order terms, with room for the second-order
+** ones).  Tiny differences and overflow go to the exact path, as for
+** geom_orient.  Exact: the four differences as two-term expansions
+** (geom_two_diff) and the 16 products of their terms added up
+** (geom_add_product), for moderate coordinates; GMP rationals otherwise. */
+static GEOM_COLD int geom_dist2_cmp_exact(geom_point a, geom_point b, geom_point c,
+                                          geom_point d) {
+  const geom_point p[4] = {a, b, c, d};
+  if (geom_fast_ok(p, 4, NULL)) {
+    double t[2][4], e[34];
+    int n = 1;
+    geom_two_diff(b.x, a.x, &t[0][0], &t[1][0]);
+    geom_two_diff(b.y, a.y, &t[0][1], &t[1][1]);
+    geom_two_diff(d.x, c.x, &t[0][2], &t[1][2]);
+    geom_two_diff(d.y, c.y, &t[0][3], &t[1][3]);
+    e[0] = 0;
+    for (int i = 0; i < 2; i++)
+      for (int j = 0; j < 2; j++)
+        for (int k = 0; k < 4; k++)
+          geom_add_product(e, &n, k < 2 ? t[i][k] : -t[i][k], t[j][k]);
+    return (e[n - 1] > 0) - (e[n - 1] < 0);
+  }
+  if (!geom_finite4(a, b, c, d)) return 0;
+  mpq_t q[5];
+  for (int i = 0; i < 5; i++) mpq_init(q[i]);
+  const double v[4][2] = {{b.x, a.x}, {b.y, a.y}, {d.x, c.x}, {d.y, c.y}};
+  for (int k = 0; k < 4; k++) {
+    mpq_set_d(q[k], v[k][0]);
+    mpq_set_d(q[4], v[k][1]);
+    mpq_sub(q[k], q[k], q[4]);
+    mpq_mul(q[k], q[k], q[k]);
+  }
+  mpq_add(q[0], q[0], q[1]);
+  mpq_add(q[2], q[2], q[3]);
+  int s = mpq_cmp(q[0], q[2]);
+  for (int i = 0; i < 5; i++) mpq_clear(q[i]);
+  return (s > 0) - (s < 0);
+}
+
+int geom_dist2_cmp(geom_point a, geom_point b, geom_point c, geom_point d) {
+  double x1 = b.x - a.x, y1 = b.y - a.y, x2 = d.x - c.x, y2 = d.y - c.y;
+  double l1 = x1 * x1 + y1 * y1, l2 = x2 * x2 + y2 * y2, diff = l1 - l2;
+  double bound = 5.1 * GEOM_EPS * (l1 + l2);
+  if (!(geom_filter_tiny(x1) | geom_filter_tiny(y1) | geom_filter_tiny(x2)
+        | geom_filter_tiny(y2))) {
+    if (diff > bound) return 1;
+    if (-diff > bound) return -1;
+  }
+  return geom_dist2_cmp_exact(a, b, c, d);
+}
+
 /* ---- |orientation determinant| exactly ----------------------------------
 **
 ** geom_twice_area's slow path (flat triangles: 4% of the candidates some

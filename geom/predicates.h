@@ -153,6 +153,12 @@ static inline int geom_incircle_valid(geom_point a, geom_point b, geom_point c, 
   return geom_incircle_filtered(a, b, c, d, 0);
 }
 
+/* The sign of |ab|^2 - |cd|^2: +1 when segment ab is strictly longer than
+** cd, -1 strictly shorter, 0 equal; exact for finite inputs (a filter, then
+** floating-point expansions or GMP rationals; predicates.c has the bound).
+** The minimum-weight triangulation's flip decision (got/got_skel.c). */
+int geom_dist2_cmp(geom_point a, geom_point b, geom_point c, geom_point d);
+
 /* The power test of weighted points (the regular triangulation's
 ** incircle test): the sign of the lifted determinant of a, b, c, d with
 ** weights w[0..3], each point lifted to x^2 + y^2 - w.  For anticlockwise

@@ -88,6 +88,15 @@ typedef struct got_result {
   double cert_rho, cert_alpha;
   double seconds;       /* wall time: validation, diagonals, DP, backtracking */
   int threads;          /* threads used */
+  /* A point set's GOT (got_points_solve; 0 for a polygon's): the skeleton used
+  ** (got_skeleton), its candidate edges after the exclusion test, the edges kept, those
+  ** certain and its rounds; the bounded faces of the certain edges, those left to solve
+  ** (more than a triangle), those with points inside or not simple (got_face_solve), the
+  ** points of the largest; the search states of those faces; seconds per stage. */
+  int points, skeleton;
+  size_t candidates, edges, certain, rounds;
+  size_t faces, faces_left, faces_general, largest_face, face_states;
+  double seconds_candidates, seconds_lmt, seconds_faces, seconds_solve;
 } got_result;
 
 /* Bytes of working memory the DP needs for n vertices and this measure. */
@@ -151,6 +160,40 @@ typedef struct got_diff {
   size_t triangles_common;
 } got_diff;
 int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff *out);
+
+/* ---- point sets (got/got_points.c; docs/got.md, "Point sets") ----
+** GOT(b_f) of a set of points for a sum rule (the joint's keys add: l_1, l_2, l_0, l_-1
+** and the power means): the skeleton's CERTAIN edges are in every GOT, so the optimum is
+** the union of the optima of the faces they leave, each solved exactly (got_solve for an
+** empty simple face, an exact search for the others), combined in a fixed order, so the
+** result does not depend on the thread count.  res->tri: point indices i < k < j per
+** triangle (i, k, j as fields), 2n - h - 2 of them, sorted.  res->key2 is the runner-up
+** among the triangulations containing the skeleton; res->cert_unique is 1 when every
+** face's optimum is certified unique (then the GOT is unique), and cert_gap and
+** cert_bound are those of the face closest to a tie.  cert_rho and cert_alpha are NaN
+** (got_cert_err_of answers INFINITY). */
+typedef enum got_skeleton {
+  GOT_SKELETON_AUTO,    /* the LMT-skeleton */
+  GOT_SKELETON_ALL,     /* every edge, the hull certain (tiny n: got_skel_all) */
+  GOT_SKELETON_LMT      /* the rule's candidate edges and the LMT loop (got_skel_build) */
+} got_skeleton;
+
+/* 0, or -1 with a one-line message: p[0..n-1] is no input of got_points_solve (fewer
+** than 3 points, a coordinate outside the contract, two equal points naming both rows,
+** all collinear) or r no sum rule. */
+int got_points_check(const geom_point *p, size_t n, const rule *r, char *err, size_t errlen);
+/* Bytes got_points_solve needs for n points (the skeleton's candidates included, about
+** six per point, each face's tables for faces below a hundred points). */
+size_t got_points_memory_needed(size_t n);
+/* 0 if that fits in 3/4 of physical memory, else -1 and a one-line message. */
+int got_points_check_memory(size_t n, char *err, size_t errlen);
+/* The GOT of the point set; 0, or -1 with a one-line message (got_points_check's, the
+** skeleton's, a face's: too large for the exact search, out of memory). */
+int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                     got_skeleton skeleton, got_result *out, char *err, size_t errlen);
+/* The skeleton's name ("auto", "all", "lmt"), and back (-1 for none). */
+const char *got_skeleton_name(got_skeleton s);
+int got_skeleton_find(const char *name);
 
 /* ---- options and results through verbs (got/got_result.c) ----
 ** For callers that do not compile against this header (python/fliplab:

@@ -188,6 +188,15 @@ static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, doub
   return 0;
 }
 
+int got_cert_key_model(const rule *r, const geom_point *p, size_t n, double *rho,
+                       double *alpha) {
+  double wx, wy;
+  const joint *J = joint_get(rule_joint(r));
+  if (!rule_is_triangle(r) || J == NULL || !got_cert_scale(p, n, &wx, &wy)) return -1;
+  return got_key_model(rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, wx, wy, rho,
+                       alpha);
+}
+
 /* E(K) for a triangulation whose floating key is K. */
 static double got_cert_bound(double K, size_t m, joint_keyop op, double rho, double alpha) {
   double E;
@@ -215,23 +224,49 @@ double got_cert_err_of(const got_result *res, double key) {
                         res->cert_alpha);
 }
 
+/* The model of a key shape for triangles among p[0..n-1]: NULL, or why
+** there is none. */
+static const char *got_cert_check(const geom_point *p, size_t n, int measure, got_keyfn keyfn,
+                                  double jp, double *rho, double *alpha) {
+  double wx, wy;
+  if (!got_cert_scale(p, n, &wx, &wy))
+    return "coordinates outside the certified scale (non-zero |x|, |y| >= 2^-118, "
+           "ranges <= 2^169)";
+  if (measure >= MEASURE_BUILTIN_COUNT)
+    return "no forward error bound for a user-defined measure";
+  if (got_key_model(measure, keyfn, jp, wx, wy, rho, alpha) != 0)
+    return "no forward error bound for this measure and joint (docs/got.md)";
+  return NULL;
+}
+
+int got_cert_model(const geom_point *p, size_t n, const rule *r, double *rho, double *alpha,
+                   const char **why) {
+  *rho = *alpha = NAN;
+  if (!rule_is_triangle(r) || n == 0) {
+    *why = "no forward error bound for a quadrilateral rule";
+    return -1;
+  }
+  const joint *J = joint_get(rule_joint(r));
+  *why = got_cert_check(p, n, rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p,
+                        rho, alpha);
+  return *why == NULL ? 0 : -1;
+}
+
+double got_cert_err_sum(double rho, double alpha, size_t m, double key) {
+  if (isnan(rho) || isnan(alpha) || !isfinite(key)) return INFINITY;
+  return got_cert_bound(key, m, JOINT_KEY_ADD, rho, alpha);
+}
+
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op) {
-  double wx, wy, rho = 0, alpha = 0, jp = joint_get(res->joint)->p;
+  double rho = 0, alpha = 0, jp = joint_get(res->joint)->p;
   res->cert_rho = res->cert_alpha = NAN;
   res->cert_err = res->cert_err2 = INFINITY;
   res->cert_unique = 0;
-  res->cert_why = NULL;
-  if (!got_cert_scale(p, n, &wx, &wy))
-    res->cert_why = "coordinates outside the certified scale (non-zero |x|, |y| >= 2^-118, "
-                   "ranges <= 2^169)";
-  else if (res->measure >= MEASURE_BUILTIN_COUNT)
-    res->cert_why = "no forward error bound for a user-defined measure";
-  else if (got_key_model(res->measure, keyfn, jp, wx, wy, &rho, &alpha) != 0)
-    res->cert_why = "no forward error bound for this measure and joint (docs/got.md)";
+  res->cert_why = got_cert_check(p, n, res->measure, keyfn, jp, &rho, &alpha);
   double prho, palpha;
   if (res->cert_why == NULL &&
-      got_key_model(res->measure, got_keyfn_plain(keyfn), jp, wx, wy, &prho, &palpha) == 0) {
+      got_cert_check(p, n, res->measure, got_keyfn_plain(keyfn), jp, &prho, &palpha) == NULL) {
     res->cert_rho = prho;
     res->cert_alpha = palpha;
   }

@@ -39,7 +39,7 @@
 /* How a measure value becomes a key: the bulk form of the key shape the
 ** joint table gives (joint.h), for measures of sign s (0 and +1 take the
 ** form for values >= 0, as joint_key does). */
-static got_keyfn got_keyfn_of(joint_shape sh, int s) {
+got_keyfn got_keyfn_of(joint_shape sh, int s) {
   switch (sh) {
     case JOINT_SHAPE_SAME: return GOT_KEY_IDENT;
     case JOINT_SHAPE_SQUARE: return s >= 0 ? GOT_KEY_SQ : GOT_KEY_NEGSQ;
@@ -306,7 +306,7 @@ size_t got_memory_needed(size_t n, int measure) {
        + n * (sizeof(got_node) + 64);             /* backtracking, buffers */
 }
 
-static size_t got_phys_memory(void) {
+size_t got_phys_memory(void) {
   long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
   if (pages <= 0 || psize <= 0) return (size_t)8 << 30;   /* assume 8 GiB */
   return (size_t)pages * (size_t)psize;

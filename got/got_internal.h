@@ -42,12 +42,34 @@ typedef enum got_keyfn {
   GOT_KEY_FROM_SQ_IDENT, GOT_KEY_FROM_SQ_HALFLOG   /* kernel gives b^2 (got_measure_has_square) */
 } got_keyfn;
 
+/* The key shape of a joint's row for measures of sign s (got_dp.c). */
+FLIPLAB_INTERNAL got_keyfn got_keyfn_of(joint_shape sh, int s);
+/* The error model of keys rule_key(r, measure_eval(t)) of triangles t of
+** the points p[0..n-1] (got_cert.c): |k^ - k| <= rho |k^| + alpha for the
+** exact key k; 0, or -1 when there is none (docs/got.md, "Certified
+** verdicts": that measure and joint, a user measure, the scale guard). */
+FLIPLAB_INTERNAL int got_cert_key_model(const rule *r, const geom_point *p, size_t n,
+                                        double *rho, double *alpha);
 
 /* The certified verdict (got_cert.c): from the DP's keys, the rule's key
 ** shape and the polygon, fill res->cert_* (see got.h). */
 FLIPLAB_INTERNAL
 void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn,
                  joint_keyop op);
+
+/* Bytes of physical memory (got_check_memory allows 3/4 of it). */
+FLIPLAB_INTERNAL size_t got_phys_memory(void);
+
+/* The error model of one triangle key rule_key(r, measure_eval(...)) for
+** triangles with vertices among p[0..n-1] (got_cert.c): |k^ - k| <= rho
+** |k^| + alpha.  0, or -1 with *why saying why no bound is known. */
+FLIPLAB_INTERNAL
+int got_cert_model(const geom_point *p, size_t n, const rule *r, double *rho, double *alpha,
+                   const char **why);
+/* E(K) for a sum (joint key +) of m such keys whose floating total, in any
+** order of addition, is key: |exact - key| <= E (INFINITY when key is not
+** finite). */
+FLIPLAB_INTERNAL double got_cert_err_sum(double rho, double alpha, size_t m, double key);
 
 /* got_solve, with force_mask = 1 running the simple-polygon (masked)
 ** programme even on convex input (tests and benchmarks compare the two). */

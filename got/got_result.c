@@ -22,7 +22,12 @@ static const geom_field got_result_fields[] = {
   G(ntri, SIZE), G(simple, INT), G(cert_err, DOUBLE), G(cert_err2, DOUBLE),
   G(cert_gap, DOUBLE), G(cert_bound, DOUBLE), G(cert_unique, INT),
   G(cert_why, OTHER),  /* got_result_get_text */
-  G(cert_rho, DOUBLE), G(cert_alpha, DOUBLE), G(seconds, DOUBLE), G(threads, INT)};
+  G(cert_rho, DOUBLE), G(cert_alpha, DOUBLE), G(seconds, DOUBLE), G(threads, INT),
+  G(points, INT), G(skeleton, INT), G(candidates, SIZE), G(edges, SIZE), G(certain, SIZE),
+  G(rounds, SIZE),
+  G(faces, SIZE), G(faces_left, SIZE), G(faces_general, SIZE), G(largest_face, SIZE),
+  G(face_states, SIZE), G(seconds_candidates, DOUBLE), G(seconds_lmt, DOUBLE),
+  G(seconds_faces, DOUBLE), G(seconds_solve, DOUBLE)};
 #undef G
 #define GOT_NFIELDS (sizeof got_result_fields / sizeof *got_result_fields)
 

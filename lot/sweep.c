@@ -57,6 +57,7 @@
 */
 #include <stdlib.h>
 #include <string.h>
+#include "geom_mem_internal.h"
 #include "splitmix.h"
 #include "sweep_internal.h"
 
@@ -112,18 +113,7 @@ typedef struct lot_sweep {
   double y0, yscale;        /* band of y: (y - y0) * yscale */
 } lot_sweep;
 
-/* ---- growth ------------------------------------------------------------ */
-
-static int sw_grow(void **a, size_t *cap, size_t need, size_t size) {
-  if (need <= *cap) return 0;
-  size_t c = *cap ? *cap : 256;
-  while (c < need) c *= 2;
-  void *q = realloc(*a, c * size);
-  if (q == NULL) return -1;
-  *a = q;
-  *cap = c;
-  return 0;
-}
+/* Arrays grow by geom_grow (geom/geom_mem_internal.h). */
 
 /* A new node for site v (SW_NONE when out of memory). */
 static uint32_t sw_node_new(lot_sweep *S, uint32_t v) {
@@ -132,9 +122,10 @@ static uint32_t sw_node_new(lot_sweep *S, uint32_t v) {
     S->freed = S->nd[x].nx[0];
   } else {
     size_t cap = S->ndcap;
-    if (sw_grow((void **)&S->nd, &cap, (size_t)S->nnd + 1, sizeof *S->nd) != 0
-        || sw_grow((void **)&S->hpos, &S->hposcap, (size_t)S->nnd + 1, sizeof *S->hpos) != 0
-        || (S->framed && sw_grow((void **)&S->ik, &S->ikcap, (size_t)S->nnd + 1, sizeof *S->ik)))
+    if (geom_grow((void **)&S->nd, &cap, (size_t)S->nnd + 1, sizeof *S->nd) != 0
+        || geom_grow((void **)&S->hpos, &S->hposcap, (size_t)S->nnd + 1, sizeof *S->hpos) != 0
+        || (S->framed &&
+            geom_grow((void **)&S->ik, &S->ikcap, (size_t)S->nnd + 1, sizeof *S->ik)))
       return SW_NONE;
     S->ndcap = (uint32_t)cap;
     x = S->nnd++;
@@ -159,7 +150,8 @@ static uint32_t sw_node_new(lot_sweep *S, uint32_t v) {
 
 /* A new edge record, both slots empty (SW_NONE when out of memory). */
 static uint32_t sw_edge_new(lot_sweep *S) {
-  if (sw_grow((void **)&S->ec, &S->ecap, 2 * (S->ne + 1), sizeof *S->ec) != 0) return SW_NONE;
+  if (geom_grow((void **)&S->ec, &S->ecap, 2 * (S->ne + 1), sizeof *S->ec) != 0)
+    return SW_NONE;
   S->ec[2 * S->ne] = S->ec[2 * S->ne + 1] = SW_NONE;
   return (uint32_t)S->ne++;
 }
@@ -345,7 +337,7 @@ static void sw_sift_down(lot_sweep *S, size_t i, const sw_event *e) {
 }
 
 static int sw_push(lot_sweep *S, const sw_event *e) {
-  if (sw_grow((void **)&S->hp, &S->hcap, S->nh + 1, sizeof *S->hp) != 0) return -1;
+  if (geom_grow((void **)&S->hp, &S->hcap, S->nh + 1, sizeof *S->hp) != 0) return -1;
   sw_sift_up(S, S->nh++, e);
   return 0;
 }

@@ -162,6 +162,34 @@ int study_lot_got(const geom_pslg *in, const uint32_t *hull, size_t nhull, const
                   size_t errlen);
 void study_gotcheck_free(study_gotcheck *c);
 
+/* ---- how far local is from global: a point set's LOT against its GOT ----
+** (studies/gotpoints.c; docs/got.md, "Point sets")  The LOT is the incremental one
+** (lot_build's defaults: spatial order, the rule's tie tolerance); the GOT is
+** got_points_solve's.  The gap is rule_gap(LOT, GOT), the project's one relative gap
+** (|T1 - T2| / max(|T1|, |T2|)); the LOT is a GOT when the gap is within the rule's tie
+** tolerance. */
+
+/* The total key of the LOT of p[0..n-1] under r: 0, or -1 with err. */
+int study_lot_key(const geom_point *p, size_t n, const rule *r, double *key, char *err,
+                  size_t errlen);
+
+typedef struct study_gap_row {
+  uint64_t sets;          /* point sets: set i is sampler_points(kind, seed + i, n) */
+  double mean, lo, hi;    /* the mean gap and its 95% normal interval (1.96 s / sqrt(sets)) */
+  double max;             /* the largest gap */
+  uint64_t equal;         /* sets whose LOT is a GOT */
+  double equal_lo, equal_hi;   /* the Wilson 95% interval of equal / sets, in percent */
+  uint64_t certified;     /* sets whose GOT is certified unique */
+  double seconds;
+} study_gap_row;
+
+/* The row of rule r over sets point sets of n points of sampler kind; sets in parallel
+** (one thread each, threads in all), summed in set order: the same bits for any thread
+** count.  0, or -1 with the first failing set's one-line err. */
+int study_lot_got_gaps(const rule *r, int kind, size_t n, uint64_t sets, uint64_t seed,
+                       int threads, got_skeleton sk, study_gap_row *out, char *err,
+                       size_t errlen);
+
 /* ---- results through verbs --------------------------------------------
 ** For callers that do not compile against this header (the Python
 ** package), as lot_stats and got_result are read (lot.h, got.h).

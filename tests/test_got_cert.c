@@ -10,7 +10,9 @@
 ** a 400-bit evaluation is within 2^-390 relative, far below any bound
 ** tested).  For every triangulation T of the polygon: the returned one's
 ** exact key lies in [key - cert_err, key + cert_err], and every other's is
-** at least key2 - cert_err2.
+** at least key2 - cert_err2.  The same for the faces of a point set
+** (got_face_solve, got/got_face.c): convex polygons with points inside,
+** every triangulation enumerated (siteflip), exact totals in GMP rationals.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -27,7 +29,9 @@
 #include "joint.h"
 #include "rule.h"
 #include "got.h"
+#include "got_face.h"
 #include "sampler.h"
+#include "siteflip.h"
 
 #define TC_PREC 400
 #define TC_MAXN 9
@@ -402,11 +406,108 @@ static void test_enclosures(void **state) {
   assert_true(checked >= 6 * 20);
 }
 
+/* ---- faces of point sets (got_face_solve) ---- */
+
+/* The exact total of node u of g (or of the triangles tri[0..3m) when g is
+** NULL) in mpq, for a rational measure m. */
+static void tc_face_total(const geom_point *p, const siteflip_graph *g, int u,
+                          const uint32_t *tri, size_t nt, int m, mpq_t sum) {
+  mpq_t v;
+  mpq_init(v);
+  mpq_set_ui(sum, 0, 1);
+  size_t count = g ? (size_t)g->per : nt;
+  for (size_t t = 0; t < count; t++) {
+    const unsigned char *tv = g ? g->tri_v[g->node_tri[(size_t)u * (size_t)g->per + t]] : NULL;
+    uint32_t a = g ? tv[0] : tri[3 * t], b = g ? tv[1] : tri[3 * t + 1];
+    uint32_t c = g ? tv[2] : tri[3 * t + 2];
+    assert_int_equal(tc_value_q(m, p[a], p[b], p[c], v), 0);
+    mpq_add(sum, sum, v);
+  }
+  mpq_clear(v);
+}
+
+/* 1 when node u holds every edge of the triangles tri[0..3nt). */
+static int tc_face_is(const siteflip_graph *g, int u, const uint32_t *tri, size_t nt) {
+  for (size_t t = 0; t < nt; t++)
+    for (int e = 0; e < 3; e++)
+      if (!siteflip_has_edge(g, u, (int)tri[3 * t + e], (int)tri[3 * t + (e + 1) % 3]))
+        return 0;
+  return 1;
+}
+
+/* x + s y in mpq, exactly, against v: the sign of v - (x + s y). */
+static int tc_cmp_bound(const mpq_t v, double x, double y, int s) {
+  mpq_t b, t;
+  mpq_inits(b, t, NULL);
+  mpq_set_d(b, x);
+  mpq_set_d(t, y);
+  if (s > 0) mpq_add(b, b, t);
+  else mpq_sub(b, b, t);
+  int c = mpq_cmp(v, b);
+  mpq_clears(b, t, NULL);
+  return c;
+}
+
+/* The face's enclosures under rule rname against every triangulation. */
+static void tc_face_check(const geom_point *p, size_t n, size_t k, const siteflip_graph *g,
+                          const char *rname) {
+  uint32_t walk[TC_MAXN], inner[TC_MAXN], edge[TC_MAXN * TC_MAXN];
+  size_t ne = 0, len = k;
+  for (uint32_t i = 0; i < n; i++) {
+    if (i < k) walk[i] = i;
+    else inner[i - k] = i;
+    for (uint32_t j = i + 1; j < n; j++) edge[2 * ne] = i, edge[2 * ne++ + 1] = j;
+  }
+  got_face_in in = {p, 1, &len, walk, inner, n - k, edge, ne};
+  rule r;
+  char err[256];
+  got_face_out o;
+  assert_int_equal(rule_parse(rname, &r, err, sizeof err), 0);
+  if (got_face_solve(&in, &r, &o, err, sizeof err) != 0) fail_msg("%s", err);
+  assert_true(isfinite(o.err) && isfinite(o.err2));
+  mpq_t T;
+  mpq_init(T);
+  tc_face_total(p, NULL, 0, o.tri, o.ntri, rule_measure(&r), T);
+  assert_true(tc_cmp_bound(T, o.key, o.err, -1) >= 0 && tc_cmp_bound(T, o.key, o.err, 1) <= 0);
+  for (int u = 0; u < g->nnodes; u++) {
+    if (tc_face_is(g, u, o.tri, o.ntri)) continue;
+    tc_face_total(p, g, u, NULL, 0, rule_measure(&r), T);
+    assert_true(tc_cmp_bound(T, o.key2, o.err2, -1) >= 0);
+  }
+  mpq_clear(T);
+  got_face_out_free(&o);
+}
+
+static void test_face_enclosures(void **state) {
+  (void)state;
+  sampler_rng s;
+  sampler_seed(&s, 38, 3);
+  geom_point p[TC_MAXN];
+  int faces = 0;
+  while (faces < 40) {
+    size_t k = 4 + (size_t)faces % 3, n = k + 1 + (size_t)faces % 3;
+    assert_int_equal(sampler_circle(&s, k, p), 0);
+    for (size_t i = k; i < n; i++)
+      p[i] = (geom_point){0.6 * sampler_uniform(&s) - 0.3, 0.6 * sampler_uniform(&s) - 0.3};
+    int inside = 1;
+    for (size_t i = k; i < n; i++)
+      for (size_t e = 0; e < k; e++) inside &= geom_orient(p[e], p[(e + 1) % k], p[i]) > 0;
+    char err[256];
+    siteflip_graph *g = inside ? siteflip_build(p, (int)n, err, sizeof err) : NULL;
+    if (g == NULL) continue;
+    tc_face_check(p, n, k, g, "Pinf_1");
+    tc_face_check(p, n, k, g, "-A_1");
+    siteflip_free(g);
+    faces++;
+  }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_exact_ties),
     cmocka_unit_test(test_separated_unique),
     cmocka_unit_test(test_enclosures),
+    cmocka_unit_test(test_face_enclosures),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

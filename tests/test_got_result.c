@@ -68,6 +68,11 @@ static size_t tgr_fields(const got_result *r) {
   TGR_D(r, cert_err); TGR_D(r, cert_err2); TGR_D(r, cert_gap); TGR_D(r, cert_bound);
   TGR_I(r, cert_unique); TGR_D(r, cert_rho); TGR_D(r, cert_alpha); TGR_D(r, seconds);
   TGR_I(r, threads);
+  TGR_I(r, points); TGR_I(r, skeleton); TGR_I(r, candidates); TGR_I(r, edges);
+  TGR_I(r, certain); TGR_I(r, rounds); TGR_I(r, faces); TGR_I(r, faces_left);
+  TGR_I(r, faces_general); TGR_I(r, largest_face); TGR_I(r, face_states);
+  TGR_D(r, seconds_candidates); TGR_D(r, seconds_lmt); TGR_D(r, seconds_faces);
+  TGR_D(r, seconds_solve);
   assert_true(got_result_get_text(r, "cert_why") == r->cert_why);
   assert_null(got_result_get_text(r, "total"));
   return seen + 2;                               /* and tri, cert_why: read by their verbs */
@@ -87,6 +92,12 @@ static void test_result_by_name(void **state) {
   size_t k = 0;
   while (got_result_field(k) != NULL) k++;
   assert_int_equal(tgr_fields(res), k);          /* every name, and no other */
+  got_result *pts = got_result_new();            /* a point set's: its statistics too */
+  geom_point seven[7] = {{0, 0}, {2, 0}, {3, 1}, {2, 3}, {0, 2}, {-1, 1}, {1, 1.2}};
+  assert_int_equal(got_points_solve(seven, 7, &r, o, GOT_SKELETON_ALL, pts, err, sizeof err), 0);
+  assert_true(pts->points == 1 && pts->skeleton == GOT_SKELETON_ALL && pts->ntri == 6);
+  assert_int_equal(tgr_fields(pts), k);
+  got_result_delete(pts);
   int32_t ijk[12];
   double bad[4];
   assert_int_equal(got_result_get_triangles(res, ijk, bad), 4);

@@ -21,6 +21,11 @@ _GETTERS = ((lib.got_result_get_i64, ctypes.c_int64),
 _FLAGS = ("has_runner_up", "unique", "simple", "cert_unique")
 _NUMBERS = ("n", "key", "total", "key2", "total2", "gap", "rel_gap", "tie_eps", "cert_err",
             "cert_err2", "cert_gap", "cert_bound", "seconds", "threads", "ntri") + _FLAGS
+# a point set's statistics (got_points_solve; 0 for a polygon)
+_POINT_STATS = ("candidates", "edges", "certain", "rounds", "faces", "faces_left",
+                "faces_general", "largest_face", "face_states", "seconds_candidates",
+                "seconds_lmt", "seconds_faces", "seconds_solve")
+SKELETONS = ("auto", "all", "lmt")   # got_skeleton's names, in its order
 
 
 class Got:
@@ -64,6 +69,19 @@ class Got:
     reversed : bool
         The input was clockwise.
     n, tie_eps, seconds, threads
+    points : bool
+        A point set's GOT (got_points): then triangles are point indices
+        i < k < j, the runner-up is over the triangulations holding the
+        skeleton, and the statistics below are set (0 for a polygon).
+    skeleton : str or None
+        "lmt" or "all".
+    candidates, edges, certain, rounds : int
+        The skeleton's candidate edges, edges kept, certain edges, rounds.
+    faces, faces_left, faces_general, largest_face, face_states : int
+        Bounded faces of the certain edges, those with more than a triangle,
+        those with points inside or not simple, the largest's points, the
+        exact search's states.
+    seconds_candidates, seconds_lmt, seconds_faces, seconds_solve : float
     """
 
     def __init__(self, res: Any, mapping: npt.NDArray[np.int64], reversed_: bool,
@@ -92,10 +110,17 @@ class Got:
         self.simple = bool(v["simple"])
         self.reversed = bool(reversed_)
         self.seconds, self.threads = v["seconds"], int(v["threads"])
+        self.points = bool(_lib.get_value(res, "points", _GETTERS))
+        sk = int(_lib.get_value(res, "skeleton", _GETTERS))
+        self.skeleton = SKELETONS[sk] if self.points else None
+        for f in _POINT_STATS:
+            x = _lib.get_value(res, f, _GETTERS)
+            setattr(self, f, x if f.startswith("seconds") else int(x))
 
     def __repr__(self) -> str:
-        return ("<fliplab.Got GOT(%s) of a %d-gon: total %s, %s>"
-                % (self.rule.name, self.n, self.total_text,
+        return ("<fliplab.Got GOT(%s) of %s: total %s, %s>"
+                % (self.rule.name, "%d points" % self.n if self.points else "a %d-gon" % self.n,
+                   self.total_text,
                    "certified unique" if self.certified_unique else
                    "unique" if self.unique else "not unique"))
 
@@ -156,19 +181,82 @@ def got(polygon: npt.ArrayLike, rule: str | Rule, threads: int = 0,
     e = _lib.errbuf()
     if lib.got_check_memory(n, r._c.measure, e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
+    return _solve(lambda opt, res: lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), opt,
+                                                 res, e, _lib.ERRLEN),
+                  nthreads, eps, e, lambda res: Got(res, (n - np.arange(n)) % n, rev, r))
+
+
+def _solve(call: Any, nthreads: int, eps: float, e: Any, make: Any) -> Got:
+    """call(opt, res) (got_solve or got_points_solve) with the options set, e its error
+    buffer; make(res) the result.  Errors raised as the library words them."""
     opt, res = lib.got_options_new(), lib.got_result_new()
     try:
         if not opt or not res:
             raise MemoryError("got: out of memory")
         lib.got_options_set_threads(opt, nthreads)
         lib.got_options_set_tie_eps(opt, eps)
-        if lib.got_solve(points_ptr(use), n, ctypes.byref(r._c), opt, res, e,
-                         _lib.ERRLEN) != 0:
+        if call(opt, res) != 0:
             _raise_user_errors()        # a Python measure's own error comes first
             msg = _lib.text(e)
             raise (MemoryError if "out of memory" in msg else ValueError)(msg)
         _raise_user_errors()
-        return Got(res, (n - np.arange(n)) % n, rev, r)
+        return make(res)
     finally:
         lib.got_options_free(opt)
         lib.got_result_delete(res)
+
+
+def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
+               threads: int = 0, tie_eps: float | None = None) -> Got:
+    """GOT(rule) of a point set: the triangulation of the points minimising the
+    rule's total badness, exactly, for a sum rule (joint l_1, l_2, l_0, l_-1
+    or a power mean), as the program's `got --points` (docs/got.md, "Point
+    sets"): the skeleton's certain edges, then each face they leave solved
+    exactly.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+        Distinct points, not all collinear, within the coordinate contract.
+    rule : str or Rule
+        A sum rule: a Rule or a name MEASURE_JOINT (e.g. "P_1", the
+        minimum-weight triangulation; not "DT", ES:SHAPE or a joint min or
+        max).
+    skeleton : str
+        One of SKELETONS: "auto" or "lmt" (the LMT-skeleton), "all" (every
+        edge: tiny sets).
+    threads : int
+        0 (all cores) or 1 .. 1024; the result does not depend on it.
+    tie_eps : float, optional
+        The relative tie tolerance of the heuristic verdict (default the
+        rule's); the certified verdict does not use it.
+
+    Returns
+    -------
+    Got
+        With points True: triangles are point indices (n rows of `points`),
+        and the skeleton's and faces' statistics.
+
+    Raises
+    ------
+    ValueError
+        A rule that is no sum rule, duplicate points (both rows named),
+        collinear points, a coordinate outside the contract, a bad keyword.
+    MemoryError
+        The points do not fit in memory.
+    """
+    r = as_rule(rule)
+    sk = lib.got_skeleton_find(skeleton.encode()) if isinstance(skeleton, str) else -1
+    if sk < 0:
+        raise ValueError("skeleton: expected one of %s, got %r" % (", ".join(SKELETONS),
+                                                                   skeleton))
+    eps = tie_eps_arg(tie_eps, r.tie_eps)
+    nthreads = threads_arg(threads)
+    p = as_coords(points, "points", (-1, 2))
+    e = _lib.errbuf()
+    if lib.got_points_check_memory(len(p), e, _lib.ERRLEN) != 0:
+        raise MemoryError(_lib.text(e))
+    return _solve(lambda opt, res: lib.got_points_solve(points_ptr(p), len(p),
+                                                        ctypes.byref(r._c), opt, sk, res, e,
+                                                        _lib.ERRLEN),
+                  nthreads, eps, e, lambda res: Got(res, np.arange(len(p)), False, r))

@@ -137,7 +137,12 @@ static void layout_got(void) {
   F(got_result, simple); F(got_result, cert_err); F(got_result, cert_err2);
   F(got_result, cert_gap); F(got_result, cert_bound); F(got_result, cert_unique);
   F(got_result, cert_why); F(got_result, cert_rho); F(got_result, cert_alpha);
-  F(got_result, seconds); F(got_result, threads);
+  F(got_result, seconds); F(got_result, threads); F(got_result, points);
+  F(got_result, skeleton); F(got_result, candidates); F(got_result, edges);
+  F(got_result, certain); F(got_result, rounds); F(got_result, faces);
+  F(got_result, faces_left); F(got_result, faces_general); F(got_result, largest_face);
+  F(got_result, face_states); F(got_result, seconds_candidates); F(got_result, seconds_lmt);
+  F(got_result, seconds_faces); F(got_result, seconds_solve);
 }
 
 int main(void) {

@@ -188,6 +188,7 @@ CHOICES = {
     ("fliplab.convex_dt", "algorithm"): fliplab.CPDT_ALGORITHMS,
     ("fliplab.convex_dt_experiment", "sampler"): fliplab.CPDT_SAMPLERS,
     ("fliplab.convex_dt_experiment", "region"): fliplab.REGIONS,
+    ("fliplab.got_points", "skeleton"): fliplab.SKELETONS,
     ("fliplab.Rule", "name"): _rules.RULE_FORMS,
     ("*", "rule"): _rules.RULE_FORMS,
     ("*", "rules"): _rules.RULE_FORMS,
@@ -235,6 +236,7 @@ def test_choices_are_the_librarys():
     assert tuple(names.split(", ")) == fliplab.samplers.POINT_SETS
     for k in fliplab.samplers.SITE_SETS:
         assert lib.sampler_sites_find(k.encode()) >= 0
+    assert [lib.got_skeleton_find(k.encode()) for k in fliplab.SKELETONS] == [0, 1, 2]
     for k in fliplab.samplers.PENTAGON_SAMPLERS:
         assert lib.sampler_pentagons_find(k.encode())
     for k in fliplab.samplers.POLYGONS:

@@ -1,0 +1,95 @@
+/*
+** bench_got_points.c: the GOT of a point set end to end (got_points_solve,
+** got/got_points.c): the exact minimum-weight triangulation (P_1) of uniform
+** random points in the unit square, then another sum rule at the largest n its
+** skeleton takes; wall and CPU seconds (median of REPS runs where given), seconds
+** per stage, candidate and certain edges (and their share of the 3n - h - 3 edges
+** of a triangulation), faces left and the largest, the certified verdict.  The load
+** average is printed: on a shared machine wall times grow with it.
+** Usage: bench_got_points [--reps R] [--threads T] [--rule RULE N] [N ...]
+**        (default: 10000 100000 1000000 for P_1, medians of 3 below 10^6, 1 at 10^6;
+**        then a_2 at 200 points).
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "benchutil.h"
+#include "got.h"
+
+#define BENCH_MAXN 16
+
+static rule bench_rule(const char *name) {
+  rule r;
+  char err[256];
+  if (rule_parse(name, &r, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_got_points: %s\n", err);
+    exit(2);
+  }
+  return r;
+}
+
+/* One size: REPS runs, the median's figures printed as one row. */
+static void bench_row(const rule *r, size_t n, int reps, int threads) {
+  geom_point *p = malloc(n * sizeof *p);
+  got_result res[5];
+  bench_time t[5];
+  char err[512];
+  if (p == NULL) exit(1);
+  sampler_points(SAMPLER_UNIFORM, 1, n, p);
+  got_options o = {threads, RULE_DEFAULT_TIE_EPS};
+  for (int k = 0; k < reps; k++) {
+    double w = bench_wall(), c = bench_cpu();
+    if (got_points_solve(p, n, r, &o, GOT_SKELETON_LMT, &res[k], err, sizeof err) != 0) {
+      printf("%-8s %9zu  failed: %s\n", rule_name(r), n, err);
+      free(p);
+      return;
+    }
+    t[k] = (bench_time){bench_wall() - w, bench_cpu() - c};
+    res[k].seconds = t[k].wall;
+  }
+  int m = 0;                 /* the run of median wall time */
+  for (int k = 0; k < reps; k++) {
+    int below = 0;
+    for (int j = 0; j < reps; j++) below += t[j].wall < t[k].wall;
+    if (below == reps / 2) m = k;
+  }
+  const got_result *g = &res[m];
+  size_t tedges = n - 1 + g->ntri;
+  printf("%-8s %9zu %4d %9.2f %9.2f %8.2f %8.2f %7.3f %7.3f %10zu %6.2f%% %8zu %7zu %s\n",
+         rule_name(r), n, reps, t[m].wall, t[m].cpu, g->seconds_candidates, g->seconds_lmt,
+         g->seconds_faces, g->seconds_solve, g->candidates,
+         100.0 * (double)g->certain / (double)tedges, g->faces_left, g->largest_face,
+         g->cert_unique ? "unique" : "tie not excluded");
+  fflush(stdout);             /* a row at a time: the large sizes take minutes */
+  for (int k = 0; k < reps; k++) got_result_free(&res[k]);
+  free(p);
+}
+
+int main(int argc, char **argv) {
+  size_t ns[BENCH_MAXN] = {10000, 100000, 1000000};
+  int nn = 3, reps = 0, threads = 0, given = 0;
+  const char *other = "a_2";
+  size_t other_n = 200;
+  for (int i = 1; i < argc; i++) {
+    if (strcmp(argv[i], "--reps") == 0 && i + 1 < argc) reps = atoi(argv[++i]);
+    else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = atoi(argv[++i]);
+    else if (strcmp(argv[i], "--rule") == 0 && i + 2 < argc)
+      other = argv[++i], other_n = (size_t)strtoull(argv[++i], NULL, 10);
+    else if (nn < BENCH_MAXN || !given) {
+      if (!given) nn = 0, given = 1;       /* sizes given: they replace the defaults */
+      ns[nn++] = strtoull(argv[i], NULL, 10);
+    }
+  }
+  if (reps < 0 || reps > 5) reps = 5;
+  printf("# bench_got_points: uniform points (seed 1), skeleton lmt, threads %d (0: all); "
+         "load %.2f\n", threads, bench_load());
+  printf("%-8s %9s %4s %9s %9s %8s %8s %7s %7s %10s %7s %8s %7s %s\n", "rule", "n", "reps",
+         "wall s", "cpu s", "cand s", "lmt s", "faces s", "solve s", "candidates", "certain",
+         "faces>3", "largest", "certified");
+  rule p1 = bench_rule("P_1"), ro = bench_rule(other);
+  for (int i = 0; i < nn; i++)
+    bench_row(&p1, ns[i], reps ? reps : ns[i] < 1000000 ? 3 : 1, threads);
+  bench_row(&ro, other_n, reps ? reps : 3, threads);
+  printf("# load at the end %.2f\n", bench_load());
+  return 0;
+}

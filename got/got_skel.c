@@ -1,0 +1,829 @@
+/*
+** got_skel.c: the skeleton of a point set's GOT for a sum rule (got/got_skel.h; docs/got.md,
+** "Point sets: the skeleton"): candidate edges, the LMT-skeleton loop, the certain edges.
+**
+** 1. Candidates.  P_1 (the minimum-weight triangulation): the diamond test on a uniform grid
+**    (skel_diamond_point); every other sum rule: every segment through no third point, for
+**    n <= GOT_SKEL_ALL_MAX (no exclusion is proven for them).
+** 2. Candidate triangles: every empty triangle whose three edges are candidates, found from
+**    pairs of neighbours in the candidate graph, emptiness tested exactly on the grid.
+** 3. LMT loop, in rounds: an edge that is not a hull edge stays only while some pair of live
+**    candidate triangles, one on each side, makes it locally optimal (skel_witness); when it
+**    goes, its triangles go, and the other edges of those triangles are examined again in
+**    the next round.  Each round decides every queued edge against the state at its start,
+**    so the result is the same whatever the thread count; the final set is the largest
+**    fixed point whatever the order (removal is monotone).
+** 4. Certain edges: live edges that cross no other live edge (a segment grid), and the hull.
+**
+** Soundness (docs/got.md has the argument): every GOT of a sum rule is weakly locally
+** optimal, so its own triangles witness its edges in every round; an edge is removed only
+** when the flip is certainly a strict improvement: exact squared lengths for P_1
+** (geom_dist2_cmp), else the certified key error model of got_cert.c and the rule's own tie
+** tolerance together.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <omp.h>
+#include "measure.h"
+#include "got_internal.h"
+#include "got_skel.h"
+
+/* Largest n for the rules without a candidate exclusion (all pairs are candidates). */
+#define GOT_SKEL_ALL_MAX 200
+
+#define SKEL_U 0x1p-53
+
+/* ---- the point grid ------------------------------------------------------ */
+
+/* Points bucketed into square cells of side h (about two points a cell), cell
+** (ix, iy) holding pt[off[iy * nx + ix] .. off[iy * nx + ix + 1]) in ascending order.
+** Positions are taken relative to the lower left corner (x0, y0), so rounding errors
+** scale with the spread of the points, not their distance from the origin; a query
+** pads its cell range by one cell, which covers them. */
+typedef struct skel_grid {
+  double x0, y0, h, inv;
+  int nx, ny;
+  uint32_t *off, *pt;
+} skel_grid;
+
+static int skel_cell(double v, double inv, int cap) {
+  double c = v * inv;
+  if (!(c > 0)) return 0;
+  return c >= cap - 1 ? cap - 1 : (int)c;
+}
+
+static int skel_cellx(const skel_grid *g, double x) { return skel_cell(x - g->x0, g->inv, g->nx); }
+static int skel_celly(const skel_grid *g, double y) { return skel_cell(y - g->y0, g->inv, g->ny); }
+
+static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
+  double x1 = p[0].x, y1 = p[0].y;
+  g->x0 = p[0].x, g->y0 = p[0].y;
+  for (size_t i = 1; i < n; i++) {
+    g->x0 = fmin(g->x0, p[i].x), x1 = fmax(x1, p[i].x);
+    g->y0 = fmin(g->y0, p[i].y), y1 = fmax(y1, p[i].y);
+  }
+  double w = x1 - g->x0, ht = y1 - g->y0, cap = 2.0 * (double)n + 4;
+  g->h = sqrt(2.0 * fmax(w * ht, fmax(w, ht) * fmax(w, ht) / cap) / (double)n);
+  g->inv = 1 / g->h;
+  g->nx = (int)fmin(cap, w * g->inv + 1);
+  g->ny = (int)fmin(cap, ht * g->inv + 1);
+  size_t cells = (size_t)g->nx * (size_t)g->ny;
+  g->off = calloc(cells + 1, sizeof *g->off);
+  g->pt = malloc(n * sizeof *g->pt);
+  if (!g->off || !g->pt) return -1;
+  for (size_t i = 0; i < n; i++)
+    g->off[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x) + 1]++;
+  for (size_t c = 0; c < cells; c++) g->off[c + 1] += g->off[c];
+  uint32_t *fill = malloc(cells * sizeof *fill);
+  if (!fill) return -1;
+  memcpy(fill, g->off, cells * sizeof *fill);
+  for (size_t i = 0; i < n; i++)
+    g->pt[fill[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x)]++] =
+        (uint32_t)i;
+  free(fill);
+  return 0;
+}
+
+static void skel_grid_free(skel_grid *g) {
+  free(g->off);
+  free(g->pt);
+}
+
+/* The padded cell range of the box [xa, xb] x [ya, yb]. */
+typedef struct skel_box { int ix0, ix1, iy0, iy1; } skel_box;
+
+static skel_box skel_grid_box(const skel_grid *g, double xa, double xb, double ya, double yb) {
+  skel_box r = {skel_cellx(g, xa) - 1, skel_cellx(g, xb) + 1, skel_celly(g, ya) - 1,
+                skel_celly(g, yb) + 1};
+  r.ix0 = r.ix0 < 0 ? 0 : r.ix0, r.iy0 = r.iy0 < 0 ? 0 : r.iy0;
+  r.ix1 = r.ix1 >= g->nx ? g->nx - 1 : r.ix1, r.iy1 = r.iy1 >= g->ny ? g->ny - 1 : r.iy1;
+  return r;
+}
+
+/* ---- predicates ---------------------------------------------------------- */
+
+/* 1 when q lies on the open segment ab (exact). */
+static int skel_on_segment(geom_point a, geom_point b, geom_point q) {
+  return geom_orient(a, b, q) == 0 && geom_ahead(a, b, q) && geom_ahead(b, a, q);
+}
+
+/* 1 when q certainly lies strictly inside the isosceles triangle on base ab, on the side
+** `side` (+1 left of a->b, -1 right), with base angles pi/8 (the diamond test's region).
+** Inside means: q strictly on that side, and its angles at a and at b both below pi/8,
+** i.e. 0 < side * cross < tan(pi/8) dot at both ends (cross = twice the area, the same at
+** both ends; dot = (b - a).(q - a) at a, (a - b).(q - b) at b).  Each of these is a
+** determinant of degree 2 in rounded differences, within (3 + 16u) u (|l| + |r|) of its
+** exact value (Shewchuk's bound, as geom_orient's filter); the test uses the worst end of
+** each interval, and T below tan(pi/8) = 0.41421356237..., so a 1 is certain.  A 0 may
+** be wrong: that only keeps an edge, which is safe. */
+#define SKEL_TAN8 0.414213562
+static int skel_in_cone(geom_point a, geom_point b, geom_point q, int side) {
+  double ux = b.x - a.x, uy = b.y - a.y, vx = q.x - a.x, vy = q.y - a.y;
+  double wx = q.x - b.x, wy = q.y - b.y, k = (3 + 16 * SKEL_U) * SKEL_U;
+  double l = ux * vy, r = uy * vx, cr = side * (l - r), ecr = k * (fabs(l) + fabs(r));
+  double da = ux * vx + uy * vy, eda = k * (fabs(ux * vx) + fabs(uy * vy));
+  double db = -(ux * wx + uy * wy), edb = k * (fabs(ux * wx) + fabs(uy * wy));
+  double hi = (cr + ecr) * (1 + 0x1p-40);
+  return cr - ecr > 0 && hi < SKEL_TAN8 * (da - eda) && hi < SKEL_TAN8 * (db - edb);
+}
+
+/* 1 when q lies strictly inside triangle abc of orientation o (+1 or -1), exactly. */
+static int skel_in_triangle(geom_point a, geom_point b, geom_point c, geom_point q, int o) {
+  return geom_orient(a, b, q) == o && geom_orient(b, c, q) == o && geom_orient(c, a, q) == o;
+}
+
+/* ---- candidate edges ----------------------------------------------------- */
+
+/* A growing array of edges (a, b), a < b, 2 entries each. */
+typedef struct skel_vec { uint32_t *v; size_t n, cap; } skel_vec;
+
+static int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
+  if (s->n == s->cap) {
+    size_t cap = s->cap ? 2 * s->cap : 64;
+    uint32_t *v = realloc(s->v, 2 * cap * sizeof *v);
+    if (!v) return -1;
+    s->v = v, s->cap = cap;
+  }
+  s->v[2 * s->n] = a, s->v[2 * s->n + 1] = b;
+  s->n++;
+  return 0;
+}
+
+/* Is ab an edge candidate?  0 when a third point lies on the open segment, or, with
+** diamond = 1, when both diamond triangles on ab hold a point (Das and Joseph: an edge of
+** a minimum-weight triangulation has an empty isosceles triangle with base angles pi/8 on
+** at least one side; skel_in_cone errs only towards keeping).  Every point of either
+** triangle or of the segment lies in the box of a, b and the apexes, which stand at
+** tan(pi/8) / 2 < 0.21 of |ab| from the midpoint.  Cost: the points of the padded box. */
+static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uint32_t b,
+                        int diamond) {
+  double ex = diamond ? 0.21 * fabs(p[b].y - p[a].y) : 0;
+  double ey = diamond ? 0.21 * fabs(p[b].x - p[a].x) : 0;
+  double xa = fmin(p[a].x, p[b].x) - ex, xb = fmax(p[a].x, p[b].x) + ex;
+  double ya = fmin(p[a].y, p[b].y) - ey, yb = fmax(p[a].y, p[b].y) + ey;
+  skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
+  int left = 0, right = 0;
+  for (int iy = bx.iy0; iy <= bx.iy1; iy++)
+    for (int ix = bx.ix0; ix <= bx.ix1; ix++) {
+      size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
+      for (uint32_t k = g->off[c]; k < g->off[c + 1]; k++) {
+        uint32_t q = g->pt[k];
+        if (q == a || q == b || p[q].x < xa || p[q].x > xb || p[q].y < ya || p[q].y > yb)
+          continue;
+        if (skel_on_segment(p[a], p[b], p[q])) return 0;
+        if (diamond) {
+          left |= skel_in_cone(p[a], p[b], p[q], 1);
+          right |= skel_in_cone(p[a], p[b], p[q], -1);
+          if (left && right) return 0;
+        }
+      }
+    }
+  return 1;
+}
+
+/* The far-edge argument of the diamond search.  A point q at distance r from a, at an
+** angle delta in (0, pi/8) anticlockwise from the direction of b, lies strictly inside
+** the left diamond triangle of ab whenever |ab| >= 2 r: its angle at a is delta, and its
+** angle at b has tangent r sin(delta) / (|ab| - r cos(delta)) <= tan(delta) since |ab| -
+** r cos(delta) >= r cos(delta).  The same clockwise for the right triangle.  Directions
+** fall into SKEL_SECT sectors of pi/64 (atan2, whose error of a few ulps is far below
+** the margin of a sector): for b in sector t, sectors t+2 .. t+6 lie strictly within
+** the left cone (psi, psi + pi/8) of every direction psi of sector t, and t-6 .. t-2
+** within the right one.  With dmin[s] the distance of the nearest point seen in sector
+** s, ab fails the diamond test when max(left(t), right(t)) <= |ab| / 2, with a relative
+** margin of 1e-9 for the rounding of distances (skel_far). */
+#define SKEL_SECT 128
+
+typedef struct skel_seen { uint32_t q; int sect; double d; } skel_seen;
+
+static double skel_side_min(const double *dmin, int t, int from, int to) {
+  double m = INFINITY;
+  for (int k = from; k <= to; k++) m = fmin(m, dmin[(t + k + SKEL_SECT) % SKEL_SECT]);
+  return m;
+}
+
+/* The distance beyond which every edge of sector t fails (infinite: none known). */
+static double skel_far(const double *dmin, int t) {
+  return 2 * fmax(skel_side_min(dmin, t, 2, 6), skel_side_min(dmin, t, -6, -2)) *
+         (1 + 1e-9);
+}
+
+/* Adds the points of ring k (cells at Chebyshev distance k from a's cell) to seen. */
+static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
+                     skel_seen **seen, size_t *ns, size_t *cap, double *dmin) {
+  int cx = skel_cellx(g, p[a].x), cy = skel_celly(g, p[a].y);
+  for (int iy = cy - k; iy <= cy + k; iy++) {
+    if (iy < 0 || iy >= g->ny) continue;
+    int step = (iy == cy - k || iy == cy + k) ? 1 : 2 * k;
+    for (int ix = cx - k; ix <= cx + k; ix += step > 0 ? step : 1) {
+      if (ix < 0 || ix >= g->nx) continue;
+      size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
+      for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
+        uint32_t q = g->pt[j];
+        if (q == a) continue;
+        if (*ns == *cap) {
+          size_t nc = *cap ? 2 * *cap : 256;
+          skel_seen *s = realloc(*seen, nc * sizeof *s);
+          if (!s) return -1;
+          *seen = s, *cap = nc;
+        }
+        double dx = p[q].x - p[a].x, dy = p[q].y - p[a].y, d = sqrt(dx * dx + dy * dy);
+        int t = (int)((atan2(dy, dx) + M_PI) * (SKEL_SECT / (2 * M_PI)));
+        t = t < 0 ? 0 : t >= SKEL_SECT ? SKEL_SECT - 1 : t;
+        (*seen)[(*ns)++] = (skel_seen){q, t, d};
+        dmin[t] = fmin(dmin[t], d);
+      }
+    }
+  }
+  return 0;
+}
+
+/* Has the search from a seen far enough?  After rings 0 .. k - 1, every point within
+** (k - 3) h of a has been seen (the cells of a and of the point may each be off by one
+** through rounding), so every unseen b is farther: done when every sector's far distance
+** is at most that, or when the rings cover the grid. */
+static int skel_search_done(const skel_grid *g, const double *dmin, int k) {
+  if (k - 1 >= g->nx && k - 1 >= g->ny) return 1;
+  double r = (k - 3) * g->h;
+  for (int t = 0; t < SKEL_SECT; t++)
+    if (!(skel_far(dmin, t) <= r)) return 0;
+  return 1;
+}
+
+/* The diamond candidates (a, b), b > a, into out, ascending in b. */
+static int skel_cmp_seen(const void *x, const void *y) {
+  uint32_t a = ((const skel_seen *)x)->q, b = ((const skel_seen *)y)->q;
+  return (a > b) - (a < b);
+}
+
+static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t a,
+                              skel_seen **seen, size_t *cap, skel_vec *out) {
+  double dmin[SKEL_SECT];
+  size_t ns = 0;
+  for (int t = 0; t < SKEL_SECT; t++) dmin[t] = INFINITY;
+  for (int k = 0; !skel_search_done(g, dmin, k); k++)
+    if (skel_ring(g, p, a, k, seen, &ns, cap, dmin) != 0) return -1;
+  qsort(*seen, ns, sizeof **seen, skel_cmp_seen);
+  for (size_t i = 0; i < ns; i++) {
+    skel_seen s = (*seen)[i];
+    if (s.q < a || skel_far(dmin, s.sect) <= s.d) continue;
+    if (skel_edge_ok(g, p, a, s.q, 1) && skel_vec_push(out, a, s.q) != 0) return -1;
+  }
+  return 0;
+}
+
+/* ---- the candidate graph ------------------------------------------------- */
+
+/* How a flip is decided (chosen once, skel_decider). */
+typedef enum skel_kind {
+  SKEL_EXACT_LENGTH,    /* P_1: exact squared lengths of the diagonals */
+  SKEL_CERTIFIED,       /* a key error model (got_cert_key_model) and the tie tolerance */
+  SKEL_NEVER            /* no model: no flip is certain, no edge leaves */
+} skel_kind;
+
+typedef struct skel {
+  const geom_point *p;
+  size_t n, m;             /* points, candidate edges */
+  uint32_t *ev;            /* 2 per edge (a, b), a < b, ascending */
+  uint32_t *off, *nbr, *nbe;   /* neighbours of each point, ascending, with edge ids */
+  size_t nt;               /* candidate triangles */
+  uint32_t *tv, *te;       /* 3 per triangle: a < b < c, and edges ab, ac, bc */
+  double *bad;             /* the measure of each triangle (SKEL_CERTIFIED) */
+  uint32_t *toff, *tinc;   /* per edge its triangles, 2 t + (1: third vertex on the left) */
+  unsigned char *ealive, *hull, *talive;
+  uint32_t *wit;           /* 2 per edge: the last witness pair, or UINT32_MAX */
+  uint32_t *hpair;         /* 2 per hull edge (a < b) */
+  size_t nh;
+  skel_grid g;
+  skel_kind kind;
+  const rule *r;
+  measure_points_fn mp;
+  double rho, alpha;
+  int threads;
+} skel;
+
+static void skel_free_all(skel *s) {
+  free(s->ev), free(s->off), free(s->nbr), free(s->nbe);
+  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc);
+  free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
+  skel_grid_free(&s->g);
+}
+
+static int skel_cmp_edge(const void *x, const void *y) {
+  const uint32_t *a = x, *b = y;
+  return a[0] != b[0] ? (a[0] > b[0]) - (a[0] < b[0]) : (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* The adjacency of the sorted edge list: pushing edges in order leaves every list
+** ascending (neighbours below v come from edges (u, v), all before the edges (v, w)). */
+static int skel_adjacency(skel *s) {
+  s->off = calloc(s->n + 1, sizeof *s->off);
+  s->nbr = malloc(2 * s->m * sizeof *s->nbr + 1);
+  s->nbe = malloc(2 * s->m * sizeof *s->nbe + 1);
+  uint32_t *fill = malloc((s->n + 1) * sizeof *fill);
+  if (!s->off || !s->nbr || !s->nbe || !fill) return free(fill), -1;
+  for (size_t e = 0; e < s->m; e++) s->off[s->ev[2 * e] + 1]++, s->off[s->ev[2 * e + 1] + 1]++;
+  for (size_t v = 0; v < s->n; v++) s->off[v + 1] += s->off[v];
+  memcpy(fill, s->off, (s->n + 1) * sizeof *fill);
+  for (size_t e = 0; e < s->m; e++) {
+    uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
+    s->nbr[fill[a]] = b, s->nbe[fill[a]++] = (uint32_t)e;
+    s->nbr[fill[b]] = a, s->nbe[fill[b]++] = (uint32_t)e;
+  }
+  free(fill);
+  return 0;
+}
+
+/* The id of edge uv, or UINT32_MAX when it is no candidate (binary search). */
+static uint32_t skel_edge_find(const skel *s, uint32_t u, uint32_t v) {
+  uint32_t lo = s->off[u], hi = s->off[u + 1];
+  while (lo < hi) {
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (s->nbr[mid] < v) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo < s->off[u + 1] && s->nbr[lo] == v ? s->nbe[lo] : UINT32_MAX;
+}
+
+/* The candidate edges: diamond = 1 the diamond test (P_1), else every clear segment.
+** Points are searched in parallel in blocks, each block's edges kept in order, so the
+** list is the same for any thread count; sorted at the end. */
+static int skel_candidates(skel *s, int diamond) {
+  skel_vec all = {0};
+  int fail = 0;
+  for (size_t a = 0; a < s->n && !fail; a++) {
+    if (diamond) {
+      skel_seen *seen = NULL;
+      size_t cap = 0;
+      fail = skel_diamond_point(&s->g, s->p, (uint32_t)a, &seen, &cap, &all) != 0;
+      free(seen);
+    } else {
+      for (size_t b = a + 1; b < s->n && !fail; b++)
+        if (skel_edge_ok(&s->g, s->p, (uint32_t)a, (uint32_t)b, 0))
+          fail = skel_vec_push(&all, (uint32_t)a, (uint32_t)b) != 0;
+    }
+  }
+  if (fail) return free(all.v), -1;
+  qsort(all.v, all.n, 2 * sizeof *all.v, skel_cmp_edge);
+  s->ev = all.v;
+  s->m = all.n;
+  return 0;
+}
+
+/* ---- candidate triangles ------------------------------------------------- */
+
+/* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
+** are candidates, so none lies on them). */
+static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
+  const geom_point *p = s->p;
+  double xa = geom_min3(p[a].x, p[b].x, p[c].x), xb = geom_max3(p[a].x, p[b].x, p[c].x);
+  double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
+  skel_box bx = skel_grid_box(&s->g, xa, xb, ya, yb);
+  for (int iy = bx.iy0; iy <= bx.iy1; iy++)
+    for (int ix = bx.ix0; ix <= bx.ix1; ix++) {
+      size_t cell = (size_t)iy * (size_t)s->g.nx + (size_t)ix;
+      for (uint32_t k = s->g.off[cell]; k < s->g.off[cell + 1]; k++) {
+        uint32_t q = s->g.pt[k];
+        if (q == a || q == b || q == c || p[q].x <= xa || p[q].x >= xb || p[q].y <= ya ||
+            p[q].y >= yb)
+          continue;
+        if (skel_in_triangle(p[a], p[b], p[c], p[q], o)) return 0;
+      }
+    }
+  return 1;
+}
+
+/* The candidate triangles with smallest vertex a, appended to out (3 vertices each):
+** pairs b < c of a's neighbours above a joined by a candidate edge, empty.  Cost: the
+** pairs of neighbours, an emptiness test (the points of a box) for each triangle. */
+static int skel_triangles_at(const skel *s, uint32_t a, skel_vec *out, skel_vec *third) {
+  uint32_t lo = s->off[a], hi = s->off[a + 1];
+  while (lo < hi && s->nbr[lo] < a) lo++;
+  for (uint32_t i = lo; i < hi; i++)
+    for (uint32_t j = i + 1; j < hi; j++) {
+      uint32_t b = s->nbr[i], c = s->nbr[j];
+      if (skel_edge_find(s, b, c) == UINT32_MAX) continue;
+      int o = geom_orient(s->p[a], s->p[b], s->p[c]);
+      if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
+      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(third, c, 0) != 0) return -1;
+    }
+  return 0;
+}
+
+/* Fills tv, te, the per-edge incidence (tinc: 2 t + side) and the measures. */
+static int skel_incidence(skel *s) {
+  s->toff = calloc(s->m + 1, sizeof *s->toff);
+  s->tinc = malloc(3 * s->nt * sizeof *s->tinc + 1);
+  uint32_t *fill = malloc((s->m + 1) * sizeof *fill);
+  if (!s->toff || !s->tinc || !fill) return free(fill), -1;
+  for (size_t t = 0; t < 3 * s->nt; t++) s->toff[s->te[t] + 1]++;
+  for (size_t e = 0; e < s->m; e++) s->toff[e + 1] += s->toff[e];
+  memcpy(fill, s->toff, (s->m + 1) * sizeof *fill);
+  for (size_t t = 0; t < s->nt; t++) {
+    const uint32_t *v = s->tv + 3 * t;
+    int o = geom_orient(s->p[v[0]], s->p[v[1]], s->p[v[2]]);
+    /* the third vertex is left of ab and of bc when o > 0, of ac when o < 0 */
+    int side[3] = {o > 0, o < 0, o > 0};
+    for (int k = 0; k < 3; k++) s->tinc[fill[s->te[3 * t + k]]++] = (uint32_t)(2 * t) + side[k];
+  }
+  free(fill);
+  return 0;
+}
+
+static int skel_triangles(skel *s) {
+  skel_vec ab = {0}, c = {0};
+  for (size_t a = 0; a < s->n; a++)
+    if (skel_triangles_at(s, (uint32_t)a, &ab, &c) != 0) return free(ab.v), free(c.v), -1;
+  s->nt = ab.n;
+  s->tv = malloc(3 * s->nt * sizeof *s->tv + 1);
+  s->te = malloc(3 * s->nt * sizeof *s->te + 1);
+  s->talive = malloc(s->nt + 1);
+  if (!s->tv || !s->te || !s->talive) return free(ab.v), free(c.v), -1;
+  for (size_t t = 0; t < s->nt; t++) {
+    uint32_t a = ab.v[2 * t], b = ab.v[2 * t + 1], cc = c.v[2 * t];
+    s->tv[3 * t] = a, s->tv[3 * t + 1] = b, s->tv[3 * t + 2] = cc;
+    s->te[3 * t] = skel_edge_find(s, a, b);
+    s->te[3 * t + 1] = skel_edge_find(s, a, cc);
+    s->te[3 * t + 2] = skel_edge_find(s, b, cc);
+    s->talive[t] = 1;
+  }
+  free(ab.v), free(c.v);
+  if (s->kind == SKEL_CERTIFIED) {
+    s->bad = malloc(s->nt * sizeof *s->bad + 1);
+    if (!s->bad) return -1;
+    for (size_t t = 0; t < s->nt; t++)
+      s->bad[t] = s->mp(s->p[s->tv[3 * t]], s->p[s->tv[3 * t + 1]], s->p[s->tv[3 * t + 2]]);
+  }
+  return skel_incidence(s);
+}
+
+/* ---- the LMT loop -------------------------------------------------------- */
+
+/* 1 when flipping ab to cd certainly lowers the total (c left of ab, d right, the
+** quadrilateral a d b c strictly convex); t1 = abc and t2 = abd are candidate triangles.
+** SKEL_CERTIFIED: with keys k^ within rho |k^| + alpha of the exact keys (got_cert.c),
+** D = (k1 + k2) - (k3 + k4) rounded three times is within 3.01 u S of the sum of the
+** computed keys (S = sum |k^|), so the exact difference exceeds D - E with E = (rho +
+** 3.01 u) S + 4 alpha: D > E proves it positive.  The rule's own decision must agree
+** (a strict preference beyond its tie tolerance), so what the rule calls a tie is kept. */
+static int skel_flip_better(const skel *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d,
+                            uint32_t t1, uint32_t t2) {
+  const geom_point *p = s->p;
+  switch (s->kind) {
+    case SKEL_EXACT_LENGTH:
+      return geom_dist2_cmp(p[c], p[d], p[a], p[b]) < 0;
+    case SKEL_CERTIFIED: {
+      double x1 = s->bad[t1], y1 = s->bad[t2];
+      double x2 = s->mp(p[a], p[d], p[c]), y2 = s->mp(p[d], p[b], p[c]);
+      double k1 = rule_key(s->r, x1), k2 = rule_key(s->r, y1);
+      double k3 = rule_key(s->r, x2), k4 = rule_key(s->r, y2);
+      double D = (k1 + k2) - (k3 + k4), S = fabs(k1) + fabs(k2) + fabs(k3) + fabs(k4);
+      double E = ((s->rho + 3.01 * SKEL_U) * S + 4 * s->alpha) * (1 + 0x1p-40);
+      return D > E && rule_decide(s->r, x1, y1, x2, y2) == RULE_BD;
+    }
+    case SKEL_NEVER:
+      return 0;
+  }
+  return 0;
+}
+
+/* 1 when triangles t1 (third vertex c, left of ab) and t2 (d, right) keep edge e = ab:
+** the quadrilateral is not strictly convex, or the flip is not certainly better. */
+static int skel_pair_keeps(const skel *s, uint32_t e, uint32_t t1, uint32_t t2) {
+  uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
+  const uint32_t *v1 = s->tv + 3 * t1, *v2 = s->tv + 3 * t2;
+  uint32_t c = v1[0] + v1[1] + v1[2] - a - b, d = v2[0] + v2[1] + v2[2] - a - b;
+  const geom_point *p = s->p;
+  if (geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) >= 0) return 1;
+  return !skel_flip_better(s, a, b, c, d, t1, t2);
+}
+
+/* Has edge e a witness pair among the live triangles?  The last pair found is tried
+** first; then every live left triangle against every live right one.  Cost: the product
+** of the two counts at worst. */
+static int skel_witness(skel *s, uint32_t e) {
+  uint32_t *w = s->wit + 2 * e;
+  if (w[0] != UINT32_MAX && s->talive[w[0]] && s->talive[w[1]]) return 1;
+  for (uint32_t i = s->toff[e]; i < s->toff[e + 1]; i++) {
+    uint32_t ti = s->tinc[i] >> 1;
+    if (!(s->tinc[i] & 1) || !s->talive[ti]) continue;
+    for (uint32_t j = s->toff[e]; j < s->toff[e + 1]; j++) {
+      uint32_t tj = s->tinc[j] >> 1;
+      if ((s->tinc[j] & 1) || !s->talive[tj]) continue;
+      if (skel_pair_keeps(s, e, ti, tj)) {
+        w[0] = ti, w[1] = tj;
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+/* The next round's queue: the live edges (not hull edges) of the triangles that edge e's
+** removal kills, each once (flag). */
+static void skel_remove(skel *s, uint32_t e, uint32_t *next, size_t *nn, unsigned char *flag) {
+  s->ealive[e] = 0;
+  for (uint32_t i = s->toff[e]; i < s->toff[e + 1]; i++) {
+    uint32_t t = s->tinc[i] >> 1;
+    if (!s->talive[t]) continue;
+    s->talive[t] = 0;
+    for (int k = 0; k < 3; k++) {
+      uint32_t f = s->te[3 * t + k];
+      if (f != e && s->ealive[f] && !s->hull[f] && !flag[f]) flag[f] = 1, next[(*nn)++] = f;
+    }
+  }
+}
+
+/* The LMT loop in rounds (Jacobi: every queued edge is judged against the state at the
+** start of its round, in parallel, then the losers are removed in queue order).  Cost per
+** round: the witness searches of the queued edges. */
+static int skel_lmt(skel *s, size_t *rounds) {
+  uint32_t *W = malloc(s->m * sizeof *W + 1), *next = malloc(s->m * sizeof *next + 1);
+  unsigned char *keep = malloc(s->m + 1), *flag = calloc(s->m + 1, 1);
+  if (!W || !next || !keep || !flag) return free(W), free(next), free(keep), free(flag), -1;
+  size_t nw = 0;
+  for (size_t e = 0; e < s->m; e++)
+    if (!s->hull[e]) W[nw++] = (uint32_t)e;
+  *rounds = 0;
+  while (nw > 0) {
+    ++*rounds;
+    long long nwl = (long long)nw;
+#pragma omp parallel for schedule(dynamic, 256) num_threads(s->threads)
+    for (long long i = 0; i < nwl; i++)
+      keep[i] = !s->ealive[W[i]] || skel_witness(s, W[i]);
+    size_t nn = 0;
+    for (size_t i = 0; i < nw; i++)
+      if (!keep[i]) skel_remove(s, W[i], next, &nn, flag);
+    for (size_t i = 0; i < nn; i++) flag[next[i]] = 0;
+    uint32_t *t = W;
+    W = next, next = t, nw = nn;
+  }
+  free(W), free(next), free(keep), free(flag);
+  return 0;
+}
+
+/* ---- certain edges ------------------------------------------------------- */
+
+/* The cells segment ab passes through, padded by a cell on each side: column by column,
+** the y-range of the segment over the column (relative positions, as the point grid).
+** visit(ctx, cell) for each. */
+typedef void (*skel_cell_fn)(void *ctx, size_t cell);
+
+static void skel_segment_cells(const skel_grid *g, geom_point a, geom_point b,
+                               skel_cell_fn visit, void *ctx) {
+  if (b.x < a.x) {
+    geom_point t = a;
+    a = b, b = t;
+  }
+  double ax = a.x - g->x0, ay = a.y - g->y0, bx = b.x - g->x0, by = b.y - g->y0;
+  skel_box all = skel_grid_box(g, a.x, b.x, fmin(a.y, b.y), fmax(a.y, b.y));
+  double slope = bx > ax ? (by - ay) / (bx - ax) : 0;
+  for (int ix = all.ix0; ix <= all.ix1; ix++) {
+    double xl = fmax(ax, ix * g->h), xr = fmin(bx, (ix + 1) * g->h);
+    double y0 = ay, y1 = by;
+    if (bx > ax && xl <= xr) y0 = ay + (xl - ax) * slope, y1 = ay + (xr - ax) * slope;
+    else if (bx > ax) y0 = y1 = xl > bx ? by : ay;
+    int iy0 = skel_cell(fmin(y0, y1), g->inv, g->ny) - 1, iy1 = skel_cell(fmax(y0, y1), g->inv,
+                                                                         g->ny) + 1;
+    for (int iy = iy0 < 0 ? 0 : iy0; iy <= iy1 && iy < g->ny; iy++)
+      visit(ctx, (size_t)iy * (size_t)g->nx + (size_t)ix);
+  }
+}
+
+typedef struct skel_cells { uint32_t *off, *list; uint32_t cur; int fill; } skel_cells;
+
+static void skel_cells_visit(void *ctx, size_t cell) {
+  skel_cells *c = ctx;
+  if (c->fill) c->list[c->off[cell]++] = c->cur;
+  else c->off[cell + 1]++;
+}
+
+/* 1 when segments e and f (no common endpoint) cross (exact). */
+static int skel_cross(const skel *s, uint32_t e, uint32_t f) {
+  const geom_point *p = s->p;
+  uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1], c = s->ev[2 * f], d = s->ev[2 * f + 1];
+  if (a == c || a == d || b == c || b == d) return 0;
+  return geom_orient(p[a], p[b], p[c]) * geom_orient(p[a], p[b], p[d]) < 0 &&
+         geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) < 0;
+}
+
+typedef struct skel_probe {
+  const skel *s;
+  const uint32_t *start, *list;
+  uint32_t e;
+  int crossed;
+} skel_probe;
+
+static void skel_probe_visit(void *ctx, size_t cell) {
+  skel_probe *q = ctx;
+  for (uint32_t k = q->start[cell]; k < q->start[cell + 1] && !q->crossed; k++)
+    q->crossed = q->list[k] != q->e && skel_cross(q->s, q->e, q->list[k]);
+}
+
+/* cert[e] = 1 for the live edges no other live edge crosses (hull edges included): two
+** crossing segments share the cell of their crossing point, which both visit.  Cost:
+** the cells of each edge, and the edges of those cells until a crossing is found. */
+static int skel_certain(const skel *s, unsigned char *cert) {
+  size_t cells = (size_t)s->g.nx * (size_t)s->g.ny;
+  skel_cells c = {calloc(cells + 1, sizeof(uint32_t)), NULL, 0, 0};
+  uint32_t *start = malloc((cells + 1) * sizeof *start);
+  if (!c.off || !start) return free(c.off), free(start), -1;
+  for (size_t e = 0; e < s->m; e++)
+    if (s->ealive[e])
+      c.cur = (uint32_t)e,
+      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_cells_visit, &c);
+  for (size_t k = 0; k < cells; k++) c.off[k + 1] += c.off[k];
+  memcpy(start, c.off, (cells + 1) * sizeof *start);
+  c.list = malloc((size_t)c.off[cells] * sizeof *c.list + 1);
+  if (!c.list) return free(c.off), free(start), -1;
+  c.fill = 1;
+  for (size_t e = 0; e < s->m; e++)
+    if (s->ealive[e])
+      c.cur = (uint32_t)e,
+      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_cells_visit, &c);
+  long long m = (long long)s->m;
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(s->threads)
+  for (long long e = 0; e < m; e++) {
+    skel_probe q = {s, start, c.list, (uint32_t)e, 0};
+    if (s->ealive[e] && !s->hull[e])
+      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_probe_visit,
+                         &q);
+    cert[e] = s->ealive[e] && !q.crossed;
+  }
+  free(c.off), free(start), free(c.list);
+  return 0;
+}
+
+/* ---- the convex hull ----------------------------------------------------- */
+
+typedef struct skel_lexpt { geom_point p; uint32_t i; } skel_lexpt;
+
+static int skel_cmp_lex(const void *x, const void *y) {
+  geom_point a = ((const skel_lexpt *)x)->p, b = ((const skel_lexpt *)y)->p;
+  return geom_lexless(a, b) ? -1 : geom_lexless(b, a);
+}
+
+/* One chain of the monotone-chain hull over the points in lexicographic order (dir +1:
+** lower chain forwards; -1: upper chain backwards), keeping collinear boundary points
+** (only strict right turns are popped); its consecutive pairs appended to s->hpair.
+** O(n) after the sort. */
+static void skel_hull_chain(skel *s, const skel_lexpt *o, uint32_t *st, int dir) {
+  size_t k = 0;
+  for (size_t j = 0; j < s->n; j++) {
+    uint32_t v = o[dir > 0 ? j : s->n - 1 - j].i;
+    while (k >= 2 && geom_orient(s->p[st[k - 2]], s->p[st[k - 1]], s->p[v]) < 0) k--;
+    st[k++] = v;
+  }
+  for (size_t j = 0; j + 1 < k; j++) {
+    s->hpair[2 * s->nh] = st[j] < st[j + 1] ? st[j] : st[j + 1];
+    s->hpair[2 * s->nh++ + 1] = st[j] < st[j + 1] ? st[j + 1] : st[j];
+  }
+}
+
+/* The hull's boundary pairs into s->hpair, and the input's check: 0, -1 out of memory,
+** -2 two equal points (*bad, *bad2 their indices), -3 all points on a line. */
+static int skel_hull(skel *s, size_t *bad, size_t *bad2) {
+  skel_lexpt *o = malloc(s->n * sizeof *o);
+  uint32_t *st = malloc(s->n * sizeof *st);
+  s->hpair = malloc(4 * s->n * sizeof *s->hpair);
+  if (!o || !st || !s->hpair) return free(o), free(st), -1;
+  for (size_t i = 0; i < s->n; i++) o[i] = (skel_lexpt){s->p[i], (uint32_t)i};
+  qsort(o, s->n, sizeof *o, skel_cmp_lex);
+  int rc = 0;
+  for (size_t i = 1; i < s->n && rc == 0; i++)
+    if (o[i].p.x == o[i - 1].p.x && o[i].p.y == o[i - 1].p.y)
+      rc = -2, *bad = o[i - 1].i < o[i].i ? o[i - 1].i : o[i].i, *bad2 = o[i - 1].i ^ o[i].i ^ *bad;
+  size_t k = 1;
+  while (rc == 0 && k + 1 < s->n && geom_orient(o[0].p, o[s->n - 1].p, o[k].p) == 0) k++;
+  if (rc == 0 && geom_orient(o[0].p, o[s->n - 1].p, o[k].p) == 0) rc = -3;
+  if (rc == 0) skel_hull_chain(s, o, st, 1), skel_hull_chain(s, o, st, -1);
+  free(o), free(st);
+  return rc;
+}
+
+/* hull[e] = 1 for the hull's boundary edges; -1 when out of memory or when one is no
+** candidate (it always is: nothing lies beyond it, nor on it). */
+static int skel_hull_mark(skel *s) {
+  s->hull = calloc(s->m + 1, 1);
+  if (!s->hull) return -1;
+  for (size_t k = 0; k < s->nh; k++) {
+    uint32_t e = skel_edge_find(s, s->hpair[2 * k], s->hpair[2 * k + 1]);
+    if (e == UINT32_MAX) return -1;
+    s->hull[e] = 1;
+  }
+  return 0;
+}
+
+/* ---- got_skel_build ------------------------------------------------------ */
+
+/* The rule's flip decision, chosen once: 0, or -1 with a message for a rule that is no
+** sum rule (a quadrilateral rule, or a joint whose keys combine by min or max). */
+static int skel_decider(skel *s, const rule *r, char *err, size_t errlen) {
+  const joint *J = rule_is_triangle(r) ? joint_get(rule_joint(r)) : NULL;
+  if (J == NULL || J->keyop != JOINT_KEY_ADD) {
+    snprintf(err, errlen, "got skeleton: rule %s is not a sum rule (the skeleton needs a "
+             "triangle-based rule whose joint is l_p for a finite p)", rule_name(r));
+    return -1;
+  }
+  s->r = r;
+  s->mp = measure_points(rule_measure(r));
+  s->kind = SKEL_NEVER;
+  if (rule_measure(r) == MEASURE_P && rule_joint(r) == JOINT_SUM)
+    s->kind = SKEL_EXACT_LENGTH;
+  else if (s->mp != NULL && got_cert_key_model(r, s->p, s->n, &s->rho, &s->alpha) == 0)
+    s->kind = SKEL_CERTIFIED;
+  return 0;
+}
+
+/* The live edges into out, in ascending order, with their states. */
+static int skel_output(const skel *s, got_skel *out) {
+  unsigned char *cert = malloc(s->m + 1);
+  size_t k = 0, live = 0;
+  if (!cert || skel_certain(s, cert) != 0) return free(cert), -1;
+  for (size_t e = 0; e < s->m; e++) live += s->ealive[e];
+  out->edge = malloc(2 * live * sizeof *out->edge + 1);
+  out->state = malloc(live + 1);
+  if (!out->edge || !out->state) return free(cert), -1;
+  for (size_t e = 0; e < s->m; e++) {
+    if (!s->ealive[e]) continue;
+    out->edge[2 * k] = s->ev[2 * e], out->edge[2 * k + 1] = s->ev[2 * e + 1];
+    out->state[k++] = cert[e] ? GOT_EDGE_CERTAIN : GOT_EDGE_POSSIBLE;
+  }
+  out->nedges = live;
+  free(cert);
+  return 0;
+}
+
+/* Candidates, triangles and the hull, with the time they took. */
+static int skel_prepare(skel *s) {
+  if (skel_grid_build(&s->g, s->p, s->n) != 0 ||
+      skel_candidates(s, s->kind == SKEL_EXACT_LENGTH) != 0)
+    return -1;
+  if (s->m >= UINT32_MAX / 4) return -1;
+  s->ealive = malloc(s->m + 1);
+  s->wit = malloc(2 * s->m * sizeof *s->wit + 1);
+  if (!s->ealive || !s->wit) return -1;
+  memset(s->ealive, 1, s->m);
+  memset(s->wit, 0xff, 2 * s->m * sizeof *s->wit);
+  if (skel_adjacency(s) != 0 || skel_hull_mark(s) != 0) return -1;
+  return skel_triangles(s);
+}
+
+/* The checks of the arguments: 0, or -1 with the message. */
+static int skel_check(skel *s, const rule *r, int threads, char *err, size_t errlen) {
+  size_t bad = 0, bad2 = 0;
+  if (geom_threads_check(threads, err, errlen) != 0 || skel_decider(s, r, err, errlen) != 0)
+    return -1;
+  if (s->n < 3 || s->n > UINT32_MAX / 8) {
+    snprintf(err, errlen, "got skeleton: %zu points (expected 3 to %u)", s->n, UINT32_MAX / 8);
+    return -1;
+  }
+  if (s->kind != SKEL_EXACT_LENGTH && s->n > GOT_SKEL_ALL_MAX) {
+    snprintf(err, errlen, "got skeleton: %zu points is too many for rule %s: every pair of "
+             "points is a candidate for it (no exclusion test), so at most %d points",
+             s->n, rule_name(r), GOT_SKEL_ALL_MAX);
+    return -1;
+  }
+  int rc = skel_hull(s, &bad, &bad2);
+  if (rc == -2)
+    snprintf(err, errlen, "got skeleton: points %zu and %zu are equal (0-based)", bad, bad2);
+  else if (rc == -3)
+    snprintf(err, errlen, "got skeleton: all %zu points lie on one line", s->n);
+  else if (rc != 0)
+    snprintf(err, errlen, "got skeleton: out of memory for %zu points", s->n);
+  return rc == 0 ? 0 : -1;
+}
+
+int got_skel_build(const geom_point *p, size_t n, const rule *r, int threads, got_skel *out,
+                   char *err, size_t errlen) {
+  skel s = {.p = p, .n = n};
+  memset(out, 0, sizeof *out);
+  out->n = n;
+  if (skel_check(&s, r, threads, err, errlen) != 0) return skel_free_all(&s), -1;
+  s.threads = threads > 0 ? threads : omp_get_max_threads();
+  double t0 = omp_get_wtime();
+  int rc = skel_prepare(&s);
+  double t1 = omp_get_wtime();
+  out->candidates = s.m;
+  if (rc == 0) rc = skel_lmt(&s, &out->rounds);
+  if (rc == 0) rc = skel_output(&s, out);
+  out->seconds_candidates = t1 - t0;
+  out->seconds_lmt = omp_get_wtime() - t1;
+  skel_free_all(&s);
+  if (rc != 0) {
+    got_skel_free(out);
+    snprintf(err, errlen, "got skeleton: out of memory for %zu points", n);
+  }
+  return rc;
+}
+
+void got_skel_free(got_skel *s) {
+  if (!s) return;
+  free(s->edge);
+  free(s->state);
+  s->edge = NULL;
+  s->state = NULL;
+  s->nedges = 0;
+}

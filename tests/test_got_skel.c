@@ -1,0 +1,206 @@
+/*
+** test_got_skel.c: the skeleton of a point set's GOT (got/got_skel.c) against brute force.
+**
+** For small point sets (random, random on a small integer grid, full grids, cocircular
+** points with rational coordinates, convex position) every triangulation is enumerated
+** (classify/siteflip.h) and totalled in key space (rule_key, rule_key_add) for six sum
+** rules.  The optimal triangulations are those within a tolerance of the best total far
+** above the rounding of a total (so every exact tie is among them) and far below the gaps
+** of random data.  Checks: every edge of every optimal triangulation is in the skeleton
+** (it never removes a GOT edge, ties included); every CERTAIN edge is in every optimal
+** triangulation (for P_1: in every minimum-weight triangulation); hull edges are CERTAIN;
+** the skeleton's edges are distinct, ascending and clear of third points.  Also: rules
+** that are not sum rules, too many points for an all-pairs rule, and bad input refused.
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "geom.h"
+#include "measure.h"
+#include "rule.h"
+#include "siteflip.h"
+#include "sampler.h"
+#include "got_skel.h"
+#include "testutil.h"
+
+static const char *sk_rules[] = {"P_1", "R_1", "-alpha_1", "a_2", "Pinf_1", "-c/a_1", "P_3",
+                                 "-A_1"};
+#define SK_NRULES (sizeof sk_rules / sizeof *sk_rules)
+
+/* The key of triangulation u, and the bound below which another total counts as equal:
+** 1e-10 of the keys' magnitudes plus 1e-12 a triangle (angles carry absolute errors). */
+static double sk_key(const siteflip_graph *g, const rule *r, int u, double *mag) {
+  double k = rule_key_identity(r);
+  *mag = 0;
+  for (int t = 0; t < g->per; t++) {
+    double kt = rule_key(r, measure_eval(rule_measure(r), &g->tri[g->node_tri[u * g->per + t]]));
+    k = rule_key_add(r, k, kt);
+    *mag += fabs(kt);
+  }
+  return k;
+}
+
+static int sk_find(const got_skel *s, int i, int j) {
+  for (size_t e = 0; e < s->nedges; e++)
+    if ((int)s->edge[2 * e] == i && (int)s->edge[2 * e + 1] == j) return (int)e;
+  return -1;
+}
+
+static void sk_check_form(const got_skel *s, const geom_point *p, int n) {
+  for (size_t e = 0; e < s->nedges; e++) {
+    uint32_t a = s->edge[2 * e], b = s->edge[2 * e + 1];
+    assert_true(a < b && b < (uint32_t)n);
+    if (e > 0) {
+      uint32_t a0 = s->edge[2 * e - 2], b0 = s->edge[2 * e - 1];
+      assert_true(a0 < a || (a0 == a && b0 < b));
+    }
+    for (int q = 0; q < n; q++)
+      if (q != (int)a && q != (int)b && geom_orient(p[a], p[b], p[q]) == 0)
+        assert_false(geom_ahead(p[a], p[b], p[q]) && geom_ahead(p[b], p[a], p[q]));
+  }
+}
+
+/* The checks above for one set and one rule. */
+static void sk_check(const geom_point *p, int n, const siteflip_graph *g, const char *rname) {
+  rule r;
+  char err[256];
+  assert_int_equal(rule_parse(rname, &r, err, sizeof err), 0);
+  got_skel s;
+  if (got_skel_build(p, (size_t)n, &r, 1, &s, err, sizeof err) != 0) fail_msg("%s", err);
+  sk_check_form(&s, p, n);
+  double *key = malloc((size_t)g->nnodes * sizeof *key), best = INFINITY, mag = 0, m;
+  assert_non_null(key);
+  for (int u = 0; u < g->nnodes; u++) {
+    key[u] = sk_key(g, &r, u, &m);
+    if (key[u] < best) best = key[u], mag = m;
+  }
+  double tol = 1e-10 * mag + 1e-12 * g->per;
+  for (int u = 0; u < g->nnodes; u++) {
+    if (!(key[u] <= best + tol)) continue;
+    for (int i = 0; i < n; i++)
+      for (int j = i + 1; j < n; j++) {
+        int has = siteflip_has_edge(g, u, i, j), e = sk_find(&s, i, j);
+        if (has && e < 0) fail_msg("%s n=%d: optimal edge %d-%d removed", rname, n, i, j);
+        if (!has && e >= 0 && s.state[e] == GOT_EDGE_CERTAIN)
+          fail_msg("%s n=%d: certain edge %d-%d not in an optimum", rname, n, i, j);
+      }
+  }
+  free(key);
+  got_skel_free(&s);
+}
+
+static void sk_check_all(const geom_point *p, int n) {
+  char err[256];
+  siteflip_graph *g = siteflip_build(p, n, err, sizeof err);
+  if (!g) fail_msg("siteflip_build: %s", err);
+  for (size_t q = 0; q < SK_NRULES; q++) sk_check(p, n, g, sk_rules[q]);
+  siteflip_free(g);
+}
+
+/* ---- point sets ---- */
+
+static int sk_distinct(const geom_point *p, int n) {
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < i; j++)
+      if (p[i].x == p[j].x && p[i].y == p[j].y) return 0;
+  for (int k = 2; k < n; k++)
+    if (geom_orient(p[0], p[1], p[k]) != 0) return 1;
+  return 0;
+}
+
+static void test_random_sets(void **state) {
+  (void)state;
+  testutil_rng g = {381};
+  for (int rep = 0; rep < testutil_reps(600); rep++) {
+    int n = 3 + (int)(testutil_next(&g) % 7);
+    geom_point p[10];
+    for (int i = 0; i < n; i++) p[i] = (geom_point){testutil_uniform(&g), testutil_uniform(&g)};
+    if (sk_distinct(p, n)) sk_check_all(p, n);
+  }
+}
+
+/* Points of a 4 x 4 integer grid: collinear triples, equal lengths and exact ties. */
+static void test_grid_subsets(void **state) {
+  (void)state;
+  testutil_rng g = {382};
+  for (int rep = 0; rep < testutil_reps(400); rep++) {
+    int n = 4 + (int)(testutil_next(&g) % 6);
+    geom_point p[10];
+    for (int i = 0; i < n; i++)
+      p[i] = (geom_point){(double)(testutil_next(&g) % 4), (double)(testutil_next(&g) % 4)};
+    if (sk_distinct(p, n)) sk_check_all(p, n);
+  }
+}
+
+static void test_grids_and_circles(void **state) {
+  (void)state;
+  for (int w = 2; w <= 4; w++)
+    for (int h = 2; h <= 3; h++) {
+      geom_point p[12];
+      for (int i = 0; i < w * h; i++) p[i] = (geom_point){i % w, i / w};
+      sk_check_all(p, w * h);
+    }
+  /* twelve points on the circle of radius 5, exactly, in a scrambled order */
+  const geom_point c[12] = {{3, 4}, {-5, 0}, {4, -3}, {0, 5}, {-3, -4}, {5, 0},
+                            {-4, 3}, {0, -5}, {3, -4}, {-4, -3}, {4, 3}, {-3, 4}};
+  for (int n = 4; n <= 9; n++) sk_check_all(c, n);
+  geom_point cc[10];
+  memcpy(cc, c, 9 * sizeof *c);
+  cc[9] = (geom_point){0, 0};
+  sk_check_all(cc, 10);
+}
+
+static void test_convex_position(void **state) {
+  (void)state;
+  for (int rep = 0; rep < testutil_reps(200); rep++) {
+    int n = 4 + rep % 6;
+    geom_point p[10];
+    sampler_convex(383, (uint64_t)rep, n, p);
+    sk_check_all(p, n);
+  }
+}
+
+/* ---- refusals ---- */
+
+static void sk_refuse(const geom_point *p, size_t n, const char *rname) {
+  rule r;
+  char err[256];
+  got_skel s;
+  assert_int_equal(rule_parse(rname, &r, err, sizeof err), 0);
+  err[0] = 0;
+  assert_int_equal(got_skel_build(p, n, &r, 1, &s, err, sizeof err), -1);
+  assert_true(strlen(err) > 0 && strchr(err, '\n') == NULL);
+  assert_null(s.edge);
+}
+
+static void test_refusals(void **state) {
+  (void)state;
+  geom_point p[300];
+  testutil_rng g = {384};
+  for (int i = 0; i < 300; i++) p[i] = (geom_point){testutil_uniform(&g), testutil_uniform(&g)};
+  const char *nonsum[] = {"P_inf", "-alpha_-inf", "DT", "R_inf"};
+  for (size_t q = 0; q < 4; q++) sk_refuse(p, 10, nonsum[q]);
+  sk_refuse(p, 300, "R_1");          /* all pairs: too many points */
+  sk_refuse(p, 2, "P_1");            /* too few */
+  const geom_point line[4] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
+  sk_refuse(line, 4, "P_1");
+  const geom_point dup[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
+  sk_refuse(dup, 4, "P_1");
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_random_sets),
+    cmocka_unit_test(test_grid_subsets),
+    cmocka_unit_test(test_grids_and_circles),
+    cmocka_unit_test(test_convex_position),
+    cmocka_unit_test(test_refusals),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
