@@ -147,6 +147,7 @@ static int lot_push(lot_run *R, uint32_t c) {
     size_t cap = R->cap ? 2 * R->cap : 1024;
     lot_entry *s = realloc(R->stk, cap * sizeof *s);
     if (s == NULL) return -1;
+    ops_memory(R->o->ops, (int64_t)((cap - R->cap) * sizeof *s));
     R->stk = s;
     R->cap = cap;
   }
@@ -451,18 +452,20 @@ static int lot_examine(lot_run *R, uint32_t c) {
     ** b, so b is not on segment ad; likewise c), so no orientation test.
     ** d on it (a tie) makes four distinct cocircular sites, a and d apart:
     ** strictly convex too. */
-    int in = geom_incircle_valid(pa, pb, pc, pd);
+    int in = ops_incircle(R->o->ops, pa, pb, pc, pd);
     if (in < 0 || (in == 0 && !lot_tie_flips(pa, pb, pc, pd))) return 0;
     n1 = n2 = (lot_enc){0, 0};
   } else {
     n1 = n2 = (lot_enc){0, 0};
-    if (geom_orient_valid(pa, pb, pd) <= 0 || geom_orient_valid(pa, pd, pc) <= 0) return 0;
+    if (ops_orient(R->o->ops, pa, pb, pd) <= 0 || ops_orient(R->o->ops, pa, pd, pc) <= 0)
+      return 0;
     rule_choice ch;
     if (R->kind == LOT_K_TRI) {
       int flip = m->enc ? lot_prefers_lazy(R, a, b, c0, d, t, u, &n1, &n2)
                         : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_SHAPE) {
+      ops_add(R->o->ops, OPS_INSHAPE, 1);
       ch = lot_shape_choice(R, c, cd, pa, pb, pd, pc);
     } else if (R->kind == LOT_K_POWER) {
       const uint32_t *in = m->inp;
@@ -605,6 +608,7 @@ static void lot_run_hints(lot_run *R, int forget) {
 }
 
 static void lot_run_free(lot_run *R) {
+  ops_memory(R->o->ops, -(int64_t)(R->cap * sizeof *R->stk));
   free(R->stk);
   free(R->hkey);
   free(R->hval);
@@ -862,6 +866,8 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   if (L == NULL || ord == NULL) goto oom;
   lot_take_rule(L, o);
   if (lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(&L->r, o)) != 0) goto oom;
+  L->m.ops = o->ops;
+  ops_memory(o->ops, (int64_t)(lot_mesh_bytes(&L->m) + n * sizeof *ord));
   lot_use_rule(L);
   L->st.n = n;
   L->constrained = o->nsegments > 0 || o->nholes > 0;
@@ -883,6 +889,7 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   if (rc == 0 && L->constrained) rc = lot_constrain(L, &R, o, ord, err, errlen);
   free(ord);
   ord = NULL;
+  ops_memory(o->ops, -(int64_t)(n * sizeof *ord));
   if (rc == -2) goto refused;
   if (rc != 0) goto oom_run;
   if (lot_flip_phase(L, &R, o, t0, tord) != 0) goto oom_run;
@@ -892,6 +899,7 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   }
   lot_run_free(&R);
   lot_finish_stats(L);
+  L->m.ops = NULL;   /* the caller's counts are not kept past the run */
   if (lot_none_left(L, o, err, errlen)) {
     lot_free(L);
     return -1;
@@ -1042,11 +1050,13 @@ int lot_reflip(lot *L, const lot_options *o) {
   L->st.cycle_quads = 0;
   lot_run_init(&R, L, o);
   lot_run_hints(&R, 1);
+  m->ops = o->ops;
   double t0 = lot_now();
   int rc = lot_flip_all(&R);
   L->st.seconds_init = 0;
   L->st.seconds_flip = lot_now() - t0;
   lot_run_free(&R);
+  m->ops = NULL;
   return rc;
 }
 

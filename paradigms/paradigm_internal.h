@@ -9,10 +9,13 @@
 #include "paradigm.h"
 
 /* lot/'s algorithms as rows (paradigms/lot_rows.c). */
+FLIPLAB_INTERNAL
 int paradigm_lot_incremental(const paradigm_input *in, paradigm_output *out, char *err,
                              size_t errlen);
+FLIPLAB_INTERNAL
 int paradigm_lot_flip(const paradigm_input *in, paradigm_output *out, char *err,
                       size_t errlen);
+FLIPLAB_INTERNAL
 int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err,
                        size_t errlen);
 
@@ -22,6 +25,7 @@ int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err
 ** homothet for ES:SHAPE), -1 strictly outside, 0 on it (then the rule's
 ** tie-break decides, as lot/ does).  Counted as OPS_INCIRCLE or
 ** OPS_INSHAPE. */
+FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
