@@ -29,4 +29,22 @@ FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
+/* The incremental variants of 2.3 (paradigms/incremental.c): lot's
+** insertion in the bucket orders of figure 2.8; Watson's cavity insertion
+** located by a walk, and by the history DAG. */
+FLIPLAB_INTERNAL
+int paradigm_incr_serpentine(const paradigm_input *in, paradigm_output *out, char *err,
+                             size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_spiral(const paradigm_input *in, paradigm_output *out, char *err,
+                         size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_quaternary(const paradigm_input *in, paradigm_output *out, char *err,
+                             size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_watson(const paradigm_input *in, paradigm_output *out, char *err, size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_dag(const paradigm_input *in, paradigm_output *out, char *err,
+                      size_t errlen);
+
 #endif
