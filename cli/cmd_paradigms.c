@@ -204,6 +204,7 @@ int cli_cmd_paradigms(int argc, char **argv) {
   int nf = na < 0 ? -1 : cli_par_families(o.families ? o.families : "uniform", fam);
   int ns = nf < 0 ? -1 : cli_par_sizes(o.sizes ? o.sizes : "1000,10000,100000", sizes);
   int nr = ns < 0 ? -1 : cli_rule_list_new(CMD, o.rules ? o.rules : "DT", &rules);
+  if (nr < 0) rules = NULL;   /* freed by cli_rule_list_new */
   int rc = 2;
   if (nr > 0) {
     study_paradigms_plan pl = {alg, (size_t)na, rules, (size_t)nr, fam, (size_t)nf, sizes,

@@ -556,6 +556,8 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
   }
   uint32_t out[4];
   long n = 0;
+  /* A split hull edge has a ghost beyond it: its edge to k is no edge. */
+  int far_real = w == LOT_ON_EDGE && m->tv[m->tn[c]] != LOT_GHOST;
   if (w == LOT_OUTSIDE) {
     n = lot_insert_outside(m, c, k, cand, candcap);
   } else if (w == LOT_IN_TRIANGLE) {
@@ -572,9 +574,9 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
     (*cand)[n++] = lot_prev3(out[1]);              /* a's corner in (a, k, c0): edge k-c0 */
   }
   if (n < 0) return -1;
-  /* Edges made: k's to the triangle's corners, to a split edge's four
-  ** ends (the edge itself deleted), or to the hull chain it sees. */
-  ops_add(m->ops, OPS_EDGES_MADE, w == LOT_IN_TRIANGLE ? 3u : w == LOT_ON_EDGE ? 4u
+  /* Edges made: k's to the triangle's corners, to a split edge's ends and
+  ** apexes (the edge itself deleted), or to the hull chain it sees. */
+  ops_add(m->ops, OPS_EDGES_MADE, w == LOT_IN_TRIANGLE ? 3u : w == LOT_ON_EDGE ? 3u + far_real
                                    : (uint64_t)n + 1);
   if (w == LOT_ON_EDGE) ops_add(m->ops, OPS_EDGES_DELETED, 1);
   m->last = lot_tri_of((*cand)[0]);
