@@ -594,6 +594,8 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
                : v == JOINT_VEC_SUM && R->any.lo > -INFINITY ? LOT_FIRST_SUM
                : v == JOINT_VEC_MAX ? LOT_FIRST_MAX : 0;
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
+  L->m.ops = o->ops;   /* the mesh counts too, for this run (lot_run_free forgets it) */
+  ops_memory(o->ops, (int64_t)lot_mesh_bytes(&L->m));
 }
 
 /* An empty-shape rule keeps hints where its shape wants them
@@ -609,6 +611,7 @@ static void lot_run_hints(lot_run *R, int forget) {
 
 static void lot_run_free(lot_run *R) {
   ops_memory(R->o->ops, -(int64_t)(R->cap * sizeof *R->stk));
+  R->m->ops = NULL;   /* the caller's counts are not kept past the run */
   free(R->stk);
   free(R->hkey);
   free(R->hval);
@@ -866,8 +869,6 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   if (L == NULL || ord == NULL) goto oom;
   lot_take_rule(L, o);
   if (lot_mesh_alloc(&L->m, (uint32_t)n, lot_cache_of(&L->r, o)) != 0) goto oom;
-  L->m.ops = o->ops;
-  ops_memory(o->ops, (int64_t)(lot_mesh_bytes(&L->m) + n * sizeof *ord));
   lot_use_rule(L);
   L->st.n = n;
   L->constrained = o->nsegments > 0 || o->nholes > 0;
@@ -889,7 +890,6 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   if (rc == 0 && L->constrained) rc = lot_constrain(L, &R, o, ord, err, errlen);
   free(ord);
   ord = NULL;
-  ops_memory(o->ops, -(int64_t)(n * sizeof *ord));
   if (rc == -2) goto refused;
   if (rc != 0) goto oom_run;
   if (lot_flip_phase(L, &R, o, t0, tord) != 0) goto oom_run;
@@ -899,7 +899,6 @@ static int lot_build_once(lot **out, const geom_point *p, size_t n, const lot_op
   }
   lot_run_free(&R);
   lot_finish_stats(L);
-  L->m.ops = NULL;   /* the caller's counts are not kept past the run */
   if (lot_none_left(L, o, err, errlen)) {
     lot_free(L);
     return -1;
@@ -1050,13 +1049,11 @@ int lot_reflip(lot *L, const lot_options *o) {
   L->st.cycle_quads = 0;
   lot_run_init(&R, L, o);
   lot_run_hints(&R, 1);
-  m->ops = o->ops;
   double t0 = lot_now();
   int rc = lot_flip_all(&R);
   L->st.seconds_init = 0;
   L->st.seconds_flip = lot_now() - t0;
   lot_run_free(&R);
-  m->ops = NULL;
   return rc;
 }
 

@@ -131,6 +131,13 @@ static int incr_lot_ordered(const paradigm_input *in, const uint32_t *ord, parad
   int rc = lot_build(&L, q, in->n, &o, err, errlen);
   free(q);
   if (rc != 0) return -1;
+  if (lot_get_stats(L)->status != LOT_CONVERGED) {   /* DT and ES: only the budget stops it */
+    snprintf(err, errlen, "the flip budget (%llu flips) ran out: this order makes about n^2 "
+             "flips on these points (section 2.3)",
+             (unsigned long long)lot_get_stats(L)->max_flips);
+    lot_free(L);
+    return -1;
+  }
   out->ntri = lot_get_stats(L)->triangles;
   out->tri = malloc((out->ntri ? out->ntri : 1) * 3 * sizeof *out->tri);
   if (out->tri == NULL) {
@@ -203,15 +210,26 @@ typedef struct wat {
   const rule *r;
   ops_counts *ops;
   int dag;              /* 1: keep every triangle for the history DAG */
-  uint32_t *tv, *tn, *mark, *kid0, *kidn;
+  uint32_t *tv, *tn, *mark;
+  uint32_t *kid0, *kidn, *kidp, *kidc;   /* DAG: fan first, size; children's start, count */
   uint8_t *dead;
   size_t nt, cap;
-  uint32_t *freel, *cav, *stk, *start;
+  uint32_t *freel, *cav, *cavc, *stk, *start;   /* cavc: the corner toward the cavity's root */
   size_t nfree, ncav, nstk;
   wat_edge *bd;
   size_t nbd;
   uint32_t last;        /* a live triangle near the last insertion */
 } wat;
+
+/* A vertex's slot in per-vertex arrays (the ghost's is n). */
+static uint32_t wat_slot(const wat *W, uint32_t v) {
+  return v == WAT_GHOST ? W->n : v;
+}
+
+static int wat_is_ghost(const wat *W, uint32_t t) {
+  const uint32_t *v = W->tv + 3 * (size_t)t;
+  return v[0] == WAT_GHOST || v[1] == WAT_GHOST || v[2] == WAT_GHOST;
+}
 
 static int wat_lex_less(geom_point p, geom_point q) {
   return p.x < q.x || (p.x == q.x && p.y < q.y);
@@ -255,10 +273,10 @@ static int wat_reserve(wat *W, size_t more) {
   if (W->nt + more <= W->cap) return 0;
   size_t cap = W->cap, old = W->cap;
   while (cap < W->nt + more) cap = cap ? 2 * cap : 1024;
-  uint32_t **arr[8] = {&W->tv, &W->tn, &W->mark, &W->kid0, &W->kidn, &W->freel, &W->cav,
-                       &W->stk};
-  size_t width[8] = {3, 3, 1, 1, 1, 1, 1, 1};
-  for (int k = 0; k < 8; k++) {   /* the scratch lists hold a cavity: at most every triangle */
+  uint32_t **arr[11] = {&W->tv,    &W->tn,  &W->mark, &W->kid0, &W->kidn, &W->kidp,
+                        &W->kidc,  &W->freel, &W->cav, &W->cavc, &W->stk};
+  size_t width[11] = {3, 3, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+  for (int k = 0; k < 11; k++) {   /* the scratch lists hold a cavity: at most every triangle */
     uint32_t *x = realloc(*arr[k], (cap + 4) * width[k] * sizeof *x);
     if (x == NULL) return -1;
     *arr[k] = x;
@@ -269,7 +287,7 @@ static int wat_reserve(wat *W, size_t more) {
   if (bd != NULL) W->bd = bd;
   if (d == NULL || bd == NULL) return -1;
   memset(W->mark + old, 0, (cap - old) * sizeof *W->mark);
-  ops_memory(W->ops, (int64_t)((cap - old) * (12 * sizeof(uint32_t) + sizeof(wat_edge) + 1)));
+  ops_memory(W->ops, (int64_t)((cap - old) * (15 * sizeof(uint32_t) + sizeof(wat_edge) + 1)));
   W->cap = cap;
   return 0;
 }
@@ -316,8 +334,8 @@ static uint32_t wat_walk(wat *W, uint32_t t, geom_point q) {
   uint64_t limit = 4 * (uint64_t)W->nt + 64;
   for (uint64_t step = 0; step < limit; step++) {
     ops_add(W->ops, OPS_LOCATE, 1);
+    if (wat_is_ghost(W, t)) return t;
     v = W->tv + 3 * (size_t)t;
-    if (v[0] == WAT_GHOST || v[1] == WAT_GHOST || v[2] == WAT_GHOST) return t;
     int crossed = 0;
     for (uint32_t j = 0; j < 3 && !crossed; j++) {
       uint32_t e = (uint32_t)(step + j) % 3;
@@ -334,25 +352,25 @@ static uint32_t wat_walk(wat *W, uint32_t t, geom_point q) {
 }
 
 /* The history DAG: from the first four triangles (which cover the plane),
-** into the child that holds q, until a live triangle; a dead one's
-** children are every triangle of the insertion that killed it (they cover
-** its cavity, so its part of the plane inside the hull; a ghost's
-** half-plane may reach past them, and then the first child is taken and
-** the walk finishes the job).  Counted: each node tested is a step. */
+** into the child that holds q, until a live triangle.  The children of a
+** dead triangle are the triangles of the fan that replaced its cavity
+** which overlap it (wat_children: an arc of the fan); a ghost's half-plane
+** may reach past them, and then the first child is taken and the walk
+** finishes the job.  Counted: each node tested is a step. */
 static uint32_t wat_descend(wat *W, geom_point q) {
-  uint32_t first = 0, cnt = 4;
+  uint32_t base = 0, span = 4, from = 0, cnt = 4;
   for (;;) {
-    uint32_t pick = first;
+    uint32_t pick = base + from;
     for (uint32_t i = 0; i < cnt; i++) {
+      uint32_t t = base + (from + i) % span;
       ops_add(W->ops, OPS_LOCATE, 1);
-      if (wat_holds(W, first + i, q)) {
-        pick = first + i;
+      if (wat_holds(W, t, q)) {
+        pick = t;
         break;
       }
     }
     if (!W->dead[pick]) return pick;
-    first = W->kid0[pick];
-    cnt = W->kidn[pick];
+    base = W->kid0[pick], span = W->kidn[pick], from = W->kidp[pick], cnt = W->kidc[pick];
   }
 }
 
@@ -362,6 +380,7 @@ static uint32_t wat_descend(wat *W, geom_point q) {
 static void wat_cavity(wat *W, uint32_t t0, geom_point q, uint32_t s) {
   W->ncav = W->nbd = W->nstk = 0;
   W->mark[t0] = 2 * s + 1;
+  W->cavc[W->ncav] = WAT_GHOST;   /* the root holds q */
   W->cav[W->ncav++] = W->stk[W->nstk++] = t0;
   while (W->nstk > 0) {
     uint32_t t = W->stk[--W->nstk];
@@ -370,6 +389,7 @@ static void wat_cavity(wat *W, uint32_t t0, geom_point q, uint32_t s) {
       if (W->mark[u] == 2 * s + 1) continue;
       if (W->mark[u] != 2 * s && wat_conflict(W, u, q)) {
         W->mark[u] = 2 * s + 1;
+        W->cavc[W->ncav] = oc;
         W->cav[W->ncav++] = W->stk[W->nstk++] = u;
         continue;
       }
@@ -393,33 +413,68 @@ static uint64_t wat_inner_edges(const wat *W, uint32_t s) {
   return k;
 }
 
-/* Join vertex k to every boundary edge; link the fan around k. */
+/* The boundary edges in their cycle around k, into stk (edge indices);
+** start[v] then says where the edge from v stands in it. */
+static void wat_cycle(wat *W) {
+  size_t m = W->nbd;
+  for (size_t i = 0; i < m; i++) W->start[wat_slot(W, W->bd[i].a)] = (uint32_t)i;
+  uint32_t e = 0;
+  for (size_t j = 0; j < m; j++) {
+    W->stk[j] = e;
+    e = W->start[wat_slot(W, W->bd[e].b)];
+  }
+  for (size_t j = 0; j < m; j++) {
+    W->start[wat_slot(W, W->bd[W->stk[j]].a)] = (uint32_t)j;
+  }
+}
+
+/* The DAG's children of the cavity's triangles.  The cavity is a polygon
+** triangulated without inner vertices, star-shaped from k, its dual a tree
+** rooted at the triangle that holds k.  A triangle t reached from its
+** parent across edge x -> y (t on its left) lies beyond that chord from k:
+** the segments from k to the boundary edges on the arc from y round to x
+** (anticlockwise, through t's third vertex) cross the chord into t, those
+** of the other arc stay on k's side.  So t's children are the fan
+** triangles of that arc; the root's, a ghost's, or any when k lies outside
+** the hull (the root is a ghost), the whole fan. */
+static void wat_children(wat *W, uint32_t first) {
+  uint32_t m = (uint32_t)W->nbd;
+  int outside = wat_is_ghost(W, W->cav[0]);
+  for (size_t i = 0; i < W->ncav; i++) {
+    uint32_t t = W->cav[i], c = W->cavc[i], from = 0, cnt = m;
+    if (!outside && c != WAT_GHOST && !wat_is_ghost(W, t)) {
+      uint32_t x = W->tv[3 * (c / 3) + (c % 3 + 1) % 3], y = W->tv[3 * (c / 3) + (c % 3 + 2) % 3];
+      from = W->start[y];
+      cnt = (W->start[x] + m - from) % m;
+    }
+    W->kid0[t] = first, W->kidn[t] = m, W->kidp[t] = from, W->kidc[t] = cnt;
+  }
+}
+
+/* Join vertex k to every boundary edge, in their cycle; link the fan. */
 static void wat_fan(wat *W, uint32_t k) {
   for (size_t i = 0; i < W->ncav; i++) W->dead[W->cav[i]] = 1;
   if (!W->dag)
     for (size_t i = 0; i < W->ncav; i++) W->freel[W->nfree++] = W->cav[i];
+  wat_cycle(W);
   uint32_t first = (uint32_t)W->nt;
-  for (size_t i = 0; i < W->nbd; i++) {
-    const wat_edge *e = &W->bd[i];
+  for (size_t j = 0; j < W->nbd; j++) {
+    const wat_edge *e = &W->bd[W->stk[j]];
     uint32_t t = wat_new(W, e->a, e->b, k);
     wat_link(W, 3 * t + 2, e->oc);
-    W->start[e->a == WAT_GHOST ? W->n : e->a] = t;
     ops_add(W->ops, OPS_EDGES_MADE, e->a != WAT_GHOST);
-    W->stk[i] = t;
+    W->stk[j] = t;
   }
-  for (size_t i = 0; i < W->nbd; i++) {   /* (a, b, k) meets (b, c, k) across b-k */
-    uint32_t t = W->stk[i], b = W->tv[3 * t + 1];
-    uint32_t t2 = W->start[b == WAT_GHOST ? W->n : b];
-    wat_link(W, 3 * t + 0, 3 * t2 + 1);
-  }
-  if (W->dag)
-    for (size_t i = 0; i < W->ncav; i++) W->kid0[W->cav[i]] = first, W->kidn[W->cav[i]] = (uint32_t)W->nbd;
+  for (size_t j = 0; j < W->nbd; j++)   /* (a, b, k) meets the next, (b, c, k), across b-k */
+    wat_link(W, 3 * W->stk[j] + 0, 3 * W->stk[(j + 1) % W->nbd] + 1);
+  if (W->dag) wat_children(W, first);
   W->last = W->stk[0];
 }
 
 static void wat_free(wat *W) {
   free(W->tv), free(W->tn), free(W->mark), free(W->kid0), free(W->kidn), free(W->freel);
-  free(W->cav), free(W->stk), free(W->dead), free(W->bd), free(W->start);
+  free(W->kidp), free(W->kidc), free(W->cav), free(W->cavc), free(W->stk), free(W->dead);
+  free(W->bd), free(W->start);
 }
 
 /* Insert vertex k: locate, carve the cavity, fill it.  0, or -1 (memory). */
@@ -453,9 +508,8 @@ static int wat_output(const wat *W, paradigm_output *out) {
   out->tri = malloc((2 * (size_t)W->n + 1) * 3 * sizeof *out->tri);
   if (out->tri == NULL) return -1;
   for (uint32_t t = 0; t < W->nt; t++) {
-    const uint32_t *v = W->tv + 3 * (size_t)t;
-    if (W->dead[t] || v[0] == WAT_GHOST || v[1] == WAT_GHOST || v[2] == WAT_GHOST) continue;
-    memcpy(out->tri + 3 * m++, v, 3 * sizeof *v);
+    if (W->dead[t] || wat_is_ghost(W, t)) continue;
+    memcpy(out->tri + 3 * m++, W->tv + 3 * (size_t)t, 3 * sizeof *out->tri);
   }
   out->ntri = m;
   return 0;
@@ -470,7 +524,7 @@ static int wat_build(const paradigm_input *in, const uint32_t *ord, int dag,
   W.start = malloc(((size_t)W.n + 1) * sizeof *W.start);
   int rc = W.start == NULL || wat_reserve(&W, 2 * (size_t)W.n + 4) != 0 ? -1 : wat_run(&W, ord);
   if (rc == 0) rc = wat_output(&W, out);
-  ops_memory(W.ops, -(int64_t)(W.cap * (12 * sizeof(uint32_t) + sizeof(wat_edge) + 1)));
+  ops_memory(W.ops, -(int64_t)(W.cap * (15 * sizeof(uint32_t) + sizeof(wat_edge) + 1)));
   wat_free(&W);
   if (rc != 0) snprintf(err, errlen, "out of memory for %zu points", in->n);
   return rc;

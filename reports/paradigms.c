@@ -52,7 +52,8 @@ static int rp_row(FILE *f, const study_paradigms_plan *pl, const study_paradigms
   snprintf(buf[5], sizeof buf[5], "%llu", (unsigned long long)c->n);
   snprintf(buf[6], sizeof buf[6], "%zu", c->distinct);
   snprintf(buf[7], sizeof buf[7], "%zu", c->triangles);
-  snprintf(status, sizeof status, c->refused ? "refused: %s" : "ok", c->why);
+  snprintf(status, sizeof status, c->refused == 1 ? "refused: %s" : c->refused ? "failed: %s"
+                                                                          : "ok", c->why);
   fld[5] = buf[5], fld[6] = buf[6], fld[7] = buf[7], fld[8] = status;
   fld[9] = rp_num(buf[9], sizeof buf[9], c->refused ? NAN : c->seconds);
   for (int k = 0; k <= OPS_COUNT; k++) {   /* k = OPS_COUNT: growth_seconds */
@@ -80,7 +81,8 @@ static const ops_kind rp_md_counts[] = {OPS_ORIENT, OPS_INCIRCLE, OPS_INSHAPE, O
 
 static void rp_md_head(FILE *f, const study_paradigms_plan *pl) {
   fprintf(f, "| algorithm | paradigm | rule | points |");
-  for (size_t s = 0; s < pl->nsizes; s++) fprintf(f, " ms n=%llu |", (unsigned long long)pl->sizes[s]);
+  for (size_t s = 0; s < pl->nsizes; s++)
+    fprintf(f, " ms n=%llu |", (unsigned long long)pl->sizes[s]);
   fprintf(f, " growth |");
   for (size_t k = 0; k < RP_MD_N; k++) fprintf(f, " %s/site |", ops_name(rp_md_counts[k]));
   fprintf(f, "\n|---|---|---|---|");
@@ -94,8 +96,12 @@ static void rp_md_row(FILE *f, const study_paradigms_plan *pl, const study_parad
   const paradigm_algorithm *alg = paradigm_get(last->algorithm);
   fprintf(f, "| %s | %s | %s | %s |", alg->name, alg->paradigm, pl->rules[r].name,
           sampler_points_name((sampler_points_kind)last->family));
-  if (last->refused) {
-    fprintf(f, " refused: %s |", last->why);
+  const study_paradigms_cell *bad = NULL;   /* the first refused or failed size */
+  for (size_t s = 0; s < pl->nsizes && bad == NULL; s++)
+    if (rp_cell(pl, cells, a, r, fa, s)->refused) bad = rp_cell(pl, cells, a, r, fa, s);
+  if (bad != NULL) {
+    if (bad->refused == 1) fprintf(f, " refused: %s |", bad->why);
+    else fprintf(f, " failed at n=%llu: %s |", (unsigned long long)bad->n, bad->why);
     for (size_t s = 1; s < pl->nsizes + 1 + RP_MD_N; s++) fprintf(f, " |");
     fprintf(f, "\n");
     return;

@@ -60,7 +60,10 @@ static int study_par_cell(const study_paradigms_plan *pl, const paradigm_algorit
     return 0;
   }
   for (int k = 0; k < pl->runs; k++) {
-    if (paradigm_run(alg, in, &res, err, errlen) != 0) return -1;
+    if (paradigm_run(alg, in, &res, c->why, sizeof c->why) != 0) {
+      c->refused = 2;
+      return 0;
+    }
     t[k] = res.seconds;
     if (k == 0) {
       c->distinct = res.distinct, c->triangles = res.ntri;

@@ -5,7 +5,8 @@
 ** several rules: the median time, every operation count per site, and
 ** the growth exponent of each (the log-log least-squares slope of the
 ** totals against n, study_slope_add).  An algorithm that refuses a rule
-** gets its cell marked refused with its reason, never skipped.
+** gets its cell marked refused with its reason, one that fails (a flip
+** budget run out) marked failed with its message, never skipped.
 **
 ** The points of (family, n) depend on (seed, family, n) alone, and the
 ** counts of a run on its input alone, so every count is the same on any
@@ -28,7 +29,8 @@ typedef struct study_paradigms_cell {
   size_t rule;                /* the index of its rule in the run's rules */
   int family;                 /* a sampler_points_kind */
   uint64_t n;                 /* points drawn (duplicates included) */
-  int refused;                /* 1: the algorithm does not serve the rule (why) */
+  int refused;                /* 1: the algorithm does not serve the rule; 2: it failed
+                                 (its flip budget ran out ...); why says it */
   char why[STUDY_PARADIGMS_WHY];
   size_t distinct, triangles;
   double seconds;             /* the median over the runs */
@@ -52,8 +54,7 @@ typedef struct study_paradigms_plan {
 size_t study_paradigms_cells(const study_paradigms_plan *pl);
 
 /* Fill cells (study_paradigms_cells(pl) of them).  0; -1 with a one-line
-** message (a bad plan, an algorithm's failure, two algorithms that
-** disagree); -2 out of memory. */
+** message (a bad plan, two algorithms that disagree); -2 out of memory. */
 int study_paradigms_run(const study_paradigms_plan *pl, study_paradigms_cell *cells, char *err,
                         size_t errlen);
 

@@ -118,7 +118,8 @@ static uint64_t tpc_interior_degree(const geom_point *p, size_t n, uint32_t v) {
   assert_non_null(tri);
   lot_get_triangles(L, tri);
   uint64_t d = 0;
-  for (size_t t = 0; t < nt; t++) d += tri[3 * t] == v || tri[3 * t + 1] == v || tri[3 * t + 2] == v;
+  for (size_t t = 0; t < nt; t++)
+    d += tri[3 * t] == v || tri[3 * t + 1] == v || tri[3 * t + 2] == v;
   free(tri);
   lot_free(L);
   return d - 1;
@@ -225,9 +226,12 @@ static void test_counting_changes_nothing(void **state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_edges_made_minus_deleted), cmocka_unit_test(test_sweep_events),
-    cmocka_unit_test(test_convex_boundary_order),    cmocka_unit_test(test_watson_is_lawson),
-    cmocka_unit_test(test_dag_against_walk),         cmocka_unit_test(test_counting_changes_nothing),
+    cmocka_unit_test(test_edges_made_minus_deleted),
+    cmocka_unit_test(test_sweep_events),
+    cmocka_unit_test(test_convex_boundary_order),
+    cmocka_unit_test(test_watson_is_lawson),
+    cmocka_unit_test(test_dag_against_walk),
+    cmocka_unit_test(test_counting_changes_nothing),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

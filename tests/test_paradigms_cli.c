@@ -148,7 +148,8 @@ static void test_errors(void **state) {
   static const char *const bad[] = {
     "--algorithms nope", "--algorithms watson,watson", "--families nope",
     "--families uniform,uniform", "--sizes 2", "--sizes 100,x", "--sizes 1e9", "--runs 0",
-    "--runs 100", "--rules NOPE", "--rules ''", "--sizes 100,", "--measure nope", "--seed -1", "--bogus", "--svg x.csv",
+    "--runs 100", "--rules NOPE", "--rules ''", "--sizes 100,", "--measure nope", "--seed -1",
+    "--bogus", "--svg x.csv",
     "--sizes 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17",
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
