@@ -121,7 +121,8 @@ static int cli_par_sizes(const char *s, uint64_t *sizes) {
   char item[32];
   for (long len; (len = cli_par_item(&s, item, sizeof item)) >= 0;) {
     if (n == CLI_PAR_MAX_SIZES) return cli_error(CMD, "--sizes: at most %d sizes", n), -1;
-    if ((size_t)len >= sizeof item) return cli_error(CMD, "--sizes: '%.31s...' is no size", item), -1;
+    if ((size_t)len >= sizeof item)
+      return cli_error(CMD, "--sizes: '%.31s...' is no size", item), -1;
     if (cli_parse_u64(CMD, "--sizes", item, 3, 100000000u, &sizes[n]) != 0) return -1;
     n++;
   }
