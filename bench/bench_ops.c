@@ -11,8 +11,9 @@
 ** count, this file compiled with -DBENCH_OPS_PEER, which leaves the
 ** counting out).  Every run is a child process (same start for all three),
 ** and the three alternate run by run, so that they see the same machine
-** load; the table gives the median wall time of RUNS and the ratios to
-** the run with counting off.  The target: off within 2% of the peer.
+** load; the table gives the median wall and CPU times of RUNS and their
+** ratios to the run with counting off (on a shared machine the CPU time
+** is the steadier figure).  The target: off within 2% of the peer.
 */
 #include <math.h>
 #include <stdio.h>
@@ -41,12 +42,12 @@ static int bench_ops_one(int on, size_t n, uint64_t seed) {
 #endif
   lot *L;
   char err[256];
-  double t0 = bench_wall();
+  double t0 = bench_wall(), c0 = bench_cpu();
   if (lot_build(&L, p, n, &o, err, sizeof err) != 0) {
     fprintf(stderr, "bench_ops: %s\n", err);
     return 1;
   }
-  printf("peer_seconds %.6f\n", bench_wall() - t0);
+  printf("peer_seconds %.6f\npeer_cpu %.6f\n", bench_wall() - t0, bench_cpu() - c0);
 #ifndef BENCH_OPS_PEER
   for (int k = 0; on && k < OPS_COUNT; k++)
     printf("count %s %.3f\n", ops_name(k), (double)c.v[k] / (double)n);
@@ -56,16 +57,19 @@ static int bench_ops_one(int on, size_t n, uint64_t seed) {
   return 0;
 }
 
-/* Run `prog --one mode n seed` and read its seconds (NAN on failure). */
+/* Run `prog --one mode n seed` and read its wall seconds (NAN on
+** failure) and CPU seconds (*cpu). */
 static double bench_ops_child(const char *prog, const char *mode, size_t n, uint64_t seed,
-                              int show_counts) {
+                              int show_counts, double *cpu) {
   char cmd[4400], line[256];
   snprintf(cmd, sizeof cmd, "%s --one %s %zu %llu", prog, mode, n, (unsigned long long)seed);
   FILE *f = popen(cmd, "r");
   double s = NAN;
+  *cpu = NAN;
   if (f == NULL) return s;
   while (fgets(line, sizeof line, f)) {
     sscanf(line, "peer_seconds %lf", &s);
+    sscanf(line, "peer_cpu %lf", cpu);
     if (show_counts && strncmp(line, "count ", 6) == 0) printf("  %s", line + 6);
   }
   return pclose(f) == 0 ? s : NAN;
@@ -88,18 +92,19 @@ int main(int argc, char **argv) {
   printf("(load average at start: %.2f on %ld cores)\n", bench_load(),
          sysconf(_SC_NPROCESSORS_ONLN));
   printf("counts per point (counting on):\n");
-  double off[16], on[16], pr[16];
+  double w[3][16], c[3][16], mw[3], mc[3];
   for (int k = 0; k < runs; k++) {
-    off[k] = bench_ops_child(argv[0], "off", n, seed, 0);
-    on[k] = bench_ops_child(argv[0], "on", n, seed, k == 0);
-    pr[k] = peer ? bench_ops_child(peer, "off", n, seed, 0) : NAN;
+    w[0][k] = bench_ops_child(argv[0], "off", n, seed, 0, &c[0][k]);
+    w[1][k] = bench_ops_child(argv[0], "on", n, seed, k == 0, &c[1][k]);
+    w[2][k] = peer ? bench_ops_child(peer, "off", n, seed, 0, &c[2][k]) : NAN;
   }
-  double toff = bench_median(off, runs), ton = bench_median(on, runs);
-  double tpr = peer ? bench_median(pr, runs) : NAN;
-  printf("\n| run | time (s) | / counting off |\n|---|---:|---:|\n");
-  printf("| counting off | %.3f | 1.000 |\n", toff);
-  printf("| counting on | %.3f | %.3f |\n", ton, ton / toff);
-  if (peer) printf("| peer build (%s) | %.3f | %.3f |\n", peer, tpr, tpr / toff);
+  for (int i = 0; i < 3; i++) mw[i] = bench_median(w[i], runs), mc[i] = bench_median(c[i], runs);
+  static const char *const what[3] = {"counting off", "counting on", "peer build"};
+  printf("\n| run | wall (s) | / off | CPU (s) | / off |\n|---|---:|---:|---:|---:|\n");
+  for (int i = 0; i < (peer ? 3 : 2); i++)
+    printf("| %s | %.3f | %.3f | %.3f | %.3f |\n", what[i], mw[i], mw[i] / mw[0], mc[i],
+           mc[i] / mc[0]);
+  double toff = mw[0], ton = mw[1];
   printf("(load average at end: %.2f)\n", bench_load());
   return isnan(toff) || isnan(ton) ? 1 : 0;
 }
