@@ -19,6 +19,8 @@
 **     site (checked through the first item);
 **   - in random order the history DAG locates in fewer steps than the walk
 **     once n is large (logarithmic against a square root);
+**   - every incremental variant gives the incremental row's triangles on
+**     thousands of small sets from a 5 x 5 grid (ties and duplicates);
 **   - counting changes nothing: the same triangles with counting on or off
 **     (lot's three algorithms, DT and ES:square), and nothing counted off.
 */
@@ -187,6 +189,44 @@ static void test_dag_against_walk(void **state) {
   free(p);
 }
 
+/* Thousands of small sets drawn from a 5 x 5 grid (collinear and
+** cocircular sites, duplicates everywhere): every incremental variant
+** gives the incremental row's triangles, for DT (and the bucket orders
+** for ES:square too). */
+static void test_small_degenerate_sets(void **state) {
+  (void)state;
+  static const char *const rows[] = {"watson", "incremental-dag", "incremental-serpentine",
+                                     "incremental-spiral", "incremental-quaternary"};
+  rule rs[2];
+  char err[256];
+  if (rule_parse("DT", &rs[0], err, sizeof err) != 0 || rule_parse("ES:square", &rs[1], err,
+                                                                   sizeof err) != 0)
+    fail_msg("%s", err);
+  testutil_rng g = {2024};
+  geom_point p[24];
+  for (int trial = 0; trial < testutil_reps(3000); trial++) {
+    size_t n = 3 + testutil_next(&g) % 22;
+    for (size_t i = 0; i < n; i++)
+      p[i] = (geom_point){(double)(testutil_next(&g) % 5), (double)(testutil_next(&g) % 5)};
+    for (int ri = 0; ri < 2; ri++) {
+      paradigm_input in = {.p = p, .n = n, .r = &rs[ri], .problem = PARADIGM_DELAUNAY,
+                           .seed = (uint64_t)trial, .threads = 1};
+      paradigm_result ref, res;
+      if (paradigm_run(paradigm_find("incremental"), &in, &ref, err, sizeof err) != 0) continue;
+      for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
+        if (ri == 1 && k < 2) continue;   /* Watson and the DAG serve DT only */
+        if (paradigm_run(paradigm_find(rows[k]), &in, &res, err, sizeof err) != 0)
+          fail_msg("%s, trial %d: %s", rows[k], trial, err);
+        if (res.ntri != ref.ntri || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri))
+          fail_msg("%s differs from incremental: trial %d, %zu points, %s", rows[k], trial, n,
+                   rs[ri].name);
+        paradigm_result_free(&res);
+      }
+      paradigm_result_free(&ref);
+    }
+  }
+}
+
 static void test_counting_changes_nothing(void **state) {
   (void)state;
   geom_point *p = malloc(2000 * sizeof *p);
@@ -231,6 +271,7 @@ int main(void) {
     cmocka_unit_test(test_convex_boundary_order),
     cmocka_unit_test(test_watson_is_lawson),
     cmocka_unit_test(test_dag_against_walk),
+    cmocka_unit_test(test_small_degenerate_sets),
     cmocka_unit_test(test_counting_changes_nothing),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
