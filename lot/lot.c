@@ -147,6 +147,7 @@ static int lot_push(lot_run *R, uint32_t c) {
     size_t cap = R->cap ? 2 * R->cap : 1024;
     lot_entry *s = realloc(R->stk, cap * sizeof *s);
     if (s == NULL) return -1;
+    ops_memory(R->o->ops, (int64_t)((cap - R->cap) * sizeof *s));
     R->stk = s;
     R->cap = cap;
   }
@@ -451,18 +452,20 @@ static int lot_examine(lot_run *R, uint32_t c) {
     ** b, so b is not on segment ad; likewise c), so no orientation test.
     ** d on it (a tie) makes four distinct cocircular sites, a and d apart:
     ** strictly convex too. */
-    int in = geom_incircle_valid(pa, pb, pc, pd);
+    int in = ops_incircle(R->o->ops, pa, pb, pc, pd);
     if (in < 0 || (in == 0 && !lot_tie_flips(pa, pb, pc, pd))) return 0;
     n1 = n2 = (lot_enc){0, 0};
   } else {
     n1 = n2 = (lot_enc){0, 0};
-    if (geom_orient_valid(pa, pb, pd) <= 0 || geom_orient_valid(pa, pd, pc) <= 0) return 0;
+    if (ops_orient(R->o->ops, pa, pb, pd) <= 0 || ops_orient(R->o->ops, pa, pd, pc) <= 0)
+      return 0;
     rule_choice ch;
     if (R->kind == LOT_K_TRI) {
       int flip = m->enc ? lot_prefers_lazy(R, a, b, c0, d, t, u, &n1, &n2)
                         : lot_prefers_exact(R, a, b, c0, d, t, u, &n1, &n2);
       ch = flip ? RULE_AC : RULE_EITHER;
     } else if (R->kind == LOT_K_SHAPE) {
+      ops_add(R->o->ops, OPS_INSHAPE, 1);
       ch = lot_shape_choice(R, c, cd, pa, pb, pd, pc);
     } else if (R->kind == LOT_K_POWER) {
       const uint32_t *in = m->inp;
@@ -591,6 +594,8 @@ static void lot_run_init(lot_run *R, lot *L, const lot_options *o) {
                : v == JOINT_VEC_SUM && R->any.lo > -INFINITY ? LOT_FIRST_SUM
                : v == JOINT_VEC_MAX ? LOT_FIRST_MAX : 0;
   L->st.max_flips = o->max_flips ? o->max_flips : lot_default_max_flips(L->st.n);
+  L->m.ops = o->ops;   /* the mesh counts too, for this run (lot_run_free forgets it) */
+  ops_memory(o->ops, (int64_t)lot_mesh_bytes(&L->m));
 }
 
 /* An empty-shape rule keeps hints where its shape wants them
@@ -605,6 +610,8 @@ static void lot_run_hints(lot_run *R, int forget) {
 }
 
 static void lot_run_free(lot_run *R) {
+  ops_memory(R->o->ops, -(int64_t)(R->cap * sizeof *R->stk));
+  R->m->ops = NULL;   /* the caller's counts are not kept past the run */
   free(R->stk);
   free(R->hkey);
   free(R->hval);

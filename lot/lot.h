@@ -45,6 +45,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "geom.h"
+#include "ops.h"
 #include "rule.h"
 #include "shape.h"
 
@@ -82,6 +83,11 @@ typedef struct lot_options {
   ** contract of geom.h.  NULL: none (WDT is then DT).  Only WDT takes them,
   ** with the incremental or flip algorithm and no segments or holes. */
   const double *weights;
+  /* Operation counts (geom/ops.h, docs/paradigms.md "The counting layer"):
+  ** when not NULL, the run adds its orientation and in-circle / in-shape
+  ** tests, flips, walk steps, edges made and deleted, sweep events and peak
+  ** working memory to *ops (the caller clears it).  NULL: nothing counted. */
+  ops_counts *ops;
 } lot_options;
 
 /* Defaults: incremental, spatial order, seed 1, RULE_DEFAULT_TIE_EPS. */
@@ -345,6 +351,8 @@ void lot_options_set_holes(lot_options *o, const geom_point *holes, size_t nhole
 void lot_options_set_keep_hull(lot_options *o, int keep_hull);
 /* weights[i]: point i's weight (WDT; NULL: none); lot_build checks them. */
 void lot_options_set_weights(lot_options *o, const double *weights);
+/* The counts a run adds to (the caller's, cleared by it; NULL: none). */
+void lot_options_set_ops(lot_options *o, ops_counts *ops);
 
 /* Whether the options make sense together, before lot_build: 0, or -1
 ** with a one-line message naming the options by their fields (no flag of

@@ -65,6 +65,10 @@ void lot_options_set_weights(lot_options *o, const double *weights) {
   o->weights = weights;
 }
 
+void lot_options_set_ops(lot_options *o, ops_counts *ops) {
+  o->ops = ops;
+}
+
 int lot_options_check(const lot_options *o, char *err, size_t errlen) {
   const char *why = NULL;
   if ((int)o->algorithm < LOT_INCREMENTAL || (int)o->algorithm > LOT_SWEEP)

@@ -48,6 +48,12 @@ int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache) {
   return 0;
 }
 
+size_t lot_mesh_bytes(const lot_mesh *m) {
+  size_t cache = m->bad ? sizeof *m->bad : m->enc ? sizeof *m->enc : 0;
+  return (size_t)m->np * (sizeof *m->p + sizeof *m->inp)
+       + (size_t)m->cap * (2 * LOT_CORNER(sizeof *m->tv, 0) + cache);
+}
+
 void lot_mesh_free(lot_mesh *m) {
   free(m->p);
   free(m->inp);
@@ -121,6 +127,7 @@ void lot_mesh_first(lot_mesh *m, uint32_t a, uint32_t b, uint32_t c) {
   lot_mesh_link(m, LOT_CORNER(2, 1), LOT_CORNER(3, 0));
   m->nt = 4;
   m->last = 0;
+  ops_add(m->ops, OPS_EDGES_MADE, 3);
 }
 
 /* i mod 3 for i < 6, by table: the first step's and lot_scan's edge
@@ -345,6 +352,7 @@ static int lot_walk_first(const lot_mesh *m, uint32_t t, geom_point q, uint64_t 
     uint32_t e = lot_mod3[e0 + k];
     geom_point pr = m->p[v[lot_mod3[e + 1]]], pl = m->p[v[lot_mod3[e + 2]]];
     o[e] = geom_orient_valid(pr, pl, q);
+    ops_add(m->ops, OPS_ORIENT, 1);
     if (o[e] < 0) {   /* the triangle beyond sees this edge from pl to pr */
       lot_walk_ahead h;
       lot_walk_load((lot_walk_view){m->tv, m->tn, m->p}, m->tn[LOT_CORNER(t, e)], &h, 0);
@@ -407,8 +415,9 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
   geom_point p0 = m->p[tv0[0]], p1 = m->p[tv0[1]], p2 = m->p[tv0[2]];
   w.dg = (geom_point){(p0.x + p1.x + p2.x) / 3 - q.x, (p0.y + p1.y + p2.y) / 3 - q.y};
   w.guided = 1;
+  uint64_t step = 0;
   if (!lot_walk_first(m, t0, q, &s, &w, d, c, &where)) {
-    for (uint64_t step = 1;; step++) {
+    for (step = 1;; step++) {
       if (step == LOT_WALK_GUIDED) w.guided = 0;
       if (w.a == LOT_GHOST) {   /* crossed the hull: the ghost's ghost corner */
         *c = w.nc;
@@ -426,6 +435,10 @@ lot_where lot_mesh_locate(lot_mesh *m, geom_point q, uint32_t *c) {
     }
   }
   m->walk = s;
+  /* Counted once per location, off the walk's loop: its steps (triangles
+  ** entered), two orientations per step, and the last triangle's two. */
+  ops_add(m->ops, OPS_LOCATE, step + 1);
+  ops_add(m->ops, OPS_ORIENT, 2 * step);
   return where;
 }
 
@@ -488,6 +501,7 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     /* The previous ghost (z, u, G) faces edge (u, G) with z's corner pc. */
     uint32_t pc = m->tn[lot_prev3(first)];
     uint32_t pg = lot_prev3(pc);
+    ops_add(m->ops, OPS_ORIENT, pg != gc);
     if (pg == gc ||
         geom_orient_valid(m->p[m->tv[lot_next3(pg)]], m->p[m->tv[lot_prev3(pg)]], q) <= 0)
       break;
@@ -512,6 +526,7 @@ static long lot_insert_outside(lot_mesh *m, uint32_t gc, uint32_t k, uint32_t **
     /* The next ghost (v, w, G) faces edge (G, v) with w's corner. */
     uint32_t ng = lot_next3(m->tn[lot_next3(x)]);
     if (m->tv[ng] != LOT_GHOST) break;       /* it was converted already: wrapped around */
+    ops_add(m->ops, OPS_ORIENT, 1);
     if (geom_orient_valid(m->p[m->tv[lot_next3(ng)]], m->p[m->tv[lot_prev3(ng)]], q) <= 0)
       break;
     x = ng;
@@ -541,6 +556,8 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
   }
   uint32_t out[4];
   long n = 0;
+  /* A split hull edge has a ghost beyond it: its edge to k is no edge. */
+  int far_real = w == LOT_ON_EDGE && m->tv[m->tn[c]] != LOT_GHOST;
   if (w == LOT_OUTSIDE) {
     n = lot_insert_outside(m, c, k, cand, candcap);
   } else if (w == LOT_IN_TRIANGLE) {
@@ -557,6 +574,11 @@ long lot_mesh_insert(lot_mesh *m, uint32_t k, lot_where w, uint32_t c, uint32_t 
     (*cand)[n++] = lot_prev3(out[1]);              /* a's corner in (a, k, c0): edge k-c0 */
   }
   if (n < 0) return -1;
+  /* Edges made: k's to the triangle's corners, to a split edge's ends and
+  ** apexes (the edge itself deleted), or to the hull chain it sees. */
+  ops_add(m->ops, OPS_EDGES_MADE, w == LOT_IN_TRIANGLE ? 3u : w == LOT_ON_EDGE ? 3u + far_real
+                                   : (uint64_t)n + 1);
+  if (w == LOT_ON_EDGE) ops_add(m->ops, OPS_EDGES_DELETED, 1);
   m->last = lot_tri_of((*cand)[0]);
   /* Keep only edges with a real triangle on both sides. */
   long kept = 0;
@@ -573,6 +595,9 @@ void lot_mesh_flip(lot_mesh *m, uint32_t c, double bad_t, double bad_u) {
   uint32_t j0 = m->tn[c], u = lot_tri_of(j0), j1 = lot_next3(j0), j2 = lot_next3(j1);
   uint32_t a = m->tv[c], d = m->tv[j0];
   uint32_t n_ca = m->tn[i1], n_bd = m->tn[j1];
+  ops_add(m->ops, OPS_FLIPS, 1);
+  ops_add(m->ops, OPS_EDGES_MADE, 1);
+  ops_add(m->ops, OPS_EDGES_DELETED, 1);
   m->tv[i2] = d;
   m->tv[j2] = a;
   m->tv[LOT_CORNER(t, 3)] = m->tv[LOT_CORNER(u, 3)] = 0;   /* no hints */

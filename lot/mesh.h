@@ -64,6 +64,7 @@ typedef struct lot_mesh {
   const measure *meas;  /* r's measure, looked up once (triangle-based rules) */
   unsigned fields;      /* the geom_tri fields the measure reads (measure_fields) */
   measure_points_fn pts;   /* its evaluation from points (built-ins), or NULL */
+  ops_counts *ops;      /* the run's counts (lot_options.ops), or NULL */
 } lot_mesh;
 
 /* Corner i of triangle t, the triangle of corner c, and the next and
@@ -89,6 +90,8 @@ FLIPLAB_INTERNAL int lot_mesh_alloc(lot_mesh *m, uint32_t np, lot_cache cache);
 ** 0, or -1 when out of memory. */
 FLIPLAB_INTERNAL int lot_mesh_recache(lot_mesh *m, lot_cache cache);
 FLIPLAB_INTERNAL void lot_mesh_free(lot_mesh *m);
+/* The bytes m holds (points, indices, triangles, cache): for OPS_PEAK_BYTES. */
+FLIPLAB_INTERNAL size_t lot_mesh_bytes(const lot_mesh *m);
 /* The first triangle a, b, c (anticlockwise) and its three ghosts. */
 /* Link corners c1 and c2 as neighbours across their opposite edge. */
 FLIPLAB_INTERNAL void lot_mesh_link(lot_mesh *m, uint32_t c1, uint32_t c2);

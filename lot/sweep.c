@@ -153,6 +153,7 @@ static uint32_t sw_edge_new(lot_sweep *S) {
   if (geom_grow((void **)&S->ec, &S->ecap, 2 * (S->ne + 1), sizeof *S->ec) != 0)
     return SW_NONE;
   S->ec[2 * S->ne] = S->ec[2 * S->ne + 1] = SW_NONE;
+  ops_add(S->m->ops, OPS_EDGES_MADE, 1);
   return (uint32_t)S->ne++;
 }
 
@@ -366,6 +367,7 @@ static int sw_schedule(lot_sweep *S, uint32_t b) {
   if (a == SW_HEAD || c == SW_NONE) return 0;
   sw_event e = {0, 0, b, S->seq++};
   const geom_point t[3] = {nd[a].pt, nd[b].pt, nd[c].pt};
+  ops_add(S->m->ops, OPS_ORIENT, 1);   /* the closing test: c right of a b */
   if (!S->s->closes(S->s->ctx, t[0], t[1], t[2])) return 0;
   S->s->key_bounds(S->s->ctx, t, &e.lo, &e.hi);
   if (S->framed) S->s->ikey(S->s->ctx, &S->fr, t, 0, &S->ik[b]);
@@ -503,12 +505,14 @@ static int sw_events(lot_sweep *S, size_t *duplicates) {
     if (S->nh > 0 && (k == np || sw_before_site(S, &S->hp[0], p[k].x))) {
       uint32_t b = S->hp[0].node;
       sw_remove(S, 0);
+      ops_add(S->m->ops, OPS_EVENTS, 1);
       int rc = sw_circle(S, b);
       if (rc != 0) return rc;
     } else if (k > 0 && p[k].x == p[k - 1].x && p[k].y == p[k - 1].y) {
       ++*duplicates;   /* sorted: the first of equal points has the smallest index */
       k++;
     } else {
+      ops_add(S->m->ops, OPS_EVENTS, 1);
       int rc = sw_site(S, k++);
       if (rc != 0) return rc;
     }
@@ -535,6 +539,16 @@ static int sw_hints_init(lot_sweep *S) {
   return 0;
 }
 
+/* The sweep's arrays only grow: their final sizes are its peak, held on
+** top of the mesh's for the run's length. */
+static void sw_memory(const lot_sweep *S) {
+  int64_t b = (int64_t)(S->ndcap * sizeof *S->nd + S->ecap * sizeof *S->ec
+                        + S->hcap * sizeof *S->hp + S->hposcap * sizeof *S->hpos
+                        + S->ikcap * sizeof *S->ik + S->nhint * sizeof *S->hint);
+  ops_memory(S->m->ops, b);
+  ops_memory(S->m->ops, -b);
+}
+
 int lot_sweep_run(lot_mesh *m, const shape_sweep *s, size_t *duplicates) {
   lot_sweep S;
   memset(&S, 0, sizeof S);
@@ -556,6 +570,7 @@ int lot_sweep_run(lot_mesh *m, const shape_sweep *s, size_t *duplicates) {
   rc = sw_ghosts(&S);
   m->last = 0;
 done:
+  sw_memory(&S);
   free(S.nd);
   free(S.ec);
   free(S.hp);

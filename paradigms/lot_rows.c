@@ -1,8 +1,7 @@
 /*
 ** lot_rows.c: lot/'s incremental, flip and sweep algorithms as rows of the
 ** registry, so that every new algorithm is compared with them on equal
-** terms.  Their counts are lot's statistics until lot/ counts through
-** ops.h itself.
+** terms.  lot/ counts its own operations through ops.h (lot_options.ops).
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +15,7 @@ static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradig
   lot_options_init(&o, in->r);
   o.algorithm = alg;
   o.seed = in->seed;
+  o.ops = &out->ops;
   if (in->problem == PARADIGM_CONSTRAINED) {
     o.segments = in->segments;
     o.nsegments = in->nsegments;
@@ -32,7 +32,6 @@ static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradig
     return -1;
   }
   lot_get_triangles(L, out->tri);
-  ops_add(&out->ops, OPS_FLIPS, st->flips);
   lot_free(L);
   return 0;
 }

@@ -49,6 +49,29 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    BOTH_RULES, "polygons: not yet (2.4.3)",
    "O(n^2 e): a scan of every site per edge, e constraint pieces per site", NULL,
    paradigm_select_constrained},
+  /* incremental variants (paradigms/incremental.c) */
+  {"incremental-serpentine", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints and polygons: the row incremental inserts segments",
+   "O(n^(5/4)) expected for uniform sites (sqrt(n) buckets, walk)",
+   "buckets (0: sqrt(n))", paradigm_incr_serpentine},
+  {"incremental-spiral", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints and polygons: the row incremental inserts segments",
+   "O(n^(5/4)) expected for uniform sites (sqrt(n) buckets, walk)",
+   "buckets (0: sqrt(n))", paradigm_incr_spiral},
+  {"incremental-quaternary", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints and polygons: the row incremental inserts segments",
+   "O(n) expected for uniform sites (n buckets in Morton order, walk)",
+   "buckets (0: n)", paradigm_incr_quaternary},
+  {"watson", "incremental", "2.3.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
+   "DT only: the cavity of an empty-shape rule is not proved star-shaped here; "
+   "no constraints or polygons",
+   "O(n) expected for uniform sites (quaternary order, walk), O(n^2) worst",
+   "1: random order (0: quaternary buckets)", paradigm_watson},
+  {"incremental-dag", "incremental", "2.3.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
+   "DT only: the cavity of an empty-shape rule is not proved star-shaped here; "
+   "no constraints or polygons",
+   "O(n log n) expected (random order, history DAG)",
+   "1: quaternary buckets (0: random order)", paradigm_incr_dag},
 };
 
 #define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])

@@ -84,5 +84,22 @@ typedef struct paradigm_select_stats {
 FLIPLAB_INTERNAL int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
                                          paradigm_select_search search, paradigm_output *out,
                                          paradigm_select_stats *st, char *err, size_t errlen);
+/* The incremental variants of 2.3 (paradigms/incremental.c): lot's
+** insertion in the bucket orders of figure 2.8; Watson's cavity insertion
+** located by a walk, and by the history DAG. */
+FLIPLAB_INTERNAL
+int paradigm_incr_serpentine(const paradigm_input *in, paradigm_output *out, char *err,
+                             size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_spiral(const paradigm_input *in, paradigm_output *out, char *err,
+                         size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_quaternary(const paradigm_input *in, paradigm_output *out, char *err,
+                             size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_watson(const paradigm_input *in, paradigm_output *out, char *err, size_t errlen);
+FLIPLAB_INTERNAL
+int paradigm_incr_dag(const paradigm_input *in, paradigm_output *out, char *err,
+                      size_t errlen);
 
 #endif

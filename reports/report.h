@@ -25,6 +25,7 @@
 #include "lot.h"
 #include "siteflip.h"
 #include "study_cpdt.h"
+#include "study_paradigms.h"
 
 /* One rule's outcome.  measure and joint are empty for a whole-quadrilateral
 ** rule such as DT; joint is the command-line suffix ("-inf" ... "inf"). */
@@ -376,6 +377,25 @@ int report_cpdt_csv(FILE *f, const char *sampler, uint64_t trials, const study_c
                     size_t ncells);
 int report_cpdt_svg(FILE *f, const char *title, const study_cpdt_cell *cells, size_t ncells,
                     const int *algorithms, size_t nalgorithms, int count);
+/* ---- fliplab paradigms (reports/paradigms.c) ----
+** Table 2.4 anew.  The CSV: a row per cell of study_paradigms_run
+** (algorithm, paradigm, section, rule, family, n, distinct, triangles,
+** status "ok" or "refused: <reason>", seconds, each count per site
+** NAME_per_site, then the growth exponents growth_seconds and
+** growth_NAME of the cell's (algorithm, rule, family), empty when there
+** is none).  The Markdown table: a row per (algorithm, rule, family), the
+** median time of each size in ms, the time's growth exponent, and the
+** counts per site at the largest size; a refused row says why.  The SVG:
+** count k per site (k = OPS_COUNT: the time) against n on log axes, a
+** line per algorithm for the run's first rule and family, its slope in
+** the legend.  0, or -1 on a write error. */
+int report_paradigms_csv(FILE *f, const study_paradigms_plan *pl,
+                         const study_paradigms_cell *cells);
+int report_paradigms_md(FILE *f, const study_paradigms_plan *pl,
+                        const study_paradigms_cell *cells);
+int report_paradigms_svg(FILE *f, const char *title, const study_paradigms_plan *pl,
+                         const study_paradigms_cell *cells, int k);
+
 /* ---- random convex polygons (reports/svg_convex.c) ---- */
 
 /* count polygons of n vertices each (xy[k n .. k n + n)), panels in rows

@@ -158,6 +158,24 @@ FLIPLAB_INTERNAL double report_svg_fit_scale(const report_svg_box *b, double siz
 FLIPLAB_INTERNAL void report_svg_colour_legend(FILE *f, double x0, double y, double lo,
                                                double hi);
 
+/* ---- log-log line plots (reports/svg.c: cpdt, paradigms) ---- */
+
+/* A 640 x 480 canvas, a 380 px square plot with whole decades on both
+** axes (log10 ranges), a line per series with its legend entry at the
+** right (eight colours, cycled). */
+typedef struct report_loglog { double x0, x1, y0, y1; } report_loglog;
+/* The decades around x in [xlo, xhi], y in [ylo, yhi] (positive; none:
+** xhi == 0, one decade from 1). */
+FLIPLAB_INTERNAL report_loglog report_loglog_range(double xlo, double xhi, double ylo,
+                                                   double yhi);
+FLIPLAB_INTERNAL void report_loglog_frame(FILE *f, const report_loglog *a, const char *title,
+                                          const char *xlabel, const char *ylabel);
+/* Series `slot`: the line through (x[i], y[i]), i < k (positive), its
+** markers, and its legend entry. */
+FLIPLAB_INTERNAL void report_loglog_series(FILE *f, const report_loglog *a, const double *x,
+                                           const double *y, size_t k, int slot,
+                                           const char *label);
+
 /* ---- directed flip graphs (svg_flipgraph.c, svg_siteflip.c) ---- */
 
 /* The XML declaration, the <svg> element of w x h px, the arrowhead marker

@@ -174,3 +174,70 @@ void report_svg_node_tags(FILE *f, const report_svg_node_style *st, double cx, d
     fprintf(f, "<text x='%.1f' y='%.1f' font-size='11' fill='#555555'>DT</text>\n", cx + h - 20,
             cy + h - st->tag_gap);
 }
+
+/* ---- log-log line plots ------------------------------------------------ */
+
+/* Canvas, plot area (pixels); one colour per series. */
+enum { LL_W = 640, LL_H = 480, LL_X0 = 70, LL_Y0 = 40, LL_PW = 380, LL_PH = 380 };
+static const char *const report_loglog_colours[] = {
+  "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+};
+
+static double report_loglog_px(const report_loglog *a, double n) {
+  return LL_X0 + (log10(n) - a->x0) / (a->x1 - a->x0) * LL_PW;
+}
+
+static double report_loglog_py(const report_loglog *a, double v) {
+  return LL_Y0 + LL_PH - (log10(v) - a->y0) / (a->y1 - a->y0) * LL_PH;
+}
+
+report_loglog report_loglog_range(double xlo, double xhi, double ylo, double yhi) {
+  if (xhi == 0) return (report_loglog){0, 1, 0, 1};
+  report_loglog a = {floor(log10(xlo)), ceil(log10(xhi)), floor(log10(ylo)), ceil(log10(yhi))};
+  if (a.x1 <= a.x0) a.x1 = a.x0 + 1;
+  if (a.y1 <= a.y0) a.y1 = a.y0 + 1;
+  return a;
+}
+
+void report_loglog_frame(FILE *f, const report_loglog *a, const char *title, const char *xlabel,
+                         const char *ylabel) {
+  fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+             "font-family=\"sans-serif\">\n"
+             "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n", LL_W, LL_H);
+  fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
+             "stroke=\"black\"/>\n", LL_X0, LL_Y0, LL_PW, LL_PH);
+  char lab[32];
+  for (double e = a->x0; e <= a->x1; e++) {
+    double x = LL_X0 + (e - a->x0) / (a->x1 - a->x0) * LL_PW;
+    snprintf(lab, sizeof lab, "1e%g", e);
+    fprintf(f, "<line x1=\"%.2f\" y1=\"%d\" x2=\"%.2f\" y2=\"%d\" stroke=\"#ccc\"/>\n", x, LL_Y0,
+            x, LL_Y0 + LL_PH);
+    report_svg_text(f, x - 12, LL_Y0 + LL_PH + 16, 11, lab);
+  }
+  for (double e = a->y0; e <= a->y1; e++) {
+    double y = LL_Y0 + LL_PH - (e - a->y0) / (a->y1 - a->y0) * LL_PH;
+    snprintf(lab, sizeof lab, "1e%g", e);
+    fprintf(f, "<line x1=\"%d\" y1=\"%.2f\" x2=\"%d\" y2=\"%.2f\" stroke=\"#ccc\"/>\n", LL_X0, y,
+            LL_X0 + LL_PW, y);
+    report_svg_text(f, LL_X0 - 40, y + 4, 11, lab);
+  }
+  report_svg_text(f, LL_X0, 24, 14, title);
+  report_svg_text(f, LL_X0 + LL_PW / 2 - 60, LL_H - 12, 12, xlabel);
+  report_svg_text(f, LL_X0 + LL_PW + 16, LL_Y0 + 8, 12, ylabel);
+}
+
+void report_loglog_series(FILE *f, const report_loglog *a, const double *x, const double *y,
+                          size_t k, int slot, const char *label) {
+  const char *col = report_loglog_colours[slot % 8];
+  fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" points=\"", col);
+  for (size_t i = 0; i < k; i++)
+    fprintf(f, "%.2f,%.2f ", report_loglog_px(a, x[i]), report_loglog_py(a, y[i]));
+  fprintf(f, "\"/>\n");
+  for (size_t i = 0; i < k; i++)
+    fprintf(f, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3\" fill=\"%s\"/>\n",
+            report_loglog_px(a, x[i]), report_loglog_py(a, y[i]), col);
+  double ly = LL_Y0 + 40 + 20 * slot;
+  fprintf(f, "<rect x=\"%d\" y=\"%.2f\" width=\"12\" height=\"4\" fill=\"%s\"/>\n",
+          LL_X0 + LL_PW + 16, ly - 4, col);
+  report_svg_text(f, LL_X0 + LL_PW + 34, ly, 11, label);
+}

@@ -131,6 +131,7 @@ _PROTOS = {
     "lot_options_set_segments": (None, [_void_p, c_uint32_p, _size]),
     "lot_options_set_holes": (None, [_void_p, Point_p, _size]),
     "lot_options_set_weights": (None, [_void_p, c_double_p]),
+    "lot_options_set_ops": (None, [_void_p, _void_p]),
     "lot_get_redundant": (_size, [_void_p, c_uint32_p]),
     "lot_check_weighted": (_int, [Point_p, c_double_p, _size, c_uint32_p, _size, Rule_p,
                                   _void_p]),

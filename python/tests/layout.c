@@ -63,6 +63,7 @@ static void layout_lot(void) {
   F(lot_options, decide); F(lot_options, decide_ctx); F(lot_options, segments);
   F(lot_options, nsegments); F(lot_options, holes); F(lot_options, nholes);
   F(lot_options, keep_hull); F(lot_options, weights);
+  F(lot_options, ops);
   Z(lot_stats); F(lot_stats, n); F(lot_stats, distinct); F(lot_stats, duplicates);
   F(lot_stats, hull); F(lot_stats, triangles); F(lot_stats, flips); F(lot_stats, status);
   F(lot_stats, cycle_length); F(lot_stats, cycle_quads); F(lot_stats, cycle_quad);

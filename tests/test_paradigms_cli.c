@@ -1,0 +1,172 @@
+/*
+** test_paradigms_cli.c: `fliplab paradigms` as a user runs it: --list
+** names every algorithm of the registry; a small matrix writes a CSV whose
+** columns are every count per site and growth exponent, whose counts are
+** the library's for the same points (sampler_points, paradigm_run
+** recomputed here) and whose growth exponents are the least-squares slopes
+** of its own totals; a refused rule is a row saying why, in the CSV and on
+** stdout; the plot is well-formed; every bad option is one line on stderr,
+** exit status 2, and no output file.
+*/
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "paradigm.h"
+#include "sampler.h"
+#include "testutil.h"
+
+static char tpl_out[1 << 17], tpl_err[4096];
+
+static void test_list(void **state) {
+  (void)state;
+  assert_int_equal(testutil_run("paradigms --list", tpl_out, sizeof tpl_out, tpl_err,
+                                sizeof tpl_err), 0);
+  for (size_t i = 0; i < paradigm_count(); i++) {
+    char row[128];
+    snprintf(row, sizeof row, "| %s | %s | %s |", paradigm_get(i)->name,
+             paradigm_get(i)->paradigm, paradigm_get(i)->section);
+    if (strstr(tpl_out, row) == NULL) fail_msg("--list has no row '%s'", row);
+  }
+}
+
+/* Field k (0-based) of the CSV line s, unquoted fields only, into buf. */
+static const char *tpl_field(const char *s, int k, char *buf, size_t len) {
+  for (int i = 0; i < k; i++) {
+    s = strchr(s, ',');
+    assert_non_null(s);
+    s++;
+  }
+  size_t n = strcspn(s, ",\n");
+  snprintf(buf, len, "%.*s", (int)n, s);
+  return buf;
+}
+
+/* The column named `name` in the header line h. */
+static int tpl_column(const char *h, const char *name) {
+  char buf[64];
+  for (int k = 0; k < 64; k++)
+    if (strcmp(tpl_field(h, k, buf, sizeof buf), name) == 0) return k;
+  fail_msg("no column %s", name);
+  return -1;
+}
+
+/* The line of the CSV for algorithm a, rule r, family f and size n. */
+static const char *tpl_line(const char *csv, const char *a, const char *r, const char *f,
+                            unsigned n) {
+  char key[128];
+  snprintf(key, sizeof key, "\n%s,", a);
+  for (const char *s = strstr(csv, key); s != NULL; s = strstr(s + 1, key)) {
+    char want[160], buf[64];
+    snprintf(want, sizeof want, "%s|%s|%u", r, f, n);
+    char got[160];
+    snprintf(got, sizeof got, "%s|", tpl_field(s + 1, 3, buf, sizeof buf));
+    strcat(got, tpl_field(s + 1, 4, buf, sizeof buf));
+    strcat(got, "|");
+    strcat(got, tpl_field(s + 1, 5, buf, sizeof buf));
+    if (strcmp(got, want) == 0) return s + 1;
+  }
+  fail_msg("no row %s %s %s %u", a, r, f, n);
+  return NULL;
+}
+
+/* Count k of algorithm a on family f's n points (seed 4), recomputed. */
+static uint64_t tpl_count(const char *a, sampler_points_kind f, size_t n, int k) {
+  geom_point *p = malloc(n * sizeof *p);
+  assert_non_null(p);
+  sampler_points(f, 4, n, p);
+  rule r = rule_delaunay();
+  paradigm_input in = {.p = p, .n = n, .r = &r, .problem = PARADIGM_DELAUNAY, .seed = 4,
+                       .threads = 1};
+  paradigm_result res;
+  char err[256];
+  if (paradigm_run(paradigm_find(a), &in, &res, err, sizeof err) != 0) fail_msg("%s", err);
+  uint64_t v = res.ops.v[k];
+  paradigm_result_free(&res);
+  free(p);
+  return v;
+}
+
+static void test_matrix(void **state) {
+  (void)state;
+  char csv[512], svg[512];
+  testutil_tmppath(csv, sizeof csv, "paradigms.csv");
+  testutil_tmppath(svg, sizeof svg, "paradigms.svg");
+  assert_int_equal(testutil_runf(tpl_out, sizeof tpl_out, tpl_err, sizeof tpl_err,
+                                 "paradigms --algorithms incremental,watson,sweep --rules "
+                                 "DT,ES:square --families uniform,dups --sizes 300,1200 --runs 1 "
+                                 "--seed 4 --csv %s --svg %s --measure incircle", csv, svg), 0);
+  char *t = testutil_read_file(csv);
+  assert_non_null(t);
+  assert_int_equal(testutil_count(t, "\n"), 1 + 3 * 2 * 2 * 2);
+  for (int k = 0; k < OPS_COUNT; k++) {
+    char name[64];
+    snprintf(name, sizeof name, "%s_per_site", ops_name(k));
+    tpl_column(t, name);
+    snprintf(name, sizeof name, "growth_%s", ops_name(k));
+    tpl_column(t, name);
+  }
+  int ci = tpl_column(t, "incircle_per_site"), gi = tpl_column(t, "growth_incircle");
+  int st = tpl_column(t, "status");
+  char buf[256];
+  double v[2];
+  unsigned sizes[2] = {300, 1200};
+  for (int s = 0; s < 2; s++) {
+    const char *line = tpl_line(t, "incremental", "DT", "dups", sizes[s]);
+    v[s] = atof(tpl_field(line, ci, buf, sizeof buf)) * sizes[s];
+    assert_int_equal((uint64_t)llround(v[s]), tpl_count("incremental", SAMPLER_DUPS, sizes[s],
+                                                        OPS_INCIRCLE));
+    assert_string_equal(tpl_field(line, st, buf, sizeof buf), "ok");
+  }
+  const char *line = tpl_line(t, "incremental", "DT", "dups", 300);
+  double slope = log(v[1] / v[0]) / log(4.0);
+  TESTUTIL_NEAR(atof(tpl_field(line, gi, buf, sizeof buf)), slope, 1e-9, 1e-9);
+  line = tpl_line(t, "watson", "ES:square", "uniform", 1200);
+  assert_true(strstr(line, "refused: algorithm watson needs the rule DT") != NULL);
+  assert_non_null(strstr(tpl_out, "| watson | incremental | ES:square | uniform | refused: "));
+  free(t);
+  char *g = testutil_read_file(svg);
+  assert_non_null(g);
+  assert_non_null(strstr(g, "<svg"));
+  assert_non_null(strstr(g, "</svg>"));
+  assert_int_equal(testutil_count(g, "<polyline"), 3);
+  free(g);
+}
+
+static void test_errors(void **state) {
+  (void)state;
+  char csv[512];
+  testutil_tmppath(csv, sizeof csv, "bad.csv");
+  static const char *const bad[] = {
+    "--algorithms nope", "--algorithms watson,watson", "--families nope",
+    "--families uniform,uniform", "--sizes 2", "--sizes 100,x", "--sizes 1e9", "--runs 0",
+    "--runs 100", "--rules NOPE", "--rules ''", "--sizes 100,", "--measure nope", "--seed -1",
+    "--bogus", "--svg x.csv",
+    "--sizes 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17",
+  };
+  for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+    unlink(csv);
+    int rc = testutil_runf(tpl_out, sizeof tpl_out, tpl_err, sizeof tpl_err,
+                           "paradigms --sizes 100 --runs 1 --csv %s %s", csv, bad[i]);
+    if (rc != 2 || !testutil_one_line(tpl_err)) fail_msg("'%s': status %d, '%s'", bad[i], rc,
+                                                         tpl_err);
+    assert_int_equal(access(csv, F_OK), -1);
+  }
+}
+
+int main(void) {
+  const struct CMUnitTest tests[] = {
+    cmocka_unit_test(test_list),
+    cmocka_unit_test(test_matrix),
+    cmocka_unit_test(test_errors),
+  };
+  return cmocka_run_group_tests(tests, NULL, NULL);
+}
