@@ -10,7 +10,7 @@ src=$1
 max=${2:-60}
 cd "$src" || exit 2
 files=$(ls geom/*.[ch] badness/*.[ch] joints/*.[ch] samplers/*.[ch] shapes/*.[ch] \
-  cpdt/*.[ch] fliprules/*.[ch] lot/*.[ch] classify/*.[ch] got/*.[ch] studies/*.[ch] reports/*.[ch] \
+  cpdt/*.[ch] linf/*.[ch] fliprules/*.[ch] lot/*.[ch] classify/*.[ch] got/*.[ch] studies/*.[ch] reports/*.[ch] \
   cli/*.[ch] plugins/*.c fuzz/*.c 2>/dev/null)
 out=$(awk -v max="$max" '
 FNR == 1 { infn = 0; sig = "" }
