@@ -18,15 +18,16 @@ typedef struct cli_linf_opts {
   uint64_t dim, trials, seed, threads;
 } cli_linf_opts;
 
-static const char *const cli_linf_example_names[] = {"3d", "pseudo", "r5", NULL};
+static const char *const cli_linf_example_names[] = {"3d", "pseudo", "r5", "facet", NULL};
 
 #define T cli_linf_opts
 static const cli_option cli_linf_table[] = {
   {.name = "--example", .arg = "E", .dflt = "none",
    .help = "3d (locally but not globally Delaunay), pseudo (two circumcubes),\n"
-           "                     r5 (theorem 14's bound attained)",
+           "                     r5 (theorem 14's bound attained), facet (a facet of three\n"
+           "                     Delaunay tetrahedra)",
    .kind = CLI_CHOICE, .off = CLI_AT(T, example, int), .names = cli_linf_example_names,
-   .idef = -1, .bad = "unknown example '%s' (valid: 3d, pseudo, r5)"},
+   .idef = -1, .bad = "unknown example '%s' (valid: 3d, pseudo, r5, facet)"},
   CLI_OPT_FLAG("--montecarlo", "d + 1 points uniform in the unit cube: how many circumcubes", T,
                montecarlo),
   {.name = "--dim", .arg = "D", .help = "the dimension of --montecarlo", .kind = CLI_U64,
@@ -52,11 +53,16 @@ static const cli_spec cli_linf_spec = {
   "exact law (d <= 5) and theorem 14's bound.\n",
   cli_linf_table, CLI_NOPTS(cli_linf_table), NULL};
 
-/* The simplex's letters. */
+/* A simplex's or a facet's letters. */
 static const char *cli_linf_name(const study_linf_report *r, const study_linf_cell *x) {
   static char name[LINF_DIM_MAX + 2];
-  for (int j = 0; j <= r->ex->d; j++) name[j] = r->ex->labels[x->v[j]];
-  name[r->ex->d + 1] = 0;
+  study_linf_key_name(r->ex, linf_row_key(x->v, r->ex->d + 1), r->ex->d + 1, name);
+  return name;
+}
+
+static const char *cli_linf_facet(const study_linf_report *r, uint64_t key) {
+  static char name[LINF_DIM_MAX + 2];
+  study_linf_key_name(r->ex, key, r->ex->d, name);
   return name;
 }
 
@@ -81,6 +87,7 @@ static void cli_linf_cube(const study_linf_report *r, const study_linf_cell *x, 
 
 /* The cells, each circumcube with every point's distance from its centre. */
 static void cli_linf_cells(const study_linf_report *r) {
+  if (r->cells == 0) return;
   printf("%-8s %-24s %-8s", "cell", "centre", "radius");
   for (size_t q = 0; q < r->ex->n; q++) printf(" %4c", r->ex->labels[q]);
   printf("  empty  local\n");
@@ -95,7 +102,7 @@ static void cli_linf_cells(const study_linf_report *r) {
 
 static void cli_linf_claims(const study_linf_report *r) {
   if (r->cells & (r->cells - 1)) {
-    printf("the cells triangulate the hull: %s%s%s\n", r->tiling ? "yes" : "no (",
+    printf("the cells triangulate the points: %s%s%s\n", r->tiling ? "yes" : "no (",
            r->tiling ? "" : r->why, r->tiling ? "" : ")");
     printf("locally Delaunay (a circumcube without the neighbours' far vertices): %s\n",
            r->locally ? "yes" : "no");
@@ -112,11 +119,13 @@ static void cli_linf_claims(const study_linf_report *r) {
   printf("selection algorithm (4.2.2): %zu simplices; %llu facets, %llu cube tests, largest "
          "candidate set %llu\n", r->selected.n, (unsigned long long)r->st.facets,
          (unsigned long long)r->st.cube_tests, (unsigned long long)r->st.largest_set);
-  printf("the Delaunay simplices triangulate the hull: %s%s%s\n", r->del_tiling ? "yes" : "no (",
+  printf("the Delaunay simplices triangulate the points: %s%s%s\n", r->del_tiling ? "yes" : "no (",
          r->del_tiling ? "" : r->del_why, r->del_tiling ? "" : ")");
   printf("hull facets %zu, with no Delaunay simplex %zu; facets inside the hull with a "
          "Delaunay simplex on one side only %zu\n", r->hull_facets, r->bare_facets,
          r->open_facets);
+  printf("the most Delaunay simplices on one facet: %d (%s), %d of them on one side\n",
+         r->crowded, cli_linf_facet(r, r->crowded_at), r->crowded_side);
   if (!r->searched) return;
   printf("triangulations of the points %llu: locally Delaunay %llu, Delaunay %llu\n",
          (unsigned long long)r->tilings, (unsigned long long)r->tilings_local,

@@ -17,6 +17,11 @@ static const char *const study_linf_pseudo_cells[] = {"ABCD", NULL};
 static const double study_linf_r5[] = {0, 1, 1, 1, 1, 4, 1, 1, 1, 1, 1, 0, 0, 1, 1,
                                        1, 2, 2, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 2, 2};
 static const char *const study_linf_r5_cells[] = {"ABCDEF", NULL};
+/* Found by a search of random integer sets: facet DEF borders three
+** Delaunay tetrahedra, two of them on one side. */
+static const double study_linf_facet3[] = {5, 11, 12, 11, 4, 5, 0, 11, 0,
+                                           8, 1,  7,  9,  10, 6, 4, 8, 11};
+static const char *const study_linf_facet3_cells[] = {NULL};
 
 const study_linf_example study_linf_examples[STUDY_LINF_EXAMPLES] = {
   {"3d", "section 4.2.1: locally Delaunay but not Delaunay", 3, 6, "ABCDEF", study_linf_3d,
@@ -25,6 +30,8 @@ const study_linf_example study_linf_examples[STUDY_LINF_EXAMPLES] = {
    study_linf_pseudo_cells},
   {"r5", "theorem 14: the bound attained in R^5", 5, 6, "ABCDEF", study_linf_r5,
    study_linf_r5_cells},
+  {"facet", "section 4.2.1: a facet of three Delaunay tetrahedra", 3, 6, "ABCDEF",
+   study_linf_facet3, study_linf_facet3_cells},
 };
 
 const study_linf_example *study_linf_example_find(const char *s) {
@@ -36,11 +43,12 @@ const study_linf_example *study_linf_example_find(const char *s) {
 /* A facet of a pool simplex: its key (linf_row_key), the simplex, the
 ** side its far vertex lies on (the orientation of the facet, in increasing
 ** order, then that vertex) and whether it is a facet of the hull. */
-typedef struct study_linf_facet {
+struct study_linf_facet {
   uint64_t key;
   size_t cell;
   int side, hull;
-} study_linf_facet;
+};
+typedef struct study_linf_facet study_linf_facet;
 
 static int study_linf_facet_cmp(const void *a, const void *b) {
   const study_linf_facet *x = a, *y = b;
@@ -70,35 +78,40 @@ static void study_linf_facets(const study_linf_example *ex, const study_linf_cel
   }
 }
 
-static const char *study_linf_facet_name(const study_linf_report *r, uint64_t key) {
-  static _Thread_local char name[LINF_DIM_MAX + 1];
-  int d = r->ex->d;
-  for (int i = d - 1; i >= 0; i--, key >>= 6) name[i] = r->ex->labels[key & 63];
-  name[d] = 0;
-  return name;
+void study_linf_key_name(const study_linf_example *ex, uint64_t key, int m, char *name) {
+  for (int i = m - 1; i >= 0; i--, key >>= 6) name[i] = ex->labels[key & 63];
+  name[m] = 0;
 }
 
-/* Does the set (a mask over the pool) triangulate the hull?  Each facet of
-** a simplex must be a hull facet of that one simplex, or a facet of two on
-** opposite sides: then the simplices cover each point of the hull once
-** (the covering degree does not change across a shared facet and is 1
-** beside the hull's boundary).  1, or 0 with why (may be NULL). */
-static int study_linf_tiles(const study_linf_report *r, const study_linf_facet *all,
-                            uint64_t set, char *why, size_t len) {
+static uint64_t study_linf_vmask(const study_linf_cell *x, int d) {
+  uint64_t m = 0;
+  for (int j = 0; j <= d; j++) m |= (uint64_t)1 << x->v[j];
+  return m;
+}
+
+/* O(k d log(k d)) for k simplices in the set. */
+int study_linf_triangulates(const study_linf_report *r, uint64_t set, char *why, size_t len) {
+  const study_linf_facet *all = r->facets;
   study_linf_facet f[64 * (LINF_DIM_MAX + 1)];
   size_t m = 0, w = (size_t)r->ex->d + 1;
   for (size_t c = 0; c < r->npool; c++)
     if (set >> c & 1) memcpy(f + m, all + c * w, w * sizeof *f), m += w;
   if (m == 0) return why ? (snprintf(why, len, "no simplices"), 0) : 0;
+  uint64_t used = 0;
   for (size_t c = 0; c < r->npool; c++)
-    if ((set >> c & 1) && r->pool[c].flat)
-      return why ? (snprintf(why, len, "a simplex is flat"), 0) : 0;
+    if (set >> c & 1) {
+      if (r->pool[c].flat) return why ? (snprintf(why, len, "a simplex is flat"), 0) : 0;
+      used |= study_linf_vmask(&r->pool[c], r->ex->d);
+    }
+  if (used != ((uint64_t)1 << r->ex->n) - 1)
+    return why ? (snprintf(why, len, "a point is no vertex"), 0) : 0;
   qsort(f, m, sizeof *f, study_linf_facet_cmp);
   for (size_t a = 0, b; a < m; a = b) {
     for (b = a + 1; b < m && f[b].key == f[a].key; b++) continue;
     if ((b - a == 1 && f[a].hull) || (b - a == 2 && f[a].side * f[a + 1].side < 0)) continue;
     if (why == NULL) return 0;
-    const char *name = study_linf_facet_name(r, f[a].key);
+    char name[LINF_DIM_MAX + 2];
+    study_linf_key_name(r->ex, f[a].key, r->ex->d, name);
     if (b - a == 1) snprintf(why, len, "facet %s is inside the hull, a simplex on one side", name);
     else if (b - a == 2) snprintf(why, len, "the two simplices on facet %s overlap", name);
     else snprintf(why, len, "facet %s belongs to %zu simplices", name, b - a);
@@ -123,12 +136,6 @@ static int study_linf_clear(const study_linf_report *r, size_t c, uint64_t mask,
   return k;
 }
 
-static uint64_t study_linf_vmask(const study_linf_cell *x, int d) {
-  uint64_t m = 0;
-  for (int j = 0; j <= d; j++) m |= (uint64_t)1 << x->v[j];
-  return m;
-}
-
 int study_linf_locally(study_linf_report *r, uint64_t set) {
   int ok = 1, d = r->ex->d;
   for (size_t c = 0; c < r->npool; c++) {
@@ -146,7 +153,8 @@ int study_linf_locally(study_linf_report *r, uint64_t set) {
 
 /* Every (d+1)-subset with its circumcubes and its facets.
 ** 0, or -1 (memory, or more than 64 of them). */
-static int study_linf_pool(study_linf_report *r, study_linf_facet **facets) {
+static int study_linf_pool(study_linf_report *r) {
+  study_linf_facet **facets = &r->facets;
   const study_linf_example *ex = r->ex;
   int d = ex->d;
   unsigned char c[LINF_DIM_MAX + 1];
@@ -199,28 +207,36 @@ static uint64_t study_linf_cells(const study_linf_report *r) {
   return m;
 }
 
-/* The hull facets no Delaunay simplex has, and the facets inside the hull
-** with a Delaunay simplex on one side only. */
-static void study_linf_walls(study_linf_report *r, const study_linf_facet *all) {
+/* The hull facets no Delaunay simplex has, the facets inside the hull
+** with a Delaunay simplex on one side only, and the most on one facet. */
+static void study_linf_walls(study_linf_report *r) {
+  const study_linf_facet *all = r->facets;
   int d = r->ex->d;
   unsigned char g[LINF_DIM_MAX];
   size_t w = (size_t)d + 1;
   for (int j = 0; j < d; j++) g[j] = (unsigned char)j;
   do {
     uint64_t key = linf_row_key(g, d);
-    size_t held = 0;
+    int pos = 0, neg = 0;
     for (size_t i = 0; i < r->npool * w; i++)
-      held += all[i].key == key && (r->delaunay >> all[i].cell & 1);
+      if (all[i].key == key && (r->delaunay >> all[i].cell & 1)) pos += all[i].side > 0,
+                                                                   neg += all[i].side < 0;
     int hull = linf_hull_facet(r->ex->pts, r->ex->n, d, g);
     r->hull_facets += hull;
-    r->bare_facets += hull && held == 0;
-    r->open_facets += !hull && held == 1;
+    r->bare_facets += hull && pos + neg == 0;
+    r->open_facets += !hull && pos + neg == 1;
+    if (pos + neg > r->crowded || (pos + neg == r->crowded && (pos > r->crowded_side ||
+                                                               neg > r->crowded_side))) {
+      r->crowded = pos + neg;
+      r->crowded_side = pos > neg ? pos : neg;
+      r->crowded_at = key;
+    }
   } while (linf_next_subset(g, d, r->ex->n));
 }
 
 /* Every subset of the pool that triangulates the hull: locally Delaunay?
 ** Delaunay?  O(2^k k d log(k d)) for a pool of k simplices. */
-static void study_linf_search(study_linf_report *r, const study_linf_facet *all) {
+static void study_linf_search(study_linf_report *r) {
   uint64_t solid = 0;
   int k = 0;
   for (size_t c = 0; c < r->npool; c++)
@@ -228,7 +244,7 @@ static void study_linf_search(study_linf_report *r, const study_linf_facet *all)
   if (k == 0 || k > STUDY_LINF_SEARCH_MAX) return;
   r->searched = 1;
   for (uint64_t set = solid; set != 0; set = (set - 1) & solid) {
-    if (!study_linf_tiles(r, all, set, NULL, 0)) continue;
+    if (!study_linf_triangulates(r, set, NULL, 0)) continue;
     r->tilings++;
     int global = (set & ~r->delaunay) == 0, local = study_linf_locally(r, set);
     r->tilings_global += global;
@@ -239,30 +255,29 @@ static void study_linf_search(study_linf_report *r, const study_linf_facet *all)
 }
 
 int study_linf_examine(const study_linf_example *ex, study_linf_report *r) {
-  study_linf_facet *all = NULL;
   linf_simplices del;
   memset(r, 0, sizeof *r);
   r->ex = ex;
   linf_simplices_init(&r->selected, ex->d);
-  if (study_linf_pool(r, &all) != 0 || linf_delaunay_brute(ex->pts, ex->n, ex->d, &del, NULL) != 0)
-    return free(all), -1;
+  if (study_linf_pool(r) != 0 || linf_delaunay_brute(ex->pts, ex->n, ex->d, &del, NULL) != 0)
+    return -1;
   r->delaunay = study_linf_mask(r, del.v, del.n);
   linf_simplices_free(&del);
-  if (linf_delaunay_select(ex->pts, ex->n, ex->d, &r->selected, &r->st) != 0)
-    return free(all), -1;
+  if (linf_delaunay_select(ex->pts, ex->n, ex->d, &r->selected, &r->st) != 0) return -1;
   r->cells = study_linf_cells(r);
-  r->tiling = study_linf_tiles(r, all, r->cells, r->why, sizeof r->why);
-  r->del_tiling = study_linf_tiles(r, all, r->delaunay, r->del_why, sizeof r->del_why);
-  study_linf_walls(r, all);
-  study_linf_search(r, all);
+  r->tiling = study_linf_triangulates(r, r->cells, r->why, sizeof r->why);
+  r->del_tiling = study_linf_triangulates(r, r->delaunay, r->del_why, sizeof r->del_why);
+  study_linf_walls(r);
+  study_linf_search(r);
   r->globally = r->cells != 0 && (r->cells & ~r->delaunay) == 0;
   r->locally = study_linf_locally(r, r->cells);
-  free(all);
   return 0;
 }
 
 void study_linf_report_free(study_linf_report *r) {
   free(r->pool);
+  free(r->facets);
   r->pool = NULL;
+  r->facets = NULL;
   linf_simplices_free(&r->selected);
 }

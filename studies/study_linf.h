@@ -16,7 +16,10 @@
 **           F(8,0,4) and the cells ACEF, ACDE, ABEF, BCEF, BCDF, "locally
 **           Delaunay but not Delaunay"
 **   pseudo  A(1,1,7) B(5,3,0) C(3,5,8) D(8,6,1), two circumcubes of radius 4
-**   r5      theorem 14's R^5 configuration with 4 circumcubes */
+**   r5      theorem 14's R^5 configuration with 4 circumcubes
+**   facet   six points with a facet of three Delaunay tetrahedra, two on one
+**           side (the end of section 4.2.1: the circumcubes through a
+**           facet do not nest); no cells */
 #define STUDY_LINF_CELLS_MAX 8
 typedef struct study_linf_example {
   const char *name, *what;
@@ -28,9 +31,11 @@ typedef struct study_linf_example {
 } study_linf_example;
 
 extern const study_linf_example study_linf_examples[];
-#define STUDY_LINF_EXAMPLES 3
+#define STUDY_LINF_EXAMPLES 4
 /* The example named s, or NULL. */
 const study_linf_example *study_linf_example_find(const char *s);
+/* The m point labels of a row key (linf_row_key) into name (m + 1 bytes). */
+void study_linf_key_name(const study_linf_example *ex, uint64_t key, int m, char *name);
 
 /* A simplex of an example's points (flat: in one hyperplane): its
 ** circumcubes (ncubes may be LINF_INFINITE), which have no point strictly
@@ -56,6 +61,9 @@ typedef struct study_linf_cell {
 **   hull_facets  the hull's facets, bare: those no Delaunay simplex has;
 **   open_facets  facets inside the hull with a Delaunay simplex on one
 **                side only (the walls of what the Delaunay simplices miss)
+**   crowded      the most Delaunay simplices on one facet (crowded_side:
+**                the most on one side of it; crowded_at: the first such
+**                facet, linf_row_key)
 **   tilings      every triangulation of the points (when the pool has at
 **                most STUDY_LINF_SEARCH_MAX simplices; searched 0 else),
 **                how many are locally Delaunay, how many Delaunay, and the
@@ -73,16 +81,26 @@ typedef struct study_linf_report {
   linf_simplices selected;
   linf_select_stats st;
   size_t hull_facets, bare_facets, open_facets;
+  int crowded, crowded_side;
+  uint64_t crowded_at;
   int searched;
   uint64_t tilings, tilings_local, tilings_global;
   uint64_t local_only[STUDY_LINF_LIST_MAX];
   size_t nlocal_only;
+  struct study_linf_facet *facets;   /* the pool's facets (private) */
 } study_linf_report;
 
 /* 0, or -1 when memory ran out; study_linf_report_free after either. */
 int study_linf_examine(const study_linf_example *ex, study_linf_report *r);
 void study_linf_report_free(study_linf_report *r);
-/* Is the set (a mask over r's pool) locally Delaunay: each simplex has a
+/* Does the set (a mask over r's pool) triangulate the points: is every
+** point a vertex, and do the simplices tile the hull?  Each facet of
+** a simplex must be a hull facet of that one simplex, or a facet of two on
+** opposite sides: then the simplices cover each point of the hull once
+** (the covering degree does not change across a shared facet and is 1
+** beside the hull's boundary).  1, or 0 with why (may be NULL). */
+int study_linf_triangulates(const study_linf_report *r, uint64_t set, char *why, size_t len);
+/* Is the set locally Delaunay: each simplex has a
 ** circumcube with no far vertex of a neighbour strictly inside?  Writes
 ** each simplex's local flags. */
 int study_linf_locally(study_linf_report *r, uint64_t set);

@@ -228,7 +228,8 @@ static int tl_matchings(const double *p, int d) {
   for (int i = 0; i < nc; i++) perm[i] = i;
   for (;;) {   /* every permutation, in lexicographic order */
     int ok = 1;
-    for (int t = 0; t < np && ok; t++) ok = mx[crd[perm[t]]] == pts[t] || mn[crd[perm[t]]] == pts[t];
+    for (int t = 0; t < np && ok; t++)
+      ok = mx[crd[perm[t]]] == pts[t] || mn[crd[perm[t]]] == pts[t];
     count += ok;
     int i = nc - 2;
     while (i >= 0 && perm[i] > perm[i + 1]) i--;
@@ -416,6 +417,41 @@ static void test_example_3d(void **state) {
   study_linf_report_free(&r);
 }
 
+/* Section 4.2.1's last claim: a facet may border two Delaunay tetrahedra
+** on one side and three in all (the "facet" example, found by a search):
+** counted here over the brute-force list by the side of each far vertex. */
+static void test_example_facet(void **state) {
+  (void)state;
+  const study_linf_example *ex = study_linf_example_find("facet");
+  linf_simplices b;
+  assert_int_equal(linf_delaunay_brute(ex->pts, ex->n, 3, &b, NULL), 0);
+  static const unsigned char f[3] = {3, 4, 5};   /* D E F */
+  int side[3] = {0};
+  for (size_t k = 0; k < b.n; k++) {
+    unsigned char far = 255;
+    int in = 0;
+    for (int i = 0; i < 4; i++) {
+      int on = b.v[k * 4 + i] == 3 || b.v[k * 4 + i] == 4 || b.v[k * 4 + i] == 5;
+      in += on;
+      if (!on) far = b.v[k * 4 + i];
+    }
+    if (in != 3) continue;
+    double rows[12];
+    for (int j = 0; j < 3; j++) memcpy(rows + 3 * j, ex->pts + 3 * f[j], 3 * sizeof *rows);
+    memcpy(rows + 9, ex->pts + 3 * far, 3 * sizeof *rows);
+    side[linf_orient(rows, 3) + 1]++;
+  }
+  assert_int_equal(side[1], 0);
+  assert_int_equal(side[0] + side[2], 3);
+  assert_int_equal(side[0] > side[2] ? side[0] : side[2], 2);
+  study_linf_report r;
+  assert_int_equal(study_linf_examine(ex, &r), 0);
+  assert_int_equal(r.crowded, 3);
+  assert_int_equal(r.crowded_side, 2);
+  study_linf_report_free(&r);
+  linf_simplices_free(&b);
+}
+
 /* No four of the n points in one plane (then the hull's facets are
 ** triangles, and tl_hull_vol6 is right). */
 static int tl_general(const double *p, int n) {
@@ -589,6 +625,7 @@ int main(void) {
     cmocka_unit_test(test_theorem14),
     cmocka_unit_test(test_pseudo_degenerate),
     cmocka_unit_test(test_example_3d),
+    cmocka_unit_test(test_example_facet),
     cmocka_unit_test(test_triangulations_fill),
     cmocka_unit_test(test_select_vs_brute),
     cmocka_unit_test(test_rank_law),

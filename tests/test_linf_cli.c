@@ -42,7 +42,7 @@ static void test_example_3d(void **state) {
            "Delaunay %llu\n", (unsigned long long)r.tilings, (unsigned long long)r.tilings_local,
            (unsigned long long)r.tilings_global);
   assert_non_null(strstr(tlc_out, line));
-  snprintf(line, sizeof line, "the cells triangulate the hull: no (%s)\n", r.why);
+  snprintf(line, sizeof line, "the cells triangulate the points: no (%s)\n", r.why);
   assert_non_null(strstr(tlc_out, line));
   assert_non_null(strstr(tlc_out, "locally Delaunay (a circumcube without the neighbours' far "
                                   "vertices): yes\n"));
