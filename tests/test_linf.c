@@ -532,7 +532,7 @@ static void test_select_vs_brute(void **state) {
   static const struct { int d, n, grid, reps; } runs[] = {
     {2, 10, 5, 60}, {2, 12, 0, 60}, {3, 9, 4, 40}, {3, 9, 0, 40}, {4, 8, 0, 15}, {5, 8, 3, 6},
   };
-  uint64_t same = 0, sets = 0;
+  uint64_t same = 0, sets = 0, largest = 0;
   for (size_t t = 0; t < sizeof runs / sizeof *runs; t++) {
     int d = runs[t].d;
     size_t n = (size_t)runs[t].n, w = (size_t)d + 1;
@@ -556,13 +556,15 @@ static void test_select_vs_brute(void **state) {
       assert_int_equal(s.n, nreach);
       assert_true(st.largest_set <= (uint64_t)((2 * d - 1) * d + 1));
       same += s.n == b.n;
+      if (st.largest_set > largest) largest = st.largest_set;
       sets++;
       linf_simplices_free(&b);
       linf_simplices_free(&s);
     }
   }
-  printf("selection found every Delaunay simplex in %llu of %llu sets\n",
-         (unsigned long long)same, (unsigned long long)sets);
+  printf("selection found every Delaunay simplex in %llu of %llu sets; largest candidate set "
+         "%llu\n", (unsigned long long)same, (unsigned long long)sets,
+         (unsigned long long)largest);
 }
 
 /* ---- the exact law and the Monte Carlo ----------------------------------- */
