@@ -57,7 +57,10 @@ typedef struct linf_cube {
 /* The circumcubes of the d + 1 points pts[0 .. (d+1)d): their number (at
 ** most LINF_CUBES_MAX, written to out, which has room for that many), or
 ** LINF_INFINITE (out unwritten).  Cost O(2^d d^2) (the covers of at most
-** d coordinates, as bit masks over the points). */
+** d coordinates, as bit masks over the points).  The caller keeps d in
+** LINF_DIM_MIN .. LINF_DIM_MAX and the coordinates inside the contract
+** (geom_coord_check_n): the verbs of this header take both as given,
+** except those with an error return, which refuse a d out of range. */
 int linf_circumcubes(const double *pts, int d, linf_cube *out);
 
 /* Where q (d coordinates) lies: -1 strictly inside the cube, 0 on its
@@ -122,7 +125,7 @@ int linf_simplices_has(const linf_simplices *s, const unsigned char *v);
 
 /* Every l_inf Delaunay simplex, by brute force: all (d+1)-subsets, each
 ** circumcube tested against every point.  O(n^{d+2} 2^d d) time.  Sorted.
-** 0, or -1 when memory ran out.  Sets with infinitely many circumcubes are
+** 0, or -1 when memory ran out, d is out of range or n > LINF_POINTS_MAX.  Sets with infinitely many circumcubes are
 ** counted in *degenerate (may be NULL) and skipped. */
 int linf_delaunay_brute(const double *pts, size_t n, int d, linf_simplices *out,
                         uint64_t *degenerate);
@@ -131,7 +134,7 @@ int linf_delaunay_brute(const double *pts, size_t n, int d, linf_simplices *out,
 ** every hull facet; on each facet a set of candidates (a point and its
 ** circumcubes not yet found non-empty) in two passes over the points.  It
 ** finds every Delaunay simplex reachable through shared facets from a
-** hull facet.  Sorted.  0, or -1 when memory ran out. */
+** hull facet.  Sorted.  0, or -1 as linf_delaunay_brute. */
 int linf_delaunay_select(const double *pts, size_t n, int d, linf_simplices *out,
                          linf_select_stats *st);
 

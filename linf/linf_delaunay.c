@@ -105,6 +105,7 @@ int linf_delaunay_brute(const double *pts, size_t n, int d, linf_simplices *out,
   linf_cube cubes[LINF_CUBES_MAX];
   linf_simplices_init(out, d);
   if (degenerate) *degenerate = 0;
+  if (d < LINF_DIM_MIN || d > LINF_DIM_MAX || n > LINF_POINTS_MAX) return -1;
   if (n < (size_t)d + 1) return 0;
   for (int j = 0; j <= d; j++) c[j] = (unsigned char)j;
   do {

@@ -211,7 +211,8 @@ int linf_delaunay_select(const double *pts, size_t n, int d, linf_simplices *out
   linf_sel s = {.pts = pts, .n = n, .d = d, .st = st, .out = out};
   memset(st, 0, sizeof *st);
   linf_simplices_init(out, d);
-  if (n < (size_t)d + 1 || n > LINF_POINTS_MAX) return n > LINF_POINTS_MAX ? -1 : 0;
+  if (d < LINF_DIM_MIN || d > LINF_DIM_MAX || n > LINF_POINTS_MAX) return -1;
+  if (n < (size_t)d + 1) return 0;
   s.slot = malloc(n * sizeof *s.slot);
   s.live = malloc(n * sizeof *s.live);
   int rc = s.slot && s.live ? linf_sel_run(&s) : -1;

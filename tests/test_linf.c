@@ -569,6 +569,21 @@ static void test_select_vs_brute(void **state) {
 
 /* ---- the exact law and the Monte Carlo ----------------------------------- */
 
+/* The verbs with an error return refuse what they cannot hold. */
+static void test_refusals(void **state) {
+  (void)state;
+  double p[70 * 3] = {0};
+  linf_simplices s;
+  linf_select_stats st;
+  assert_int_equal(linf_delaunay_brute(p, 65, 3, &s, NULL), -1);
+  assert_int_equal(linf_delaunay_select(p, 65, 3, &s, &st), -1);
+  assert_int_equal(linf_delaunay_brute(p, 5, 9, &s, NULL), -1);
+  assert_int_equal(linf_delaunay_select(p, 5, 1, &s, &st), -1);
+  assert_int_equal(linf_delaunay_brute(p, 3, 3, &s, NULL), 0);   /* too few: none */
+  assert_int_equal(s.n, 0);
+  linf_simplices_free(&s);
+}
+
 static void test_rank_law(void **state) {
   (void)state;
   uint64_t law[LINF_CUBES_MAX + 1];
@@ -630,6 +645,7 @@ int main(void) {
     cmocka_unit_test(test_example_facet),
     cmocka_unit_test(test_triangulations_fill),
     cmocka_unit_test(test_select_vs_brute),
+    cmocka_unit_test(test_refusals),
     cmocka_unit_test(test_rank_law),
     cmocka_unit_test(test_montecarlo),
   };
