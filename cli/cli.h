@@ -28,6 +28,7 @@ int cli_cmd_census(int argc, char **argv);
 int cli_cmd_averages(int argc, char **argv);
 int cli_cmd_cpdt(int argc, char **argv);
 int cli_cmd_convex(int argc, char **argv);
+int cli_cmd_linf(int argc, char **argv);
 int cli_cmd_paradigms(int argc, char **argv);
 
 /* Print "fliplab CMD: message" ("fliplab: message" when cmd is NULL) on

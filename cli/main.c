@@ -26,6 +26,7 @@ static const cli_command cli_commands[] = {
   {"averages", cli_cmd_averages, "chapter 5's exact averages over all triangulations"},
   {"cpdt",     cli_cmd_cpdt,     "chapter 5: Delaunay triangulations of convex polygons, counted"},
   {"convex",   cli_cmd_convex,   "random convex n-gons (chapter 6): CSV, SVG, statistics"},
+  {"linf",     cli_cmd_linf,     "section 4.2: l_inf circumcubes in R^d, exact; the examples"},
   {"paradigms", cli_cmd_paradigms, "chapter 2: every triangulation algorithm, timed and counted"},
 };
 #define CLI_NCOMMANDS (sizeof cli_commands / sizeof cli_commands[0])

@@ -52,7 +52,8 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **                           every pentagon sampler (table34, rule,
 **                           classify's inputs via sample), site set i of
 **                           every site sampler (census, rule --sites),
-**                           polygon i of `convex` (every n-gon sampler); so
+**                           polygon i of `convex` (every n-gon sampler),
+**                           configuration i of `linf --montecarlo`; so
 **                           sample i depends on (seed, i) alone, whatever
 **                           the threads and shards.  Indices run from 0 up
 **                           to the 2^40 samples a run may ask for.

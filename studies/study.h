@@ -39,6 +39,10 @@
 ** the normal approximation does not.  Its half-width in percentage points
 ** (0 when n == 0), and the largest half-width over k for this n. */
 void study_wilson(uint64_t k, uint64_t n, double *lo, double *hi);
+/* The same at the level of the normal quantile z (2.5758293035489004:
+** 99%, STUDY_Z99). */
+#define STUDY_Z99 2.5758293035489004
+void study_wilson_z(uint64_t k, uint64_t n, double z, double *lo, double *hi);
 double study_wilson_halfwidth(uint64_t k, uint64_t n);
 double study_wilson_max(uint64_t n);
 
