@@ -38,7 +38,9 @@
 /* ---- the point grid ------------------------------------------------------ */
 
 /* Points bucketed into square cells of side h (about two points a cell), cell
-** (ix, iy) holding pt[off[iy * nx + ix] .. off[iy * nx + ix + 1]) in ascending order.
+** (ix, iy) holding pt[off[iy * nx + ix] .. off[iy * nx + ix + 1]) in ascending order,
+** with their coordinates alongside in gp (the scans read points cell by cell: in memory
+** order rather than scattered over the input).
 ** Positions are taken relative to the lower left corner (x0, y0), so rounding errors
 ** scale with the spread of the points, not their distance from the origin: a cell
 ** coordinate (x - x0) / h below 2^31 is computed with two roundings, within 2^-21 cells
@@ -49,6 +51,7 @@ typedef struct skel_grid {
   double x0, y0, x1, y1, h, inv;   /* the bounding box, the cell side and its inverse */
   int nx, ny;
   uint32_t *off, *pt;
+  geom_point *gp;                   /* gp[k] = p[pt[k]] */
   unsigned char *sect_lo, *sect_n;  /* per cell offset: sectors it can meet (diamond search) */
 } skel_grid;
 
@@ -76,7 +79,8 @@ static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
   size_t cells = (size_t)g->nx * (size_t)g->ny;
   g->off = calloc(cells + 1, sizeof *g->off);
   g->pt = malloc(n * sizeof *g->pt);
-  if (!g->off || !g->pt) return -1;
+  g->gp = malloc(n * sizeof *g->gp);
+  if (!g->off || !g->pt || !g->gp) return -1;
   for (size_t i = 0; i < n; i++)
     g->off[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x) + 1]++;
   for (size_t c = 0; c < cells; c++) g->off[c + 1] += g->off[c];
@@ -86,6 +90,7 @@ static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
   for (size_t i = 0; i < n; i++)
     g->pt[fill[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x)]++] =
         (uint32_t)i;
+  for (size_t k = 0; k < n; k++) g->gp[k] = p[g->pt[k]];
   free(fill);
   return 0;
 }
@@ -93,6 +98,7 @@ static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
 static void skel_grid_free(skel_grid *g) {
   free(g->off);
   free(g->pt);
+  free(g->gp);
   free(g->sect_lo);
   free(g->sect_n);
 }
@@ -177,12 +183,12 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
       size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
       for (uint32_t k = g->off[c]; k < g->off[c + 1]; k++) {
         uint32_t q = g->pt[k];
-        if (q == a || q == b || p[q].x < xa || p[q].x > xb || p[q].y < ya || p[q].y > yb)
-          continue;
-        if (skel_on_segment(p[a], p[b], p[q])) return 0;
+        geom_point pq = g->gp[k];
+        if (q == a || q == b || pq.x < xa || pq.x > xb || pq.y < ya || pq.y > yb) continue;
+        if (skel_on_segment(p[a], p[b], pq)) return 0;
         if (diamond) {
-          left |= skel_in_cone(p[a], p[b], p[q], 1);
-          right |= skel_in_cone(p[a], p[b], p[q], -1);
+          left |= skel_in_cone(p[a], p[b], pq, 1);
+          right |= skel_in_cone(p[a], p[b], pq, -1);
           if (left && right) return 0;
         }
       }
@@ -203,7 +209,7 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
 ** over the left sectors, min over the right ones), with a relative margin of 1e-9 for
 ** the rounding of distances. */
 #define SKEL_SECT 128
-#define SKEL_WIN 24       /* cell offsets with a table of the sectors they can meet */
+#define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
 typedef struct skel_seen { uint32_t q; int sect; double d; } skel_seen;
 
@@ -312,7 +318,7 @@ static int skel_search_done(const skel_grid *g, geom_point a, skel_search *z, in
 /* 1 when no point of the cell at offset (dx, dy) can end an edge that passes: each of
 ** its sectors is done, or its far distance is below the cell's nearest possible point. */
 static int skel_cell_dead(const skel_grid *g, const skel_search *z, int dx, int dy) {
-  if (abs(dx) > SKEL_WIN || abs(dy) > SKEL_WIN) return 0;
+  if (g->sect_lo == NULL || abs(dx) > SKEL_WIN || abs(dy) > SKEL_WIN) return 0;
   size_t o = (size_t)(dy + SKEL_WIN) * (2 * SKEL_WIN + 1) + (size_t)(dx + SKEL_WIN);
   int ax = abs(dx) - 1, ay = abs(dy) - 1;
   ax = ax < 0 ? 0 : ax, ay = ay < 0 ? 0 : ay;
@@ -348,7 +354,7 @@ static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
       for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
         uint32_t q = g->pt[j];
         if (q == a) continue;
-        double dx = p[q].x - p[a].x, dy = p[q].y - p[a].y, d = sqrt(dx * dx + dy * dy);
+        double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
         int t = skel_sector(dx, dy);
         if (skel_seen_push(z, (skel_seen){q, t, d}) != 0) return -1;
         z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
@@ -477,7 +483,8 @@ static int skel_candidates_block(const skel *s, size_t a0, size_t a1, int diamon
 static int skel_candidates(skel *s, int diamond) {
   size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK, total = 0;
   skel_vec *part = calloc(nb, sizeof *part);
-  int fail = !part || (diamond && skel_offset_table(&s->g) != 0);
+  /* the table costs 4 atan2 for each of its 16641 offsets: worth it for 512 points up */
+  int fail = !part || (diamond && s->n >= 512 && skel_offset_table(&s->g) != 0);
 #pragma omp parallel num_threads(s->threads) reduction(| : fail)
   {
     skel_search z = {0};
@@ -514,10 +521,10 @@ static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) 
       size_t cell = (size_t)iy * (size_t)s->g.nx + (size_t)ix;
       for (uint32_t k = s->g.off[cell]; k < s->g.off[cell + 1]; k++) {
         uint32_t q = s->g.pt[k];
-        if (q == a || q == b || q == c || p[q].x <= xa || p[q].x >= xb || p[q].y <= ya ||
-            p[q].y >= yb)
+        geom_point pq = s->g.gp[k];
+        if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
           continue;
-        if (skel_in_triangle(p[a], p[b], p[c], p[q], o)) return 0;
+        if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
       }
     }
   return 1;
