@@ -146,12 +146,27 @@ static int got_cert_scale(const geom_point *p, size_t n, double *wx, double *wy)
   return tiny >= 0x1p-118 && *wx <= 0x1p169 && *wy <= 0x1p169;
 }
 
+/* Values from measure_eval (geom_tri_make) rather than the kernels: there twice the area
+** is within a relative 2^-40 of the exact one (geom.h: the filter accepts it 2^40 above
+** its error bound, else it is computed exactly), so the radii have relative bounds too.
+** 2^-40 = 8192 u: R = a b c / (2 twice) is within 3 gamma_4 + 3 u + 2^-40 < gamma_8208
+** (three sides, two products, a quotient); r = twice / P within gamma_6 + u + 2^-40 and
+** a' = twice / a within gamma_4 + u + 2^-40, both below gamma_8208 too.  Used only for
+** keys made from measure_eval values (got_cert_key_model: the point-set skeleton). */
+static const got_errmodel got_eval_errmodels[MEASURE_BUILTIN_COUNT] = {
+  [MEASURE_R] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+  [MEASURE_NEG_R] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+  [MEASURE_NEG_H] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+};
+
 /* The key error model (rho relative, alpha absolute, in key units) of a
-** measure under a key shape; 0, or -1 when there is none. */
+** measure under a key shape; 0, or -1 when there is none.  eval = 1: for values of
+** measure_eval, which some measures without a kernel bound have (got_eval_errmodels). */
 static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, double wy,
-                         double *rho, double *alpha) {
+                         int eval, double *rho, double *alpha) {
   if (measure < 0 || measure >= MEASURE_BUILTIN_COUNT) return -1;
   got_errmodel em = got_errmodels[measure];
+  if (eval && em.kind == GOT_ERR_NONE) em = got_eval_errmodels[measure];
   if (measure == MEASURE_SIGMA && keyfn == GOT_KEY_FROM_SQ_IDENT)
     em = (got_errmodel){GOT_ERR_ABS, 0x1p-45, GOT_SC_ONE, 0};   /* sigma^2 itself */
   if (em.kind == GOT_ERR_NONE) return -1;
@@ -193,8 +208,8 @@ int got_cert_key_model(const rule *r, const geom_point *p, size_t n, double *rho
   double wx, wy;
   const joint *J = joint_get(rule_joint(r));
   if (!rule_is_triangle(r) || J == NULL || !got_cert_scale(p, n, &wx, &wy)) return -1;
-  return got_key_model(rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, wx, wy, rho,
-                       alpha);
+  return got_key_model(rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, wx, wy, 1,
+                       rho, alpha);
 }
 
 /* E(K) for a triangulation whose floating key is K. */
@@ -236,11 +251,11 @@ void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn
                    "ranges <= 2^169)";
   else if (res->measure >= MEASURE_BUILTIN_COUNT)
     res->cert_why = "no forward error bound for a user-defined measure";
-  else if (got_key_model(res->measure, keyfn, jp, wx, wy, &rho, &alpha) != 0)
+  else if (got_key_model(res->measure, keyfn, jp, wx, wy, 0, &rho, &alpha) != 0)
     res->cert_why = "no forward error bound for this measure and joint (docs/got.md)";
   double prho, palpha;
   if (res->cert_why == NULL &&
-      got_key_model(res->measure, got_keyfn_plain(keyfn), jp, wx, wy, &prho, &palpha) == 0) {
+      got_key_model(res->measure, got_keyfn_plain(keyfn), jp, wx, wy, 0, &prho, &palpha) == 0) {
     res->cert_rho = prho;
     res->cert_alpha = palpha;
   }

@@ -30,7 +30,7 @@
 #include "testutil.h"
 
 static const char *sk_rules[] = {"P_1", "R_1", "-alpha_1", "a_2", "Pinf_1", "-c/a_1", "P_3",
-                                 "-A_1"};
+                                 "-A_1", "-r_1", "R_-1"};
 #define SK_NRULES (sizeof sk_rules / sizeof *sk_rules)
 
 /* The key of triangulation u, and the bound below which another total counts as equal:
