@@ -213,17 +213,36 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
 
 typedef struct skel_seen { uint32_t q; int sect; double d; } skel_seen;
 
-/* The scratch of one search (one per thread). */
+/* The scratch of one search (one per thread), with the directions of the sectors'
+** boundaries: sector t holds the angles from t w - pi to (t + 1) w - pi, w = 2 pi / 128. */
 typedef struct skel_search {
   skel_seen *seen;
   size_t ns, cap;
   double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
   unsigned char done[SKEL_SECT];
+  double bx[SKEL_SECT], by[SKEL_SECT];
 } skel_search;
 
-static int skel_sector(double dx, double dy) {
-  int t = (int)((atan2(dy, dx) + M_PI) * (SKEL_SECT / (2 * M_PI)));
-  return t < 0 ? 0 : t >= SKEL_SECT ? SKEL_SECT - 1 : t;
+static void skel_search_init(skel_search *z) {
+  for (int t = 0; t < SKEL_SECT; t++) {
+    double th = t * (2 * M_PI / SKEL_SECT) - M_PI;
+    z->bx[t] = cos(th), z->by[t] = sin(th);
+  }
+}
+
+/* The sector of direction (dx, dy) != 0: the lower half plane holds sectors 0 .. 63, the
+** upper one 64 .. 127, and within a half the boundaries are in anticlockwise order, so a
+** binary search with cross products finds the last boundary at or before the direction.
+** The boundaries' rounding moves them by about 1e-16 rad, far inside the margins of the
+** far argument (a sector's neighbours at two sectors' distance). */
+static int skel_sector(const skel_search *z, double dx, double dy) {
+  int lo = dy < 0 || (dy == 0 && dx < 0) ? 0 : SKEL_SECT / 2, hi = lo + SKEL_SECT / 2 - 1;
+  while (lo < hi) {
+    int mid = (lo + hi + 1) / 2;
+    if (z->bx[mid] * dy - z->by[mid] * dx >= 0) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
 }
 
 static void skel_far_update(skel_search *z) {
@@ -355,7 +374,7 @@ static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
         uint32_t q = g->pt[j];
         if (q == a) continue;
         double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
-        int t = skel_sector(dx, dy);
+        int t = skel_sector(z, dx, dy);
         if (skel_seen_push(z, (skel_seen){q, t, d}) != 0) return -1;
         z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
       }
@@ -488,6 +507,7 @@ static int skel_candidates(skel *s, int diamond) {
 #pragma omp parallel num_threads(s->threads) reduction(| : fail)
   {
     skel_search z = {0};
+    skel_search_init(&z);
 #pragma omp for schedule(dynamic, 1)
     for (long long b = 0; b < (long long)nb; b++)
       if (!fail)
