@@ -170,12 +170,12 @@ static int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
 ** at least one side; skel_in_cone errs only towards keeping).  Every point of either
 ** triangle or of the segment lies in the box of a, b and the apexes, which stand at
 ** tan(pi/8) / 2 < 0.21 of |ab| from the midpoint.  Cost: the points of the padded box. */
-static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uint32_t b,
-                        int diamond) {
-  double ex = diamond ? 0.21 * fabs(p[b].y - p[a].y) : 0;
-  double ey = diamond ? 0.21 * fabs(p[b].x - p[a].x) : 0;
-  double xa = fmin(p[a].x, p[b].x) - ex, xb = fmax(p[a].x, p[b].x) + ex;
-  double ya = fmin(p[a].y, p[b].y) - ey, yb = fmax(p[a].y, p[b].y) + ey;
+static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t b,
+                        geom_point pb, int diamond) {
+  double ex = diamond ? 0.21 * fabs(pb.y - pa.y) : 0;
+  double ey = diamond ? 0.21 * fabs(pb.x - pa.x) : 0;
+  double xa = fmin(pa.x, pb.x) - ex, xb = fmax(pa.x, pb.x) + ex;
+  double ya = fmin(pa.y, pb.y) - ey, yb = fmax(pa.y, pb.y) + ey;
   skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
   int left = 0, right = 0;
   for (int iy = bx.iy0; iy <= bx.iy1; iy++)
@@ -185,10 +185,10 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
         uint32_t q = g->pt[k];
         geom_point pq = g->gp[k];
         if (q == a || q == b || pq.x < xa || pq.x > xb || pq.y < ya || pq.y > yb) continue;
-        if (skel_on_segment(p[a], p[b], pq)) return 0;
+        if (skel_on_segment(pa, pb, pq)) return 0;
         if (diamond) {
-          left |= skel_in_cone(p[a], p[b], pq, 1);
-          right |= skel_in_cone(p[a], p[b], pq, -1);
+          left |= skel_in_cone(pa, pb, pq, 1);
+          right |= skel_in_cone(pa, pb, pq, -1);
           if (left && right) return 0;
         }
       }
@@ -211,7 +211,7 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
 #define SKEL_SECT 128
 #define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
-typedef struct skel_seen { uint32_t q; int sect; double d; } skel_seen;
+typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; } skel_seen;
 
 /* The scratch of one search (one per thread), with the directions of the sectors'
 ** boundaries: sector t holds the angles from t w - pi to (t + 1) w - pi, w = 2 pi / 128. */
@@ -375,7 +375,7 @@ static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
         if (q == a) continue;
         double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
         int t = skel_sector(z, dx, dy);
-        if (skel_seen_push(z, (skel_seen){q, t, d}) != 0) return -1;
+        if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j]}) != 0) return -1;
         z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
       }
     }
@@ -405,7 +405,8 @@ static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t 
       z->seen[m++] = z->seen[i];
   qsort(z->seen, m, sizeof *z->seen, skel_cmp_seen);
   for (size_t i = 0; i < m; i++)
-    if (skel_edge_ok(g, p, a, z->seen[i].q, 1) && skel_vec_push(out, a, z->seen[i].q) != 0)
+    if (skel_edge_ok(g, a, p[a], z->seen[i].q, z->seen[i].pt, 1) &&
+        skel_vec_push(out, a, z->seen[i].q) != 0)
       return -1;
   return 0;
 }
@@ -488,7 +489,7 @@ static int skel_candidates_block(const skel *s, size_t a0, size_t a1, int diamon
       continue;
     }
     for (size_t b = a + 1; b < s->n; b++)
-      if (skel_edge_ok(&s->g, s->p, (uint32_t)a, (uint32_t)b, 0) &&
+      if (skel_edge_ok(&s->g, (uint32_t)a, s->p[a], (uint32_t)b, s->p[b], 0) &&
           skel_vec_push(out, (uint32_t)a, (uint32_t)b) != 0)
         return -1;
   }
