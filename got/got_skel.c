@@ -429,6 +429,7 @@ typedef struct skel {
   uint32_t *tv, *te;       /* 3 per triangle: a < b < c, and edges ab, ac, bc */
   double *bad;             /* the measure of each triangle (SKEL_CERTIFIED) */
   uint32_t *toff, *tinc;   /* per edge its triangles, 2 t + (1: third vertex on the left) */
+  uint32_t *tmid;          /* ... the left ones in [toff[e], tmid[e]), the right ones after */
   unsigned char *ealive, *hull, *talive;
   uint32_t *wit;           /* 2 per edge: the last witness pair, or UINT32_MAX */
   uint32_t *hpair;         /* 2 per hull edge (a < b) */
@@ -443,7 +444,7 @@ typedef struct skel {
 
 static void skel_free_all(skel *s) {
   free(s->ev), free(s->off), free(s->nbr), free(s->nbe);
-  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc);
+  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
   free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
   skel_grid_free(&s->g);
 }
@@ -585,20 +586,25 @@ static int skel_triangles_block(const skel *s, size_t a0, size_t a1, uint32_t *s
 /* Fills tv, te, the per-edge incidence (tinc: 2 t + side) and the measures. */
 static int skel_incidence(skel *s) {
   s->toff = calloc(s->m + 1, sizeof *s->toff);
+  s->tmid = malloc((s->m + 1) * sizeof *s->tmid);
   s->tinc = malloc(3 * s->nt * sizeof *s->tinc + 1);
-  uint32_t *fill = malloc((s->m + 1) * sizeof *fill);
-  if (!s->toff || !s->tinc || !fill) return free(fill), -1;
+  uint32_t *hi = malloc((s->m + 1) * sizeof *hi);
+  if (!s->toff || !s->tmid || !s->tinc || !hi) return free(hi), -1;
   for (size_t t = 0; t < 3 * s->nt; t++) s->toff[s->te[t] + 1]++;
   for (size_t e = 0; e < s->m; e++) s->toff[e + 1] += s->toff[e];
-  memcpy(fill, s->toff, (s->m + 1) * sizeof *fill);
+  memcpy(s->tmid, s->toff, (s->m + 1) * sizeof *hi);
+  memcpy(hi, s->toff + 1, s->m * sizeof *hi);
   for (size_t t = 0; t < s->nt; t++) {
     const uint32_t *v = s->tv + 3 * t;
     int o = geom_orient(s->p[v[0]], s->p[v[1]], s->p[v[2]]);
     /* the third vertex is left of ab and of bc when o > 0, of ac when o < 0 */
     int side[3] = {o > 0, o < 0, o > 0};
-    for (int k = 0; k < 3; k++) s->tinc[fill[s->te[3 * t + k]]++] = (uint32_t)(2 * t) + side[k];
+    for (int k = 0; k < 3; k++) {
+      uint32_t e = s->te[3 * t + k];
+      s->tinc[side[k] ? s->tmid[e]++ : --hi[e]] = (uint32_t)(2 * t) + side[k];
+    }
   }
-  free(fill);
+  free(hi);
   return 0;
 }
 
@@ -703,13 +709,12 @@ static int skel_pair_keeps(const skel *s, uint32_t e, uint32_t t1, uint32_t t2) 
 static int skel_witness(skel *s, uint32_t e) {
   uint32_t *w = s->wit + 2 * e;
   if (w[0] != UINT32_MAX && s->talive[w[0]] && s->talive[w[1]]) return 1;
-  for (uint32_t i = s->toff[e]; i < s->toff[e + 1]; i++) {
+  for (uint32_t i = s->toff[e]; i < s->tmid[e]; i++) {
     uint32_t ti = s->tinc[i] >> 1;
-    if (!(s->tinc[i] & 1) || !s->talive[ti]) continue;
-    for (uint32_t j = s->toff[e]; j < s->toff[e + 1]; j++) {
+    if (!s->talive[ti]) continue;
+    for (uint32_t j = s->tmid[e]; j < s->toff[e + 1]; j++) {
       uint32_t tj = s->tinc[j] >> 1;
-      if ((s->tinc[j] & 1) || !s->talive[tj]) continue;
-      if (skel_pair_keeps(s, e, ti, tj)) {
+      if (s->talive[tj] && skel_pair_keeps(s, e, ti, tj)) {
         w[0] = ti, w[1] = tj;
         return 1;
       }
