@@ -146,12 +146,27 @@ static int got_cert_scale(const geom_point *p, size_t n, double *wx, double *wy)
   return tiny >= 0x1p-118 && *wx <= 0x1p169 && *wy <= 0x1p169;
 }
 
+/* Values from measure_eval (geom_tri_make) rather than the kernels: there twice the area
+** is within a relative 2^-40 of the exact one (geom.h: the filter accepts it 2^40 above
+** its error bound, else it is computed exactly), so the radii have relative bounds too.
+** 2^-40 = 8192 u: R = a b c / (2 twice) is within 3 gamma_4 + 3 u + 2^-40 < gamma_8208
+** (three sides, two products, a quotient); r = twice / P within gamma_6 + u + 2^-40 and
+** a' = twice / a within gamma_4 + u + 2^-40, both below gamma_8208 too.  Used only for
+** keys made from measure_eval values (got_cert_model: the point-set skeleton and faces). */
+static const got_errmodel got_eval_errmodels[MEASURE_BUILTIN_COUNT] = {
+  [MEASURE_R] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+  [MEASURE_NEG_R] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+  [MEASURE_NEG_H] = {GOT_ERR_REL, 8208, GOT_SC_ONE, 0},
+};
+
 /* The key error model (rho relative, alpha absolute, in key units) of a
-** measure under a key shape; 0, or -1 when there is none. */
+** measure under a key shape; 0, or -1 when there is none.  eval = 1: for values of
+** measure_eval, which some measures without a kernel bound have (got_eval_errmodels). */
 static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, double wy,
-                         double *rho, double *alpha) {
+                         int eval, double *rho, double *alpha) {
   if (measure < 0 || measure >= MEASURE_BUILTIN_COUNT) return -1;
   got_errmodel em = got_errmodels[measure];
+  if (eval && em.kind == GOT_ERR_NONE) em = got_eval_errmodels[measure];
   if (measure == MEASURE_SIGMA && keyfn == GOT_KEY_FROM_SQ_IDENT)
     em = (got_errmodel){GOT_ERR_ABS, 0x1p-45, GOT_SC_ONE, 0};   /* sigma^2 itself */
   if (em.kind == GOT_ERR_NONE) return -1;
@@ -188,15 +203,6 @@ static int got_key_model(int measure, got_keyfn keyfn, double p, double wx, doub
   return 0;
 }
 
-int got_cert_key_model(const rule *r, const geom_point *p, size_t n, double *rho,
-                       double *alpha) {
-  double wx, wy;
-  const joint *J = joint_get(rule_joint(r));
-  if (!rule_is_triangle(r) || J == NULL || !got_cert_scale(p, n, &wx, &wy)) return -1;
-  return got_key_model(rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, wx, wy, rho,
-                       alpha);
-}
-
 /* E(K) for a triangulation whose floating key is K. */
 static double got_cert_bound(double K, size_t m, joint_keyop op, double rho, double alpha) {
   double E;
@@ -227,14 +233,14 @@ double got_cert_err_of(const got_result *res, double key) {
 /* The model of a key shape for triangles among p[0..n-1]: NULL, or why
 ** there is none. */
 static const char *got_cert_check(const geom_point *p, size_t n, int measure, got_keyfn keyfn,
-                                  double jp, double *rho, double *alpha) {
+                                  double jp, int eval, double *rho, double *alpha) {
   double wx, wy;
   if (!got_cert_scale(p, n, &wx, &wy))
     return "coordinates outside the certified scale (non-zero |x|, |y| >= 2^-118, "
            "ranges <= 2^169)";
   if (measure >= MEASURE_BUILTIN_COUNT)
     return "no forward error bound for a user-defined measure";
-  if (got_key_model(measure, keyfn, jp, wx, wy, rho, alpha) != 0)
+  if (got_key_model(measure, keyfn, jp, wx, wy, eval, rho, alpha) != 0)
     return "no forward error bound for this measure and joint (docs/got.md)";
   return NULL;
 }
@@ -247,7 +253,7 @@ int got_cert_model(const geom_point *p, size_t n, const rule *r, double *rho, do
     return -1;
   }
   const joint *J = joint_get(rule_joint(r));
-  *why = got_cert_check(p, n, rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p,
+  *why = got_cert_check(p, n, rule_measure(r), got_keyfn_of(J->key, rule_sign(r)), J->p, 1,
                         rho, alpha);
   return *why == NULL ? 0 : -1;
 }
@@ -263,10 +269,11 @@ void got_certify(got_result *res, const geom_point *p, size_t n, got_keyfn keyfn
   res->cert_rho = res->cert_alpha = NAN;
   res->cert_err = res->cert_err2 = INFINITY;
   res->cert_unique = 0;
-  res->cert_why = got_cert_check(p, n, res->measure, keyfn, jp, &rho, &alpha);
+  res->cert_why = got_cert_check(p, n, res->measure, keyfn, jp, 0, &rho, &alpha);
   double prho, palpha;
   if (res->cert_why == NULL &&
-      got_cert_check(p, n, res->measure, got_keyfn_plain(keyfn), jp, &prho, &palpha) == NULL) {
+      got_cert_check(p, n, res->measure, got_keyfn_plain(keyfn), jp, 0, &prho, &palpha)
+          == NULL) {
     res->cert_rho = prho;
     res->cert_alpha = palpha;
   }

@@ -44,12 +44,6 @@ typedef enum got_keyfn {
 
 /* The key shape of a joint's row for measures of sign s (got_dp.c). */
 FLIPLAB_INTERNAL got_keyfn got_keyfn_of(joint_shape sh, int s);
-/* The error model of keys rule_key(r, measure_eval(t)) of triangles t of
-** the points p[0..n-1] (got_cert.c): |k^ - k| <= rho |k^| + alpha for the
-** exact key k; 0, or -1 when there is none (docs/got.md, "Certified
-** verdicts": that measure and joint, a user measure, the scale guard). */
-FLIPLAB_INTERNAL int got_cert_key_model(const rule *r, const geom_point *p, size_t n,
-                                        double *rho, double *alpha);
 
 /* The certified verdict (got_cert.c): from the DP's keys, the rule's key
 ** shape and the polygon, fill res->cert_* (see got.h). */
@@ -62,7 +56,10 @@ FLIPLAB_INTERNAL size_t got_phys_memory(void);
 
 /* The error model of one triangle key rule_key(r, measure_eval(...)) for
 ** triangles with vertices among p[0..n-1] (got_cert.c): |k^ - k| <= rho
-** |k^| + alpha.  0, or -1 with *why saying why no bound is known. */
+** |k^| + alpha for the exact key k (the measures without a DP kernel bound
+** included where measure_eval's value has one: got_eval_errmodels).  0, or
+** -1 with *why saying why no bound is known (docs/got.md, "Certified
+** verdicts": that measure and joint, a user measure, the scale guard). */
 FLIPLAB_INTERNAL
 int got_cert_model(const geom_point *p, size_t n, const rule *r, double *rho, double *alpha,
                    const char **why);

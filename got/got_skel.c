@@ -38,14 +38,21 @@
 /* ---- the point grid ------------------------------------------------------ */
 
 /* Points bucketed into square cells of side h (about two points a cell), cell
-** (ix, iy) holding pt[off[iy * nx + ix] .. off[iy * nx + ix + 1]) in ascending order.
+** (ix, iy) holding pt[off[iy * nx + ix] .. off[iy * nx + ix + 1]) in ascending order,
+** with their coordinates alongside in gp (the scans read points cell by cell: in memory
+** order rather than scattered over the input).
 ** Positions are taken relative to the lower left corner (x0, y0), so rounding errors
-** scale with the spread of the points, not their distance from the origin; a query
-** pads its cell range by one cell, which covers them. */
+** scale with the spread of the points, not their distance from the origin: a cell
+** coordinate (x - x0) / h below 2^31 is computed with two roundings, within 2^-21 cells
+** of its exact value, so a query pads its range by SKEL_PAD = 4e-6 cells, which covers
+** the rounding of both the query and the points. */
+#define SKEL_PAD 4e-6
 typedef struct skel_grid {
-  double x0, y0, h, inv;
+  double x0, y0, x1, y1, h, inv;   /* the bounding box, the cell side and its inverse */
   int nx, ny;
   uint32_t *off, *pt;
+  geom_point *gp;                   /* gp[k] = p[pt[k]] */
+  unsigned char *sect_lo, *sect_n;  /* per cell offset: sectors it can meet (diamond search) */
 } skel_grid;
 
 static int skel_cell(double v, double inv, int cap) {
@@ -58,21 +65,22 @@ static int skel_cellx(const skel_grid *g, double x) { return skel_cell(x - g->x0
 static int skel_celly(const skel_grid *g, double y) { return skel_cell(y - g->y0, g->inv, g->ny); }
 
 static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
-  double x1 = p[0].x, y1 = p[0].y;
-  g->x0 = p[0].x, g->y0 = p[0].y;
+  g->x0 = g->x1 = p[0].x, g->y0 = g->y1 = p[0].y;
   for (size_t i = 1; i < n; i++) {
-    g->x0 = fmin(g->x0, p[i].x), x1 = fmax(x1, p[i].x);
-    g->y0 = fmin(g->y0, p[i].y), y1 = fmax(y1, p[i].y);
+    g->x0 = fmin(g->x0, p[i].x), g->x1 = fmax(g->x1, p[i].x);
+    g->y0 = fmin(g->y0, p[i].y), g->y1 = fmax(g->y1, p[i].y);
   }
-  double w = x1 - g->x0, ht = y1 - g->y0, cap = 2.0 * (double)n + 4;
+  double w = g->x1 - g->x0, ht = g->y1 - g->y0, cap = 2.0 * (double)n + 4;
   g->h = sqrt(2.0 * fmax(w * ht, fmax(w, ht) * fmax(w, ht) / cap) / (double)n);
   g->inv = 1 / g->h;
+  g->h = 1 / g->inv;
   g->nx = (int)fmin(cap, w * g->inv + 1);
   g->ny = (int)fmin(cap, ht * g->inv + 1);
   size_t cells = (size_t)g->nx * (size_t)g->ny;
   g->off = calloc(cells + 1, sizeof *g->off);
   g->pt = malloc(n * sizeof *g->pt);
-  if (!g->off || !g->pt) return -1;
+  g->gp = malloc(n * sizeof *g->gp);
+  if (!g->off || !g->pt || !g->gp) return -1;
   for (size_t i = 0; i < n; i++)
     g->off[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x) + 1]++;
   for (size_t c = 0; c < cells; c++) g->off[c + 1] += g->off[c];
@@ -82,6 +90,7 @@ static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
   for (size_t i = 0; i < n; i++)
     g->pt[fill[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x)]++] =
         (uint32_t)i;
+  for (size_t k = 0; k < n; k++) g->gp[k] = p[g->pt[k]];
   free(fill);
   return 0;
 }
@@ -89,16 +98,20 @@ static int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
 static void skel_grid_free(skel_grid *g) {
   free(g->off);
   free(g->pt);
+  free(g->gp);
+  free(g->sect_lo);
+  free(g->sect_n);
 }
 
-/* The padded cell range of the box [xa, xb] x [ya, yb]. */
+/* The cells that can hold a point of the box [xa, xb] x [ya, yb] (padded: SKEL_PAD). */
 typedef struct skel_box { int ix0, ix1, iy0, iy1; } skel_box;
 
 static skel_box skel_grid_box(const skel_grid *g, double xa, double xb, double ya, double yb) {
-  skel_box r = {skel_cellx(g, xa) - 1, skel_cellx(g, xb) + 1, skel_celly(g, ya) - 1,
-                skel_celly(g, yb) + 1};
-  r.ix0 = r.ix0 < 0 ? 0 : r.ix0, r.iy0 = r.iy0 < 0 ? 0 : r.iy0;
-  r.ix1 = r.ix1 >= g->nx ? g->nx - 1 : r.ix1, r.iy1 = r.iy1 >= g->ny ? g->ny - 1 : r.iy1;
+  double e = SKEL_PAD * g->h;
+  skel_box r = {skel_cell((xa - g->x0) - e, g->inv, g->nx),
+                skel_cell((xb - g->x0) + e, g->inv, g->nx),
+                skel_cell((ya - g->y0) - e, g->inv, g->ny),
+                skel_cell((yb - g->y0) + e, g->inv, g->ny)};
   return r;
 }
 
@@ -157,12 +170,12 @@ static int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
 ** at least one side; skel_in_cone errs only towards keeping).  Every point of either
 ** triangle or of the segment lies in the box of a, b and the apexes, which stand at
 ** tan(pi/8) / 2 < 0.21 of |ab| from the midpoint.  Cost: the points of the padded box. */
-static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uint32_t b,
-                        int diamond) {
-  double ex = diamond ? 0.21 * fabs(p[b].y - p[a].y) : 0;
-  double ey = diamond ? 0.21 * fabs(p[b].x - p[a].x) : 0;
-  double xa = fmin(p[a].x, p[b].x) - ex, xb = fmax(p[a].x, p[b].x) + ex;
-  double ya = fmin(p[a].y, p[b].y) - ey, yb = fmax(p[a].y, p[b].y) + ey;
+static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t b,
+                        geom_point pb, int diamond) {
+  double ex = diamond ? 0.21 * fabs(pb.y - pa.y) : 0;
+  double ey = diamond ? 0.21 * fabs(pb.x - pa.x) : 0;
+  double xa = fmin(pa.x, pb.x) - ex, xb = fmax(pa.x, pb.x) + ex;
+  double ya = fmin(pa.y, pb.y) - ey, yb = fmax(pa.y, pb.y) + ey;
   skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
   int left = 0, right = 0;
   for (int iy = bx.iy0; iy <= bx.iy1; iy++)
@@ -170,12 +183,12 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
       size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
       for (uint32_t k = g->off[c]; k < g->off[c + 1]; k++) {
         uint32_t q = g->pt[k];
-        if (q == a || q == b || p[q].x < xa || p[q].x > xb || p[q].y < ya || p[q].y > yb)
-          continue;
-        if (skel_on_segment(p[a], p[b], p[q])) return 0;
+        geom_point pq = g->gp[k];
+        if (q == a || q == b || pq.x < xa || pq.x > xb || pq.y < ya || pq.y > yb) continue;
+        if (skel_on_segment(pa, pb, pq)) return 0;
         if (diamond) {
-          left |= skel_in_cone(p[a], p[b], p[q], 1);
-          right |= skel_in_cone(p[a], p[b], p[q], -1);
+          left |= skel_in_cone(pa, pb, pq, 1);
+          right |= skel_in_cone(pa, pb, pq, -1);
           if (left && right) return 0;
         }
       }
@@ -192,85 +205,209 @@ static int skel_edge_ok(const skel_grid *g, const geom_point *p, uint32_t a, uin
 ** the margin of a sector): for b in sector t, sectors t+2 .. t+6 lie strictly within
 ** the left cone (psi, psi + pi/8) of every direction psi of sector t, and t-6 .. t-2
 ** within the right one.  With dmin[s] the distance of the nearest point seen in sector
-** s, ab fails the diamond test when max(left(t), right(t)) <= |ab| / 2, with a relative
-** margin of 1e-9 for the rounding of distances (skel_far). */
+** s, every edge ab of sector t fails the diamond test when |ab| >= far[t] = 2 max(min
+** over the left sectors, min over the right ones), with a relative margin of 1e-9 for
+** the rounding of distances. */
 #define SKEL_SECT 128
+#define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
-typedef struct skel_seen { uint32_t q; int sect; double d; } skel_seen;
+typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; } skel_seen;
 
-static double skel_side_min(const double *dmin, int t, int from, int to) {
-  double m = INFINITY;
-  for (int k = from; k <= to; k++) m = fmin(m, dmin[(t + k + SKEL_SECT) % SKEL_SECT]);
-  return m;
+/* The scratch of one search (one per thread), with the directions of the sectors'
+** boundaries: sector t holds the angles from t w - pi to (t + 1) w - pi, w = 2 pi / 128. */
+typedef struct skel_search {
+  skel_seen *seen;
+  size_t ns, cap;
+  double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
+  unsigned char done[SKEL_SECT];
+  double bx[SKEL_SECT], by[SKEL_SECT];
+} skel_search;
+
+static void skel_search_init(skel_search *z) {
+  for (int t = 0; t < SKEL_SECT; t++) {
+    double th = t * (2 * M_PI / SKEL_SECT) - M_PI;
+    z->bx[t] = cos(th), z->by[t] = sin(th);
+  }
 }
 
-/* The distance beyond which every edge of sector t fails (infinite: none known). */
-static double skel_far(const double *dmin, int t) {
-  return 2 * fmax(skel_side_min(dmin, t, 2, 6), skel_side_min(dmin, t, -6, -2)) *
-         (1 + 1e-9);
+/* The sector of direction (dx, dy) != 0: the lower half plane holds sectors 0 .. 63, the
+** upper one 64 .. 127, and within a half the boundaries are in anticlockwise order, so a
+** binary search with cross products finds the last boundary at or before the direction.
+** The boundaries' rounding moves them by about 1e-16 rad, far inside the margins of the
+** far argument (a sector's neighbours at two sectors' distance). */
+static int skel_sector(const skel_search *z, double dx, double dy) {
+  int lo = dy < 0 || (dy == 0 && dx < 0) ? 0 : SKEL_SECT / 2, hi = lo + SKEL_SECT / 2 - 1;
+  while (lo < hi) {
+    int mid = (lo + hi + 1) / 2;
+    if (z->bx[mid] * dy - z->by[mid] * dx >= 0) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
 }
 
-/* Adds the points of ring k (cells at Chebyshev distance k from a's cell) to seen. */
+static void skel_far_update(skel_search *z) {
+  for (int t = 0; t < SKEL_SECT; t++) {
+    if (z->done[t]) continue;
+    double l = INFINITY, r = INFINITY;
+    for (int k = 2; k <= 6; k++) {
+      double x = z->dmin[(t + k) % SKEL_SECT], y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT];
+      l = x < l ? x : l, r = y < r ? y : r;
+    }
+    z->far[t] = 2 * (l > r ? l : r) * (1 + 1e-9);
+  }
+}
+
+/* The sectors a point of the cell at offset (dx, dy) from a's cell can lie in, a at any
+** place of its cell: the angles of the corners of [dx - 1, dx + 1] x [dy - 1, dy + 1]
+** (cell units) from the origin, padded by a sector; all of them for the cells around a.
+** Written as the first sector and a count into the grid's table. */
+static void skel_offset_sectors(int dx, int dy, unsigned char *lo, unsigned char *cnt) {
+  if (abs(dx) <= 1 && abs(dy) <= 1) {
+    *lo = 0, *cnt = SKEL_SECT;
+    return;
+  }
+  double ref = atan2(dy, dx), dl = 0, dh = 0, w = 2 * M_PI / SKEL_SECT;
+  for (int k = 0; k < 4; k++) {
+    double d = atan2(dy + (k & 1 ? 1 : -1), dx + (k & 2 ? 1 : -1)) - ref;
+    d = d > M_PI ? d - 2 * M_PI : d < -M_PI ? d + 2 * M_PI : d;
+    dl = fmin(dl, d), dh = fmax(dh, d);
+  }
+  int t0 = (int)floor((ref + dl + M_PI) / w) - 1, t1 = (int)floor((ref + dh + M_PI) / w) + 1;
+  *lo = (unsigned char)((t0 + SKEL_SECT) % SKEL_SECT);
+  *cnt = (unsigned char)(t1 - t0 + 1 > SKEL_SECT ? SKEL_SECT : t1 - t0 + 1);
+}
+
+static int skel_offset_table(skel_grid *g) {
+  size_t w = 2 * SKEL_WIN + 1;
+  g->sect_lo = malloc(w * w);
+  g->sect_n = malloc(w * w);
+  if (!g->sect_lo || !g->sect_n) return -1;
+  for (int dy = -SKEL_WIN; dy <= SKEL_WIN; dy++)
+    for (int dx = -SKEL_WIN; dx <= SKEL_WIN; dx++) {
+      size_t o = (size_t)(dy + SKEL_WIN) * w + (size_t)(dx + SKEL_WIN);
+      skel_offset_sectors(dx, dy, &g->sect_lo[o], &g->sect_n[o]);
+    }
+  return 0;
+}
+
+/* How far from a the points of sector t can be: the farthest point of the bounding box
+** within the sector's cone (widened by 1e-9 rad), which is a corner of the box inside the
+** cone or where one of the cone's two boundary rays leaves the box; plus a relative 1e-9
+** for rounding.  Only points near the boundary of the set ask. */
+static double skel_exit(const skel_grid *g, geom_point a, double th) {
+  double ux = cos(th), uy = sin(th), rx = INFINITY, ry = INFINITY;
+  if (ux > 0) rx = (g->x1 - a.x) / ux;
+  if (ux < 0) rx = (g->x0 - a.x) / ux;
+  if (uy > 0) ry = (g->y1 - a.y) / uy;
+  if (uy < 0) ry = (g->y0 - a.y) / uy;
+  return fmin(rx, ry);
+}
+
+static double skel_reach(const skel_grid *g, geom_point a, int t) {
+  double w = 2 * M_PI / SKEL_SECT, th0 = t * w - M_PI - 1e-9, th1 = (t + 1) * w - M_PI + 1e-9;
+  double far = fmax(skel_exit(g, a, th0), skel_exit(g, a, th1));
+  const double cx[4] = {g->x0, g->x1, g->x0, g->x1}, cy[4] = {g->y0, g->y0, g->y1, g->y1};
+  for (int k = 0; k < 4; k++) {
+    double dx = cx[k] - a.x, dy = cy[k] - a.y, th = atan2(dy, dx);
+    if (th < th0) th += 2 * M_PI;
+    if (th <= th1) far = fmax(far, sqrt(dx * dx + dy * dy));
+  }
+  return far * (1 + 1e-9);
+}
+
+/* Before ring k (cells at Chebyshev offset k from a's cell): every point not yet seen
+** lies at least r = (k - 1 - 2 SKEL_PAD) h from a (cells are exact to SKEL_PAD).
+** Sector t is done when every edge of it longer than r fails (far) or no
+** point of it is that far (skel_reach); the search ends when every sector is done or
+** the rings have covered the grid.  1: ended. */
+static int skel_search_done(const skel_grid *g, geom_point a, skel_search *z, int k) {
+  if (k - 1 >= g->nx && k - 1 >= g->ny) return 1;
+  if (k < 2) return 0;
+  double r = (k - 1 - 2 * SKEL_PAD) * g->h;
+  int open = 0;
+  for (int t = 0; t < SKEL_SECT; t++) {
+    if (z->done[t]) continue;
+    if (!(z->far[t] <= r) && isnan(z->reach[t])) z->reach[t] = skel_reach(g, a, t);
+    z->done[t] = z->far[t] <= r || z->reach[t] <= r;
+    open += !z->done[t];
+  }
+  return open == 0;
+}
+
+/* 1 when no point of the cell at offset (dx, dy) can end an edge that passes: each of
+** its sectors is done, or its far distance is below the cell's nearest possible point. */
+static int skel_cell_dead(const skel_grid *g, const skel_search *z, int dx, int dy) {
+  if (g->sect_lo == NULL || abs(dx) > SKEL_WIN || abs(dy) > SKEL_WIN) return 0;
+  size_t o = (size_t)(dy + SKEL_WIN) * (2 * SKEL_WIN + 1) + (size_t)(dx + SKEL_WIN);
+  int ax = abs(dx) - 1, ay = abs(dy) - 1;
+  ax = ax < 0 ? 0 : ax, ay = ay < 0 ? 0 : ay;
+  double mind = (sqrt((double)(ax * ax + ay * ay)) - 2 * SKEL_PAD) * g->h;
+  for (int k = 0; k < g->sect_n[o]; k++) {
+    int t = (g->sect_lo[o] + k) % SKEL_SECT;
+    if (!z->done[t] && !(z->far[t] <= mind)) return 0;
+  }
+  return 1;
+}
+
+static int skel_seen_push(skel_search *z, skel_seen v) {
+  if (z->ns == z->cap) {
+    size_t nc = z->cap ? 2 * z->cap : 256;
+    skel_seen *s = realloc(z->seen, nc * sizeof *s);
+    if (!s) return -1;
+    z->seen = s, z->cap = nc;
+  }
+  z->seen[z->ns++] = v;
+  return 0;
+}
+
+/* Adds the points of the live cells of ring k to the search. */
 static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
-                     skel_seen **seen, size_t *ns, size_t *cap, double *dmin) {
+                     skel_search *z) {
   int cx = skel_cellx(g, p[a].x), cy = skel_celly(g, p[a].y);
   for (int iy = cy - k; iy <= cy + k; iy++) {
     if (iy < 0 || iy >= g->ny) continue;
-    int step = (iy == cy - k || iy == cy + k) ? 1 : 2 * k;
-    for (int ix = cx - k; ix <= cx + k; ix += step > 0 ? step : 1) {
-      if (ix < 0 || ix >= g->nx) continue;
+    int step = (iy == cy - k || iy == cy + k || k == 0) ? 1 : 2 * k;
+    for (int ix = cx - k; ix <= cx + k; ix += step) {
+      if (ix < 0 || ix >= g->nx || skel_cell_dead(g, z, ix - cx, iy - cy)) continue;
       size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
       for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
         uint32_t q = g->pt[j];
         if (q == a) continue;
-        if (*ns == *cap) {
-          size_t nc = *cap ? 2 * *cap : 256;
-          skel_seen *s = realloc(*seen, nc * sizeof *s);
-          if (!s) return -1;
-          *seen = s, *cap = nc;
-        }
-        double dx = p[q].x - p[a].x, dy = p[q].y - p[a].y, d = sqrt(dx * dx + dy * dy);
-        int t = (int)((atan2(dy, dx) + M_PI) * (SKEL_SECT / (2 * M_PI)));
-        t = t < 0 ? 0 : t >= SKEL_SECT ? SKEL_SECT - 1 : t;
-        (*seen)[(*ns)++] = (skel_seen){q, t, d};
-        dmin[t] = fmin(dmin[t], d);
+        double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
+        int t = skel_sector(z, dx, dy);
+        if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j]}) != 0) return -1;
+        z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
       }
     }
   }
+  skel_far_update(z);
   return 0;
 }
 
-/* Has the search from a seen far enough?  After rings 0 .. k - 1, every point within
-** (k - 3) h of a has been seen (the cells of a and of the point may each be off by one
-** through rounding), so every unseen b is farther: done when every sector's far distance
-** is at most that, or when the rings cover the grid. */
-static int skel_search_done(const skel_grid *g, const double *dmin, int k) {
-  if (k - 1 >= g->nx && k - 1 >= g->ny) return 1;
-  double r = (k - 3) * g->h;
-  for (int t = 0; t < SKEL_SECT; t++)
-    if (!(skel_far(dmin, t) <= r)) return 0;
-  return 1;
-}
-
-/* The diamond candidates (a, b), b > a, into out, ascending in b. */
 static int skel_cmp_seen(const void *x, const void *y) {
   uint32_t a = ((const skel_seen *)x)->q, b = ((const skel_seen *)y)->q;
   return (a > b) - (a < b);
 }
 
+/* The diamond candidates (a, b), b > a, into out, ascending in b.  Cost: the live cells
+** around a (about a hundred points for uniform points) and a diamond test for each point
+** the sectors do not rule out. */
 static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t a,
-                              skel_seen **seen, size_t *cap, skel_vec *out) {
-  double dmin[SKEL_SECT];
-  size_t ns = 0;
-  for (int t = 0; t < SKEL_SECT; t++) dmin[t] = INFINITY;
-  for (int k = 0; !skel_search_done(g, dmin, k); k++)
-    if (skel_ring(g, p, a, k, seen, &ns, cap, dmin) != 0) return -1;
-  qsort(*seen, ns, sizeof **seen, skel_cmp_seen);
-  for (size_t i = 0; i < ns; i++) {
-    skel_seen s = (*seen)[i];
-    if (s.q < a || skel_far(dmin, s.sect) <= s.d) continue;
-    if (skel_edge_ok(g, p, a, s.q, 1) && skel_vec_push(out, a, s.q) != 0) return -1;
-  }
+                              skel_search *z, skel_vec *out) {
+  z->ns = 0;
+  for (int t = 0; t < SKEL_SECT; t++)
+    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0;
+  for (int k = 0; !skel_search_done(g, p[a], z, k); k++)
+    if (skel_ring(g, p, a, k, z) != 0) return -1;
+  size_t m = 0;
+  for (size_t i = 0; i < z->ns; i++)
+    if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d))
+      z->seen[m++] = z->seen[i];
+  qsort(z->seen, m, sizeof *z->seen, skel_cmp_seen);
+  for (size_t i = 0; i < m; i++)
+    if (skel_edge_ok(g, a, p[a], z->seen[i].q, z->seen[i].pt, 1) &&
+        skel_vec_push(out, a, z->seen[i].q) != 0)
+      return -1;
   return 0;
 }
 
@@ -279,7 +416,7 @@ static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t 
 /* How a flip is decided (chosen once, skel_decider). */
 typedef enum skel_kind {
   SKEL_EXACT_LENGTH,    /* P_1: exact squared lengths of the diagonals */
-  SKEL_CERTIFIED,       /* a key error model (got_cert_key_model) and the tie tolerance */
+  SKEL_CERTIFIED,       /* a key error model (got_cert_model) and the tie tolerance */
   SKEL_NEVER            /* no model: no flip is certain, no edge leaves */
 } skel_kind;
 
@@ -292,6 +429,7 @@ typedef struct skel {
   uint32_t *tv, *te;       /* 3 per triangle: a < b < c, and edges ab, ac, bc */
   double *bad;             /* the measure of each triangle (SKEL_CERTIFIED) */
   uint32_t *toff, *tinc;   /* per edge its triangles, 2 t + (1: third vertex on the left) */
+  uint32_t *tmid;          /* ... the left ones in [toff[e], tmid[e]), the right ones after */
   unsigned char *ealive, *hull, *talive;
   uint32_t *wit;           /* 2 per edge: the last witness pair, or UINT32_MAX */
   uint32_t *hpair;         /* 2 per hull edge (a < b) */
@@ -306,14 +444,9 @@ typedef struct skel {
 
 static void skel_free_all(skel *s) {
   free(s->ev), free(s->off), free(s->nbr), free(s->nbe);
-  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc);
+  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
   free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
   skel_grid_free(&s->g);
-}
-
-static int skel_cmp_edge(const void *x, const void *y) {
-  const uint32_t *a = x, *b = y;
-  return a[0] != b[0] ? (a[0] > b[0]) - (a[0] < b[0]) : (a[1] > b[1]) - (a[1] < b[1]);
 }
 
 /* The adjacency of the sorted edge list: pushing edges in order leaves every list
@@ -347,29 +480,53 @@ static uint32_t skel_edge_find(const skel *s, uint32_t u, uint32_t v) {
   return lo < s->off[u + 1] && s->nbr[lo] == v ? s->nbe[lo] : UINT32_MAX;
 }
 
-/* The candidate edges: diamond = 1 the diamond test (P_1), else every clear segment.
-** Points are searched in parallel in blocks, each block's edges kept in order, so the
-** list is the same for any thread count; sorted at the end. */
-static int skel_candidates(skel *s, int diamond) {
-  skel_vec all = {0};
-  int fail = 0;
-  for (size_t a = 0; a < s->n && !fail; a++) {
+/* The candidates of points [a0, a1) into out: diamond = 1 the diamond test (P_1), else
+** every clear segment. */
+static int skel_candidates_block(const skel *s, size_t a0, size_t a1, int diamond,
+                                 skel_search *z, skel_vec *out) {
+  for (size_t a = a0; a < a1; a++) {
     if (diamond) {
-      skel_seen *seen = NULL;
-      size_t cap = 0;
-      fail = skel_diamond_point(&s->g, s->p, (uint32_t)a, &seen, &cap, &all) != 0;
-      free(seen);
-    } else {
-      for (size_t b = a + 1; b < s->n && !fail; b++)
-        if (skel_edge_ok(&s->g, s->p, (uint32_t)a, (uint32_t)b, 0))
-          fail = skel_vec_push(&all, (uint32_t)a, (uint32_t)b) != 0;
+      if (skel_diamond_point(&s->g, s->p, (uint32_t)a, z, out) != 0) return -1;
+      continue;
     }
+    for (size_t b = a + 1; b < s->n; b++)
+      if (skel_edge_ok(&s->g, (uint32_t)a, s->p[a], (uint32_t)b, s->p[b], 0) &&
+          skel_vec_push(out, (uint32_t)a, (uint32_t)b) != 0)
+        return -1;
   }
-  if (fail) return free(all.v), -1;
-  qsort(all.v, all.n, 2 * sizeof *all.v, skel_cmp_edge);
-  s->ev = all.v;
-  s->m = all.n;
   return 0;
+}
+
+/* The candidate edges, ascending.  Points are searched in parallel in blocks of
+** SKEL_BLOCK, each block's edges kept in order and the blocks joined in order, so the
+** list is the same for any thread count. */
+#define SKEL_BLOCK 4096
+static int skel_candidates(skel *s, int diamond) {
+  size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK, total = 0;
+  skel_vec *part = calloc(nb, sizeof *part);
+  /* the table costs 4 atan2 for each of its 16641 offsets: worth it for 512 points up */
+  int fail = !part || (diamond && s->n >= 512 && skel_offset_table(&s->g) != 0);
+#pragma omp parallel num_threads(s->threads) reduction(| : fail)
+  {
+    skel_search z = {0};
+    skel_search_init(&z);
+#pragma omp for schedule(dynamic, 1)
+    for (long long b = 0; b < (long long)nb; b++)
+      if (!fail)
+        fail |= skel_candidates_block(s, (size_t)b * SKEL_BLOCK,
+                                      fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), diamond,
+                                      &z, &part[b]) != 0;
+    free(z.seen);
+  }
+  for (size_t b = 0; part && b < nb; b++) total += part[b].n;
+  s->ev = fail ? NULL : malloc(2 * total * sizeof *s->ev + 1);
+  for (size_t b = 0, k = 0; part && b < nb; k += part[b].n, b++) {
+    if (s->ev) memcpy(s->ev + 2 * k, part[b].v, 2 * part[b].n * sizeof *s->ev);
+    free(part[b].v);
+  }
+  free(part);
+  s->m = total;
+  return s->ev ? 0 : -1;
 }
 
 /* ---- candidate triangles ------------------------------------------------- */
@@ -386,56 +543,102 @@ static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) 
       size_t cell = (size_t)iy * (size_t)s->g.nx + (size_t)ix;
       for (uint32_t k = s->g.off[cell]; k < s->g.off[cell + 1]; k++) {
         uint32_t q = s->g.pt[k];
-        if (q == a || q == b || q == c || p[q].x <= xa || p[q].x >= xb || p[q].y <= ya ||
-            p[q].y >= yb)
+        geom_point pq = s->g.gp[k];
+        if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
           continue;
-        if (skel_in_triangle(p[a], p[b], p[c], p[q], o)) return 0;
+        if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
       }
     }
   return 1;
 }
 
-/* The candidate triangles with smallest vertex a, appended to out (3 vertices each):
-** pairs b < c of a's neighbours above a joined by a candidate edge, empty.  Cost: the
-** pairs of neighbours, an emptiness test (the points of a box) for each triangle. */
-static int skel_triangles_at(const skel *s, uint32_t a, skel_vec *out, skel_vec *third) {
+/* The candidate triangles with smallest vertex a, appended to out (a, b) and third (c):
+** each neighbour c of a neighbour b > a of a, with c > b, that is a neighbour of a too
+** (stamp[c] == a + 1, set here), and empty.  Cost: the neighbours of a's neighbours, an
+** emptiness test (the points of a box) for each triangle. */
+static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out,
+                             skel_vec *third) {
   uint32_t lo = s->off[a], hi = s->off[a + 1];
+  for (uint32_t i = lo; i < hi; i++) stamp[s->nbr[i]] = a + 1;
   while (lo < hi && s->nbr[lo] < a) lo++;
-  for (uint32_t i = lo; i < hi; i++)
-    for (uint32_t j = i + 1; j < hi; j++) {
-      uint32_t b = s->nbr[i], c = s->nbr[j];
-      if (skel_edge_find(s, b, c) == UINT32_MAX) continue;
+  for (uint32_t i = lo; i < hi; i++) {
+    uint32_t b = s->nbr[i], k = s->off[b + 1];
+    while (k > s->off[b] && s->nbr[k - 1] > b) k--;
+    for (; k < s->off[b + 1]; k++) {
+      uint32_t c = s->nbr[k];
+      if (stamp[c] != a + 1) continue;
       int o = geom_orient(s->p[a], s->p[b], s->p[c]);
       if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
       if (skel_vec_push(out, a, b) != 0 || skel_vec_push(third, c, 0) != 0) return -1;
     }
+  }
+  return 0;
+}
+
+/* The candidate triangles of points [a0, a1), in order. */
+static int skel_triangles_block(const skel *s, size_t a0, size_t a1, uint32_t *stamp,
+                                skel_vec *ab, skel_vec *c) {
+  for (size_t a = a0; a < a1; a++)
+    if (skel_triangles_at(s, (uint32_t)a, stamp, ab, c) != 0) return -1;
   return 0;
 }
 
 /* Fills tv, te, the per-edge incidence (tinc: 2 t + side) and the measures. */
 static int skel_incidence(skel *s) {
   s->toff = calloc(s->m + 1, sizeof *s->toff);
+  s->tmid = malloc((s->m + 1) * sizeof *s->tmid);
   s->tinc = malloc(3 * s->nt * sizeof *s->tinc + 1);
-  uint32_t *fill = malloc((s->m + 1) * sizeof *fill);
-  if (!s->toff || !s->tinc || !fill) return free(fill), -1;
+  uint32_t *hi = malloc((s->m + 1) * sizeof *hi);
+  if (!s->toff || !s->tmid || !s->tinc || !hi) return free(hi), -1;
   for (size_t t = 0; t < 3 * s->nt; t++) s->toff[s->te[t] + 1]++;
   for (size_t e = 0; e < s->m; e++) s->toff[e + 1] += s->toff[e];
-  memcpy(fill, s->toff, (s->m + 1) * sizeof *fill);
+  memcpy(s->tmid, s->toff, (s->m + 1) * sizeof *hi);
+  memcpy(hi, s->toff + 1, s->m * sizeof *hi);
   for (size_t t = 0; t < s->nt; t++) {
     const uint32_t *v = s->tv + 3 * t;
     int o = geom_orient(s->p[v[0]], s->p[v[1]], s->p[v[2]]);
     /* the third vertex is left of ab and of bc when o > 0, of ac when o < 0 */
     int side[3] = {o > 0, o < 0, o > 0};
-    for (int k = 0; k < 3; k++) s->tinc[fill[s->te[3 * t + k]]++] = (uint32_t)(2 * t) + side[k];
+    for (int k = 0; k < 3; k++) {
+      uint32_t e = s->te[3 * t + k];
+      s->tinc[side[k] ? s->tmid[e]++ : --hi[e]] = (uint32_t)(2 * t) + side[k];
+    }
   }
-  free(fill);
+  free(hi);
   return 0;
+}
+
+/* Every candidate triangle, found in parallel by blocks of points joined in order (the
+** same list for any thread count); then edges, incidence and measures. */
+static int skel_triangles_find(skel *s, skel_vec *ab, skel_vec *c) {
+  size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK;
+  skel_vec *pab = calloc(nb, sizeof *pab), *pc = calloc(nb, sizeof *pc);
+  int fail = !pab || !pc;
+#pragma omp parallel num_threads(s->threads) reduction(| : fail)
+  {
+    uint32_t *stamp = calloc(s->n, sizeof *stamp);
+    fail |= stamp == NULL;
+#pragma omp for schedule(dynamic, 1)
+    for (long long b = 0; b < (long long)nb; b++)
+      if (!fail)
+        fail |= skel_triangles_block(s, (size_t)b * SKEL_BLOCK,
+                                     fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), stamp,
+                                     &pab[b], &pc[b]) != 0;
+    free(stamp);
+  }
+  for (size_t b = 0; pab && pc && b < nb; b++) {
+    for (size_t k = 0; k < pab[b].n && !fail; k++)
+      fail = skel_vec_push(ab, pab[b].v[2 * k], pab[b].v[2 * k + 1]) != 0 ||
+             skel_vec_push(c, pc[b].v[2 * k], 0) != 0;
+    free(pab[b].v), free(pc[b].v);
+  }
+  free(pab), free(pc);
+  return fail ? -1 : 0;
 }
 
 static int skel_triangles(skel *s) {
   skel_vec ab = {0}, c = {0};
-  for (size_t a = 0; a < s->n; a++)
-    if (skel_triangles_at(s, (uint32_t)a, &ab, &c) != 0) return free(ab.v), free(c.v), -1;
+  if (skel_triangles_find(s, &ab, &c) != 0) return free(ab.v), free(c.v), -1;
   s->nt = ab.n;
   s->tv = malloc(3 * s->nt * sizeof *s->tv + 1);
   s->te = malloc(3 * s->nt * sizeof *s->te + 1);
@@ -506,13 +709,12 @@ static int skel_pair_keeps(const skel *s, uint32_t e, uint32_t t1, uint32_t t2) 
 static int skel_witness(skel *s, uint32_t e) {
   uint32_t *w = s->wit + 2 * e;
   if (w[0] != UINT32_MAX && s->talive[w[0]] && s->talive[w[1]]) return 1;
-  for (uint32_t i = s->toff[e]; i < s->toff[e + 1]; i++) {
+  for (uint32_t i = s->toff[e]; i < s->tmid[e]; i++) {
     uint32_t ti = s->tinc[i] >> 1;
-    if (!(s->tinc[i] & 1) || !s->talive[ti]) continue;
-    for (uint32_t j = s->toff[e]; j < s->toff[e + 1]; j++) {
+    if (!s->talive[ti]) continue;
+    for (uint32_t j = s->tmid[e]; j < s->toff[e + 1]; j++) {
       uint32_t tj = s->tinc[j] >> 1;
-      if ((s->tinc[j] & 1) || !s->talive[tj]) continue;
-      if (skel_pair_keeps(s, e, ti, tj)) {
+      if (s->talive[tj] && skel_pair_keeps(s, e, ti, tj)) {
         w[0] = ti, w[1] = tj;
         return 1;
       }
@@ -566,29 +768,35 @@ static int skel_lmt(skel *s, size_t *rounds) {
 
 /* ---- certain edges ------------------------------------------------------- */
 
-/* The cells segment ab passes through, padded by a cell on each side: column by column,
-** the y-range of the segment over the column (relative positions, as the point grid).
-** visit(ctx, cell) for each. */
+/* The cells segment ab passes through (padded: SKEL_PAD), line by line along its major
+** axis: for each column (|dx| >= |dy|; rows otherwise) the range of the other coordinate
+** over the column, in positions relative to the grid's corner.  With a slope of at most
+** 1 in magnitude each end of that range is within a few ulps of the coordinates' spread,
+** far below the padding.  visit(ctx, cell) for each. */
 typedef void (*skel_cell_fn)(void *ctx, size_t cell);
 
 static void skel_segment_cells(const skel_grid *g, geom_point a, geom_point b,
                                skel_cell_fn visit, void *ctx) {
-  if (b.x < a.x) {
-    geom_point t = a;
-    a = b, b = t;
+  double u0 = a.x - g->x0, v0 = a.y - g->y0, u1 = b.x - g->x0, v1 = b.y - g->y0;
+  int swap = fabs(v1 - v0) > fabs(u1 - u0), nu = swap ? g->ny : g->nx, nv = swap ? g->nx : g->ny;
+  if (swap) {
+    double t = u0;
+    u0 = v0, v0 = t, t = u1, u1 = v1, v1 = t;
   }
-  double ax = a.x - g->x0, ay = a.y - g->y0, bx = b.x - g->x0, by = b.y - g->y0;
-  skel_box all = skel_grid_box(g, a.x, b.x, fmin(a.y, b.y), fmax(a.y, b.y));
-  double slope = bx > ax ? (by - ay) / (bx - ax) : 0;
-  for (int ix = all.ix0; ix <= all.ix1; ix++) {
-    double xl = fmax(ax, ix * g->h), xr = fmin(bx, (ix + 1) * g->h);
-    double y0 = ay, y1 = by;
-    if (bx > ax && xl <= xr) y0 = ay + (xl - ax) * slope, y1 = ay + (xr - ax) * slope;
-    else if (bx > ax) y0 = y1 = xl > bx ? by : ay;
-    int iy0 = skel_cell(fmin(y0, y1), g->inv, g->ny) - 1, iy1 = skel_cell(fmax(y0, y1), g->inv,
-                                                                         g->ny) + 1;
-    for (int iy = iy0 < 0 ? 0 : iy0; iy <= iy1 && iy < g->ny; iy++)
-      visit(ctx, (size_t)iy * (size_t)g->nx + (size_t)ix);
+  if (u1 < u0) {
+    double t = u0;
+    u0 = u1, u1 = t, t = v0, v0 = v1, v1 = t;
+  }
+  double e = SKEL_PAD * g->h, slope = u1 > u0 ? (v1 - v0) / (u1 - u0) : 0;
+  int i0 = skel_cell(u0 - e, g->inv, nu), i1 = skel_cell(u1 + e, g->inv, nu);
+  for (int i = i0; i <= i1; i++) {
+    double ul = fmax(u0, i * g->h), ur = fmin(u1, (i + 1) * g->h);
+    double va = v0 + (ul - u0) * slope, vb = v0 + (ur - u0) * slope;
+    if (ul > ur) va = vb = ul > u1 ? v1 : v0;
+    int j0 = skel_cell(fmin(va, vb) - e, g->inv, nv), j1 = skel_cell(fmax(va, vb) + e, g->inv, nv);
+    for (int j = j0; j <= j1; j++)
+      visit(ctx, swap ? (size_t)i * (size_t)g->nx + (size_t)j
+                      : (size_t)j * (size_t)g->nx + (size_t)i);
   }
 }
 
@@ -727,12 +935,13 @@ static int skel_decider(skel *s, const rule *r, char *err, size_t errlen) {
              "triangle-based rule whose joint is l_p for a finite p)", rule_name(r));
     return -1;
   }
+  const char *why;
   s->r = r;
   s->mp = measure_points(rule_measure(r));
   s->kind = SKEL_NEVER;
   if (rule_measure(r) == MEASURE_P && rule_joint(r) == JOINT_SUM)
     s->kind = SKEL_EXACT_LENGTH;
-  else if (s->mp != NULL && got_cert_key_model(r, s->p, s->n, &s->rho, &s->alpha) == 0)
+  else if (s->mp != NULL && got_cert_model(s->p, s->n, r, &s->rho, &s->alpha, &why) == 0)
     s->kind = SKEL_CERTIFIED;
   return 0;
 }

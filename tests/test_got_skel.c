@@ -30,7 +30,7 @@
 #include "testutil.h"
 
 static const char *sk_rules[] = {"P_1", "R_1", "-alpha_1", "a_2", "Pinf_1", "-c/a_1", "P_3",
-                                 "-A_1"};
+                                 "-A_1", "-r_1", "R_-1"};
 #define SK_NRULES (sizeof sk_rules / sizeof *sk_rules)
 
 /* The key of triangulation u, and the bound below which another total counts as equal:
@@ -105,13 +105,10 @@ static void sk_check_all(const geom_point *p, int n) {
 
 /* ---- point sets ---- */
 
+/* The sets siteflip enumerates: no two equal points, not all on one line. */
 static int sk_distinct(const geom_point *p, int n) {
-  for (int i = 0; i < n; i++)
-    for (int j = 0; j < i; j++)
-      if (p[i].x == p[j].x && p[i].y == p[j].y) return 0;
-  for (int k = 2; k < n; k++)
-    if (geom_orient(p[0], p[1], p[k]) != 0) return 1;
-  return 0;
+  char err[256];
+  return siteflip_check(p, n, err, sizeof err) == 0;
 }
 
 static void test_random_sets(void **state) {
@@ -166,6 +163,58 @@ static void test_convex_position(void **state) {
   }
 }
 
+/* ---- the diamond search finds every pair that passes the test ---- */
+
+/* The diamond test by brute force: pairs with a point strictly inside each isosceles
+** triangle of base angles pi/8 (plain floating point: the sets below have no point within
+** rounding of a triangle's side) or a point on the open segment fail; the others pass. */
+static size_t sk_diamond_brute(const geom_point *p, int n) {
+  double t8 = tan(M_PI / 8);
+  size_t cnt = 0;
+  for (int a = 0; a < n; a++)
+    for (int b = a + 1; b < n; b++) {
+      double ux = p[b].x - p[a].x, uy = p[b].y - p[a].y;
+      int l = 0, r = 0, on = 0;
+      for (int q = 0; q < n && !(l && r) && !on; q++) {
+        if (q == a || q == b) continue;
+        double vx = p[q].x - p[a].x, vy = p[q].y - p[a].y;
+        double cr = ux * vy - uy * vx, da = ux * vx + uy * vy;
+        double db = -(ux * (p[q].x - p[b].x) + uy * (p[q].y - p[b].y));
+        on = cr == 0 && da > 0 && db > 0;
+        if (fabs(cr) < t8 * da && fabs(cr) < t8 * db) l |= cr > 0, r |= cr < 0;
+      }
+      cnt += !(l && r) && !on;
+    }
+  return cnt;
+}
+
+static void test_diamond_search(void **state) {
+  (void)state;
+  testutil_rng g = {385};
+  rule r;
+  char err[256];
+  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
+  static geom_point p[800];
+  for (int rep = 0; rep < 4; rep++) {
+    int n = 600 + 50 * rep;
+    for (int i = 0; i < n; i++) {
+      double x = testutil_uniform(&g), y = testutil_uniform(&g);
+      /* uniform, a thin strip (boundary effects), clusters, a disc */
+      if (rep == 1) y *= 0.05;
+      if (rep == 2) x = 0.1 * x + (double)(i % 5) * 0.2, y = 0.1 * y + (double)(i % 3) * 0.3;
+      if (rep == 3) {
+        double t = 2 * M_PI * x, rad = sqrt(y);
+        x = rad * cos(t), y = rad * sin(t);
+      }
+      p[i] = (geom_point){x, y};
+    }
+    got_skel s;
+    if (got_skel_build(p, (size_t)n, &r, 2, &s, err, sizeof err) != 0) fail_msg("%s", err);
+    assert_int_equal(s.candidates, sk_diamond_brute(p, n));
+    got_skel_free(&s);
+  }
+}
+
 /* ---- refusals ---- */
 
 static void sk_refuse(const geom_point *p, size_t n, const char *rname) {
@@ -200,6 +249,7 @@ int main(void) {
     cmocka_unit_test(test_grid_subsets),
     cmocka_unit_test(test_grids_and_circles),
     cmocka_unit_test(test_convex_position),
+    cmocka_unit_test(test_diamond_search),
     cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
