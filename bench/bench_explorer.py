@@ -102,7 +102,7 @@ def show(pg, sites, rule, srv=None):
 
 def census(pg):
     return pg.d.execute_script("""const g = S.graph;
-        return g ? (g.too_large ? g.triangulations + ' (too many to draw: the LOT)'
+        return g ? (g.too_large ? '> ' + g.more_than + ' (too many to draw: the LOT)'
                                 : String(g.census.triangulations)) : S.pending + '?';""")
 
 

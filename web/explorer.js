@@ -281,7 +281,7 @@ function drawGraph() {
 function drawCounts() {
   const g = S.graph, c = g && !g.too_large ? g.census : null;
   const put = (id, v) => { $(id).textContent = v === null || v === undefined ? "-" : v; };
-  put("count-triangulations", g ? (c ? c.triangulations : g.triangulations) : null);
+  put("count-triangulations", g ? (c ? c.triangulations : "> " + g.more_than) : null);
   put("count-flips", c && c.flips);
   put("count-sinks", c && c.sinks);
   put("count-ties", c && c.ties);
