@@ -342,8 +342,10 @@ def test_sample_is_the_samplers(server):
 
 
 def test_compare_counts_shared_edges_and_triangles():
-    for seed in (1, 2):
-        p = fliplab.samplers.points(500, "uniform", seed)
+    """lot_compare's radix sorts against sets: 500 points (keys of 9 bits a
+    vertex), 3000 and 20000 (15 bits: several passes of the sort)."""
+    for seed, n in ((1, 500), (2, 500), (3, 3000), (4, 20000)):
+        p = fliplab.samplers.points(n, "uniform", seed)
         a, b = fliplab.lot(p, "P_1"), fliplab.lot(p, "DT")
         assert a.compare(b) == _diff(a.triangles, b.triangles)
         assert b.compare(b)["triangles_common"] == len(b.triangles)
