@@ -129,6 +129,7 @@ typedef struct siteflip_ctx {
   size_t ncap, ecap, qcap, tricap;       /* capacities of node, edge, quad, node_tri rows */
   size_t budget, used;                   /* bytes: the budget, what is counted against it */
   int over;                              /* the budget ran out */
+  int cap;                               /* stop past cap triangulations; 0: never */
   census_progress_fn progress;
   void *pctx;
 } siteflip_ctx;
@@ -427,13 +428,15 @@ static int siteflip_first(siteflip_ctx *c, siteflip_graph *g) {
 }
 
 /* Breadth-first: node u's faces into its row of node_tri, its flips; the
-** progress every 4096 nodes (expanded out of found). */
+** progress every 4096 nodes (expanded out of found).  0, -1, or 1 when more
+** than c->cap triangulations are found (c->cap > 0): the search stops. */
 static int siteflip_enumerate(siteflip_ctx *c, siteflip_graph *g) {
   if (siteflip_first(c, g) != 0) return -1;
   size_t row = (size_t)g->per * sizeof *g->node_tri;
   for (int u = 0; u < g->nnodes; u++) {
     if (siteflip_grow(c, (void **)&g->node_tri, &c->tricap, (size_t)u + 1, row) != 0) return -1;
     if (siteflip_expand(c, g, u, g->node_tri + (size_t)u * (size_t)g->per) != 0) return -1;
+    if (c->cap > 0 && g->nnodes > c->cap) return 1;
     if (c->progress != NULL && (u & 4095) == 4095)
       c->progress((uint64_t)u + 1, (uint64_t)g->nnodes, c->pctx);
   }
@@ -517,6 +520,36 @@ siteflip_graph *siteflip_build_within(const geom_point *p, int n, const siteflip
   siteflip_ctx_free(c);
   siteflip_free(g);
   return NULL;
+}
+
+/* Cost: the breadth-first search up to the first cap + 1 triangulations,
+** O(min(N, cap + 1) n^3) for N triangulations (each expansion looks at the
+** O(n^2) segments and the O(n^3) empty triangles' masks), and the memory of
+** as many nodes; never the whole graph's when N > cap. */
+int siteflip_count_upto(const geom_point *p, int n, int cap, int *count, char *err,
+                        size_t errlen) {
+  if (cap < 1) {
+    snprintf(err, errlen, "siteflip_count_upto: cap %d; expected at least 1", cap);
+    return -1;
+  }
+  if (siteflip_check(p, n, err, errlen) != 0) return -1;
+  const siteflip_limits lim = {SITEFLIP_MEMORY_DEFAULT, NULL, NULL};
+  siteflip_graph *g = calloc(1, sizeof *g);
+  siteflip_ctx *c = siteflip_ctx_new(n, &lim);
+  int rc = -1;
+  if (g != NULL && c != NULL) {
+    g->n = n;
+    c->cap = cap;
+    siteflip_segments(c, p);
+    rc = siteflip_enumerate(c, g);
+    *count = rc == 1 ? cap + 1 : g->nnodes;
+  }
+  if (rc < 0)
+    snprintf(err, errlen, "out of memory (or past the memory budget) counting the "
+             "triangulations of %d sites", n);
+  siteflip_ctx_free(c);
+  siteflip_free(g);
+  return rc;
 }
 
 siteflip_graph *siteflip_build(const geom_point *p, int n, char *err, size_t errlen) {

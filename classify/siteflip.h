@@ -95,6 +95,14 @@ siteflip_graph *siteflip_build_within(const geom_point *p, int n, const siteflip
                                       int *over, char *err, size_t errlen);
 void siteflip_free(siteflip_graph *g);
 
+/* How many triangulations p[0..n-1] (checked first) has, up to cap >= 1:
+** 0 with *count the number when it is at most cap; 1 with *count = cap + 1
+** when there are more (the enumeration stops as soon as it has found cap +
+** 1, so "too many" costs no more than cap + 1 of them); -1 with a one-line
+** reason in err. */
+int siteflip_count_upto(const geom_point *p, int n, int cap, int *count, char *err,
+                        size_t errlen);
+
 /* Move g to new sites with the same order type (e.g. another convex n-gon
 ** labelled anticlockwise): the triangles and the Delaunay node are redone,
 ** the shape is kept.  The caller guarantees the order type.  0, or -1

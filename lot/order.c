@@ -52,14 +52,15 @@ static uint64_t lot_hilbert(uint32_t x, uint32_t y) {
 ** stable: equal keys keep their order, which the lexicographic order's
 ** second sort relies on.  A pass whose digit is the same for every key
 ** would move nothing and is skipped (the high digits of coordinates of one
-** sign and binade). */
-static int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n, int bits) {
+** sign and binade).  key ends sorted; idx (may be NULL) follows it.
+** O((n + 2^LOT_RADIX_BITS) bits / LOT_RADIX_BITS). */
+int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n, int bits) {
   uint64_t *const key0 = key;
   uint32_t *const idx0 = idx;
-  uint64_t *k2 = malloc((size_t)n * sizeof *k2);
-  uint32_t *i2 = malloc((size_t)n * sizeof *i2);
+  uint64_t *k2 = malloc((size_t)n * sizeof *k2 + 1);
+  uint32_t *i2 = idx != NULL ? malloc((size_t)n * sizeof *i2 + 1) : NULL;
   size_t *cnt = malloc(((size_t)1 << LOT_RADIX_BITS) * sizeof *cnt);
-  if (!k2 || !i2 || !cnt) {
+  if (!k2 || (idx != NULL && !i2) || !cnt) {
     free(k2);
     free(i2);
     free(cnt);
@@ -79,12 +80,15 @@ static int lot_radix(uint64_t *key, uint32_t *idx, uint32_t n, int bits) {
     for (uint32_t i = 0; i < n; i++) {
       size_t to = cnt[(key[i] >> sh) & mask]++;
       k2[to] = key[i];
-      i2[to] = idx[i];
+      if (idx != NULL) i2[to] = idx[i];
     }
     uint64_t *tk = key; key = k2; k2 = tk;
     uint32_t *ti = idx; idx = i2; i2 = ti;
   }
-  if (idx != idx0) memcpy(idx0, idx, (size_t)n * sizeof *idx);   /* odd pass count */
+  if (key != key0) {                                              /* odd pass count */
+    memcpy(key0, key, (size_t)n * sizeof *key);
+    if (idx != NULL) memcpy(idx0, idx, (size_t)n * sizeof *idx);
+  }
   free(key == key0 ? k2 : key);
   free(idx == idx0 ? i2 : idx);
   free(cnt);

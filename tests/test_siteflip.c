@@ -5,7 +5,8 @@
 ** integer sites that include collinear triples); thesis figure 3.8; the
 ** DT-equivalent rules; triangle rules never cycle; the best sink is the
 ** GOT of `got` for convex polygons and the GOT itself is a sink for the
-** joints -1, 0, 1, 2; bad site sets are refused with one line.
+** joints -1, 0, 1, 2; the capped count says "more than K" exactly when
+** the full count exceeds K; bad site sets are refused with one line.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -556,6 +557,46 @@ static void test_triangle_rules(void **state) {
   assert_true(got_checked > 3 * 6 * 100);
 }
 
+/* siteflip_count_upto(K) says "more than K" exactly when the whole
+** enumeration finds more than K triangulations, and otherwise their number:
+** K around the true count N (N - 1, N, N + 1), K = 1 and a K in between, on
+** every site sampler; and the convex 12-gon's Catalan(10) = 16796 against
+** the explorer's 5000 and against itself. */
+static void tsf_count_check(const geom_point *p, int n, int N, int K) {
+  char err[256];
+  int count = -1, rc = siteflip_count_upto(p, n, K, &count, err, sizeof err);
+  if (rc < 0) fail_msg("siteflip_count_upto(%d): %s", K, err);
+  if (rc != (N > K) || count != (N > K ? K + 1 : N))
+    fail_msg("%d sites, %d triangulations, cap %d: rc %d, count %d", n, N, K, rc, count);
+}
+
+static void test_count_upto(void **state) {
+  (void)state;
+  for (int kind = 0; kind < SAMPLER_SITES_COUNT; kind++)
+    for (int n = 3; n <= 9; n++)
+      for (uint64_t s = 0; s < 6; s++) {
+        geom_point p[9];
+        assert_int_equal(sampler_sites(kind, 41, s, n, p), 0);
+        siteflip_graph *g = tsf_build(p, n);
+        int N = g->nnodes, ks[5] = {1, N - 1, N, N + 1, 1 + (int)s * N / 5};
+        for (int k = 0; k < 5; k++)
+          if (ks[k] >= 1) tsf_count_check(p, n, N, ks[k]);
+        siteflip_free(g);
+      }
+  geom_point gon[12];
+  sampler_convex(7, 12, 12, gon);
+  tsf_count_check(gon, 12, 16796, 5000);
+  tsf_count_check(gon, 12, 16796, 16795);
+  tsf_count_check(gon, 12, 16796, 16796);
+  char err[256];
+  int count;
+  assert_int_equal(siteflip_count_upto(gon, 12, 0, &count, err, sizeof err), -1);
+  assert_non_null(strstr(err, "cap 0"));
+  geom_point dup[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
+  assert_int_equal(siteflip_count_upto(dup, 4, 10, &count, err, sizeof err), -1);
+  assert_non_null(strstr(err, "sites 2 and 4 are equal"));
+}
+
 static void test_bad_input(void **state) {
   (void)state;
   char err[256];
@@ -586,6 +627,7 @@ int main(void) {
     cmocka_unit_test(test_figure_3_8),
     cmocka_unit_test(test_dt_equivalent),
     cmocka_unit_test(test_triangle_rules),
+    cmocka_unit_test(test_count_upto),
     cmocka_unit_test(test_bad_input),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

@@ -281,7 +281,7 @@ function drawGraph() {
 function drawCounts() {
   const g = S.graph, c = g && !g.too_large ? g.census : null;
   const put = (id, v) => { $(id).textContent = v === null || v === undefined ? "-" : v; };
-  put("count-triangulations", g ? (c ? c.triangulations : g.triangulations) : null);
+  put("count-triangulations", g ? (c ? c.triangulations : "> " + g.more_than) : null);
   put("count-flips", c && c.flips);
   put("count-sinks", c && c.sinks);
   put("count-ties", c && c.ties);
@@ -405,38 +405,39 @@ function addSite(e) {
 
 function deleteSite(i) { S.sites.splice(i, 1); refresh(); }
 
-/* A drag: each mousemove moves the site at once and asks at the next animation frame
-** for the rule's LOT of the moved sites only (/api/tri: one small request, no flip
-** graph), at most one request in flight (moves while it flies are coalesced into the
-** next); the drop (mouseup) asks for the flip graph and the census once. */
+/* A drag: each mousemove moves the site at once and asks at once (not at the next
+** animation frame: the answer is drawn when it comes, and painted by the next frame
+** after it) for the rule's LOT of the moved sites only (/api/tri: one small request,
+** no flip graph), at most one request in flight (moves while it flies are coalesced
+** into the next); the drop (mouseup) asks for the flip graph and the census once. */
 function startDrag(e, i) {
   e.preventDefault();
   e.stopPropagation();
   if (e.shiftKey) { deleteSite(i); return; }
-  S.drag = {i: i, moved: false, frame: 0, busy: false, dirty: false, t0: null};
+  S.drag = {i: i, moved: false, busy: false, dirty: false, t0: null, input: 0, raw: null};
 }
 
 function moveDrag(e) {
   const d = S.drag;
   if (!d) return;
   const r = $("sites").getBoundingClientRect();
+  if (e.type === "pointerrawupdate") d.raw = [e.clientX, e.clientY];
+  else if (d.raw && d.raw[0] === e.clientX && d.raw[1] === e.clientY) return;  /* its twin */
   const p = world(S.view, e.clientX - r.left, e.clientY - r.top);
   S.sites[d.i] = [Number(p[0].toPrecision(6)), Number(p[1].toPrecision(6))];
   d.moved = true;
-  if (d.t0 === null) d.t0 = performance.now();    /* the oldest move not yet drawn */
-  if (!d.frame) d.frame = requestAnimationFrame(() => dragFrame(d));
-}
-
-function dragFrame(d) {
-  d.frame = 0;
-  if (S.drag !== d) return;
+  if (d.t0 === null) {                            /* the oldest move not yet drawn */
+    d.t0 = performance.now();
+    d.input = d.t0 - e.timeStamp;                 /* from the input event's own time */
+  }
   moveSite(d.i);
   if (d.busy) d.dirty = true;
   else retriangulate(d);
 }
 
 async function retriangulate(d) {
-  const t0 = d.t0, sites = S.sites.map((p) => p.slice()), tq = performance.now();
+  const t0 = d.t0, input = d.input, sites = S.sites.map((p) => p.slice());
+  const tq = performance.now();
   d.busy = true; d.dirty = false; d.t0 = null;
   let tri = null, t1 = tq;
   try {
@@ -453,7 +454,7 @@ async function retriangulate(d) {
         "; the flip graph when the site is dropped", true);
     $("graph").classList.add("stale");
     drawTriangles();
-    timed("drag", t0, {wait: tq - t0, fetch: t1 - tq, server: serverMs,
+    timed("drag", t0, {input: input, wait: tq - t0, fetch: t1 - tq, server: serverMs,
                        draw: performance.now() - t1});
   }
   if (d.dirty) retriangulate(d);
@@ -464,7 +465,6 @@ function endDrag() {
   S.drag = null;
   if (d && d.moved) {
     S.dragEnd = Date.now();
-    if (d.frame) cancelAnimationFrame(d.frame);
     drawSites();
     refresh();
   }
@@ -676,6 +676,9 @@ function wire() {
   const svg = $("sites");
   svg.addEventListener("click", addSite);
   window.addEventListener("mousemove", moveDrag);
+  /* a move as it comes, not at the next frame as mousemove (a secure context's:
+  ** 127.0.0.1 is one) */
+  if ("onpointerrawupdate" in window) window.addEventListener("pointerrawupdate", moveDrag);
   window.addEventListener("mouseup", endDrag);
   $("apply").onclick = refresh;
   $("rule").addEventListener("change", refresh);

@@ -19,7 +19,7 @@ from ._lot import (ALGORITHMS, ORDERS, STATUS, Check, CheckError, Triangulation,
 from . import plot, samplers
 from ._census import FORMATS, Counts, census, table34
 from ._got import SKELETONS, Got, got, got_points
-from ._flipgraph import FlipGraph, flipgraph
+from ._flipgraph import FlipGraph, count_triangulations, flipgraph
 from ._pymeasure import measure, quantities
 from ._classify import classify
 from ._studies import compare_got, verdicts, wilson
@@ -37,8 +37,9 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "load_plugin", "measures", "quad_rules", "rules", "SIGNS", "ALGORITHMS", "ORDERS",
            "STATUS", "Check", "CheckError", "Triangulation", "check", "lot", "read_poly",
            "samplers", "plot", "library_path", "FORMATS", "Counts", "census", "table34", "Got",
-           "got", "got_points", "SKELETONS", "FlipGraph", "flipgraph", "measure", "quantities",
-           "classify", "verdicts", "wilson", "Cdf", "cdf", "from_shapely", "lot_polygon",
+           "got", "got_points", "SKELETONS", "FlipGraph", "flipgraph", "count_triangulations",
+           "measure", "quantities", "classify", "verdicts", "wilson", "Cdf", "cdf",
+           "from_shapely", "lot_polygon",
            "compare_got", "ch5_averages", "ch5_measure", "CH5_METHODS", "CH5_QUANTITIES",
            "CPDT_ALGORITHMS", "CPDT_COUNTS", "CPDT_SAMPLERS", "convex_dt", "convex_dt_experiment",
            "CONVEX_INNER", "CONVEX_SAMPLERS", "REGIONS", "ConvexPolygons", "convex_polygons"]

@@ -211,3 +211,41 @@ def _weights(weights: npt.ArrayLike, n: int, r: Rule) -> npt.NDArray[np.float64]
             raise ValueError("weights: site %d: weight %g %s"
                              % (i, x, lib.geom_weighterr_str(e).decode()))
     return w
+
+
+def count_triangulations(sites: npt.ArrayLike, at_most: int) -> int | None:
+    """How many triangulations a small site set has, if at most at_most: the
+    enumeration of flipgraph() stopped as soon as it finds at_most + 1, so
+    "too many" costs no more than at_most + 1 of them (docs/sitesets.md).
+
+    Parameters
+    ----------
+    sites : array_like, shape (n, 2)
+        3 to 16 sites, no two equal, not all on a line; convex or not.
+    at_most : int
+        The cap, at least 1 (and below 2^31 - 1).
+
+    Returns
+    -------
+    int or None
+        The number of triangulations, or None when there are more than at_most.
+
+    Raises
+    ------
+    ValueError
+        Bad sites (the library's message) or a cap below 1.
+    MemoryError
+        Out of memory.
+    """
+    if isinstance(at_most, bool) or not isinstance(at_most, int) or \
+            not 1 <= at_most < 2 ** 31 - 1:
+        raise ValueError("count_triangulations: at_most must be an integer in [1, 2^31 - 1)")
+    p = as_coords(sites, "sites", (-1, 2))
+    e = _lib.errbuf()
+    count = ctypes.c_int(0)
+    rc = lib.siteflip_count_upto(points_ptr(p), len(p), at_most, ctypes.byref(count), e,
+                                 _lib.ERRLEN)
+    if rc < 0:
+        msg = _lib.text(e)
+        raise (MemoryError if "memory" in msg else ValueError)(msg)
+    return None if rc == 1 else count.value

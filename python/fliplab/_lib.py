@@ -188,6 +188,7 @@ _PROTOS = {
                                ctypes.POINTER(SiteflipCounts), ProgressFn, _void_p, _int_p,
                                _char_p, _size]),
     "siteflip_build": (SiteflipGraph_p, [Point_p, _int, _char_p, _size]),
+    "siteflip_count_upto": (_int, [Point_p, _int, _int, _int_p, _char_p, _size]),
     "siteflip_free": (None, [SiteflipGraph_p]),
     "siteflip_direct": (_int, [SiteflipGraph_p, Rule_p, _double, _int_p, _int_p,
                                ctypes.POINTER(SiteflipResult)]),

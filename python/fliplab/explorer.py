@@ -205,12 +205,14 @@ def api_graph(body: dict) -> dict[str, Any]:
     import fliplab
     p = np.array(_sites(body.get("sites")))
     r = _rule(body)
+    # The enumeration stops past NODES_MAX: "too many" at once, not after all
+    # of them (a convex 12-gon's 16 796), and no rule work for the count.
+    if fliplab.count_triangulations(p, NODES_MAX) is None:
+        return {"too_large": True, "triangulations": None, "more_than": NODES_MAX,
+                "rule": r.name, "message": "more than %d triangulations: too many to draw; "
+                "the LOT only" % NODES_MAX}
     g = fliplab.flipgraph(p, r)
     N = len(g.nodes)
-    if N > NODES_MAX:
-        return {"too_large": True, "triangulations": N, "rule": r.name,
-                "message": "%d triangulations: too many to draw (at most %d); the LOT only"
-                           % (N, NODES_MAX)}
     tris = sorted({tuple(t) for t in g.nodes.reshape(-1, 3).tolist()})
     tid = {t: i for i, t in enumerate(tris)}
     bad = r.badness(p[np.array(tris)]).tolist() if r.is_triangle else [None] * len(tris)

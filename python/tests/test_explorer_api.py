@@ -272,14 +272,36 @@ def test_too_large_offers_the_lot(server):
     th = 2 * np.pi * np.arange(12) / 12
     st, g, _ = post(server, "/api/graph", {"sites": np.c_[np.cos(th), np.sin(th)].tolist(),
                                            "rule": "DT"})
-    assert st == 200 and g["too_large"] and g["triangulations"] == 16796
-    assert "LOT" in g["message"]
+    assert st == 200 and g["too_large"] and g["more_than"] == explorer.NODES_MAX
+    assert g["triangulations"] is None and "LOT" in g["message"]
+
+
+def test_capped_count_decides_too_large(server):
+    """The server's answer says "too large" exactly when fliplab.flipgraph
+    finds more than NODES_MAX triangulations: sets on both sides of the cap
+    (convex 11-gon 4862, convex 12-gon 16796, 12 random sites) and the cap
+    moved to a set's own count and one below it."""
+    th = 2 * np.pi * np.arange(12) / 12
+    sets = [np.c_[np.cos(th[:11] * 12 / 11), np.sin(th[:11] * 12 / 11)],
+            np.c_[np.cos(th), np.sin(th)], fliplab.samplers.points(12, "uniform", 3)]
+    for p in sets:
+        n = len(fliplab.flipgraph(p, "DT").nodes)
+        st, g, _ = post(server, "/api/graph", {"sites": p.tolist(), "rule": "DT"})
+        assert st == 200 and bool(g.get("too_large")) == (n > explorer.NODES_MAX)
+        if n <= explorer.NODES_MAX:
+            assert g["census"]["triangulations"] == n
+        for cap in (n - 1, n, n + 1):
+            assert fliplab.count_triangulations(p, cap) == (None if n > cap else n)
+    with pytest.raises(ValueError, match="at_most"):
+        fliplab.count_triangulations(sets[0], 0)
+    with pytest.raises(ValueError, match="equal"):
+        fliplab.count_triangulations([[0, 0], [1, 0], [0, 0]], 10)
 
 
 def test_time_limit():
     srv = _start(time_limit=0.02)
-    try:
-        th = 2 * np.pi * np.arange(12) / 12
+    try:        # a convex 11-gon: 4862 triangulations, under NODES_MAX, all enumerated
+        th = 2 * np.pi * np.arange(11) / 11
         st, r, raw = post(srv, "/api/graph", {"sites": np.c_[np.cos(th), np.sin(th)].tolist(),
                                               "rule": "P_1"})
         assert st == 503 and "time limit" in r["error"] and raw.count(b"\n") == 0
@@ -320,8 +342,10 @@ def test_sample_is_the_samplers(server):
 
 
 def test_compare_counts_shared_edges_and_triangles():
-    for seed in (1, 2):
-        p = fliplab.samplers.points(500, "uniform", seed)
+    """lot_compare's radix sorts against sets: 500 points (keys of 9 bits a
+    vertex), 3000 and 20000 (15 bits: several passes of the sort)."""
+    for seed, n in ((1, 500), (2, 500), (3, 3000), (4, 20000)):
+        p = fliplab.samplers.points(n, "uniform", seed)
         a, b = fliplab.lot(p, "P_1"), fliplab.lot(p, "DT")
         assert a.compare(b) == _diff(a.triangles, b.triangles)
         assert b.compare(b)["triangles_common"] == len(b.triangles)
@@ -457,12 +481,12 @@ def test_graph_cache():
         assert len(srv.cache) == explorer.GRAPH_CACHE
         assert json.dumps([body["sites"], "P_1", None]) not in srv.cache
         srv.time_limit = 0.02
-        th = 2 * np.pi * np.arange(12) / 12
+        th = 2 * np.pi * np.arange(11) / 11      # 4862 triangulations, all drawn
         big = {"sites": np.c_[np.cos(th), np.sin(th)].tolist(), "rule": "P_1"}
         assert post(srv, "/api/graph", big)[0] == 503
         srv.time_limit = 30
         st, r, _ = post(srv, "/api/graph", big)
-        assert st == 200 and r["too_large"] and r["triangulations"] == 16796
+        assert st == 200 and r["census"]["triangulations"] == 4862
     finally:
         srv.shutdown()
         srv.server_close()
