@@ -188,9 +188,14 @@ int linf_hull_facet(const double *pts, size_t n, int d, const unsigned char *f) 
   return pos != neg;
 }
 
+/* The first subset of d indices, 0 .. d - 1 (a table: gcc 12 with -march=native warned,
+** wrongly, that a loop writing f[0 .. d-1] overflowed it). */
+_Static_assert(LINF_DIM_MAX == 8, "linf_first_subset lists 0 .. LINF_DIM_MAX - 1");
+static const unsigned char linf_first_subset[LINF_DIM_MAX] = {0, 1, 2, 3, 4, 5, 6, 7};
+
 static int linf_sel_run(linf_sel *s) {
   unsigned char f[LINF_DIM_MAX], cur[LINF_DIM_MAX];
-  for (int j = 0; j < s->d; j++) f[j] = (unsigned char)j;
+  memcpy(f, linf_first_subset, sizeof f);
   do {   /* the hull facets by search: C(n, d) facets, n orientations each */
     if (!linf_hull_facet(s->pts, s->n, s->d, f)) continue;
     s->st->hull_facets++;
