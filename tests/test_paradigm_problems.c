@@ -7,7 +7,8 @@
 ** the oracle, lot's constrained triangulation of the whole hull with the
 ** sides as segments restricted to the triangles whose centroid lies inside
 ** (crossing number), which has n - 2 triangles, for DT and ES:square, either
-** way round.  Refusals are one line naming the vertex or sides.
+** way round, also with collinear neighbours and cocircular vertices.
+** Refusals are one line naming the vertex or sides.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -170,8 +171,14 @@ static void test_polygon_rows(void **state) {
   sampler_rng g;
   sampler_seed(&g, 38, 2);
   geom_point p[TPP_MAXN], q[TPP_MAXN];
+  /* Collinear neighbours (allowed) and a 3 x 3 grid's ties: a square with its
+  ** side midpoints, and a comb with a notch. */
+  const geom_point mid[] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  const geom_point comb[] = {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
   for (size_t ru = 0; ru < 2; ru++) {
     rule r = tpp_rule(rules[ru]);
+    tpp_polygon_one(mid, 8, &r);
+    tpp_polygon_one(comb, 8, &r);
     for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
       for (int rep = 0; rep < 4; rep++) {
         size_t n = sizes[z];
