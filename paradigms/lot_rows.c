@@ -8,7 +8,8 @@
 #include "paradigm_internal.h"
 #include "lot.h"
 
-/* Build with lot, then copy its triangles and statistics. */
+/* Build with lot, then copy its triangles and statistics.  A simple
+** polygon: its sides as segments, the outside removed (keep_hull 0). */
 static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradigm_output *out,
                             char *err, size_t errlen) {
   lot_options o;
@@ -21,8 +22,16 @@ static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradig
     o.nsegments = in->nsegments;
     o.keep_hull = 1;
   }
+  uint32_t *sides = NULL;
+  int ccw;
+  if (in->problem == PARADIGM_POLYGON) {
+    if (paradigm_polygon_sides(in, &sides, &ccw, err, errlen) != 0) return -1;
+    o.segments = sides, o.nsegments = in->n, o.keep_hull = 0;
+  }
   lot *L = NULL;
-  if (lot_build(&L, in->p, in->n, &o, err, errlen) != 0) return -1;
+  int rc = lot_build(&L, in->p, in->n, &o, err, errlen);
+  free(sides);
+  if (rc != 0) return -1;
   const lot_stats *st = lot_get_stats(L);
   out->ntri = st->triangles;
   out->tri = malloc((out->ntri ? out->ntri : 1) * 3 * sizeof *out->tri);

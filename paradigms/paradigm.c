@@ -11,14 +11,20 @@
 #include "shape.h"
 
 #define BOTH_RULES (PARADIGM_RULE_DT | PARADIGM_RULE_ES)
+#define PARADIGM_CONVEX_REFUSAL \
+  "DT only: cpdt decides with the in-circle test, not a rule's homothet; no point sets, " \
+  "constraints or non-convex polygons (the incremental, flip, select-constrained rows)"
+#define CONVEX_ROW(name, paradigm, section, cost, fn) \
+  {name, paradigm, section, PARADIGM_CONVEX, PARADIGM_RULE_DT, PARADIGM_CONVEX_REFUSAL, cost, \
+   NULL, fn}
 
 /* One row per algorithm; problems and rules as in paradigm.h. */
 static const paradigm_algorithm paradigm_algorithms[] = {
-  {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED,
-   BOTH_RULES, "polygons: triangulate their vertices with the polygon's sides as segments",
+  {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
+   | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",
    "O(n log n) expected (BRIO order, walk)", NULL, paradigm_lot_incremental},
-  {"flip", "flip", "2.2.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED, BOTH_RULES,
-   "polygons: triangulate their vertices with the polygon's sides as segments",
+  {"flip", "flip", "2.2.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED | PARADIGM_POLYGON,
+   BOTH_RULES, "convex polygons: the convex-* rows",
    "O(n^2) worst, O(n log n) for the sweep's start", NULL, paradigm_lot_flip},
   {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints: the constrained sweep is another row", "O(n log n)", NULL,
@@ -45,10 +51,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
    "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
    "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
-  {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED,
-   BOTH_RULES, "polygons: not yet (2.4.3)",
+  {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
+   | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",
    "O(n^2 e): a scan of every site per edge, e constraint pieces per site", NULL,
-   paradigm_select_constrained},
+   paradigm_select_polygon},
   /* incremental variants (paradigms/incremental.c) */
   {"incremental-serpentine", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints and polygons: the row incremental inserts segments",
@@ -72,6 +78,34 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "no constraints or polygons",
    "O(n log n) expected (random order, history DAG)",
    "1: quaternary buckets (0: random order)", paradigm_incr_dag},
+  /* chapter 5's convex polygon algorithms (paradigms/convex_rows.c, cpdt/) */
+  CONVEX_ROW("convex-circum", "selection", "5.4.1",
+             "n^2/2 scans worst, Theta(n^1.5) on average over triangulations",
+             paradigm_convex_circum),
+  CONVEX_ROW("convex-circum-random", "selection", "5.4.1",
+             "O(n^2) worst: the scans of circum on a random side of each piece",
+             paradigm_convex_circum_random),
+  CONVEX_ROW("convex-circum-walk", "selection", "5.4.1",
+             "O(n^2) worst, O(1) extra space: a walk round the dual tree",
+             paradigm_convex_circum_walk),
+  CONVEX_ROW("convex-divide", "divide", "5.4.2",
+             "O(n log n) worst, O(n) on average over triangulations "
+             "(Theta(a) per merge of a cross edges)",
+             paradigm_convex_divide),
+  CONVEX_ROW("convex-incremental", "incremental", "5.4.3",
+             "n^2/2 flips worst, O(n) on average over triangulations "
+             "(a vertex's flips: its degree)",
+             paradigm_convex_incremental),
+  CONVEX_ROW("convex-random", "incremental", "5.4.3",
+             "O(n) expected (Chew: deleted in random order, inserted back)",
+             paradigm_convex_random),
+  CONVEX_ROW("convex-flip", "flip", "2.2.1",
+             "O(n^2) worst: the fan from vertex 0, then Lawson's flips",
+             paradigm_convex_flip),
+  CONVEX_ROW("convex-corners", "sweepline", "2.5.4",
+             "O(n log n): a heap of corners, the smallest circumcircle cut first, "
+             "then Lawson's flips",
+             paradigm_convex_corners),
 };
 
 #define PARADIGM_ROWS (sizeof paradigm_algorithms / sizeof paradigm_algorithms[0])
@@ -248,6 +282,21 @@ static int paradigm_segments(const paradigm_input *in, uint32_t **seg, char *err
   return 0;
 }
 
+/* A polygon's vertices are its boundary in order: a repeated vertex is
+** refused (merging it would make another polygon).  back is increasing
+** with back[k] = k until the first repeat, so that repeat is the first k
+** where back[k] != k (or m).  0, or -1 naming the vertex. */
+static int paradigm_repeats(const paradigm_input *in, const uint32_t *back, size_t m,
+                            char *err, size_t errlen) {
+  if ((in->problem != PARADIGM_POLYGON && in->problem != PARADIGM_CONVEX) || m == in->n)
+    return 0;
+  size_t k = 0;
+  while (k < m && back[k] == k) k++;
+  snprintf(err, errlen, "%s polygon: vertex %zu repeats an earlier vertex",
+           in->problem == PARADIGM_CONVEX ? "convex" : "simple", k + 1);
+  return -1;
+}
+
 int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm_result *out,
                  char *err, size_t errlen) {
   memset(out, 0, sizeof *out);
@@ -257,6 +306,7 @@ int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm
   size_t m;
   if (paradigm_distinct(in, &q, &back, &m, err, errlen) != 0) return -1;
   int rc = paradigm_check(q, m, in, err, errlen);
+  if (rc == 0) rc = paradigm_repeats(in, back, m, err, errlen);
   uint32_t *seg = NULL;
   if (rc == 0) rc = paradigm_segments(in, &seg, err, errlen);
   paradigm_input sub = *in;

@@ -34,7 +34,12 @@ typedef enum paradigm_problem {
 } paradigm_problem;
 
 /* What an algorithm is given: distinct points within the coordinate
-** contract, not all collinear (the runner checks), 0-based indices. */
+** contract, not all collinear (the runner checks), 0-based indices, and
+** the problem as the caller gave it.  For PARADIGM_POLYGON and
+** PARADIGM_CONVEX the order of the points matters: it is the boundary's
+** (a simple polygon either way round; a convex one anticlockwise), so the
+** runner refuses a repeated vertex rather than merge it, and the distinct
+** points keep the input's order. */
 typedef struct paradigm_input {
   const geom_point *p;
   size_t n;

@@ -102,4 +102,27 @@ FLIPLAB_INTERNAL
 int paradigm_incr_dag(const paradigm_input *in, paradigm_output *out, char *err,
                       size_t errlen);
 
+/* The simple polygon problem (paradigms/polygon_rows.c): the polygon
+** checked and its sides as segments (*ccw its orientation); out's triangles
+** outside it dropped; select-constrained serving it too. */
+FLIPLAB_INTERNAL int paradigm_polygon_sides(const paradigm_input *in, uint32_t **seg, int *ccw,
+                                            char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_polygon_inside(paradigm_output *out, size_t n, int ccw, char *err,
+                                             size_t errlen);
+FLIPLAB_INTERNAL int paradigm_select_polygon(const paradigm_input *in, paradigm_output *out,
+                                             char *err, size_t errlen);
+/* Chapter 5's convex polygon algorithms (paradigms/convex_rows.c), one per
+** cpdt_algorithm. */
+#define PARADIGM_CONVEX_FN(fn) \
+  FLIPLAB_INTERNAL int fn(const paradigm_input *in, paradigm_output *out, char *err, \
+                          size_t errlen);
+PARADIGM_CONVEX_FN(paradigm_convex_circum)
+PARADIGM_CONVEX_FN(paradigm_convex_circum_random)
+PARADIGM_CONVEX_FN(paradigm_convex_circum_walk)
+PARADIGM_CONVEX_FN(paradigm_convex_divide)
+PARADIGM_CONVEX_FN(paradigm_convex_incremental)
+PARADIGM_CONVEX_FN(paradigm_convex_random)
+PARADIGM_CONVEX_FN(paradigm_convex_flip)
+PARADIGM_CONVEX_FN(paradigm_convex_corners)
+
 #endif
