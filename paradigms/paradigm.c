@@ -18,6 +18,11 @@
   {name, paradigm, section, PARADIGM_CONVEX, PARADIGM_RULE_DT, PARADIGM_CONVEX_REFUSAL, cost, \
    NULL, fn}
 
+/* What the unconstrained selection rows leave to others. */
+#define PARADIGM_SELECT_REFUSAL \
+  "constraints: the row select-constrained (2.4.2); simple polygons: select-constrained, " \
+  "incremental and flip (2.4.3's own polygon selection is not built)"
+
 /* One row per algorithm; problems and rules as in paradigm.h. */
 static const paradigm_algorithm paradigm_algorithms[] = {
   {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
@@ -36,18 +41,18 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   PARADIGM_SELECT_REFUSAL, "O(n^2): a scan of every site per edge",
    NULL, paradigm_select_stack},
   {"select-queue", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints, polygons: not yet (2.4.2, 2.4.3)", "O(n^2): a scan of every site per edge",
+   PARADIGM_SELECT_REFUSAL, "O(n^2): a scan of every site per edge",
    NULL, paradigm_select_queue},
   {"select-strip", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   PARADIGM_SELECT_REFUSAL,
    "O(n^{3/2}) expected on uniform sites (DT); ES polygons: the homothet's extent; "
    "O(n^2) for an ellipse", NULL,
    paradigm_select_strip},
   {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints, polygons: not yet (2.4.2, 2.4.3)",
+   PARADIGM_SELECT_REFUSAL,
    "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
    "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
    "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
