@@ -130,23 +130,7 @@ static int incr_lot_ordered(const paradigm_input *in, const uint32_t *ord, parad
   lot *L = NULL;
   int rc = lot_build(&L, q, in->n, &o, err, errlen);
   free(q);
-  if (rc != 0) return -1;
-  if (lot_get_stats(L)->status != LOT_CONVERGED) {   /* DT and ES: only the budget stops it */
-    snprintf(err, errlen, "the flip budget (%llu flips) ran out: this order makes about n^2 "
-             "flips on these points (section 2.3)",
-             (unsigned long long)lot_get_stats(L)->max_flips);
-    lot_free(L);
-    return -1;
-  }
-  out->ntri = lot_get_stats(L)->triangles;
-  out->tri = malloc((out->ntri ? out->ntri : 1) * 3 * sizeof *out->tri);
-  if (out->tri == NULL) {
-    lot_free(L);
-    snprintf(err, errlen, "out of memory for %zu triangles", out->ntri);
-    return -1;
-  }
-  lot_get_triangles(L, out->tri);
-  lot_free(L);
+  if (rc != 0 || paradigm_lot_take(L, out, err, errlen) != 0) return -1;
   for (size_t k = 0; k < 3 * out->ntri; k++) out->tri[k] = ord[out->tri[k]];
   return 0;
 }

@@ -31,13 +31,24 @@ static int paradigm_lot_run(const paradigm_input *in, lot_algorithm alg, paradig
   lot *L = NULL;
   int rc = lot_build(&L, in->p, in->n, &o, err, errlen);
   free(sides);
-  if (rc != 0) return -1;
+  return rc != 0 ? -1 : paradigm_lot_take(L, out, err, errlen);
+}
+
+/* A lot that did not converge is no LOT: for DT and ES only the flip budget
+** stops the flips (an order that makes about n^2 of them, section 2.3). */
+int paradigm_lot_take(lot *L, paradigm_output *out, char *err, size_t errlen) {
   const lot_stats *st = lot_get_stats(L);
+  if (st->status != LOT_CONVERGED) {
+    snprintf(err, errlen, "the flip budget (%llu flips) ran out: this order makes about n^2 "
+             "flips on these points (section 2.3)", (unsigned long long)st->max_flips);
+    lot_free(L);
+    return -1;
+  }
   out->ntri = st->triangles;
   out->tri = malloc((out->ntri ? out->ntri : 1) * 3 * sizeof *out->tri);
   if (out->tri == NULL) {
-    lot_free(L);
     snprintf(err, errlen, "out of memory for %zu triangles", st->triangles);
+    lot_free(L);
     return -1;
   }
   lot_get_triangles(L, out->tri);

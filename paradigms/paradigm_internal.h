@@ -6,6 +6,7 @@
 #ifndef FLIPLAB_PARADIGM_INTERNAL_H
 #define FLIPLAB_PARADIGM_INTERNAL_H
 
+#include "lot.h"
 #include "paradigm.h"
 
 /* lot/'s algorithms as rows (paradigms/lot_rows.c). */
@@ -18,6 +19,12 @@ int paradigm_lot_flip(const paradigm_input *in, paradigm_output *out, char *err,
 FLIPLAB_INTERNAL
 int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err,
                        size_t errlen);
+
+/* lot's triangles into out and L freed (paradigms/lot_rows.c), or -1 with a
+** one-line message when L did not converge (the flip budget ran out) or
+** memory ran out; L is freed either way. */
+FLIPLAB_INTERNAL
+int paradigm_lot_take(lot *L, paradigm_output *out, char *err, size_t errlen);
 
 /* The rule's in-shape decision for the registry's in-shape algorithms: for
 ** anticlockwise a, b, c, +1 when d lies strictly inside the rule's empty
