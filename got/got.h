@@ -170,8 +170,9 @@ int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff
 ** triangle (i, k, j as fields), 2n - h - 2 of them, sorted.  res->key2 is the runner-up
 ** among the triangulations containing the skeleton; res->cert_unique is 1 when every
 ** face's optimum is certified unique (then the GOT is unique), and cert_gap and
-** cert_bound are those of the face closest to a tie.  cert_rho and cert_alpha are NaN
-** (got_cert_err_of answers INFINITY). */
+** cert_bound are those of the face closest to a tie.  cert_rho and cert_alpha model keys
+** of measure_eval summed over the 2n - h - 2 triangles (got_cert_err_of bounds a LOT's
+** total with them); NaN when the rule has no such model. */
 typedef enum got_skeleton {
   GOT_SKELETON_AUTO,    /* the LMT-skeleton */
   GOT_SKELETON_ALL,     /* every edge, the hull certain (tiny n: got_skel_all) */

@@ -223,11 +223,13 @@ static got_keyfn got_keyfn_plain(got_keyfn keyfn) {
        : keyfn == GOT_KEY_FROM_SQ_HALFLOG ? GOT_KEY_LOG : keyfn;
 }
 
+/* A triangulation of the result's input has res->ntri triangles (n - 2 for a polygon,
+** 2n - h - 2 for a point set); before the triangles are known, a polygon's n - 2. */
 double got_cert_err_of(const got_result *res, double key) {
-  if (isnan(res->cert_rho) || isnan(res->cert_alpha) || !isfinite(key) || res->n < 3)
+  size_t m = res->ntri > 0 ? res->ntri : res->n >= 3 ? res->n - 2 : 0;
+  if (isnan(res->cert_rho) || isnan(res->cert_alpha) || !isfinite(key) || m == 0)
     return INFINITY;
-  return got_cert_bound(key, res->n - 2, joint_get(res->joint)->keyop, res->cert_rho,
-                        res->cert_alpha);
+  return got_cert_bound(key, m, joint_get(res->joint)->keyop, res->cert_rho, res->cert_alpha);
 }
 
 /* The model of a key shape for triangles among p[0..n-1]: NULL, or why

@@ -813,6 +813,10 @@ int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_opt
   int rc = got_points_run(p, n, r, threads, opt ? opt->tie_eps : RULE_DEFAULT_TIE_EPS, &s,
                           out, err, errlen);
   got_skel_free(&s);
+  /* the error model of keys summed from measure_eval (a LOT's total, say): got_cert_err_of */
+  const char *why;
+  if (rc == 0 && got_cert_model(p, n, r, &out->cert_rho, &out->cert_alpha, &why) != 0)
+    out->cert_rho = out->cert_alpha = NAN;
   out->n = n;
   out->points = 1;
   out->skeleton = skeleton == GOT_SKELETON_ALL ? GOT_SKELETON_ALL : GOT_SKELETON_LMT;

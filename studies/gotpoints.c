@@ -49,6 +49,15 @@ static void study_gap_set(const rule *r, int kind, size_t n, uint64_t seed, got_
   o->failed = got_points_solve(p, n, r, &go, sk, &g, err, errlen) != 0;
   if (!o->failed && study_lot_key(p, n, r, &lk, err, errlen) != 0) o->failed = 1;
   if (o->failed) return;
+  /* a LOT is a triangulation: its total certainly below the GOT's would be a wrong GOT */
+  double bound = g.cert_err + got_cert_err_of(&g, lk);
+  if (lk < g.key - bound) {
+    snprintf(err, errlen, "the LOT's total %.17g is below the GOT's %.17g beyond the error "
+             "bound %.3g (a wrong GOT)", lk, g.key, bound);
+    o->failed = 1;
+    got_result_free(&g);
+    return;
+  }
   o->gap = rule_gap(r, lk, g.key);
   o->equal = o->gap <= rule_tie_eps(r);
   o->certified = g.cert_unique;

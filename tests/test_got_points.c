@@ -118,6 +118,13 @@ static void tgp_check_one(const geom_point *p, int n, const siteflip_graph *g, c
   if (!tgp_near(res.key, k1) || !tgp_near(siteflip_node_key(g, r, u), k1))
     fail_msg("%s, %s, %s: key %.17g, its triangles %.17g, enumeration %.17g", what,
              rule_name(r), got_skeleton_name(sk), res.key, siteflip_node_key(g, r, u), k1);
+  /* the same triangulation's total summed from measure_eval lies within both bounds */
+  double ku = siteflip_node_key(g, r, u), eu = got_cert_err_of(&res, ku);
+  if (strcmp(rule_name(r), "P_1") == 0 && !isfinite(eu))
+    fail_msg("%s, P_1: no error model for point sets", what);
+  if (isfinite(eu) && fabs(res.key - ku) > res.cert_err + eu)
+    fail_msg("%s, %s: key %.17g and its triangles' total %.17g differ beyond the certified "
+             "bounds %.3g + %.3g", what, rule_name(r), res.key, ku, res.cert_err, eu);
   if (nbest > 1 && res.cert_unique)
     fail_msg("%s, %s: %d optima but certified unique", what, rule_name(r), nbest);
   if (sk == GOT_SKELETON_ALL && g->nnodes > 1 && !tgp_near(res.key2, nbest > 1 ? k1 : k2))
