@@ -134,6 +134,8 @@ typedef struct cs_state {
   size_t partcap;
   uint32_t *touch;          /* the nodes it made (their events anew) */
   size_t ntouch, touchcap;
+  uint32_t *drop;           /* the heads of the empty pockets it made (freed) */
+  size_t ndrop, dropcap;
   cs_out *og;               /* its outgoing constraints, sorted round it */
   size_t ogcap;
   uint32_t seq;
@@ -341,6 +343,22 @@ static int cs_touch(cs_state *S, uint32_t x) {
   return cs_schedule(S, S->nt[x].nx[0]);
 }
 
+/* Free the list of head h, events and all (a pocket done, or empty). */
+static void cs_drop(cs_state *S, uint32_t h) {
+  for (uint32_t x = S->nt[h].nx[0], y; x != CS_NONE; x = y) {
+    y = S->nt[x].nx[0];
+    cs_cancel(S, x);
+    cs_node_free(S, x);
+  }
+  cs_node_free(S, h);
+}
+
+/* The head of x's list. */
+static uint32_t cs_head(const cs_state *S, uint32_t x) {
+  while (S->nd[x].site != CS_NONE) x = S->nt[x].pv[0];
+  return x;
+}
+
 /* ---- circle events --------------------------------------------------------- */
 
 static int cs_emit(cs_state *S, uint32_t a, uint32_t b, uint32_t c) {
@@ -365,6 +383,10 @@ static int cs_circle(cs_state *S, uint32_t b) {
   cs_cancel(S, c);
   cs_unlink(S->nt, b);
   cs_node_free(S, b);
+  if (closes) {   /* the pocket's last triangle: what is left is the edge a c */
+    cs_drop(S, cs_head(S, a));
+    return 0;
+  }
   if (cs_schedule(S, a) != 0) return -1;
   return cs_schedule(S, c);
 }
@@ -452,6 +474,13 @@ static int cs_incoming(cs_state *S, uint32_t k, uint32_t *lo, size_t *ni) {
   return 0;
 }
 
+/* Remember the head of an empty pocket, freed at the site event's end. */
+static int cs_dropped(cs_state *S, uint32_t h) {
+  if (geom_grow((void **)&S->drop, &S->dropcap, S->ndrop + 1, sizeof *S->drop) != 0) return -1;
+  S->drop[S->ndrop++] = h;
+  return 0;
+}
+
 static int cs_touched(cs_state *S, uint32_t x) {
   if (geom_grow((void **)&S->touch, &S->touchcap, S->ntouch + 1, sizeof *S->touch) != 0)
     return -1;
@@ -507,12 +536,16 @@ static int cs_pockets(cs_state *S, uint32_t k, size_t ni) {
   for (size_t m = 1; m <= ni; m++) {
     uint32_t u = S->cn[S->thru[m - 1]].u, upper = S->part[2 * (m - 1) + 1];
     uint32_t lower = S->cn[S->thru[m - 1]].above;
-    if (!cs_lone(S, upper, u, CS_NONE)) {
+    if (cs_lone(S, upper, u, CS_NONE)) {
+      if (cs_dropped(S, upper) != 0) return -1;
+    } else {
       S->pockets++;
       if (cs_add(S, upper, k) == CS_NONE || cs_add(S, cs_last(S->nt, upper), k) == CS_NONE)
         return -1;
     }
-    if (!cs_lone(S, lower, u, S->part[2 * m])) {
+    if (cs_lone(S, lower, u, S->part[2 * m])) {
+      if (cs_dropped(S, lower) != 0) return -1;
+    } else {
       S->pockets++;
       if (cs_add(S, lower, k) == CS_NONE) return -1;
     }
@@ -607,7 +640,7 @@ static int cs_restructure(cs_state *S, uint32_t k, uint32_t lo, size_t ni, size_
 static int cs_site(cs_state *S, uint32_t k) {
   uint32_t lo;
   size_t ni, nj;
-  S->ntouch = 0;
+  S->ntouch = S->ndrop = 0;
   if (cs_incoming(S, k, &lo, &ni) != 0) return -1;
   if (geom_grow((void **)&S->part, &S->partcap, 2 * ni + 2, sizeof *S->part) != 0) return -1;
   for (size_t m = 0; m <= ni; m++) {
@@ -621,6 +654,7 @@ static int cs_site(cs_state *S, uint32_t k) {
   if (cs_restructure(S, k, lo, ni, nj) != 0) return -1;
   for (size_t t = 0; t < S->ntouch; t++)
     if (cs_touch(S, S->touch[t]) != 0) return -1;
+  for (size_t d = 0; d < S->ndrop; d++) cs_drop(S, S->drop[d]);
   return 0;
 }
 
@@ -683,7 +717,7 @@ static void cs_memory(const cs_state *S) {
 static void cs_free(cs_state *S) {
   free(S->nd), free(S->nt), free(S->hp), free(S->hpos), free(S->cn), free(S->ct);
   free(S->out), free(S->outhead), free(S->tri), free(S->made), free(S->thru);
-  free(S->part), free(S->touch), free(S->og);
+  free(S->part), free(S->touch), free(S->og), free(S->drop);
 }
 
 /* The sweep on in (distinct sites, in->nsegments segments), then the
