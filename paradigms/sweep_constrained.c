@@ -264,11 +264,23 @@ static void cs_points(const cs_state *S, uint32_t b, geom_point t[3]) {
   t[0] = nd[S->nt[b].pv[0]].pt, t[1] = nd[b].pt, t[2] = nd[S->nt[b].nx[0]].pt;
 }
 
+/* Do the events of nodes a and b have one triangle (a pocket's last
+** triangle has one event from each end)?  Their keys are then equal. */
+static int cs_same_triangle(const cs_state *S, uint32_t a, uint32_t b) {
+  const cs_tower *t = S->nt;
+  uint32_t u[3] = {t[a].pv[0], a, t[a].nx[0]}, v[3] = {t[b].pv[0], b, t[b].nx[0]};
+  int shared = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) shared += S->nd[u[i]].site == S->nd[v[j]].site;
+  return shared == 3;
+}
+
 /* Does event a come before b?  Disjoint bounds, else the exact keys, else
 ** creation order. */
 static int cs_before(const cs_state *S, const cs_event *a, const cs_event *b) {
   if (a->hi < b->lo) return 1;
   if (b->hi < a->lo) return 0;
+  if (cs_same_triangle(S, a->node, b->node)) return a->seq < b->seq;
   geom_point ta[3], tb[3];
   cs_points(S, a->node, ta);
   cs_points(S, b->node, tb);

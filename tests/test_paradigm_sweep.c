@@ -23,8 +23,8 @@
 #include "sampler.h"
 #include "testutil.h"
 
-#define TS_MAXN 64
-#define TS_MAXS 64
+#define TS_MAXN 1600
+#define TS_MAXS 400
 
 static rule ts_dt(void) {
   rule r;
@@ -162,6 +162,15 @@ static void test_constrained_lot(void **state) {
     paradigm_result_free(&chk);
     ts_same(p, n, seg, ns);
     ts_same(p, n, seg, 0);
+  }
+  for (int rep = 0; rep < 24; rep++) {   /* a few larger sets: long pieces, deep lists */
+    int fam = rep % 3;
+    size_t n = ts_points(&g, fam, fam == 2 ? 1599 : 1500, p);
+    if (fam == 2) {   /* a 40 x 40 grid */
+      for (size_t i = 0; i < 1600; i++) p[i] = (geom_point){(double)(i % 40), (double)(i / 40)};
+      n = 1600;
+    }
+    ts_same(p, n, seg, ts_segments(&g, p, n, TS_MAXS, seg));
   }
   print_message("%llu segments, %llu tie flips\n", (unsigned long long)ts_segs,
                 (unsigned long long)ts_flips);
