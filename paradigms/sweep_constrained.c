@@ -49,8 +49,12 @@
 ** The order of equal keys is fixed (creation order); the triangles are
 ** then handed to sweep_finish.c, which checks them exactly and settles the
 ** ties with lot's tie-break (Lawson's flips with paradigm_inshape's
-** perturbation), as lot's own sweep ends.  It also repairs pockets closed
-** out of the STC order: a pocket is cut in key order, a corner at a time.
+** perturbation), as lot's own sweep ends.  A pocket goes on in the key
+** order of the piece it came from, so its breakpoints stay ordered; no
+** proof here that this order is Delaunay inside a pocket, but the check
+** would stop a corner cut over a site, the pass would flip a non-Delaunay
+** edge (and counts it), and on generic sites it flips none
+** (bench_paradigm_sweep, tests/test_paradigm_sweep.c).
 **
 ** Cost: O(n log n) expected for n sites and e segment pieces: every event
 ** is one search or update of a skip list, O(log n) expected, and a heap

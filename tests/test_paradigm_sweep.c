@@ -6,7 +6,7 @@
 ** non-crossing segments (sharing ends, through other sites, overlapping),
 ** sweep-constrained gives exactly lot's constrained Delaunay triangulation
 ** with the hull kept; with no segments lot's DT.  On random x-monotone
-** polygons (either way round) and convex polygons both rows give the
+** polygons and convex polygons (either way round) both rows give the
 ** polygon rows' triangles.  The counts obey the sweep's theorems: one
 ** event per site and per triangle, edges made minus deleted the result's
 ** edges.  Refusals are one line.
@@ -230,6 +230,11 @@ static void test_polygons(void **state) {
     sampler_gon_info info;
     assert_int_equal(sampler_gon_find(samplers[rep & 1])->draw(&sg, n, &gp, p, &info), 0);
     ts_polygon_same(p, n, PARADIGM_CONVEX, "convex-divide");
+    ts_polygon_same(p, n, PARADIGM_POLYGON, "incremental");
+    for (size_t i = 0; i < n / 2; i++) {   /* clockwise: a simple polygon still */
+      geom_point t = p[i];
+      p[i] = p[n - 1 - i], p[n - 1 - i] = t;
+    }
     ts_polygon_same(p, n, PARADIGM_POLYGON, "incremental");
   }
 }
