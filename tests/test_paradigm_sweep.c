@@ -193,6 +193,32 @@ static void ts_monotone(testutil_rng *g, size_t n, int ccw, geom_point *p) {
   for (size_t i = 0; i < n; i++) p[i] = ccw ? q[i] : q[n - 1 - i];
 }
 
+/* An x-monotone polygon of small integers with vertical sides (steps of
+** the chains at one x) and cocircular vertices: m columns, each with one or
+** two vertices below y = 0 and above it, the ends at y = 0.  Its size. */
+static size_t ts_staircase(testutil_rng *g, int ccw, geom_point *p) {
+  geom_point lo[40], hi[40];
+  size_t nl = 0, nh = 0, n = 0;
+  int m = 2 + (int)(testutil_next(g) % 8), x = 0;
+  for (int k = 0; k < m; k++) {
+    double y1 = -1.0 - (double)(testutil_next(g) % 4), y2 = 1.0 + (double)(testutil_next(g) % 4);
+    lo[nl++] = (geom_point){x, y1};
+    if (testutil_next(g) & 1) lo[nl++] = (geom_point){x, y1 - 1};
+    hi[nh++] = (geom_point){x, y2};
+    if (testutil_next(g) & 1) hi[nh++] = (geom_point){x, y2 + 1};
+    x += 1 + (int)(testutil_next(g) % 2);
+  }
+  p[n++] = (geom_point){-1, 0};
+  for (size_t i = 0; i < nl; i++) p[n++] = lo[i];
+  p[n++] = (geom_point){x, 0};
+  for (size_t i = nh; i-- > 0;) p[n++] = hi[i];
+  for (size_t i = 0; !ccw && i < n / 2; i++) {
+    geom_point t = p[i];
+    p[i] = p[n - 1 - i], p[n - 1 - i] = t;
+  }
+  return n;
+}
+
 static void ts_polygon_same(const geom_point *p, size_t n, paradigm_problem pb,
                             const char *oracle) {
   paradigm_result ref, res;
@@ -210,8 +236,9 @@ static void ts_polygon_same(const geom_point *p, size_t n, paradigm_problem pb,
   paradigm_result_free(&ref);
 }
 
-/* x-monotone polygons either way round (the row incremental's CDT of the
-** polygon), convex polygons of two samplers (convex-divide's DT). */
+/* x-monotone polygons either way round, random and integer staircases
+** (the row incremental's CDT of the polygon), convex polygons of two
+** samplers (convex-divide's DT; then clockwise, as simple polygons). */
 static void test_polygons(void **state) {
   (void)state;
   testutil_rng g = {254};
@@ -220,6 +247,7 @@ static void test_polygons(void **state) {
     size_t n = 3 + (size_t)(testutil_next(&g) % 40);
     ts_monotone(&g, n, rep & 1, p);
     ts_polygon_same(p, n, PARADIGM_POLYGON, "incremental");
+    ts_polygon_same(p, ts_staircase(&g, rep & 1, p), PARADIGM_POLYGON, "incremental");
   }
   sampler_gon_params gp = {SAMPLER_REGION_SQUARE, 0, NULL};
   sampler_rng sg;
