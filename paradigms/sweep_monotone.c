@@ -7,8 +7,9 @@
 ** On an x-monotone polygon every vertex but the two ends has one incoming
 ** and one outgoing side (but at the ends of a vertical side, which the
 ** lexicographic order turns), so the constraint list holds the polygon's
-** two sides that cross the sweepline and the interior is one piece: its boundary is the polygon's part already swept, a list, and
-** each site event joins the new vertex to it.  The thesis goes further: it
+** two sides that cross the sweepline and the interior is one piece: its
+** boundary is the polygon's part already swept, a list, and each site
+** event joins the new vertex to it.  The thesis goes further: it
 ** takes every site event first, so that the boundary is the whole polygon
 ** from the start, and then cuts the convex corners in the order of their
 ** circles' rightmost points.  That order is not the Delaunay one (cpdt/'s
@@ -21,7 +22,8 @@
 ** its height, else to the arc found (the sites between then close a
 ** pocket, which sweep_constrained.c counts).
 **
-** Cost: O(n log n), as the constrained sweep's, with one piece.
+** Cost: O(n log n) expected, as the constrained sweep's, with one piece
+** inside the polygon; the check of the polygon is O(n).
 */
 #include <stdio.h>
 #include "paradigm_internal.h"
