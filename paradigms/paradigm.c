@@ -32,8 +32,17 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    BOTH_RULES, "convex polygons: the convex-* rows",
    "O(n^2) worst, O(n log n) for the sweep's start", NULL, paradigm_lot_flip},
   {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints: the constrained sweep is another row", "O(n log n)", NULL,
-   paradigm_lot_sweep},
+   "constraints and polygons: the rows sweep-constrained (2.5.2) and sweep-monotone (2.5.4)",
+   "O(n log n)", NULL, paradigm_lot_sweep},
+  /* the constrained sweeps (paradigms/sweep_constrained.c, sweep_monotone.c) */
+  {"sweep-constrained", "sweepline", "2.5.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
+   | PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT, PARADIGM_SWEEP_REFUSAL,
+   "O(n log n) expected: skip lists for the constraint tree and the pieces, a heap of events",
+   NULL, paradigm_sweep_constrained},
+  {"sweep-monotone", "sweepline", "2.5.4", PARADIGM_POLYGON | PARADIGM_CONVEX,
+   PARADIGM_RULE_DT, "x-monotone and convex polygons only (sweep-constrained serves the "
+   "rest); " PARADIGM_SWEEP_REFUSAL, "O(n log n) expected: one piece, a heap of events",
+   NULL, paradigm_sweep_monotone},
   {"dc-vertical", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT, PARADIGM_DC_REFUSAL,
    "O(n log n): cuts at sampled medians, log n levels of O(n) merges; Theta(n log n) "
    "on uniform sites", NULL, paradigm_dc_vertical},

@@ -118,6 +118,31 @@ FLIPLAB_INTERNAL int paradigm_polygon_inside(paradigm_output *out, size_t n, int
                                              size_t errlen);
 FLIPLAB_INTERNAL int paradigm_select_polygon(const paradigm_input *in, paradigm_output *out,
                                              char *err, size_t errlen);
+/* The constrained sweepline of 2.5.2 (paradigms/sweep_constrained.c) and
+** its monotone-polygon form of 2.5.4 (paradigms/sweep_monotone.c), DT only.
+** paradigm_sweep_run serves both: monotone 1 refuses a polygon that is not
+** x-monotone; *pockets (may be NULL) counts the pockets closed with sites
+** in them.  paradigm_polygon_kind: a convex polygon as the convex rows
+** check it, or with monotone an x-monotone one; 0 or -1 naming the vertex.
+** paradigm_sweep_finish: the sweep's ntri triangles checked to be a
+** triangulation of the hull, then Lawson's flips with paradigm_inshape over
+** every edge but the ncons pieces cons (2 per piece): lot's tie-broken
+** triangulation; 0, or -1 with a one-line message. */
+FLIPLAB_INTERNAL int paradigm_sweep_constrained(const paradigm_input *in, paradigm_output *out,
+                                                char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_sweep_monotone(const paradigm_input *in, paradigm_output *out,
+                                             char *err, size_t errlen);
+FLIPLAB_INTERNAL int paradigm_sweep_run(const paradigm_input *in, int monotone,
+                                        paradigm_output *out, size_t *pockets, char *err,
+                                        size_t errlen);
+FLIPLAB_INTERNAL int paradigm_polygon_kind(const paradigm_input *in, int monotone, char *err,
+                                           size_t errlen);
+FLIPLAB_INTERNAL int paradigm_sweep_finish(const paradigm_input *in, uint32_t *tri, size_t ntri,
+                                           const uint32_t *cons, size_t ncons, ops_counts *c,
+                                           char *err, size_t errlen);
+#define PARADIGM_SWEEP_REFUSAL \
+  "DT only: the breakpoints and the unmodified-circle argument are the circle's; a " \
+  "polygon's homothets are neither smooth nor strictly convex (2.5.6)"
 /* Chapter 5's convex polygon algorithms (paradigms/convex_rows.c), one per
 ** cpdt_algorithm. */
 #define PARADIGM_CONVEX_FN(fn) \
