@@ -93,26 +93,10 @@ static int sel_beats_dt(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32
   return paradigm_inshape(s->r, s->c, s->p[a], s->p[b], s->p[c], s->p[d]) > 0;
 }
 
-/* ES: shape_decide answers only for a strictly convex quadrilateral, so
-** the position of c and d (both strictly left of ab) is settled first by
-** s = orient(b, c, d) and t = orient(a, c, d).  s > 0, t > 0: abcd is
-** strictly convex, and d beats c when inside the shape through a, b, c.
-** s < 0, t < 0: abdc is, and c stays when inside the shape through a, b, d.
-** Otherwise one of c, d lies in the closed triangle of a, b and the other
-** (a or b cannot: c and d would be on opposite sides of ab): s > 0, t < 0
-** puts d inside abc; s = 0 puts c, d on one ray from b and t < 0 says d is
-** the nearer; t = 0 the same from a with s > 0.  A site inside triangle
-** abc, or on its open side ac or bc, lies strictly inside every shape
-** through a, b, c (a chord of a strictly convex region, and for a polygon
-** K the perturbation of docs/emptyshape.md turns K so that no side of a
-** homothet is parallel to a chord), so it beats c: d beats c exactly when
-** s > 0 or t < 0. */
+/* ES: the rule decides strictly convex quadrilaterals only; paradigm_beats
+** places c and d by two orientation tests first (the argument is there). */
 static int sel_beats_es(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-  geom_point pa = s->p[a], pb = s->p[b], pc = s->p[c], pd = s->p[d];
-  int sg = ops_orient(s->c, pb, pc, pd), tg = ops_orient(s->c, pa, pc, pd);
-  if (sg > 0 && tg > 0) return paradigm_inshape(s->r, s->c, pa, pb, pc, pd) > 0;
-  if (sg < 0 && tg < 0) return paradigm_inshape(s->r, s->c, pa, pb, pd, pc) < 0;
-  return sg > 0 || tg < 0;
+  return paradigm_beats(s->r, s->c, s->p[a], s->p[b], s->p[c], s->p[d]);
 }
 
 /* Does the open segment uv cross the open piece k at one point inside
