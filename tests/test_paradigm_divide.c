@@ -36,8 +36,7 @@ static int td_run(const char *name, const geom_point *p, size_t n, int threads,
 }
 
 static void td_same(const paradigm_result *a, const paradigm_result *b, const char *what) {
-  if (a->ntri != b->ntri || memcmp(a->tri, b->tri, 3 * a->ntri * sizeof *a->tri) != 0)
-    fail_msg("%s: triangles differ (%zu against %zu)", what, a->ntri, b->ntri);
+  testutil_same_tri(a->tri, a->ntri, b->tri, b->ntri, what);
 }
 
 /* Euler: a triangulation of n sites, h of them on the hull, has 3n - 3 - h

@@ -12,6 +12,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,8 +51,19 @@ static int te_run(const char *name, const rule *r, const geom_point *p, size_t n
 }
 
 static void te_same(const paradigm_result *a, const paradigm_result *b, const char *what) {
-  if (a->ntri != b->ntri || memcmp(a->tri, b->tri, 3 * a->ntri * sizeof *a->tri) != 0)
-    fail_msg("%s: triangles differ (%zu against %zu)", what, a->ntri, b->ntri);
+  testutil_same_tri(a->tri, a->ntri, b->tri, b->ntri, what);
+}
+
+/* n sites of the larger sets' family f: uniform, a grid 113 wide, nearly
+** collinear (300 x 5 integer draws), draws from a 40 x 40 grid. */
+static void te_points(int f, size_t n, testutil_rng *g, geom_point *p) {
+  for (size_t i = 0; i < n; i++) {
+    double a = (double)(testutil_next(g) % 300), b = (double)(testutil_next(g) % 40);
+    p[i] = f == 0 ? (geom_point){testutil_uniform(g), testutil_uniform(g)}
+         : f == 1 ? (geom_point){(double)(i % 113), (double)(i / 113)}
+         : f == 2 ? (geom_point){a, (double)(testutil_next(g) % 5)}
+                  : (geom_point){fmod(a, 40), b};
+  }
 }
 
 /* Euler: made - deleted = the result's edges = n - 1 + triangles. */
@@ -106,11 +118,7 @@ static void test_large(void **state) {
   assert_non_null(p);
   testutil_rng g = {91};
   for (int f = 0; f < 3; f++) {
-    for (size_t i = 0; i < n; i++)
-      p[i] = f == 0 ? (geom_point){testutil_uniform(&g), testutil_uniform(&g)}
-           : f == 1 ? (geom_point){(double)(i % 113), (double)(i / 113)}
-                    : (geom_point){(double)(testutil_next(&g) % 300),
-                                   (double)(testutil_next(&g) % 5)};
+    te_points(f, n, &g, p);
     for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
       rule r = te_rule(shapes[k]);
       paradigm_result ref;
@@ -149,11 +157,8 @@ static void test_watson_is_lawson(void **state) {
   geom_point *p = malloc(n * sizeof *p);
   assert_non_null(p);
   testutil_rng g = {58};
-  for (int f = 0; f < 2; f++) {
-    for (size_t i = 0; i < n; i++)
-      p[i] = f == 0 ? (geom_point){testutil_uniform(&g), testutil_uniform(&g)}
-                    : (geom_point){(double)(testutil_next(&g) % 40),
-                                   (double)(testutil_next(&g) % 40)};
+  for (int f = 0; f < 4; f += 3) {
+    te_points(f, n, &g, p);
     for (size_t k = 0; k < TE_SHAPES; k++) {
       rule r = te_rule(te_shapes[k]);
       paradigm_result w, l;

@@ -227,3 +227,9 @@ size_t testutil_family(int f, size_t n, testutil_rng *g, geom_point *p) {
   }
   return n;
 }
+
+void testutil_same_tri(const uint32_t *a, size_t na, const uint32_t *b, size_t nb,
+                       const char *what) {
+  if (na != nb || (na > 0 && memcmp(a, b, 3 * na * sizeof *a) != 0))
+    fail_msg("%s: triangles differ (%zu against %zu)", what, na, nb);
+}

@@ -22,6 +22,11 @@ double testutil_uniform(testutil_rng *g);               /* [0, 1) */
 ** integer points of two concentric circles with repeats.  Returns n. */
 size_t testutil_family(int f, size_t n, testutil_rng *g, geom_point *p);
 
+/* Fails the running cmocka test, naming WHAT, unless the triangle arrays
+** a (na triangles) and b (nb) are equal. */
+void testutil_same_tri(const uint32_t *a, size_t na, const uint32_t *b, size_t nb,
+                       const char *what);
+
 /* Four points uniform in the unit disc whose hull is a quadrilateral,
 ** returned anticlockwise. */
 void testutil_convex_quad(testutil_rng *g, geom_point q[4]);
