@@ -614,7 +614,8 @@ int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
   }
   uint32_t n = (uint32_t)in->n;
   /* Threads pay only past a few thousand sites (a team costs microseconds). */
-  dc_run R = {.r = in->r, .es = rule_shape(in->r) != NULL, .alternating = alternating, .threads = n < 4096 ? 1 : in->threads};
+  dc_run R = {.r = in->r, .es = rule_shape(in->r) != NULL, .alternating = alternating,
+              .threads = n < 4096 ? 1 : in->threads};
   int rc = dc_sites(in, c, &R);
   if (rc != 0) snprintf(err, errlen, "out of memory for the sites of %u points", n);
   else rc = dc_mesh(&R, n, c, out, err, errlen);

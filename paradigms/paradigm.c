@@ -53,8 +53,8 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    paradigm_select_strip},
   {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_SELECT_REFUSAL,
-   "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
-   "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
+   "O(n) expected on uniform sites (DT; ES polygons as measured: homothets and rounding "
+   "shapes bound the search); O(n^2) for an ellipse",
    "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
   {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
    | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",
