@@ -74,11 +74,13 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "O(n) expected for uniform sites (n buckets in Morton order, walk)",
    "buckets (0: n)", paradigm_incr_quaternary},
   {"watson", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints and polygons: the row incremental inserts segments",
+   "constraints and polygons: not built (a cavity would have to stop at segments); "
+   "the row incremental inserts segments",
    "O(n) expected for uniform sites (quaternary order, walk), O(n^2) worst",
    "1: random order (0: quaternary buckets)", paradigm_watson},
   {"incremental-dag", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints and polygons: the row incremental inserts segments",
+   "constraints and polygons: not built (a cavity would have to stop at segments); "
+   "the row incremental inserts segments",
    "O(n log n) expected (random order, history DAG)",
    "1: quaternary buckets (0: random order)", paradigm_incr_dag},
   /* chapter 5's convex polygon algorithms (paradigms/convex_rows.c, cpdt/) */

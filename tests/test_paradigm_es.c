@@ -7,7 +7,8 @@
 ** on a circle, collinear runs, integer points on two circles) for every
 ** shape of the registry and a few more (regular polygons, a skew polygon,
 ** ellipses); on larger sets too, one and two threads giving the same
-** triangles and counts; and the counts obey Euler's relation.
+** triangles and counts; the counts obey Euler's relation; and the rows
+** refuse constraints and polygons, saying why.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -174,11 +175,33 @@ static void test_watson_is_lawson(void **state) {
   free(p);
 }
 
+/* What the four rows do not serve, under DT and ES alike: constraints and
+** simple polygons, refused on one line that says why and where to go. */
+static void test_refusals(void **state) {
+  (void)state;
+  geom_point p[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  uint32_t seg[2] = {0, 2};
+  rule rs[2] = {rule_delaunay(), te_rule("ES:hexagon")};
+  const paradigm_problem pb[2] = {PARADIGM_CONSTRAINED, PARADIGM_POLYGON};
+  char err[512];
+  for (size_t a = 0; a < TE_ROWS; a++)
+    for (int k = 0; k < 4; k++) {
+      paradigm_input in = {.p = p, .n = 4, .r = &rs[k % 2], .problem = pb[k / 2],
+                           .segments = seg, .nsegments = k / 2 ? 0 : 1, .threads = 1};
+      paradigm_result res;
+      assert_int_equal(paradigm_run(paradigm_find(te_rows[a]), &in, &res, err, sizeof err), -1);
+      assert_null(strchr(err, '\n'));   /* one line */
+      assert_non_null(strstr(err, "constraints"));
+      assert_non_null(strstr(err, a < 2 ? "Chew's virtual sites" : "stop at segments"));
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_small_sets),
     cmocka_unit_test(test_large),
     cmocka_unit_test(test_watson_is_lawson),
+    cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }
