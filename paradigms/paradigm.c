@@ -34,10 +34,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"sweep", "sweepline", "2.5.1", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints: the constrained sweep is another row", "O(n log n)", NULL,
    paradigm_lot_sweep},
-  {"dc-vertical", "divide", "2.6.1", PARADIGM_DELAUNAY, BOTH_RULES, PARADIGM_DC_REFUSAL,
+  {"dc-vertical", "divide", "2.6.1; 2.6.6", PARADIGM_DELAUNAY, BOTH_RULES, PARADIGM_DC_REFUSAL,
    "O(n log n): cuts at sampled medians, log n levels of O(n) merges; Theta(n log n) "
    "on uniform sites", NULL, paradigm_dc_vertical},
-  {"dc-alternating", "divide", "2.6.1", PARADIGM_DELAUNAY, BOTH_RULES,
+  {"dc-alternating", "divide", "2.6.1; 2.6.6", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
@@ -73,12 +73,12 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "constraints and polygons: the row incremental inserts segments",
    "O(n) expected for uniform sites (n buckets in Morton order, walk)",
    "buckets (0: n)", paradigm_incr_quaternary},
-  {"watson", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
+  {"watson", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints and polygons: not built (a cavity would have to stop at segments); "
    "the row incremental inserts segments",
    "O(n) expected for uniform sites (quaternary order, walk), O(n^2) worst",
    "1: random order (0: quaternary buckets)", paradigm_watson},
-  {"incremental-dag", "incremental", "2.3.1", PARADIGM_DELAUNAY, BOTH_RULES,
+  {"incremental-dag", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
    "constraints and polygons: not built (a cavity would have to stop at segments); "
    "the row incremental inserts segments",
    "O(n log n) expected (random order, history DAG)",

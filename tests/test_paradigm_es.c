@@ -114,7 +114,7 @@ static void test_large(void **state) {
   (void)state;
   static const char *const shapes[] = {"ES:square", "ES:triangle", "ES:hexagon",
                                        "ES:ellipse:3 1 0.5"};
-  size_t n = 12000;
+  size_t n = testutil_reps(4) == 4 ? 12000 : 6000;   /* sanitizers: fewer, still threaded */
   geom_point *p = malloc(n * sizeof *p);
   assert_non_null(p);
   testutil_rng g = {91};
