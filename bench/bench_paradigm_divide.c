@@ -14,6 +14,13 @@
 ** time.  Before timing, dc-alternating's triangles (one and two threads)
 ** are checked equal to the incremental algorithm's.
 **
+** Then the empty-shape rules (2.6.6), on the first min(N, 10^5) points:
+** for ES:square, ES:hexagon, ES:triangle and an ellipse, lot's incremental
+** ES triangulation (lot_build) beside dc-vertical, dc-alternating on one
+** and two threads and Watson's insertion (quaternary order), each checked
+** equal to the incremental row's triangles first; medians of RUNS rounds,
+** and the counts per site of one counted run.
+**
 **   bench_paradigm_divide [N [RUNS [SEED]]]     (defaults 1000000 5 1)
 */
 #include <math.h>
@@ -104,6 +111,91 @@ static void bd_table(bench_time t[][BD_ROWS], int runs) {
          m[BD_ALT1_COUNT].wall / m[BD_ALT1].wall, m[BD_ALT1_COUNT].cpu / m[BD_ALT1].cpu);
 }
 
+/* ---- the empty-shape rules ---- */
+
+enum { BE_INCR, BE_VERT, BE_ALT1, BE_ALT2, BE_WATSON, BE_ROWS };
+static const char *const be_rows[BE_ROWS] = {"incremental", "dc-vertical", "dc-alternating",
+                                             "dc-alternating", "watson"};
+
+/* Row k of be_rows through the runner (two threads for BE_ALT2): its
+** result, checked equal to ref's triangles when ref is given; exits on
+** failure or a difference. */
+static paradigm_result be_run(const paradigm_input *in0, int k, const paradigm_result *ref) {
+  paradigm_input in = *in0;
+  in.threads = k == BE_ALT2 ? 2 : 1;
+  paradigm_result res;
+  char err[256];
+  if (paradigm_run(paradigm_find(be_rows[k]), &in, &res, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_paradigm_divide: %s: %s\n", be_rows[k], err);
+    exit(1);
+  }
+  if (ref != NULL && (res.ntri != ref->ntri
+                      || memcmp(res.tri, ref->tri, 3 * res.ntri * sizeof *res.tri) != 0)) {
+    fprintf(stderr, "bench_paradigm_divide: %s under %s: NOT the incremental triangles\n",
+            be_rows[k], in.r->name);
+    exit(1);
+  }
+  return res;
+}
+
+/* One round for rule r: every row once, in turn (divide and conquer
+** directly, without the runner's checks and canonical sort, as above). */
+static void be_round(const paradigm_input *in, bench_time *t) {
+  size_t ntri;
+  paradigm_input in2 = *in;
+  in2.threads = 2;
+  t[BE_INCR] = bench_lot_time("bench_paradigm_divide", in->r, in->p, in->n, NULL);
+  t[BE_VERT] = bd_divide(in, 0, 0, &ntri);
+  t[BE_ALT1] = bd_divide(in, 1, 0, &ntri);
+  t[BE_ALT2] = bd_divide(&in2, 1, 0, &ntri);
+  double w = bench_wall(), c = bench_cpu();
+  paradigm_result res = be_run(in, BE_WATSON, NULL);
+  t[BE_WATSON] = (bench_time){bench_wall() - w, bench_cpu() - c};
+  paradigm_result_free(&res);
+}
+
+/* Rule `spec` on the points of in: check, time, count, print its rows. */
+static void be_rule(const paradigm_input *in0, const char *spec, int runs) {
+  rule r;
+  char err[256];
+  if (rule_parse(spec, &r, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_paradigm_divide: %s\n", err);
+    exit(1);
+  }
+  paradigm_input in = *in0;
+  in.r = &r;
+  paradigm_result res[BE_ROWS];
+  for (int k = 0; k < BE_ROWS; k++) res[k] = be_run(&in, k, k ? &res[0] : NULL);
+  bench_time t[16][BE_ROWS], m[BE_ROWS];
+  for (int k = 0; k < runs; k++) be_round(&in, t[k]);
+  for (int k = 0; k < BE_ROWS; k++) {
+    bench_time v[16];
+    for (int j = 0; j < runs; j++) v[j] = t[j][k];
+    m[k] = bench_median_time(v, runs);
+  }
+  double n = (double)in.n;
+  for (int k = 0; k < BE_ROWS; k++) {
+    const uint64_t *c = res[k].ops.v;
+    printf("| %s | %s%s | %.3f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", spec, be_rows[k],
+           k == BE_ALT2 ? ", 2 threads" : k == BE_INCR ? " (lot_build)" : "", m[k].wall,
+           m[k].wall / m[BE_INCR].wall, (double)c[OPS_ORIENT] / n, (double)c[OPS_INSHAPE] / n,
+           (double)c[OPS_EDGES_MADE] / n, (double)c[OPS_LOCATE] / n);
+  }
+  for (int k = 0; k < BE_ROWS; k++) paradigm_result_free(&res[k]);
+}
+
+static void be_table(const geom_point *p, size_t n, uint64_t seed, int runs) {
+  static const char *const shapes[] = {"ES:square", "ES:hexagon", "ES:triangle",
+                                       "ES:ellipse:2 1"};
+  paradigm_input in = {.p = p, .n = n, .problem = PARADIGM_DELAUNAY, .seed = seed,
+                       .threads = 1};
+  printf("\n# empty-shape rules: the first %zu points, median of %d rounds; counts per site "
+         "of one counted run\n", n, runs);
+  printf("\n| rule | algorithm | time (s) | / incremental | orient/site | inshape/site "
+         "| edges made/site | locate/site |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+  for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) be_rule(&in, shapes[k], runs);
+}
+
 int main(int argc, char **argv) {
   size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 1000000;
   int runs = argc > 2 ? atoi(argv[2]) : 5;
@@ -133,6 +225,7 @@ int main(int argc, char **argv) {
   bench_time t[16][BD_ROWS];
   for (int k = 0; k < runs; k++) bd_round(argv[0], &in, seed, t[k]);
   bd_table(t, runs);
+  be_table(p, n < 100000 ? n : 100000, seed, runs);
   printf("(load average at the end: %.2f)\n", bench_load());
   free(p);
   return 0;

@@ -14,10 +14,11 @@
 **
 ** Every one gives lot's triangles exactly: lot's insertion has one answer
 ** whatever the order (the rule's tie-broken LOT), and Watson's cavity is
-** decided by paradigm_inshape, the in-circle test with lot's tie-break as
-** a symbolic perturbation, under which no four sites are cocircular, so
-** the perturbed Delaunay triangulation is unique and is what any correct
-** Delaunay algorithm builds.
+** decided by paradigm_inregion, the rule's region test with lot's
+** tie-break as a symbolic perturbation, under which no four sites are on
+** one region, so the perturbed triangulation is unique and is what any
+** correct algorithm builds (for DT and every ES:SHAPE: the argument is
+** above wat_conflict).
 */
 #include <math.h>
 #include <stdio.h>
@@ -230,13 +231,32 @@ static int wat_ghost_edge(const wat *W, uint32_t t, geom_point *a, geom_point *b
   return 1;
 }
 
-/* Does q conflict with triangle t (lie inside its perturbed circumcircle,
-** or beyond or on a ghost's open edge)? */
+/* Does q conflict with triangle t (lie inside its perturbed region: the
+** circumcircle, or for ES:SHAPE the circumscribing homothet or rounding
+** shape; or beyond or on a ghost's open edge)?
+**
+** Why the cavity is right for ES as for DT (section 2.3.6 leaves it
+** open): the argument needs only that the regions through two sites a, b
+** are nested on each side of ab, oppositely on the two sides (true of the
+** circumscribing shapes with their rounding shapes, docs/emptyshape.md;
+** the perturbation makes the order strict), and that the triangulation
+** has empty regions.  (1) Connected, from the triangle holding q: if q is
+** in the region of abc and beyond ab, the region of the neighbour abd is
+** larger than abc's on d's side (d is outside abc's), so it holds q too; a
+** hull edge's ghost conflicts.  (2) Star-shaped: a boundary edge ab of the
+** cavity, abc inside, has q strictly on c's side (beyond it, q would be in
+** abd's region; on its line but off the closed edge, outside abc's, a, b
+** would be inside a region they bound; on the open edge, in both).  (3)
+** The new triangles are right: q's region through a, b is smaller than
+** abc's on c's side (q is in abc's) and than abd's on the other (q is not
+** in abd's, on the side away from d), and those hold no old site.  A
+** walk in such a triangulation may cycle (no acyclicity theorem for
+** convex distances): wat_walk's scan is then its way out. */
 static int wat_conflict(wat *W, uint32_t t, geom_point q) {
   geom_point a, b;
   if (!wat_ghost_edge(W, t, &a, &b)) {
     const uint32_t *v = W->tv + 3 * (size_t)t;
-    return paradigm_inshape(W->r, W->ops, W->p[v[0]], W->p[v[1]], W->p[v[2]], q) > 0;
+    return paradigm_inregion(W->r, W->ops, W->p[v[0]], W->p[v[1]], W->p[v[2]], q);
   }
   int o = ops_orient(W->ops, a, b, q);
   return o > 0 || (o == 0 && wat_lex_less(a, q) != wat_lex_less(b, q));

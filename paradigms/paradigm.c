@@ -43,10 +43,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    PARADIGM_RULE_DT, "x-monotone and convex polygons only (sweep-constrained serves the "
    "rest); " PARADIGM_SWEEP_REFUSAL, "O(n log n) expected: one piece, a heap of events",
    NULL, paradigm_sweep_monotone},
-  {"dc-vertical", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT, PARADIGM_DC_REFUSAL,
+  {"dc-vertical", "divide", "2.6.1; 2.6.6", PARADIGM_DELAUNAY, BOTH_RULES, PARADIGM_DC_REFUSAL,
    "O(n log n): cuts at sampled medians, log n levels of O(n) merges; Theta(n log n) "
    "on uniform sites", NULL, paradigm_dc_vertical},
-  {"dc-alternating", "divide", "2.6.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
+  {"dc-alternating", "divide", "2.6.1; 2.6.6", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
@@ -62,8 +62,8 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    paradigm_select_strip},
   {"select-buckets", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_SELECT_REFUSAL,
-   "O(n) expected on uniform sites (DT, ES:square); other ES polygons close to it "
-   "(homothets and rounding shapes' cones bound the search); O(n^2) for an ellipse",
+   "O(n) expected on uniform sites (DT; ES polygons as measured: homothets and rounding "
+   "shapes bound the search); O(n^2) for an ellipse",
    "p, the expected sites per bucket (default 1)", paradigm_select_buckets},
   {"select-constrained", "selection", "2.4.2", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
    | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",
@@ -82,14 +82,14 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "constraints and polygons: the row incremental inserts segments",
    "O(n) expected for uniform sites (n buckets in Morton order, walk)",
    "buckets (0: n)", paradigm_incr_quaternary},
-  {"watson", "incremental", "2.3.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
-   "DT only: the cavity of an empty-shape rule is not proved star-shaped here; "
-   "no constraints or polygons",
+  {"watson", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints and polygons: not built (a cavity would have to stop at segments); "
+   "the row incremental inserts segments",
    "O(n) expected for uniform sites (quaternary order, walk), O(n^2) worst",
    "1: random order (0: quaternary buckets)", paradigm_watson},
-  {"incremental-dag", "incremental", "2.3.1", PARADIGM_DELAUNAY, PARADIGM_RULE_DT,
-   "DT only: the cavity of an empty-shape rule is not proved star-shaped here; "
-   "no constraints or polygons",
+  {"incremental-dag", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
+   "constraints and polygons: not built (a cavity would have to stop at segments); "
+   "the row incremental inserts segments",
    "O(n log n) expected (random order, history DAG)",
    "1: quaternary buckets (0: random order)", paradigm_incr_dag},
   /* chapter 5's convex polygon algorithms (paradigms/convex_rows.c, cpdt/) */
@@ -186,6 +186,46 @@ int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, g
   if (ch == SHAPE_BD) return 1;
   if (ch == SHAPE_AC) return -1;
   return paradigm_perturbed(a, b, d, e);
+}
+
+/* For c and d strictly left of ab, d beats c when it lies strictly inside
+** the rule's region through a, b, c (docs/paradigms.md, "Selection").  The
+** rule decides only strictly convex quadrilaterals, so for ES the position
+** of c and d is settled first by s = orient(b, c, d) and t = orient(a, c,
+** d).  s > 0, t > 0: abcd is strictly convex, and d beats c when inside the
+** shape through a, b, c.  s < 0, t < 0: abdc is, and c stays when inside
+** the shape through a, b, d.  Otherwise one of c, d lies in the closed
+** triangle of a, b and the other (a or b cannot: c and d would be on
+** opposite sides of ab): s > 0, t < 0 puts d inside abc; s = 0 puts c, d
+** on one ray from b and t < 0 says d is the nearer; t = 0 the same from a
+** with s > 0.  A site inside triangle abc, or on its open side ac or bc,
+** lies strictly inside every shape through a, b, c (a chord of a strictly
+** convex region, and for a polygon K the perturbation of
+** docs/emptyshape.md turns K so that no side of a homothet is parallel to
+** a chord), so it beats c: d beats c exactly when s > 0 or t < 0.  For DT
+** the perturbed in-circle sign is valid for d anywhere: one test. */
+int paradigm_beats(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point pc,
+                   geom_point d) {
+  if (rule_shape(r) == NULL) return paradigm_inshape(r, c, a, b, pc, d) > 0;
+  int sg = ops_orient(c, b, pc, d), tg = ops_orient(c, a, pc, d);
+  if (sg > 0 && tg > 0) return paradigm_inshape(r, c, a, b, pc, d) > 0;
+  if (sg < 0 && tg < 0) return paradigm_inshape(r, c, a, b, d, pc) < 0;
+  return sg > 0 || tg < 0;
+}
+
+/* q strictly inside the rule's region through anticlockwise a, b, c, for q
+** anywhere but a, b, c: q is strictly left of some side (the three open
+** right half-planes have no common point), and on that side it is the
+** order of paradigm_beats.  For ES: if q is left of ab, ask there; else if
+** left of bc, there; else q lies in the closed angle opposite b, strictly
+** left of ca (q is not b).  At most three orientation tests and one
+** in-shape test. */
+int paradigm_inregion(const rule *r, ops_counts *c, geom_point a, geom_point b,
+                      geom_point pc, geom_point q) {
+  if (rule_shape(r) == NULL) return paradigm_inshape(r, c, a, b, pc, q) > 0;
+  if (ops_orient(c, a, b, q) > 0) return paradigm_beats(r, c, a, b, pc, q);
+  if (ops_orient(c, b, pc, q) > 0) return paradigm_beats(r, c, b, pc, a, q);
+  return paradigm_beats(r, c, pc, a, b, q);
 }
 
 static double paradigm_now(void) {

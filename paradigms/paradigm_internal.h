@@ -36,6 +36,20 @@ FLIPLAB_INTERNAL
 int paradigm_inshape(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point d,
                      geom_point e);
 
+/* The order of the regions through a and b on the left of ab: for c and d
+** strictly left of ab, 1 when d lies strictly inside the rule's region
+** through a, b, c (lot's tie-break included), which is a strict order there
+** (docs/paradigms.md, "Selection").  Counted as paradigm_inshape, with the
+** orientation tests ES needs to place c and d. */
+FLIPLAB_INTERNAL
+int paradigm_beats(const rule *r, ops_counts *c, geom_point a, geom_point b, geom_point pc,
+                   geom_point d);
+/* 1 when q (not a, b or c) lies strictly inside the rule's region through
+** anticlockwise a, b, c: paradigm_beats from a side q lies left of. */
+FLIPLAB_INTERNAL
+int paradigm_inregion(const rule *r, ops_counts *c, geom_point a, geom_point b,
+                      geom_point pc, geom_point q);
+
 /* Divide and conquer (paradigms/divide.c), Guibas and Stolfi's merge with
 ** vertical or alternating cuts; paradigm_divide counts into c (NULL: not
 ** counting, for the benchmark of the counting layer's cost). */
@@ -49,9 +63,8 @@ FLIPLAB_INTERNAL
 int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
 #define PARADIGM_DC_REFUSAL \
-  "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
-  "has triangles with non-empty homothets, and merges would start at support-hull edges " \
-  "(2.6.6); constraints: not yet (Chew's virtual sites, 2.6.2)"
+  "constraints: not yet (Chew's virtual sites, 2.6.2); simple polygons: the incremental, " \
+  "flip and select-constrained rows; convex polygons: the convex-* rows"
 /* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
 ** unfinished edges as a stack or a queue, and the apex search by a scan of
 ** every site, an x-sorted strip, or a bucket grid; with constraints. */

@@ -42,7 +42,7 @@ typedef struct sel_edge { uint32_t u, v; } sel_edge;
 typedef enum sel_bound { SEL_ANYWHERE, SEL_DISC, SEL_BOX, SEL_CONE } sel_bound;
 typedef struct sel_cap {
   sel_bound bounded;
-  double cx, cy, r, tol, xlo, xhi, ylo, yhi;
+  double cx, cy, r, tol, xlo, xhi, ylo, yhi, rtol;   /* SEL_CONE: r, rtol its hyperbola's */
   double tx, ty, ts, big;              /* SEL_BOX: the homothet t + sK, |K|'s bound */
   geom_point o, u, v;                  /* SEL_CONE: cross(P - o, v) >= xlo, */
                                        /* cross(u, P - o) >= ylo */
@@ -93,26 +93,10 @@ static int sel_beats_dt(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32
   return paradigm_inshape(s->r, s->c, s->p[a], s->p[b], s->p[c], s->p[d]) > 0;
 }
 
-/* ES: shape_decide answers only for a strictly convex quadrilateral, so
-** the position of c and d (both strictly left of ab) is settled first by
-** s = orient(b, c, d) and t = orient(a, c, d).  s > 0, t > 0: abcd is
-** strictly convex, and d beats c when inside the shape through a, b, c.
-** s < 0, t < 0: abdc is, and c stays when inside the shape through a, b, d.
-** Otherwise one of c, d lies in the closed triangle of a, b and the other
-** (a or b cannot: c and d would be on opposite sides of ab): s > 0, t < 0
-** puts d inside abc; s = 0 puts c, d on one ray from b and t < 0 says d is
-** the nearer; t = 0 the same from a with s > 0.  A site inside triangle
-** abc, or on its open side ac or bc, lies strictly inside every shape
-** through a, b, c (a chord of a strictly convex region, and for a polygon
-** K the perturbation of docs/emptyshape.md turns K so that no side of a
-** homothet is parallel to a chord), so it beats c: d beats c exactly when
-** s > 0 or t < 0. */
+/* ES: the rule decides strictly convex quadrilaterals only; paradigm_beats
+** places c and d by two orientation tests first (the argument is there). */
 static int sel_beats_es(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
-  geom_point pa = s->p[a], pb = s->p[b], pc = s->p[c], pd = s->p[d];
-  int sg = ops_orient(s->c, pb, pc, pd), tg = ops_orient(s->c, pa, pc, pd);
-  if (sg > 0 && tg > 0) return paradigm_inshape(s->r, s->c, pa, pb, pc, pd) > 0;
-  if (sg < 0 && tg < 0) return paradigm_inshape(s->r, s->c, pa, pb, pd, pc) < 0;
-  return sg > 0 || tg < 0;
+  return paradigm_beats(s->r, s->c, s->p[a], s->p[b], s->p[c], s->p[d]);
 }
 
 /* Does the open segment uv cross the open piece k at one point inside
@@ -301,20 +285,29 @@ static double sel_cramer(const double m[3][3], const double rhs[3], int j, doubl
 
 /* ES, polygon K, when the circumscribing shape of abc is the rounding
 ** shape of corner c0 (sides u, v): in the coordinates X = cross(P - a, v),
-** Y = cross(u, P - a) (the map of docs/emptyshape.md) it is the branch
-** X > -beta, Y > -alpha of (X + beta)(Y + alpha) = const through the three
-** sites, so it lies in that quadrant: a cone with its apex at the
-** hyperbola's centre.  alpha X + beta Y + gamma = -X Y at the three sites:
-** Cramer's rule with the error argument of sel_cap_homothet (entries and
-** products of at most three rounded factors, 12u of the twins), tol 2^-24
-** of the numerators' twins over |D|. */
+** Y = cross(u, P - a) (the map of docs/emptyshape.md) it is the convex
+** side of the branch X > -beta, Y > -alpha of (X + beta)(Y + alpha) = r
+** through the three sites: inside that quadrant, a cone with its apex at
+** the hyperbola's centre, and beyond the branch.  alpha X + beta Y + gamma
+** = -X Y at the three sites, so r = alpha beta - gamma: Cramer's rule with
+** the error argument of sel_cap_homothet (entries and products of at most
+** three rounded factors, 12u of the twins), tol 2^-24 of the numerators'
+** twins over |D|.  The cone alone is a poor bound when the apex lies far
+** from the sites (a flat branch near the hull: the cone then covers the
+** whole grid), so the branch bounds too (sel_rect_meets_cone).  Its error:
+** each of alpha, beta, gamma is within e_j = 2^-29 t_j of its exact value
+** (t_j its numerator's twin over |D|; D within 12u of its twin, at least
+** 2^-20 of it), so alpha beta - gamma is within (|alpha| + e_a) e_b +
+** |beta| e_a + e_g, and the product and difference round by 3u of |alpha
+** beta| + |gamma|; rtol is 2^-20 of the first sum with t_j for e_j (512
+** times it) plus 2^-40 of the second. */
 static void sel_cap_cone(const sel_state *s, uint32_t a, uint32_t b, uint32_t c, int c0,
                          sel_cap *k) {
   const shape *K = rule_shape(s->r);
   geom_point kc = K->v[c0], k1 = K->v[(c0 + 1) % K->n], k2 = K->v[(c0 + K->n - 1) % K->n];
   geom_point u = {k1.x - kc.x, k1.y - kc.y}, v = {k2.x - kc.x, k2.y - kc.y}, o = s->p[a];
   const uint32_t site[3] = {a, b, c};
-  double m[3][3], rhs[3], x[2], tw[2], dtw;
+  double m[3][3], rhs[3], x[3], tw[3], dtw;
   for (int r = 0; r < 3; r++) {
     double px = s->p[site[r]].x - o.x, py = s->p[site[r]].y - o.y;
     m[r][0] = px * v.y - py * v.x, m[r][1] = u.x * py - u.y * px, m[r][2] = 1;
@@ -322,10 +315,14 @@ static void sel_cap_cone(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
   }
   double d = sel_det3((const double (*)[3])m, &dtw);
   if (!(fabs(d) >= 0x1p-20 * dtw)) return;
-  for (int j = 0; j < 2; j++) x[j] = sel_cramer((const double (*)[3])m, rhs, j, d, &tw[j]);
-  k->tol = 0x1p-24 * (tw[0] + tw[1]) / fabs(d);
+  for (int j = 0; j < 3; j++) x[j] = sel_cramer((const double (*)[3])m, rhs, j, d, &tw[j]);
+  double ta = tw[0] / fabs(d), tb = tw[1] / fabs(d), tg = tw[2] / fabs(d);
+  k->tol = 0x1p-24 * (ta + tb);
   k->o = o, k->u = u, k->v = v;
   k->xlo = -x[1], k->ylo = -x[0];                   /* X >= -beta, Y >= -alpha */
+  k->r = x[0] * x[1] - x[2];                        /* (X - xlo)(Y - ylo) >= r */
+  k->rtol = 0x1p-20 * ((fabs(x[0]) + ta) * tb + fabs(x[1]) * ta + tg)
+          + 0x1p-40 * (fabs(x[0] * x[1]) + fabs(x[2]));
   k->bounded = SEL_CONE;
 }
 
@@ -423,9 +420,13 @@ static int sel_rect_meets_homothet(const sel_state *s, const sel_cap *k, double 
   return 1;
 }
 
-/* Does the rectangle [x0, x1] x [y0, y1] meet the cone of k?  The
-** rectangle's largest X and Y against the bounds, with tol and 2^-40 of
-** the magnitudes for the rounding here. */
+/* Does the rectangle [x0, x1] x [y0, y1] meet the rounding shape of k?
+** The rectangle's largest X and Y against the cone's bounds, with tol and
+** 2^-40 of the magnitudes for the rounding here: Xm and Ym, the largest
+** X - xlo and Y - ylo widened by that slack, are at least their exact
+** values.  A point of the shape has X - xlo, Y - ylo > 0 and their product
+** at least r, so the rectangle meets it only if Xm, Ym >= 0 and Xm Ym >= r:
+** that with rtol on r and 2^-30 of Xm Ym for the three roundings here. */
 static int sel_rect_meets_cone(const sel_cap *k, double x0, double x1, double y0, double y1) {
   geom_point o = k->o, u = k->u, v = k->v;
   double mx = (v.y > 0 ? x1 : x0) - o.x, my = (v.x > 0 ? y0 : y1) - o.y;
@@ -433,7 +434,8 @@ static int sel_rect_meets_cone(const sel_cap *k, double x0, double x1, double y0
   double mag = (fabs(x0 - o.x) + fabs(x1 - o.x) + fabs(y0 - o.y) + fabs(y1 - o.y))
              * (fabs(u.x) + fabs(u.y) + fabs(v.x) + fabs(v.y));
   double slack = k->tol + 0x1p-40 * mag;
-  return mx * v.y - my * v.x >= k->xlo - slack && u.x * ny - u.y * nx >= k->ylo - slack;
+  double xm = mx * v.y - my * v.x - k->xlo + slack, ym = u.x * ny - u.y * nx - k->ylo + slack;
+  return xm >= 0 && ym >= 0 && xm * ym + 0x1p-30 * (xm * ym) >= k->r - k->rtol;
 }
 
 /* Does cell (i, j), widened by the grid's rounding margin, meet the left
@@ -483,9 +485,10 @@ static uint32_t sel_cell_visit(sel_state *s, uint32_t a, uint32_t b, uint32_t be
 ** meet the left half-plane and the current cap.  Every cell meeting the
 ** final cap is reached: those cells are 4-connected (closed cells), hold
 ** the midpoint's, and meet every earlier, larger cap.  O(1) expected cells
-** and sites per edge on uniform sites, O(n) in all (DT, ES:square; other
-** polygons close to it, a rounding shape bounded by its cone only); every
-** search of an ellipse goes through every cell on the left (O(n / p)). */
+** and sites per edge on uniform sites, O(n) in all (DT; ES polygons as
+** measured, docs/paradigms.md: homothets by their edges, rounding shapes
+** by their cone and hyperbola); every search of an ellipse goes through
+** every cell on the left (O(n / p)). */
 static uint32_t sel_search_buckets(sel_state *s, uint32_t a, uint32_t b) {
   sel_grid *g = &s->g;
   size_t qh = 0, qt = 0, k0 = sel_cell_of(g, 0.5 * s->p[a].x + 0.5 * s->p[b].x,

@@ -6,8 +6,9 @@
 ** alternating cuts; one thread and two give the same triangles and the same
 ** counts; the counts obey Euler's relation (every merge adds and deletes
 ** edges so that edges made - edges deleted = 3n - 3 - h, h the sites on the
-** hull); the rows refuse ES:SHAPE and the constrained problem with their
-** reason, and a set too large for the mesh with one line.
+** hull); the rows refuse the constrained problem with its reason, and a
+** set too large for the mesh with one line.  The empty-shape rules:
+** tests/test_paradigm_es.c.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -23,33 +24,6 @@
 
 static const char *const td_rows[2] = {"dc-vertical", "dc-alternating"};
 
-/* Sites of family f (n of them, n <= 400). */
-static size_t td_points(int f, size_t n, testutil_rng *g, geom_point *p) {
-  for (size_t i = 0; i < n; i++) {
-    uint64_t a = testutil_next(g) % 6, b = testutil_next(g) % 6;
-    double t = 6.283185307179586 * (double)(testutil_next(g) % 24) / 24;
-    switch (f) {
-      case 0: p[i] = (geom_point){testutil_uniform(g), testutil_uniform(g)}; break;
-      case 1: p[i] = (geom_point){(double)a, (double)b}; break;   /* grid, duplicates */
-      case 2: p[i] = (geom_point){(double)(i % 7), (double)(i / 7)}; break;   /* grid */
-      case 3: p[i] = (geom_point){5 * cos(t), 5 * sin(t)}; break;   /* 24 on a circle */
-      case 4:   /* collinear runs on three lines, a few off them */
-        p[i] = i % 4 == 3 ? (geom_point){testutil_uniform(g) * 8, testutil_uniform(g) * 8}
-             : (geom_point){(double)(i % 4 == 0 ? a : i % 4 == 1 ? 0 : a),
-                            (double)(i % 4 == 0 ? 0 : i % 4 == 1 ? b : a)};
-        break;
-      default:  /* integer points of two concentric circles, with repeats */
-        {
-          static const int c[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
-                                     {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
-          int k = (int)(testutil_next(g) % 12), s = (int)(testutil_next(g) % 2) + 1;
-          p[i] = (geom_point){s * c[k][0], s * c[k][1]};
-        }
-    }
-  }
-  return n;
-}
-
 /* Run row a on p; 0 and the result, or -1 when the set is refused (all
 ** collinear, too few distinct). */
 static int td_run(const char *name, const geom_point *p, size_t n, int threads,
@@ -62,8 +36,7 @@ static int td_run(const char *name, const geom_point *p, size_t n, int threads,
 }
 
 static void td_same(const paradigm_result *a, const paradigm_result *b, const char *what) {
-  if (a->ntri != b->ntri || memcmp(a->tri, b->tri, 3 * a->ntri * sizeof *a->tri) != 0)
-    fail_msg("%s: triangles differ (%zu against %zu)", what, a->ntri, b->ntri);
+  testutil_same_tri(a->tri, a->ntri, b->tri, b->ntri, what);
 }
 
 /* Euler: a triangulation of n sites, h of them on the hull, has 3n - 3 - h
@@ -86,7 +59,7 @@ static void test_small_sets(void **state) {
   int compared = 0;
   for (int trial = 0; trial < testutil_reps(3300); trial++) {
     int f = trial % 6;
-    size_t n = td_points(f, trial < 3000 ? 3 + testutil_next(&g) % 38
+    size_t n = testutil_family(f, trial < 3000 ? 3 + testutil_next(&g) % 38
                                          : 40 + testutil_next(&g) % 361, &g, p);
     paradigm_result ref, res;
     if (td_run("incremental", p, n, 1, &ref) != 0) continue;   /* collinear: refused */
@@ -139,19 +112,13 @@ static void test_refusals(void **state) {
   (void)state;
   geom_point p[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
   uint32_t seg[2] = {0, 3};
-  rule sq, dt = rule_delaunay();
+  rule dt = rule_delaunay();
   char err[512];
-  assert_int_equal(rule_parse("ES:square", &sq, err, sizeof err), 0);
-  paradigm_input in = {.p = p, .n = 4, .r = &sq, .problem = PARADIGM_DELAUNAY, .threads = 1};
+  paradigm_input in = {.p = p, .n = 4, .r = &dt, .threads = 1};
   paradigm_result res;
   for (int a = 0; a < 2; a++) {
     const paradigm_algorithm *alg = paradigm_find(td_rows[a]);
-    assert_non_null(strstr(alg->refusal, "ES:SHAPE"));
-    in.r = &sq, in.problem = PARADIGM_DELAUNAY;
-    assert_int_equal(paradigm_run(alg, &in, &res, err, sizeof err), -1);
-    assert_non_null(strstr(err, "ES:square"));
-    assert_null(strchr(err, '\n'));
-    in.r = &dt, in.problem = PARADIGM_CONSTRAINED, in.segments = seg, in.nsegments = 1;
+    in.problem = PARADIGM_CONSTRAINED, in.segments = seg, in.nsegments = 1;
     assert_int_equal(paradigm_run(alg, &in, &res, err, sizeof err), -1);
     assert_non_null(strstr(err, "2.6.2"));
     assert_null(strchr(err, '\n'));

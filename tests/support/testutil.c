@@ -201,3 +201,35 @@ void testutil_check_convex(const geom_point *p, size_t n) {
   assert_false(rev);
   free(q);
 }
+
+size_t testutil_family(int f, size_t n, testutil_rng *g, geom_point *p) {
+  for (size_t i = 0; i < n; i++) {
+    uint64_t a = testutil_next(g) % 6, b = testutil_next(g) % 6;
+    double t = 6.283185307179586 * (double)(testutil_next(g) % 24) / 24;
+    switch (f) {
+      case 0: p[i] = (geom_point){testutil_uniform(g), testutil_uniform(g)}; break;
+      case 1: p[i] = (geom_point){(double)a, (double)b}; break;   /* grid, duplicates */
+      case 2: p[i] = (geom_point){(double)(i % 7), (double)(i / 7)}; break;   /* grid */
+      case 3: p[i] = (geom_point){5 * cos(t), 5 * sin(t)}; break;   /* 24 on a circle */
+      case 4:   /* collinear runs on three lines, a few off them */
+        p[i] = i % 4 == 3 ? (geom_point){testutil_uniform(g) * 8, testutil_uniform(g) * 8}
+             : (geom_point){(double)(i % 4 == 0 ? a : i % 4 == 1 ? 0 : a),
+                            (double)(i % 4 == 0 ? 0 : i % 4 == 1 ? b : a)};
+        break;
+      default:  /* integer points of two concentric circles, with repeats */
+        {
+          static const int c[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+                                     {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+          int k = (int)(testutil_next(g) % 12), s = (int)(testutil_next(g) % 2) + 1;
+          p[i] = (geom_point){s * c[k][0], s * c[k][1]};
+        }
+    }
+  }
+  return n;
+}
+
+void testutil_same_tri(const uint32_t *a, size_t na, const uint32_t *b, size_t nb,
+                       const char *what) {
+  if (na != nb || (na > 0 && memcmp(a, b, 3 * na * sizeof *a) != 0))
+    fail_msg("%s: triangles differ (%zu against %zu)", what, na, nb);
+}

@@ -16,6 +16,17 @@ typedef struct testutil_rng { uint64_t s; } testutil_rng;
 uint64_t testutil_next(testutil_rng *g);
 double testutil_uniform(testutil_rng *g);               /* [0, 1) */
 
+/* n sites (n <= 400) of the paradigm tests' family f: 0 uniform, 1 draws
+** from a 6 x 6 grid (duplicates), 2 a grid 7 wide, 3 draws from 24 points
+** of a circle, 4 collinear runs on three lines with a few off them, 5
+** integer points of two concentric circles with repeats.  Returns n. */
+size_t testutil_family(int f, size_t n, testutil_rng *g, geom_point *p);
+
+/* Fails the running cmocka test, naming WHAT, unless the triangle arrays
+** a (na triangles) and b (nb) are equal. */
+void testutil_same_tri(const uint32_t *a, size_t na, const uint32_t *b, size_t nb,
+                       const char *what);
+
 /* Four points uniform in the unit disc whose hull is a quadrilateral,
 ** returned anticlockwise. */
 void testutil_convex_quad(testutil_rng *g, geom_point q[4]);
