@@ -51,7 +51,13 @@ int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char
 #define PARADIGM_DC_REFUSAL \
   "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
   "has triangles with non-empty homothets, and merges would start at support-hull edges " \
-  "(2.6.6); constraints: not yet (Chew's virtual sites, 2.6.2)"
+  "(2.6.6); constraints: Chew's virtual sites (2.6.2) are not built; simple and convex " \
+  "polygons: the row dc-polygon (2.6.3)"
+/* 2.6.3 (paradigms/divide_polygon.c): a simple or convex polygon split at a
+** diagonal with n/3 vertices on each side, the sides merged by flips. */
+FLIPLAB_INTERNAL
+int paradigm_dc_polygon(const paradigm_input *in, paradigm_output *out, char *err,
+                        size_t errlen);
 /* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
 ** unfinished edges as a stack or a queue, and the apex search by a scan of
 ** every site, an x-sorted strip, or a bucket grid; with constraints. */

@@ -153,7 +153,9 @@ static void tpp_polygon_one(const geom_point *p, size_t n, const rule *r) {
   assert_int_equal(ntri, n - 2);
   for (size_t i = 0; i < paradigm_count(); i++) {
     const paradigm_algorithm *a = paradigm_get(i);
-    if (!(a->problems & PARADIGM_POLYGON)) continue;
+    if (!(a->problems & PARADIGM_POLYGON)
+        || !(a->rules & (rule_is_shape(r) ? PARADIGM_RULE_ES : PARADIGM_RULE_DT)))
+      continue;   /* dc-polygon serves DT only */
     paradigm_result res = tpp_run(a, p, n, r, PARADIGM_POLYGON);
     tpp_equal(&res, ref, ntri, a->name);
     paradigm_result_free(&res);
