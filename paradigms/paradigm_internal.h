@@ -53,6 +53,11 @@ int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char
   "has triangles with non-empty homothets, and merges would start at support-hull edges " \
   "(2.6.6); constraints: Chew's virtual sites (2.6.2) are not built; simple and convex " \
   "polygons: the row dc-polygon (2.6.3)"
+/* 2.6.2 as far as it is built (paradigms/divide_constrained.c): the vertical
+** strips' triangulation, served when every segment is one of its edges. */
+FLIPLAB_INTERNAL
+int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen);
 /* 2.6.3 (paradigms/divide_polygon.c): a simple or convex polygon split at a
 ** diagonal with n/3 vertices on each side, the sides merged by flips. */
 FLIPLAB_INTERNAL
