@@ -35,10 +35,13 @@
 ** it unique).  Each flip lowers the lifted surface, so no edge comes back:
 ** a merge makes each of its new edges, all across the diagonal, once.
 **
-** Cost.  Ears: O(n r) tests of a vertex against the r reflex and flat
-** vertices when the walk finds ears near it (convex, star-shaped and
-** monotone polygons), O(n^2 r) at worst; a linear-time triangulation
-** (Chazelle's, which 2.6.3 cites) is what would bring it to O(n).  Splits:
+** Cost.  Ears: each test looks at the reflex and flat vertices in the
+** grid cells (about one such vertex a cell) that the ear's bounding box
+** meets, so O(n) tests of O(1) cells when the walk finds small ears near it
+** (convex, star-shaped, monotone polygons of spread vertices); at worst
+** O(n) tests an ear of O(r) vertices each, O(n^2 r) for r reflex ones; a
+** linear-time triangulation (Chazelle's, which 2.6.3 cites) is what would
+** bring it to O(n).  Splits:
 ** the pieces shrink by a factor 2/3 at least, so log_{3/2} n levels of O(n)
 ** passes, O(n log n).  Merges: the flips, at most the pairs of vertices
 ** across each diagonal; on the test families they are linear per level.
@@ -80,53 +83,102 @@ static int dp_in_triangle(dp_run *R, uint32_t a, uint32_t b, uint32_t c, uint32_
          && ops_orient(R->c, q[c], q[a], q[w]) >= 0;
 }
 
-/* Is v an ear of the remaining polygon (next, prev)?  Strictly convex, and
-** no reflex or flat vertex in its closed triangle (if any vertex lies in
-** it, one of those does: the one farthest from the cut does). */
-static int dp_is_ear(dp_run *R, const uint32_t *next, const uint32_t *prev,
-                     const uint8_t *bent, const uint32_t *nc, size_t nnc, uint32_t v) {
-  uint32_t a = prev[v], b = next[v];
-  if (bent[v]) return 0;
-  for (size_t k = 0; k < nnc; k++) {
-    uint32_t w = nc[k];
-    if (bent[w] && w != a && w != b && dp_in_triangle(R, a, v, b, w)) return 0;
-  }
+/* The ear cutting's state: the remaining polygon as a ring, and a grid of
+** cells over the bounding box listing the reflex and flat vertices (bent).
+** The grid only filters: a cell's index is monotone in the coordinate
+** (a difference, a product by a positive scale, a clamp and a truncation,
+** each monotone in IEEE arithmetic), so a vertex inside a triangle lies in
+** a cell between those of the triangle's extreme coordinates, and the
+** exact orientation tests decide. */
+typedef struct dp_ears {
+  uint32_t *next, *prev, *link, *head;
+  uint8_t *bent;
+  double x0, y0, sx, sy;
+  uint32_t w;           /* cells a side */
+} dp_ears;
+
+static uint32_t dp_cell(double v, double v0, double s, uint32_t w) {
+  double c = (v - v0) * s;
+  return c <= 0 ? 0 : c >= (double)(w - 1) ? w - 1 : (uint32_t)c;
+}
+
+/* Is v an ear of the remaining polygon?  Strictly convex, and no reflex or
+** flat vertex in its closed triangle (if any vertex lies in it, one of
+** those does: the one farthest from the cut does). */
+static int dp_is_ear(dp_run *R, const dp_ears *E, uint32_t v) {
+  uint32_t a = E->prev[v], b = E->next[v];
+  if (E->bent[v]) return 0;
+  geom_point pa = R->q[a], pv = R->q[v], pb = R->q[b];
+  double lx = pa.x < pv.x ? pa.x : pv.x, hx = pa.x > pv.x ? pa.x : pv.x;
+  double ly = pa.y < pv.y ? pa.y : pv.y, hy = pa.y > pv.y ? pa.y : pv.y;
+  lx = pb.x < lx ? pb.x : lx, hx = pb.x > hx ? pb.x : hx;
+  ly = pb.y < ly ? pb.y : ly, hy = pb.y > hy ? pb.y : hy;
+  uint32_t cx0 = dp_cell(lx, E->x0, E->sx, E->w), cx1 = dp_cell(hx, E->x0, E->sx, E->w);
+  uint32_t cy1 = dp_cell(hy, E->y0, E->sy, E->w);
+  for (uint32_t cy = dp_cell(ly, E->y0, E->sy, E->w); cy <= cy1; cy++)
+    for (uint32_t cx = cx0; cx <= cx1; cx++)
+      for (uint32_t w = E->head[cy * E->w + cx]; w != UINT32_MAX; w = E->link[w])
+        if (E->bent[w] && w != a && w != b && dp_in_triangle(R, a, v, b, w)) return 0;
   return 1;
 }
 
-static void dp_bend(dp_run *R, const uint32_t *next, const uint32_t *prev, uint8_t *bent,
-                    uint32_t v) {
-  bent[v] = ops_orient(R->c, R->q[prev[v]], R->q[v], R->q[next[v]]) <= 0;
+static void dp_bend(dp_run *R, dp_ears *E, uint32_t v) {
+  E->bent[v] = ops_orient(R->c, R->q[E->prev[v]], R->q[v], R->q[E->next[v]]) <= 0;
+}
+
+/* The ring, the bent vertices and their grid of about one cell each. */
+static int dp_ears_begin(dp_run *R, dp_ears *E, uint32_t *lst) {
+  uint32_t n = R->n, r = 0;
+  E->next = lst, E->prev = lst + n, E->link = lst + 2 * n, E->bent = (uint8_t *)(lst + 3 * n);
+  double x1 = R->q[0].x, y1 = R->q[0].y;
+  E->x0 = x1, E->y0 = y1;
+  for (uint32_t v = 0; v < n; v++) {
+    E->next[v] = (v + 1) % n, E->prev[v] = (v + n - 1) % n;
+    geom_point p = R->q[v];
+    E->x0 = p.x < E->x0 ? p.x : E->x0, x1 = p.x > x1 ? p.x : x1;
+    E->y0 = p.y < E->y0 ? p.y : E->y0, y1 = p.y > y1 ? p.y : y1;
+  }
+  for (uint32_t v = 0; v < n; v++) dp_bend(R, E, v), r += E->bent[v];
+  for (E->w = 1; (E->w + 1) * (E->w + 1) <= r; E->w++) {}
+  E->sx = E->w / (x1 - E->x0), E->sy = E->w / (y1 - E->y0);   /* ranges > 0: no line */
+  E->head = malloc((size_t)E->w * E->w * sizeof *E->head);
+  if (E->head == NULL) return -1;
+  ops_memory(R->c, (int64_t)E->w * E->w * 4);
+  memset(E->head, 0xff, (size_t)E->w * E->w * sizeof *E->head);
+  for (uint32_t v = 0; v < n; v++)
+    if (E->bent[v]) {
+      uint32_t *h = &E->head[dp_cell(R->q[v].y, E->y0, E->sy, E->w) * E->w
+                             + dp_cell(R->q[v].x, E->x0, E->sx, E->w)];
+      E->link[v] = *h, *h = v;
+    }
+  return 0;
 }
 
 /* Cut ears walking round the polygon (cost above): the n - 2 triangles
-** into R->tri.  lst holds 4n words of scratch.  0, or -1 when the walk went
-** round without an ear (not simple: the check refused that). */
-static int dp_ears(dp_run *R, uint32_t *lst) {
-  uint32_t n = R->n, *next = lst, *prev = lst + n, *nc = lst + 2 * n, t = 0, nnc = 0;
-  uint8_t *bent = (uint8_t *)(lst + 3 * n);
-  for (uint32_t v = 0; v < n; v++) next[v] = (v + 1) % n, prev[v] = (v + n - 1) % n;
-  for (uint32_t v = 0; v < n; v++) {
-    dp_bend(R, next, prev, bent, v);
-    if (bent[v]) nc[nnc++] = v;
-  }
-  uint32_t v = 0, left = n, miss = 0;
-  while (left > 3) {
-    if (!dp_is_ear(R, next, prev, bent, nc, nnc, v)) {
-      v = next[v];
-      if (++miss > left) return -1;
+** into R->tri.  lst holds 4n words of scratch.  0, -1 out of memory, -2
+** when the walk went round without an ear (not simple: the check refused
+** that). */
+static int dp_ears_cut(dp_run *R, uint32_t *lst) {
+  dp_ears E;
+  if (dp_ears_begin(R, &E, lst) != 0) return -1;
+  uint32_t v = 0, left = R->n, miss = 0, t = 0;
+  while (left > 3 && miss <= left) {
+    if (!dp_is_ear(R, &E, v)) {
+      v = E.next[v], miss++;
       continue;
     }
-    uint32_t a = prev[v], b = next[v];
+    uint32_t a = E.prev[v], b = E.next[v];
     R->tri[3 * t] = a, R->tri[3 * t + 1] = v, R->tri[3 * t + 2] = b, t++;
-    next[a] = b, prev[b] = a, bent[v] = 0, left--, miss = 0;
-    if (bent[a]) dp_bend(R, next, prev, bent, a);
-    if (bent[b]) dp_bend(R, next, prev, bent, b);
+    E.next[a] = b, E.prev[b] = a, E.bent[v] = 0, left--, miss = 0;
+    if (E.bent[a]) dp_bend(R, &E, a);
+    if (E.bent[b]) dp_bend(R, &E, b);
     v = a;
   }
-  R->tri[3 * t] = prev[v], R->tri[3 * t + 1] = v, R->tri[3 * t + 2] = next[v];
-  ops_add(R->c, OPS_EDGES_MADE, 2 * (uint64_t)n - 3);   /* n sides, n - 3 diagonals */
-  return 0;
+  R->tri[3 * t] = E.prev[v], R->tri[3 * t + 1] = v, R->tri[3 * t + 2] = E.next[v];
+  ops_add(R->c, OPS_EDGES_MADE, 2 * (uint64_t)R->n - 3);   /* n sides, n - 3 diagonals */
+  ops_memory(R->c, -(int64_t)E.w * E.w * 4);
+  free(E.head);
+  return left > 3 ? -2 : 0;
 }
 
 /* ---- the splits ---- */
@@ -342,12 +394,14 @@ static void dp_free(dp_run *R) {
 ** in input indices. */
 static int dp_mesh(dp_run *R, paradigm_output *out, char *err, size_t errlen) {
   uint32_t n = R->n, nt = n - 2;
-  if (dp_ears(R, R->list) == 0)
-    for (uint32_t i = 0; i < 3 * nt; i++) R->vt[R->tri[i]] = i / 3;
-  else {
-    snprintf(err, errlen, "dc-polygon: no ear among %u vertices (a bug: please report it)", n);
+  int rc = dp_ears_cut(R, R->list);
+  if (rc != 0) {
+    if (rc == -1) snprintf(err, errlen, "out of memory for a polygon of %u vertices", n);
+    else snprintf(err, errlen, "dc-polygon: no ear among %u vertices (a bug: please report it)",
+                  n);
     return -1;
   }
+  for (uint32_t i = 0; i < 3 * nt; i++) R->vt[R->tri[i]] = i / 3;
   if (lot_neighbors(R->tri, nt, n, R->nb) != 0 || dp_solve(R, 0, n) != 0) {
     snprintf(err, errlen, "out of memory for a polygon of %u vertices", n);
     return -1;
