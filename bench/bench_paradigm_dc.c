@@ -107,24 +107,17 @@ static void bdc_refusal(const paradigm_input *in0) {
   if (rc == 0) paradigm_result_free(&res);
 }
 
-static void bdc_polygons(size_t n, int runs, const paradigm_input *base) {
+/* One polygon case: N vertices of `fn` as problem pb, rows a and b. */
+static void bdc_polygon(const char *what, bench_sampler fn, paradigm_problem pb,
+                        const char *a, const char *b, int runs, const paradigm_input *base) {
   char title[128];
-  bdc_case star = {.in = *base, .rows = {"incremental", "dc-polygon"}, .nrows = 2};
-  snprintf(title, sizeof title, "star-shaped polygon of %zu vertices", n);
-  star.title = title;
-  star.in.p = bench_polygon("bench_paradigm_dc", sampler_star, n);
-  star.in.problem = PARADIGM_POLYGON;
-  bdc_check(&star);
-  bdc_time(&star, runs);
-  free((void *)star.in.p);
-  bdc_case cvx = {.in = *base, .rows = {"convex-divide", "dc-polygon"}, .nrows = 2};
-  snprintf(title, sizeof title, "convex polygon of %zu vertices", n);
-  cvx.title = title;
-  cvx.in.p = bench_polygon("bench_paradigm_dc", sampler_vector, n);
-  cvx.in.problem = PARADIGM_CONVEX;
-  bdc_check(&cvx);
-  bdc_time(&cvx, runs);
-  free((void *)cvx.in.p);
+  bdc_case k = {title, *base, {a, b}, 2};
+  snprintf(title, sizeof title, "%s polygon of %zu vertices", what, base->n);
+  k.in.p = bench_polygon("bench_paradigm_dc", fn, base->n);
+  k.in.problem = pb, k.in.segments = NULL, k.in.nsegments = 0;
+  bdc_check(&k);
+  bdc_time(&k, runs);
+  free((void *)k.in.p);
 }
 
 int main(int argc, char **argv) {
@@ -152,7 +145,10 @@ int main(int argc, char **argv) {
   bdc_check(&cdt);
   bdc_time(&cdt, runs);
   bdc_refusal(&cdt.in);
-  bdc_polygons(n, runs, &cdt.in);
+  bdc_polygon("star-shaped", sampler_star, PARADIGM_POLYGON, "incremental", "dc-polygon",
+              runs, &cdt.in);
+  bdc_polygon("convex", sampler_vector, PARADIGM_CONVEX, "convex-divide", "dc-polygon", runs,
+              &cdt.in);
   printf("(load average at the end: %.2f)\n", bench_load());
   free(seg), free(p);
   return 0;

@@ -48,8 +48,9 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"dc-polygon", "divide", "2.6.3", PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT,
    "DT only: a rule's flips need not end at its LOT (2.6.6); point sets and constraints: "
    "the dc-* and select-constrained rows",
-   "O(n log n) splits at n/3 diagonals of one ear-cut triangulation (O(n r) ears, r "
-   "reflex vertices), merges by flips across each diagonal", NULL, paradigm_dc_polygon},
+   "O(n log n) splits at n/3 diagonals of one ear-cut triangulation (ears O(n) tests "
+   "through a grid when small, O(n^2 r) worst), merges by flips across each diagonal", NULL,
+   paradigm_dc_polygon},
   {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_SELECT_REFUSAL, "O(n^2): a scan of every site per edge",
    NULL, paradigm_select_stack},

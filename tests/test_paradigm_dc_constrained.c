@@ -23,13 +23,6 @@
 
 #define TDC_MAXN 48
 
-static rule tdc_dt(void) {
-  rule r;
-  char err[256];
-  if (rule_parse("DT", &r, err, sizeof err) != 0) fail_msg("%s", err);
-  return r;
-}
-
 /* A small set: uniform, a grid with duplicates, or circle points. */
 static size_t tdc_points(int f, testutil_rng *g, geom_point *p) {
   size_t n = 4 + testutil_next(g) % (TDC_MAXN - 4), k = 0;
@@ -47,7 +40,7 @@ static size_t tdc_points(int f, testutil_rng *g, geom_point *p) {
 
 static int tdc_run(const char *row, const geom_point *p, size_t n, const uint32_t *seg,
                    size_t ns, paradigm_result *res, char *err, size_t errlen) {
-  rule dt = tdc_dt();
+  rule dt = rule_delaunay();
   paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_CONSTRAINED,
                        .segments = seg, .nsegments = ns, .seed = 3, .threads = 1};
   return paradigm_run(paradigm_find(row), &in, res, err, errlen);
@@ -93,7 +86,7 @@ static void tdc_set(int f, testutil_rng *g, int *served, int *refused) {
   geom_point p[TDC_MAXN];
   uint32_t first[TDC_MAXN], seg[2 * 3 * TDC_MAXN];
   size_t n = tdc_points(f, g, p);
-  rule dt = tdc_dt();
+  rule dt = rule_delaunay();
   char err[256];
   paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_DELAUNAY, .threads = 1};
   paradigm_result del;
@@ -144,7 +137,7 @@ static void test_refusals(void **state) {
   assert_int_equal(paradigm_run(paradigm_find("dc-constrained"), &in, &res, err, sizeof err),
                    -1);
   assert_non_null(strstr(err, "needs the rule DT"));
-  rule dt = tdc_dt();
+  rule dt = rule_delaunay();
   in.r = &dt, in.problem = PARADIGM_DELAUNAY;
   assert_int_equal(paradigm_run(paradigm_find("dc-constrained"), &in, &res, err, sizeof err),
                    -1);
