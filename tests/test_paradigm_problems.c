@@ -320,6 +320,16 @@ static void test_dc_polygon_ties(void **state) {
     tpp_dc_polygon(comb, 12, &g);
     tpp_dc_polygon(circ, 12, &g);
   }
+  geom_point box[TPP_MAXN];   /* every integer point of a w x h box's boundary: all flat */
+  for (int w = 1; w <= 7; w++)
+    for (int h = 1; h <= 7; h++) {
+      size_t n = 0;
+      for (int x = 0; x < w; x++) box[n++] = (geom_point){x, 0};
+      for (int y = 0; y < h; y++) box[n++] = (geom_point){w, y};
+      for (int x = w; x > 0; x--) box[n++] = (geom_point){x, h};
+      for (int y = h; y > 0; y--) box[n++] = (geom_point){0, y};
+      tpp_dc_polygon(box, n, &g);
+    }
 }
 
 /* Convex polygons (anticlockwise, as PARADIGM_CONVEX wants): the oracle is
