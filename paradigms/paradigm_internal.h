@@ -51,8 +51,8 @@ int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char
 #define PARADIGM_DC_REFUSAL \
   "ES:SHAPE: a merge trusts empty circles through its cross edges, but a polygon's LOT " \
   "has triangles with non-empty homothets, and merges would start at support-hull edges " \
-  "(2.6.6); constraints: Chew's virtual sites (2.6.2) are not built; simple and convex " \
-  "polygons: the row dc-polygon (2.6.3)"
+  "(2.6.6); constraints: the row dc-constrained (2.6.2, segments that are Delaunay edges " \
+  "only: Chew's virtual sites are not built); simple and convex polygons: dc-polygon (2.6.3)"
 /* 2.6.2 as far as it is built (paradigms/divide_constrained.c): the vertical
 ** strips' triangulation, served when every segment is one of its edges. */
 FLIPLAB_INTERNAL
