@@ -5,13 +5,14 @@
 **   - N uniform sites with S segments drawn among their Delaunay edges (the
 **     case dc-constrained serves), and the refusal for one segment that is
 **     no Delaunay edge;
-**   - a star-shaped polygon of N vertices: dc-polygon beside incremental;
+**   - a star-shaped polygon of P vertices: dc-polygon beside incremental
+**     (lot's polygon insertion is slow on it: P smaller than N by default);
 **     a convex one: dc-polygon beside convex-divide (cpdt's 5.4.2).
 ** Each round runs every contender once, in turn; the figures are medians of
 ** RUNS rounds: wall and CPU seconds, the ratio to lot's, and counts per
 ** site.  Before timing, every contender's triangles are checked equal.
 **
-**   bench_paradigm_dc [N [S [RUNS [SEED]]]]     (defaults 100000 1000 5 1)
+**   bench_paradigm_dc [N [S [P [RUNS [SEED]]]]]    (defaults 100000 1000 20000 5 1)
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,10 +124,13 @@ static void bdc_polygon(const char *what, bench_sampler fn, paradigm_problem pb,
 int main(int argc, char **argv) {
   size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 100000;
   size_t s = argc > 2 ? (size_t)strtod(argv[2], NULL) : 1000;
-  int runs = argc > 3 ? atoi(argv[3]) : 5;
-  uint64_t seed = argc > 4 ? strtoull(argv[4], NULL, 10) : 1;
-  if (n < 16 || n > 10000000 || s < 1 || s > n / 4 || runs < 1 || runs > 15) {
-    fprintf(stderr, "usage: bench_paradigm_dc [N 16..1e7 [S 1..N/4 [RUNS 1..15 [SEED]]]]\n");
+  size_t np = argc > 3 ? (size_t)strtod(argv[3], NULL) : 20000;
+  int runs = argc > 4 ? atoi(argv[4]) : 5;
+  uint64_t seed = argc > 5 ? strtoull(argv[5], NULL, 10) : 1;
+  if (n < 16 || n > 10000000 || s < 1 || s > n / 4 || np < 3 || np > 10000000 || runs < 1
+      || runs > 15) {
+    fprintf(stderr, "usage: bench_paradigm_dc [N 16..1e7 [S 1..N/4 [P 3..1e7 [RUNS 1..15 "
+            "[SEED]]]]]\n");
     return 2;
   }
   geom_point *p = malloc(n * sizeof *p);
@@ -145,6 +149,7 @@ int main(int argc, char **argv) {
   bdc_check(&cdt);
   bdc_time(&cdt, runs);
   bdc_refusal(&cdt.in);
+  cdt.in.n = np;
   bdc_polygon("star-shaped", sampler_star, PARADIGM_POLYGON, "incremental", "dc-polygon",
               runs, &cdt.in);
   bdc_polygon("convex", sampler_vector, PARADIGM_CONVEX, "convex-divide", "dc-polygon", runs,

@@ -48,7 +48,7 @@
 ** O(m^2) for a piece of m at worst (each pair of vertices an edge once);
 ** measured about half a flip a vertex a level (bench_paradigm_dc: 6.8 a
 ** vertex in all on a convex polygon of 20,000, 0.5 on a star-shaped one).
-** Memory: 45 bytes a vertex plus the flip stack.
+** Memory: 79 bytes a vertex plus the flip stack and the ears' grid.
 **
 ** ES:SHAPE is refused: a rule's flips need not end at lot's LOT (2.6.6).
 */
@@ -361,11 +361,11 @@ static int dp_order(const paradigm_input *in, dp_run *R, char *err, size_t errle
   return 0;
 }
 
-/* 45 bytes a vertex: points, order, triangles, neighbours, walls, the
-** breadth-first pass's arrays. */
+/* 79 bytes a vertex: points 16, order 4, triangles 12, neighbours 12,
+** walls 3, a triangle per vertex 4, the breadth-first pass 12 (marks,
+** sizes, parents) and its list, also the ears' scratch, 16. */
 static size_t dp_bytes(uint32_t n) {
-  return (size_t)n * (sizeof(geom_point) + 9 * sizeof(uint32_t) + 3 + 4 * sizeof(uint32_t))
-         + 64 * sizeof(uint32_t);
+  return (size_t)n * (sizeof(geom_point) + 15 * sizeof(uint32_t) + 3) + 64 * sizeof(uint32_t);
 }
 
 static int dp_alloc(dp_run *R, uint32_t n) {
