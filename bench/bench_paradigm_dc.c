@@ -48,7 +48,8 @@ static void bdc_check(const bdc_case *k) {
   paradigm_result ref = bdc_run(k->rows[0], &k->in, NULL);
   for (int r = 1; r < k->nrows; r++) {
     paradigm_result res = bdc_run(k->rows[r], &k->in, NULL);
-    int same = res.ntri == ref.ntri && memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) == 0;
+    int same = res.ntri == ref.ntri
+               && memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) == 0;
     printf("%s: %s gives %zu triangles, %s %s's\n", k->title, k->rows[r], res.ntri,
            same ? "exactly" : "NOT", k->rows[0]);
     paradigm_result_free(&res);
