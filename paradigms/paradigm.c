@@ -49,6 +49,17 @@ static const paradigm_algorithm paradigm_algorithms[] = {
   {"dc-alternating", "divide", "2.6.1; 2.6.6", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_DC_REFUSAL, "O(n log n): cuts at sampled medians; merges O(n) expected on "
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
+  {"dc-constrained", "divide", "2.6.2", PARADIGM_CONSTRAINED, PARADIGM_RULE_DT,
+   "DT only; point sets: dc-vertical, dc-alternating; polygons: dc-polygon; a segment "
+   "that is no Delaunay edge is refused: Chew's regions and virtual sites (2.6.2) are not "
+   "built", "O(n log n): dc-vertical's strips, then each segment looked up among the "
+   "edges", NULL, paradigm_dc_constrained},
+  {"dc-polygon", "divide", "2.6.3", PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT,
+   "DT only: a rule's flips need not end at its LOT (2.6.6); point sets and constraints: "
+   "the dc-* and select-constrained rows",
+   "O(n log n) splits at n/3 diagonals of one ear-cut triangulation (ears O(n) tests "
+   "through a grid when small, O(n^2 r) worst), merges by flips across each diagonal", NULL,
+   paradigm_dc_polygon},
   {"select-stack", "selection", "2.4.1", PARADIGM_DELAUNAY, BOTH_RULES,
    PARADIGM_SELECT_REFUSAL, "O(n^2): a scan of every site per edge",
    NULL, paradigm_select_stack},

@@ -63,8 +63,18 @@ FLIPLAB_INTERNAL
 int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
 #define PARADIGM_DC_REFUSAL \
-  "constraints: not yet (Chew's virtual sites, 2.6.2); simple polygons: the incremental, " \
-  "flip and select-constrained rows; convex polygons: the convex-* rows"
+  "constraints: the row dc-constrained (2.6.2, segments that are Delaunay edges " \
+  "only: Chew's virtual sites are not built); simple and convex polygons: dc-polygon (2.6.3)"
+/* 2.6.2 as far as it is built (paradigms/divide_constrained.c): the vertical
+** strips' triangulation, served when every segment is one of its edges. */
+FLIPLAB_INTERNAL
+int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
+                            size_t errlen);
+/* 2.6.3 (paradigms/divide_polygon.c): a simple or convex polygon split at a
+** diagonal with n/3 vertices on each side, the sides merged by flips. */
+FLIPLAB_INTERNAL
+int paradigm_dc_polygon(const paradigm_input *in, paradigm_output *out, char *err,
+                        size_t errlen);
 /* The selection algorithms of 2.4 (paradigms/select.c): the boundary of
 ** unfinished edges as a stack or a queue, and the apex search by a scan of
 ** every site, an x-sorted strip, or a bucket grid; with constraints. */

@@ -8,8 +8,12 @@
 ** sides as segments restricted to the triangles whose centroid lies inside
 ** (crossing number), which has n - 2 triangles, for DT and ES:square, either
 ** way round, also with collinear neighbours and cocircular vertices.
-** Refusals are one line naming the vertex or sides.
+** Refusals are one line naming the vertex or sides.  The divide and
+** conquer of 2.6.3 (dc-polygon) also on spiral polygons, a grid comb and
+** cocircular polygons from a random start, and on convex polygons, with
+** its counts: edges made - deleted = 2n - 3, one flip per edge deleted.
 */
+#include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -221,12 +225,138 @@ static void test_refusals(void **state) {
   tpp_refused("convex-random", square, 4, "DT", PARADIGM_POLYGON, "does not solve");
   tpp_refused("sweep", square, 4, "DT", PARADIGM_CONVEX, "does not solve");
   tpp_refused("dc-vertical", square, 4, "DT", PARADIGM_POLYGON, "does not solve");
-  for (int k = 0; k < 3; k++) {
-    const char *row = k == 0 ? "incremental" : k == 1 ? "flip" : "select-constrained";
+  tpp_refused("dc-polygon", square, 4, "ES:square", PARADIGM_POLYGON, "needs the rule DT");
+  tpp_refused("dc-polygon", square, 4, "DT", PARADIGM_DELAUNAY, "does not solve");
+  tpp_refused("dc-polygon", square, 4, "DT", PARADIGM_CONSTRAINED, "does not solve");
+  tpp_refused("dc-polygon", square_cw, 4, "DT", PARADIGM_CONVEX, "clockwise");
+  tpp_refused("dc-polygon", dart, 4, "DT", PARADIGM_CONVEX, "vertex 3");
+  for (int k = 0; k < 4; k++) {
+    const char *row = k == 0 ? "incremental" : k == 1 ? "flip" : k == 2 ? "select-constrained"
+                    : "dc-polygon";
     tpp_refused(row, bowtie, 4, "DT", PARADIGM_POLYGON, "sides 1 and 3");
     tpp_refused(row, repeat, 5, "DT", PARADIGM_POLYGON, "vertex 4 repeats");
   }
   tpp_refused("convex-corners", repeat, 5, "DT", PARADIGM_CONVEX, "vertex 4 repeats");
+}
+
+/* dc-polygon on p as problem pb equals ref, and its counts hold. */
+static void tpp_dc_check(const geom_point *p, size_t n, paradigm_problem pb,
+                         const uint32_t *ref, size_t nref) {
+  rule dt = tpp_rule("DT");
+  paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = pb, .seed = 5, .threads = 1};
+  paradigm_result res;
+  char err[512];
+  if (paradigm_run(paradigm_find("dc-polygon"), &in, &res, err, sizeof err) != 0)
+    fail_msg("dc-polygon, n %zu: %s", n, err);
+  if (res.ntri != nref || memcmp(res.tri, ref, 3 * nref * sizeof *ref) != 0)
+    fail_msg("dc-polygon, n %zu: %zu triangles differ from the oracle's %zu", n, res.ntri,
+             nref);
+  const uint64_t *v = res.ops.v;
+  assert_int_equal(v[OPS_EDGES_MADE] - v[OPS_EDGES_DELETED], 2 * n - 3);
+  assert_int_equal(v[OPS_FLIPS], v[OPS_EDGES_DELETED]);
+  if (n >= 4) assert_true(v[OPS_INCIRCLE] >= 1 && v[OPS_ORIENT] >= n);
+  assert_true(v[OPS_PEAK_BYTES] > 0);
+  paradigm_result_free(&res);
+}
+
+/* p as a simple polygon: as given, reversed, and from a random start. */
+static void tpp_dc_polygon(const geom_point *p, size_t n, sampler_rng *g) {
+  geom_point q[TPP_MAXN];
+  rule dt = tpp_rule("DT");
+  size_t s = (size_t)(sampler_next(g) % n);
+  for (int way = 0; way < 3; way++) {
+    for (size_t i = 0; i < n; i++)
+      q[i] = way == 0 ? p[i] : way == 1 ? p[n - 1 - i] : p[(i + s) % n];
+    size_t ntri;
+    uint32_t *ref = tpp_polygon_oracle(q, n, &dt, &ntri);
+    assert_int_equal(ntri, n - 2);
+    tpp_dc_check(q, n, PARADIGM_POLYGON, ref, ntri);
+    free(ref);
+  }
+}
+
+/* A spiral of n (even) vertices: out along one arm, back along the
+** other half a unit outside it, consecutive vertices `turn` radians apart. */
+static void tpp_dc_spiral(size_t n, double turn, geom_point *p) {
+  size_t h = n / 2;
+  for (size_t i = 0; i < h; i++) {
+    double t = turn * (double)i, r = 1 + t;
+    p[i] = (geom_point){r * cos(t), r * sin(t)};
+    p[n - 1 - i] = (geom_point){(r + 0.5) * cos(t), (r + 0.5) * sin(t)};
+  }
+}
+
+static void test_dc_polygon(void **state) {
+  (void)state;
+  sampler_rng g;
+  sampler_seed(&g, 263, 1);
+  geom_point p[TPP_MAXN];
+  const size_t sizes[] = {3, 4, 5, 6, 7, 9, 12, 20, 40, 90, TPP_MAXN};
+  for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
+    for (int rep = 0; rep < 24; rep++) {
+      size_t n = sizes[z];
+      assert_int_equal(rep % 2 ? sampler_monotone(&g, n, p) : sampler_star(&g, n, p), 0);
+      tpp_dc_polygon(p, n, &g);
+    }
+  for (size_t n = 6; n <= TPP_MAXN; n += 14) {
+    tpp_dc_spiral(n, 0.35, p);
+    tpp_dc_polygon(p, n, &g);
+    tpp_dc_spiral(n, 0.9, p);
+    tpp_dc_polygon(p, n, &g);
+  }
+}
+
+/* Ties: collinear neighbours on a 3 x 3 grid, a comb with notches on a
+** grid, and the twelve integer points of the circle of radius 5. */
+static void test_dc_polygon_ties(void **state) {
+  (void)state;
+  sampler_rng g;
+  sampler_seed(&g, 264, 1);
+  const geom_point mid[] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  const geom_point comb[] = {{0, 0}, {5, 0}, {5, 2}, {4, 2}, {4, 1}, {3, 1}, {3, 2},
+                             {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  const geom_point circ[] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+                             {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for (int rep = 0; rep < 8; rep++) {
+    tpp_dc_polygon(mid, 8, &g);
+    tpp_dc_polygon(comb, 12, &g);
+    tpp_dc_polygon(circ, 12, &g);
+  }
+  geom_point box[TPP_MAXN];   /* every integer point of a w x h box's boundary: all flat */
+  for (int w = 1; w <= 7; w++)
+    for (int h = 1; h <= 7; h++) {
+      size_t n = 0;
+      for (int x = 0; x < w; x++) box[n++] = (geom_point){x, 0};
+      for (int y = 0; y < h; y++) box[n++] = (geom_point){w, y};
+      for (int x = w; x > 0; x--) box[n++] = (geom_point){x, h};
+      for (int y = h; y > 0; y--) box[n++] = (geom_point){0, y};
+      tpp_dc_polygon(box, n, &g);
+    }
+}
+
+/* Convex polygons (anticlockwise, as PARADIGM_CONVEX wants): the oracle is
+** lot's Delaunay triangulation of the vertices. */
+static void test_dc_polygon_convex(void **state) {
+  (void)state;
+  sampler_gon_params gp = {SAMPLER_REGION_SQUARE, 0, NULL};
+  sampler_rng g;
+  sampler_seed(&g, 265, 1);
+  geom_point p[TPP_MAXN], q[TPP_MAXN];
+  const char *samplers[] = {"vector", "circle"};
+  const size_t sizes[] = {3, 4, 5, 8, 20, 60, TPP_MAXN};
+  for (size_t s = 0; s < 2; s++)
+    for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
+      for (int rep = 0; rep < 10; rep++) {
+        size_t n = sizes[z], ntri, r;
+        rule dt = tpp_rule("DT");
+        sampler_gon_info info;
+        assert_int_equal(sampler_gon_find(samplers[s])->draw(&g, n, &gp, p, &info), 0);
+        r = (size_t)(sampler_next(&g) % n);
+        for (size_t i = 0; i < n; i++) q[i] = p[(i + r) % n];
+        uint32_t *ref = tpp_lot(q, n, &dt, 0, &ntri);
+        tpp_dc_check(q, n, PARADIGM_CONVEX, ref, ntri);
+        free(ref);
+      }
 }
 
 int main(void) {
@@ -235,6 +365,9 @@ int main(void) {
     cmocka_unit_test(test_convex_rows),
     cmocka_unit_test(test_polygon_rows),
     cmocka_unit_test(test_refusals),
+    cmocka_unit_test(test_dc_polygon),
+    cmocka_unit_test(test_dc_polygon_ties),
+    cmocka_unit_test(test_dc_polygon_convex),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

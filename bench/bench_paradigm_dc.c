@@ -1,0 +1,161 @@
+/*
+** bench_paradigm_dc.c: divide and conquer with constraints (rows
+** dc-constrained and dc-polygon, docs/paradigms.md) beside lot's
+** constrained triangulation (the row incremental), side by side in one run:
+**   - N uniform sites with S segments drawn among their Delaunay edges (the
+**     case dc-constrained serves), and the refusal for one segment that is
+**     no Delaunay edge;
+**   - a star-shaped polygon of P vertices: dc-polygon beside incremental
+**     (lot's polygon insertion is slow on it: P smaller than N by default);
+**     a convex one: dc-polygon beside convex-divide (cpdt's 5.4.2).
+** Each round runs every contender once, in turn; the figures are medians of
+** RUNS rounds: wall and CPU seconds, the ratio to lot's, and counts per
+** site.  Before timing, every contender's triangles are checked equal.
+**
+**   bench_paradigm_dc [N [S [P [RUNS [SEED]]]]]    (defaults 100000 1000 20000 5 1)
+*/
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "benchutil.h"
+#include "lot.h"
+#include "paradigm.h"
+
+#define BDC_MAX 3   /* contenders per case */
+
+typedef struct bdc_case {
+  const char *title;
+  paradigm_input in;
+  const char *rows[BDC_MAX];
+  int nrows;
+} bdc_case;
+
+static paradigm_result bdc_run(const char *row, const paradigm_input *in, bench_time *t) {
+  paradigm_result res;
+  char err[512];
+  double w = bench_wall(), c = bench_cpu();
+  if (paradigm_run(paradigm_find(row), in, &res, err, sizeof err) != 0) {
+    fprintf(stderr, "bench_paradigm_dc: %s: %s\n", row, err);
+    exit(1);
+  }
+  if (t != NULL) *t = (bench_time){bench_wall() - w, bench_cpu() - c};
+  return res;
+}
+
+/* Every contender gives the first one's triangles; exits if not. */
+static void bdc_check(const bdc_case *k) {
+  paradigm_result ref = bdc_run(k->rows[0], &k->in, NULL);
+  for (int r = 1; r < k->nrows; r++) {
+    paradigm_result res = bdc_run(k->rows[r], &k->in, NULL);
+    int same = res.ntri == ref.ntri
+               && memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) == 0;
+    printf("%s: %s gives %zu triangles, %s %s's\n", k->title, k->rows[r], res.ntri,
+           same ? "exactly" : "NOT", k->rows[0]);
+    paradigm_result_free(&res);
+    if (!same) exit(1);
+  }
+  paradigm_result_free(&ref);
+}
+
+/* RUNS rounds of every contender, then the table of medians. */
+static void bdc_time(const bdc_case *k, int runs) {
+  bench_time t[BDC_MAX][16], m[BDC_MAX];
+  ops_counts ops[BDC_MAX];
+  for (int i = 0; i < runs; i++)
+    for (int r = 0; r < k->nrows; r++) {
+      paradigm_result res = bdc_run(k->rows[r], &k->in, &t[r][i]);
+      ops[r] = res.ops;
+      paradigm_result_free(&res);
+    }
+  printf("\n%s\n\n| algorithm | time (s) | CPU (s) | / %s | orient/site | incircle/site "
+         "| flips/site | edges made/site | peak bytes/site |\n|---|---:|---:|---:|---:|---:"
+         "|---:|---:|---:|\n", k->title, k->rows[0]);
+  for (int r = 0; r < k->nrows; r++) m[r] = bench_median_time(t[r], runs);
+  for (int r = 0; r < k->nrows; r++) {
+    const uint64_t *v = ops[r].v;
+    double n = (double)k->in.n;
+    printf("| %s | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f |\n", k->rows[r],
+           m[r].wall, m[r].cpu, m[r].wall / m[0].wall, (double)v[OPS_ORIENT] / n,
+           (double)v[OPS_INCIRCLE] / n, (double)v[OPS_FLIPS] / n,
+           (double)v[OPS_EDGES_MADE] / n, (double)v[OPS_PEAK_BYTES] / n);
+  }
+}
+
+/* s segments among the Delaunay edges of p, spread over its triangles. */
+static uint32_t *bdc_segments(const paradigm_input *in, size_t s) {
+  paradigm_input d = *in;
+  d.problem = PARADIGM_DELAUNAY;
+  paradigm_result dt = bdc_run("incremental", &d, NULL);
+  uint32_t *seg = malloc(2 * s * sizeof *seg);
+  if (seg == NULL || dt.ntri < s) exit(1);
+  for (size_t k = 0; k < s; k++) {
+    const uint32_t *v = dt.tri + 3 * (k * (dt.ntri / s));
+    seg[2 * k] = v[k % 3], seg[2 * k + 1] = v[(k + 1) % 3];
+  }
+  paradigm_result_free(&dt);
+  return seg;
+}
+
+static void bdc_refusal(const paradigm_input *in0) {
+  paradigm_input in = *in0;
+  uint32_t far[2] = {0, (uint32_t)(in.n - 1)};
+  in.segments = far, in.nsegments = 1;
+  paradigm_result res;
+  char err[512];
+  int rc = paradigm_run(paradigm_find("dc-constrained"), &in, &res, err, sizeof err);
+  printf("\none segment from site 1 to site %zu: dc-constrained %s%s\n", in.n,
+         rc ? "refuses: " : "serves it", rc ? err : "");
+  if (rc == 0) paradigm_result_free(&res);
+}
+
+/* One polygon case: N vertices of `fn` as problem pb, rows a and b. */
+static void bdc_polygon(const char *what, bench_sampler fn, paradigm_problem pb,
+                        const char *a, const char *b, int runs, const paradigm_input *base) {
+  char title[128];
+  bdc_case k = {title, *base, {a, b}, 2};
+  snprintf(title, sizeof title, "%s polygon of %zu vertices", what, base->n);
+  k.in.p = bench_polygon("bench_paradigm_dc", fn, base->n);
+  k.in.problem = pb, k.in.segments = NULL, k.in.nsegments = 0;
+  bdc_check(&k);
+  bdc_time(&k, runs);
+  free((void *)k.in.p);
+}
+
+int main(int argc, char **argv) {
+  size_t n = argc > 1 ? (size_t)strtod(argv[1], NULL) : 100000;
+  size_t s = argc > 2 ? (size_t)strtod(argv[2], NULL) : 1000;
+  size_t np = argc > 3 ? (size_t)strtod(argv[3], NULL) : 20000;
+  int runs = argc > 4 ? atoi(argv[4]) : 5;
+  uint64_t seed = argc > 5 ? strtoull(argv[5], NULL, 10) : 1;
+  if (n < 16 || n > 10000000 || s < 1 || s > n / 4 || np < 3 || np > 10000000 || runs < 1
+      || runs > 15) {
+    fprintf(stderr, "usage: bench_paradigm_dc [N 16..1e7 [S 1..N/4 [P 3..1e7 [RUNS 1..15 "
+            "[SEED]]]]]\n");
+    return 2;
+  }
+  geom_point *p = malloc(n * sizeof *p);
+  if (p == NULL) return 1;
+  sampler_points(SAMPLER_UNIFORM, seed, n, p);
+  rule dt = rule_delaunay();
+  char title[128];
+  snprintf(title, sizeof title, "%zu uniform sites (seed %llu), %zu segments among their "
+           "Delaunay edges", n, (unsigned long long)seed, s);
+  bdc_case cdt = {title, {.p = p, .n = n, .r = &dt, .problem = PARADIGM_CONSTRAINED,
+                          .seed = seed, .threads = 1}, {"incremental", "dc-constrained"}, 2};
+  printf("# bench_paradigm_dc: median of %d rounds\n(load average at start: %.2f on %ld "
+         "cores)\n", runs, bench_load(), sysconf(_SC_NPROCESSORS_ONLN));
+  uint32_t *seg = bdc_segments(&cdt.in, s);
+  cdt.in.segments = seg, cdt.in.nsegments = s;
+  bdc_check(&cdt);
+  bdc_time(&cdt, runs);
+  bdc_refusal(&cdt.in);
+  cdt.in.n = np;
+  bdc_polygon("star-shaped", sampler_star, PARADIGM_POLYGON, "incremental", "dc-polygon",
+              runs, &cdt.in);
+  bdc_polygon("convex", sampler_vector, PARADIGM_CONVEX, "convex-divide", "dc-polygon", runs,
+              &cdt.in);
+  printf("(load average at the end: %.2f)\n", bench_load());
+  free(seg), free(p);
+  return 0;
+}
