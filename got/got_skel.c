@@ -389,11 +389,13 @@ static int skel_cmp_seen(const void *x, const void *y) {
   return (a > b) - (a < b);
 }
 
-/* The diamond candidates (a, b), b > a, into out, ascending in b.  Cost: the live cells
-** around a (about a hundred points for uniform points) and a diamond test for each point
-** the sectors do not rule out. */
-static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t a,
-                              skel_search *z, skel_vec *out) {
+/* The diamond candidates (a, b), b > a, into out, ascending in b.  The test of a pair is
+** run with its ends in input order (orig: the input index of each point, or NULL), so
+** its rounding, and the candidates, do not depend on the internal numbering.  Cost: the
+** live cells around a (about a hundred points for uniform points) and a diamond test for
+** each point the sectors do not rule out. */
+static int skel_diamond_point(const skel_grid *g, const geom_point *p, const uint32_t *orig,
+                              uint32_t a, skel_search *z, skel_vec *out) {
   z->ns = 0;
   for (int t = 0; t < SKEL_SECT; t++)
     z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0;
@@ -404,10 +406,12 @@ static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t 
     if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d))
       z->seen[m++] = z->seen[i];
   qsort(z->seen, m, sizeof *z->seen, skel_cmp_seen);
-  for (size_t i = 0; i < m; i++)
-    if (skel_edge_ok(g, a, p[a], z->seen[i].q, z->seen[i].pt, 1) &&
-        skel_vec_push(out, a, z->seen[i].q) != 0)
-      return -1;
+  for (size_t i = 0; i < m; i++) {
+    uint32_t b = z->seen[i].q;
+    int ok = orig == NULL || orig[a] < orig[b] ? skel_edge_ok(g, a, p[a], b, p[b], 1)
+                                               : skel_edge_ok(g, b, p[b], a, p[a], 1);
+    if (ok && skel_vec_push(out, a, b) != 0) return -1;
+  }
   return 0;
 }
 
@@ -435,6 +439,8 @@ typedef struct skel {
   uint32_t *hpair;         /* 2 per hull edge (a < b) */
   size_t nh;
   skel_grid g;
+  uint32_t *orig;          /* P_1: the input index of each point (skel_renumber), else NULL */
+  geom_point *q;           /* ... and the points in that order (s->p == q) */
   skel_kind kind;
   const rule *r;
   measure_points_fn mp;
@@ -447,6 +453,7 @@ static void skel_free_all(skel *s) {
   free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
   free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
   skel_grid_free(&s->g);
+  free(s->orig), free(s->q);
 }
 
 /* The adjacency of the sorted edge list: pushing edges in order leaves every list
@@ -486,7 +493,7 @@ static int skel_candidates_block(const skel *s, size_t a0, size_t a1, int diamon
                                  skel_search *z, skel_vec *out) {
   for (size_t a = a0; a < a1; a++) {
     if (diamond) {
-      if (skel_diamond_point(&s->g, s->p, (uint32_t)a, z, out) != 0) return -1;
+      if (skel_diamond_point(&s->g, s->p, s->orig, (uint32_t)a, z, out) != 0) return -1;
       continue;
     }
     for (size_t b = a + 1; b < s->n; b++)
@@ -946,7 +953,30 @@ static int skel_decider(skel *s, const rule *r, char *err, size_t errlen) {
   return 0;
 }
 
-/* The live edges into out, in ascending order, with their states. */
+/* The output's edges in ascending order (a, b): a counting sort by b, then a stable one
+** by a.  O(n + m). */
+static int skel_sort_edges(got_skel *o) {
+  size_t m = o->nedges;
+  uint32_t *e2 = malloc(2 * m * sizeof *e2 + 1), *cnt = malloc((o->n + 1) * sizeof *cnt);
+  unsigned char *s2 = malloc(m + 1);
+  if (!e2 || !cnt || !s2) return free(e2), free(cnt), free(s2), -1;
+  for (int key = 1; key >= 0; key--) {
+    memset(cnt, 0, (o->n + 1) * sizeof *cnt);
+    for (size_t e = 0; e < m; e++) cnt[o->edge[2 * e + key] + 1]++;
+    for (size_t v = 0; v < o->n; v++) cnt[v + 1] += cnt[v];
+    for (size_t e = 0; e < m; e++) {
+      uint32_t k = cnt[o->edge[2 * e + key]]++;
+      e2[2 * k] = o->edge[2 * e], e2[2 * k + 1] = o->edge[2 * e + 1], s2[k] = o->state[e];
+    }
+    uint32_t *te = o->edge;
+    unsigned char *ts = o->state;
+    o->edge = e2, o->state = s2, e2 = te, s2 = ts;
+  }
+  free(e2), free(cnt), free(s2);
+  return 0;
+}
+
+/* The live edges into out, in ascending order of input indices, with their states. */
 static int skel_output(const skel *s, got_skel *out) {
   unsigned char *cert = malloc(s->m + 1);
   size_t k = 0, live = 0;
@@ -957,17 +987,43 @@ static int skel_output(const skel *s, got_skel *out) {
   if (!out->edge || !out->state) return free(cert), -1;
   for (size_t e = 0; e < s->m; e++) {
     if (!s->ealive[e]) continue;
-    out->edge[2 * k] = s->ev[2 * e], out->edge[2 * k + 1] = s->ev[2 * e + 1];
+    uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
+    if (s->orig) a = s->orig[a], b = s->orig[b];
+    out->edge[2 * k] = a < b ? a : b, out->edge[2 * k + 1] = a < b ? b : a;
     out->state[k++] = cert[e] ? GOT_EDGE_CERTAIN : GOT_EDGE_POSSIBLE;
   }
   out->nedges = live;
   free(cert);
+  return s->orig ? skel_sort_edges(out) : 0;
+}
+
+/* P_1: the points renumbered in the grid's cell order (rows of cells), so that the
+** searches, the box scans and the loop read neighbours from nearby memory; s->orig maps
+** back, and the hull's pairs are renumbered.  The grid then built on the renumbered points
+** has the same cells, and holds point k at place k.  O(n).  (The other rules take at most
+** GOT_SKEL_ALL_MAX points and keep the input's numbering: their flip decisions round the
+** measures of triangles whose vertices come in index order.) */
+static int skel_renumber(skel *s) {
+  if (skel_grid_build(&s->g, s->p, s->n) != 0) return -1;
+  s->orig = s->g.pt, s->q = s->g.gp, s->g.pt = NULL, s->g.gp = NULL;
+  skel_grid_free(&s->g);
+  memset(&s->g, 0, sizeof s->g);
+  uint32_t *inv = malloc(s->n * sizeof *inv);
+  if (!inv) return -1;
+  for (size_t k = 0; k < s->n; k++) inv[s->orig[k]] = (uint32_t)k;
+  for (size_t k = 0; k < s->nh; k++) {
+    uint32_t a = inv[s->hpair[2 * k]], b = inv[s->hpair[2 * k + 1]];
+    s->hpair[2 * k] = a < b ? a : b, s->hpair[2 * k + 1] = a < b ? b : a;
+  }
+  free(inv);
+  s->p = s->q;
   return 0;
 }
 
 /* Candidates, triangles and the hull, with the time they took. */
 static int skel_prepare(skel *s) {
-  if (skel_grid_build(&s->g, s->p, s->n) != 0 ||
+  if ((s->kind == SKEL_EXACT_LENGTH && skel_renumber(s) != 0) ||
+      skel_grid_build(&s->g, s->p, s->n) != 0 ||
       skel_candidates(s, s->kind == SKEL_EXACT_LENGTH) != 0)
     return -1;
   if (s->m >= UINT32_MAX / 4) return -1;
