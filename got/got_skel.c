@@ -211,7 +211,8 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
 #define SKEL_SECT 128
 #define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
-typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; } skel_seen;
+/* A point q seen from a: its sector, distance, ring and coordinates. */
+typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; int ring; } skel_seen;
 
 /* The scratch of one search (one per thread), with the directions of the sectors'
 ** boundaries: sector t holds the angles from t w - pi to (t + 1) w - pi, w = 2 pi / 128. */
@@ -220,7 +221,12 @@ typedef struct skel_search {
   size_t ns, cap;
   double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
   unsigned char done[SKEL_SECT];
+  int open[SKEL_SECT], nopen;       /* the sectors not done, ascending */
   double bx[SKEL_SECT], by[SKEL_SECT];
+  uint32_t *stamp, tick;            /* ring places visited (skel_ring_arcs), by tick */
+  size_t stcap;
+  uint32_t *sidx, scap;             /* the seen points by sector (skel_seen_fails) */
+  uint32_t soff[SKEL_SECT + 1];
 } skel_search;
 
 static void skel_search_init(skel_search *z) {
@@ -246,8 +252,8 @@ static int skel_sector(const skel_search *z, double dx, double dy) {
 }
 
 static void skel_far_update(skel_search *z) {
-  for (int t = 0; t < SKEL_SECT; t++) {
-    if (z->done[t]) continue;
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j];
     double l = INFINITY, r = INFINITY;
     for (int k = 2; k <= 6; k++) {
       double x = z->dmin[(t + k) % SKEL_SECT], y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT];
@@ -324,13 +330,17 @@ static int skel_search_done(const skel_grid *g, geom_point a, skel_search *z, in
   if (k - 1 >= g->nx && k - 1 >= g->ny) return 1;
   if (k < 2) return 0;
   double r = (k - 1 - 2 * SKEL_PAD) * g->h;
+  /* a sector reaches at least as far as the nearest side of the box: no need to ask
+  ** skel_reach (four atan2) before r gets there */
+  double side = fmin(fmin(a.x - g->x0, g->x1 - a.x), fmin(a.y - g->y0, g->y1 - a.y));
   int open = 0;
-  for (int t = 0; t < SKEL_SECT; t++) {
-    if (z->done[t]) continue;
-    if (!(z->far[t] <= r) && isnan(z->reach[t])) z->reach[t] = skel_reach(g, a, t);
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j];
+    if (!(z->far[t] <= r) && r >= side && isnan(z->reach[t])) z->reach[t] = skel_reach(g, a, t);
     z->done[t] = z->far[t] <= r || z->reach[t] <= r;
-    open += !z->done[t];
+    if (!z->done[t]) z->open[open++] = t;
   }
+  z->nopen = open;
   return open == 0;
 }
 
@@ -360,24 +370,105 @@ static int skel_seen_push(skel_search *z, skel_seen v) {
   return 0;
 }
 
-/* Adds the points of the live cells of ring k to the search. */
+/* Adds the points of cell (ix, iy) of ring k to the search. */
+static int skel_cell_take(const skel_grid *g, geom_point pa, uint32_t a, size_t c, int k,
+                          skel_search *z) {
+  for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
+    uint32_t q = g->pt[j];
+    if (q == a) continue;
+    double dx = g->gp[j].x - pa.x, dy = g->gp[j].y - pa.y, d = sqrt(dx * dx + dy * dy);
+    int t = skel_sector(z, dx, dy);
+    if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j], k}) != 0) return -1;
+    z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
+  }
+  return 0;
+}
+
+/* Ring k (cells at Chebyshev offset k >= 1 from a's) by places 0 .. 8k - 1, anticlockwise
+** from offset (-k, 0), the direction -pi where sector 0 starts: seen from any point of
+** a's cell the places are in the order of their directions. */
+static int skel_ring_place(int dx, int dy, int k) {
+  if (dx == -k && dy <= 0) return -dy;
+  if (dy == -k) return 2 * k + dx;
+  if (dx == k) return 4 * k + dy;
+  if (dy == k) return 6 * k - dx;
+  return 8 * k - dy;
+}
+
+static void skel_ring_offset(int i, int k, int *dx, int *dy) {
+  if (i <= k) *dx = -k, *dy = -i;
+  else if (i <= 3 * k) *dx = i - 2 * k, *dy = -k;
+  else if (i <= 5 * k) *dx = k, *dy = i - 4 * k;
+  else if (i <= 7 * k) *dx = 6 * k - i, *dy = k;
+  else *dx = -k, *dy = 8 * k - i;
+}
+
+/* The place on ring k of the cell where the ray from a in direction (c, s) crosses the
+** square of half-side k cells around the centre of a's cell ((fx, fy): a's offset from
+** that centre, in cells). */
+static int skel_ray_place(double c, double s, double fx, double fy, int k) {
+  double rx = c > 0 ? (k - fx) / c : c < 0 ? (-k - fx) / c : INFINITY;
+  double ry = s > 0 ? (k - fy) / s : s < 0 ? (-k - fy) / s : INFINITY;
+  double v = rx <= ry ? fy + rx * s : fx + ry * c;
+  int w = (int)floor(fmin(fmax(v + 0.5, -k), k));
+  if (rx <= ry) return skel_ring_place(c > 0 ? k : -k, w, k);
+  return skel_ring_place(w, s > 0 ? k : -k, k);
+}
+
+/* Ring k by the cells that meet the open sectors: for each, the places between its two
+** boundary rays, padded by SKEL_ARC_PAD places, each place once (stamps).  Why the pad
+** suffices: a ray crosses the ring's band (one cell wide) within 1.6 cells of its
+** crossing of the middle square, so within 3 places of that crossing's cell (4 pads it
+** for cells' and sectors' rounding).  Cost: the open sectors times (k w sqrt 2 + 9)
+** places, against 8k for the whole ring (w = 2 pi / 128). */
+#define SKEL_ARC_PAD 4
+static int skel_ring_arcs(const skel_grid *g, geom_point pa, uint32_t a, int cx, int cy, int k,
+                          skel_search *z) {
+  int len = 8 * k;
+  if ((size_t)len > z->stcap) {
+    uint32_t *st = realloc(z->stamp, 2 * (size_t)len * sizeof *st);
+    if (!st) return -1;
+    memset(st, 0, 2 * (size_t)len * sizeof *st);
+    z->stamp = st, z->stcap = 2 * (size_t)len, z->tick = 0;
+  }
+  if (++z->tick == 0) memset(z->stamp, 0, z->stcap * sizeof *z->stamp), z->tick = 1;
+  double fx = (pa.x - g->x0) * g->inv - (cx + 0.5), fy = (pa.y - g->y0) * g->inv - (cy + 0.5);
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j], u = (t + 1) % SKEL_SECT;
+    int i0 = skel_ray_place(z->bx[t], z->by[t], fx, fy, k);
+    int i1 = skel_ray_place(z->bx[u], z->by[u], fx, fy, k);
+    int span = (i1 - i0 + len) % len + 2 * SKEL_ARC_PAD + 1;
+    span = span > len ? len : span;
+    for (int v = 0; v < span; v++) {
+      int i = ((i0 - SKEL_ARC_PAD + v) % len + len) % len, dx, dy;
+      if (z->stamp[i] == z->tick) continue;
+      z->stamp[i] = z->tick;
+      skel_ring_offset(i, k, &dx, &dy);
+      int ix = cx + dx, iy = cy + dy;
+      if (ix < 0 || ix >= g->nx || iy < 0 || iy >= g->ny || skel_cell_dead(g, z, dx, dy)) continue;
+      if (skel_cell_take(g, pa, a, (size_t)iy * (size_t)g->nx + (size_t)ix, k, z) != 0) return -1;
+    }
+  }
+  return 0;
+}
+
+/* Adds the points of the live cells of ring k to the search: by arcs when the open sectors
+** need fewer places than the ring has, else the whole ring. */
 static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
                      skel_search *z) {
   int cx = skel_cellx(g, p[a].x), cy = skel_celly(g, p[a].y);
+  if (k >= 2 && z->nopen * (0.11 * k + 2 * SKEL_ARC_PAD + 2) < 8.0 * k) {
+    if (skel_ring_arcs(g, p[a], a, cx, cy, k, z) != 0) return -1;
+    skel_far_update(z);
+    return 0;
+  }
   for (int iy = cy - k; iy <= cy + k; iy++) {
     if (iy < 0 || iy >= g->ny) continue;
     int step = (iy == cy - k || iy == cy + k || k == 0) ? 1 : 2 * k;
     for (int ix = cx - k; ix <= cx + k; ix += step) {
       if (ix < 0 || ix >= g->nx || skel_cell_dead(g, z, ix - cx, iy - cy)) continue;
-      size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
-      for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
-        uint32_t q = g->pt[j];
-        if (q == a) continue;
-        double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
-        int t = skel_sector(z, dx, dy);
-        if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j]}) != 0) return -1;
-        z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
-      }
+      if (skel_cell_take(g, p[a], a, (size_t)iy * (size_t)g->nx + (size_t)ix, k, z) != 0)
+        return -1;
     }
   }
   skel_far_update(z);
@@ -389,27 +480,83 @@ static int skel_cmp_seen(const void *x, const void *y) {
   return (a > b) - (a < b);
 }
 
+/* The seen points by sector, each sector's in the order seen (ring by ring): sidx[soff[t]
+** .. soff[t + 1]).  A counting sort: O(seen + sectors). */
+static int skel_seen_sectors(skel_search *z) {
+  if (z->ns > z->scap) {
+    uint32_t *v = realloc(z->sidx, 2 * z->ns * sizeof *v);
+    if (!v) return -1;
+    z->sidx = v, z->scap = (uint32_t)(2 * z->ns);
+  }
+  memset(z->soff, 0, sizeof z->soff);
+  for (size_t i = 0; i < z->ns; i++) z->soff[z->seen[i].sect + 1]++;
+  for (int t = 0; t < SKEL_SECT; t++) z->soff[t + 1] += z->soff[t];
+  uint32_t fill[SKEL_SECT];
+  memcpy(fill, z->soff, sizeof fill);
+  for (size_t i = 0; i < z->ns; i++) z->sidx[fill[z->seen[i].sect]++] = (uint32_t)i;
+  return 0;
+}
+
+/* 1 when the points seen around a prove that pair ab (b = z->seen[ib]) fails the diamond
+** test: a point certainly inside each diamond triangle (skel_in_cone, the pair's ends in
+** the order P, Q that skel_edge_ok gets, so this drops only pairs that skel_edge_ok
+** drops).  A triangle's directions from a are within pi/8 (8 sectors) of b's, so only the
+** 19 sectors around b's are read, nearest first; both triangles lie within |ab| /
+** cos(pi/8) < 1.09 |ab| of a, and points of ring k are at least (k - 1) h away, so each
+** sector is read up to ring 1.09 |ab| / h + 2.  Cost: those points, until both sides hold
+** one. */
+static int skel_seen_fails(const skel_search *z, size_t ib, geom_point P, geom_point Q,
+                           double h) {
+  const skel_seen *b = &z->seen[ib];
+  double kmax = 1.09 * b->d / h + 2;
+  int left = 0, right = 0;
+  for (int k = 0; k <= 18; k++) {
+    int t = (b->sect + (k & 1 ? (k + 1) / 2 : SKEL_SECT - k / 2)) % SKEL_SECT;
+    for (uint32_t j = z->soff[t]; j < z->soff[t + 1]; j++) {
+      const skel_seen *q = &z->seen[z->sidx[j]];
+      if (q->ring > kmax) break;
+      if (z->sidx[j] == ib) continue;
+      left |= skel_in_cone(P, Q, q->pt, 1);
+      right |= skel_in_cone(P, Q, q->pt, -1);
+      if (left && right) return 1;
+    }
+  }
+  return 0;
+}
+
 /* The diamond candidates (a, b), b > a, into out, ascending in b.  The test of a pair is
 ** run with its ends in input order (orig: the input index of each point, or NULL), so
-** its rounding, and the candidates, do not depend on the internal numbering.  Cost: the
-** live cells around a (about a hundred points for uniform points) and a diamond test for
-** each point the sectors do not rule out. */
+** its rounding, and the candidates, do not depend on the internal numbering.  The pairs
+** the sectors leave are queued behind the seen points, sorted, tried on the seen points
+** (skel_seen_fails), and the survivors get the full test.  Cost: the live cells around a
+** (about a hundred points for uniform points), and for each pair left the seen points
+** near a until the diamond holds a point on both sides, or the points of its box. */
 static int skel_diamond_point(const skel_grid *g, const geom_point *p, const uint32_t *orig,
                               uint32_t a, skel_search *z, skel_vec *out) {
   z->ns = 0;
   for (int t = 0; t < SKEL_SECT; t++)
-    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0;
+    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0, z->open[t] = t;
+  z->nopen = SKEL_SECT;
   for (int k = 0; !skel_search_done(g, p[a], z, k); k++)
     if (skel_ring(g, p, a, k, z) != 0) return -1;
-  size_t m = 0;
-  for (size_t i = 0; i < z->ns; i++)
-    if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d))
-      z->seen[m++] = z->seen[i];
-  qsort(z->seen, m, sizeof *z->seen, skel_cmp_seen);
+  size_t ns = z->ns;
+  for (size_t i = 0; i < ns; i++)
+    if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d)) {
+      skel_seen v = z->seen[i];
+      v.ring = (int)i;                      /* its place among the seen points */
+      if (skel_seen_push(z, v) != 0) return -1;
+    }
+  size_t m = z->ns - ns;
+  skel_seen *pair = z->seen + ns;
+  qsort(pair, m, sizeof *pair, skel_cmp_seen);
+  z->ns = ns;
+  if (skel_seen_sectors(z) != 0) return -1;
   for (size_t i = 0; i < m; i++) {
-    uint32_t b = z->seen[i].q;
-    int ok = orig == NULL || orig[a] < orig[b] ? skel_edge_ok(g, a, p[a], b, p[b], 1)
-                                               : skel_edge_ok(g, b, p[b], a, p[a], 1);
+    uint32_t b = pair[i].q;
+    int fwd = orig == NULL || orig[a] < orig[b];
+    geom_point P = fwd ? p[a] : p[b], Q = fwd ? p[b] : p[a];
+    if (skel_seen_fails(z, (size_t)pair[i].ring, P, Q, g->h)) continue;
+    int ok = fwd ? skel_edge_ok(g, a, p[a], b, p[b], 1) : skel_edge_ok(g, b, p[b], a, p[a], 1);
     if (ok && skel_vec_push(out, a, b) != 0) return -1;
   }
   return 0;
@@ -523,7 +670,7 @@ static int skel_candidates(skel *s, int diamond) {
         fail |= skel_candidates_block(s, (size_t)b * SKEL_BLOCK,
                                       fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), diamond,
                                       &z, &part[b]) != 0;
-    free(z.seen);
+    free(z.seen), free(z.stamp), free(z.sidx);
   }
   for (size_t b = 0; part && b < nb; b++) total += part[b].n;
   s->ev = fail ? NULL : malloc(2 * total * sizeof *s->ev + 1);
