@@ -198,16 +198,18 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
 
 /* The far-edge argument of the diamond search.  A point q at distance r from a, at an
 ** angle delta in (0, pi/8) anticlockwise from the direction of b, lies strictly inside
-** the left diamond triangle of ab whenever |ab| >= 2 r: its angle at a is delta, and its
-** angle at b has tangent r sin(delta) / (|ab| - r cos(delta)) <= tan(delta) since |ab| -
-** r cos(delta) >= r cos(delta).  The same clockwise for the right triangle.  Directions
-** fall into SKEL_SECT sectors of pi/64 (atan2, whose error of a few ulps is far below
-** the margin of a sector): for b in sector t, sectors t+2 .. t+6 lie strictly within
-** the left cone (psi, psi + pi/8) of every direction psi of sector t, and t-6 .. t-2
-** within the right one.  With dmin[s] the distance of the nearest point seen in sector
-** s, every edge ab of sector t fails the diamond test when |ab| >= far[t] = 2 max(min
-** over the left sectors, min over the right ones), with a relative margin of 1e-9 for
-** the rounding of distances. */
+** the left diamond triangle of ab whenever |ab| > r f(delta), f(delta) = cos(delta) +
+** sin(delta) / tan(pi/8): its angle at a is delta, and its angle at b has tangent
+** r sin(delta) / (|ab| - r cos(delta)) < tan(pi/8).  The same clockwise for the right
+** triangle.  Directions fall into SKEL_SECT sectors of w = pi/64 (skel_sector, whose
+** rounding is far below a sector): for b in sector t, a point of sector t+k, k = 2 .. 6,
+** has delta in ((k - 1) w, (k + 1) w), inside (0, pi/8) with a sector to spare, and f
+** grows on it, so f((k + 1) w) = SKEL_FK[k] bounds it (1.34 for k = 2 to 1.75 for k = 6;
+** the same for t-k on the right).  With dmin[s] the distance of the nearest point seen in
+** sector s, every edge ab of sector t fails the diamond test when |ab| >= far[t] =
+** max(min over k of dmin[t+k] SKEL_FK[k], min over k of dmin[t-k] SKEL_FK[k]), with a
+** relative margin of 1e-6, far above the rounding of distances and f, so that the point
+** is inside by more than skel_in_cone's tolerance and the full test drops the pair too. */
 #define SKEL_SECT 128
 #define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
@@ -222,7 +224,7 @@ typedef struct skel_search {
   double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
   unsigned char done[SKEL_SECT];
   int open[SKEL_SECT], nopen;       /* the sectors not done, ascending */
-  double bx[SKEL_SECT], by[SKEL_SECT];
+  double bx[SKEL_SECT], by[SKEL_SECT], fk[7];   /* fk: the far argument's factors */
   uint32_t *stamp, tick;            /* ring places visited (skel_ring_arcs), by tick */
   size_t stcap;
   uint32_t *sidx, scap;             /* the seen points by sector (skel_seen_fails) */
@@ -233,6 +235,10 @@ static void skel_search_init(skel_search *z) {
   for (int t = 0; t < SKEL_SECT; t++) {
     double th = t * (2 * M_PI / SKEL_SECT) - M_PI;
     z->bx[t] = cos(th), z->by[t] = sin(th);
+  }
+  for (int k = 2; k <= 6; k++) {
+    double d = (k + 1) * (2 * M_PI / SKEL_SECT);
+    z->fk[k] = cos(d) + sin(d) / tan(M_PI / 8);
   }
 }
 
@@ -256,10 +262,11 @@ static void skel_far_update(skel_search *z) {
     int t = z->open[j];
     double l = INFINITY, r = INFINITY;
     for (int k = 2; k <= 6; k++) {
-      double x = z->dmin[(t + k) % SKEL_SECT], y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT];
+      double x = z->dmin[(t + k) % SKEL_SECT] * z->fk[k];
+      double y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT] * z->fk[k];
       l = x < l ? x : l, r = y < r ? y : r;
     }
-    z->far[t] = 2 * (l > r ? l : r) * (1 + 1e-9);
+    z->far[t] = (l > r ? l : r) * (1 + 1e-6);
   }
 }
 
@@ -762,9 +769,9 @@ static int skel_incidence(skel *s) {
   return 0;
 }
 
-/* Every candidate triangle, found in parallel by blocks of points joined in order (the
-** same list for any thread count); then edges, incidence and measures. */
-static int skel_triangles_find(skel *s, skel_vec *ab, skel_vec *c) {
+/* Every candidate triangle into s->tv, found in parallel by blocks of points joined in
+** order (the same list for any thread count), each block freed once copied. */
+static int skel_triangles_find(skel *s) {
   size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK;
   skel_vec *pab = calloc(nb, sizeof *pab), *pc = calloc(nb, sizeof *pc);
   int fail = !pab || !pc;
@@ -780,33 +787,35 @@ static int skel_triangles_find(skel *s, skel_vec *ab, skel_vec *c) {
                                      &pab[b], &pc[b]) != 0;
     free(stamp);
   }
-  for (size_t b = 0; pab && pc && b < nb; b++) {
-    for (size_t k = 0; k < pab[b].n && !fail; k++)
-      fail = skel_vec_push(ab, pab[b].v[2 * k], pab[b].v[2 * k + 1]) != 0 ||
-             skel_vec_push(c, pc[b].v[2 * k], 0) != 0;
+  s->nt = 0;
+  for (size_t b = 0; pab && b < nb; b++) s->nt += pab[b].n;
+  s->tv = fail ? NULL : malloc(3 * s->nt * sizeof *s->tv + 1);
+  for (size_t b = 0, t = 0; pab && pc && b < nb; b++) {
+    for (size_t k = 0; k < pab[b].n && s->tv; k++, t++)
+      s->tv[3 * t] = pab[b].v[2 * k], s->tv[3 * t + 1] = pab[b].v[2 * k + 1],
+      s->tv[3 * t + 2] = pc[b].v[2 * k];
     free(pab[b].v), free(pc[b].v);
   }
   free(pab), free(pc);
-  return fail ? -1 : 0;
+  return s->tv ? 0 : -1;
 }
 
+/* The candidate triangles, their edges (binary searches, in parallel), incidence and
+** measures. */
 static int skel_triangles(skel *s) {
-  skel_vec ab = {0}, c = {0};
-  if (skel_triangles_find(s, &ab, &c) != 0) return free(ab.v), free(c.v), -1;
-  s->nt = ab.n;
-  s->tv = malloc(3 * s->nt * sizeof *s->tv + 1);
+  if (skel_triangles_find(s) != 0) return -1;
   s->te = malloc(3 * s->nt * sizeof *s->te + 1);
   s->talive = malloc(s->nt + 1);
-  if (!s->tv || !s->te || !s->talive) return free(ab.v), free(c.v), -1;
-  for (size_t t = 0; t < s->nt; t++) {
-    uint32_t a = ab.v[2 * t], b = ab.v[2 * t + 1], cc = c.v[2 * t];
-    s->tv[3 * t] = a, s->tv[3 * t + 1] = b, s->tv[3 * t + 2] = cc;
+  if (!s->te || !s->talive) return -1;
+  long long nt = (long long)s->nt;
+#pragma omp parallel for schedule(static) num_threads(s->threads)
+  for (long long t = 0; t < nt; t++) {
+    uint32_t a = s->tv[3 * t], b = s->tv[3 * t + 1], cc = s->tv[3 * t + 2];
     s->te[3 * t] = skel_edge_find(s, a, b);
     s->te[3 * t + 1] = skel_edge_find(s, a, cc);
     s->te[3 * t + 2] = skel_edge_find(s, b, cc);
     s->talive[t] = 1;
   }
-  free(ab.v), free(c.v);
   if (s->kind == SKEL_CERTIFIED) {
     s->bad = malloc(s->nt * sizeof *s->bad + 1);
     if (!s->bad) return -1;
