@@ -692,35 +692,62 @@ static int skel_candidates(skel *s, int diamond) {
 
 /* ---- candidate triangles ------------------------------------------------- */
 
-/* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
-** are candidates, so none lies on them). */
-static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
-  const geom_point *p = s->p;
-  double xa = geom_min3(p[a].x, p[b].x, p[c].x), xb = geom_max3(p[a].x, p[b].x, p[c].x);
-  double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
-  skel_box bx = skel_grid_box(&s->g, xa, xb, ya, yb);
-  for (int iy = bx.iy0; iy <= bx.iy1; iy++)
-    for (int ix = bx.ix0; ix <= bx.ix1; ix++) {
-      size_t cell = (size_t)iy * (size_t)s->g.nx + (size_t)ix;
-      for (uint32_t k = s->g.off[cell]; k < s->g.off[cell + 1]; k++) {
-        uint32_t q = s->g.pt[k];
-        geom_point pq = s->g.gp[k];
-        if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
-          continue;
-        if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
+/* The x-range of the triangle (x[k], y[k]) over the band ya <= y <= yb: its vertices in
+** the band and its sides' crossings of the band's two lines.  A crossing is interpolated
+** between the side's ends (t in [0, 1]), within a few ulps of the coordinates' spread of
+** its exact place, far below the padding SKEL_PAD of the callers. */
+static void skel_band_x(const double *x, const double *y, double ya, double yb, double *lo,
+                        double *hi) {
+  *lo = INFINITY, *hi = -INFINITY;
+  for (int k = 0; k < 3; k++) {
+    double px = x[k], py = y[k], qx = x[(k + 1) % 3], qy = y[(k + 1) % 3];
+    if (py >= ya && py <= yb) *lo = fmin(*lo, px), *hi = fmax(*hi, px);
+    for (int j = 0; j < 2; j++) {
+      double yy = j ? yb : ya;
+      if ((py - yy) * (qy - yy) < 0) {
+        double xx = px + (yy - py) / (qy - py) * (qx - px);
+        *lo = fmin(*lo, xx), *hi = fmax(*hi, xx);
       }
     }
+  }
+}
+
+/* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
+** are candidates, so none lies on them).  Row by row of cells, only the cells of the
+** triangle's x-range over the row's band (padded by SKEL_PAD: a point's cell is exact to
+** that), each point first against the triangle's box.  Cost: the points of those cells. */
+static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
+  const geom_point *p = s->p;
+  const skel_grid *g = &s->g;
+  double xa = geom_min3(p[a].x, p[b].x, p[c].x), xb = geom_max3(p[a].x, p[b].x, p[c].x);
+  double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
+  double x[3] = {p[a].x - g->x0, p[b].x - g->x0, p[c].x - g->x0};
+  double y[3] = {p[a].y - g->y0, p[b].y - g->y0, p[c].y - g->y0}, e = SKEL_PAD * g->h, lo, hi;
+  skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
+  for (int iy = bx.iy0; iy <= bx.iy1; iy++) {
+    skel_band_x(x, y, iy * g->h - e, (iy + 1) * g->h + e, &lo, &hi);
+    if (lo > hi) continue;
+    int ix0 = skel_cell(lo - e, g->inv, g->nx), ix1 = skel_cell(hi + e, g->inv, g->nx);
+    size_t row = (size_t)iy * (size_t)g->nx;
+    for (uint32_t k = g->off[row + (size_t)ix0]; k < g->off[row + (size_t)ix1 + 1]; k++) {
+      uint32_t q = g->pt[k];
+      geom_point pq = g->gp[k];
+      if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
+        continue;
+      if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
+    }
+  }
   return 1;
 }
 
-/* The candidate triangles with smallest vertex a, appended to out (a, b) and third (c):
-** each neighbour c of a neighbour b > a of a, with c > b, that is a neighbour of a too
-** (stamp[c] == a + 1, set here), and empty.  Cost: the neighbours of a's neighbours, an
-** emptiness test (the points of a box) for each triangle. */
-static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out,
-                             skel_vec *third) {
+/* The candidate triangles with smallest vertex a, appended to out as three pairs: (a, b),
+** (c, edge ab), (edge ac, edge bc): each neighbour c of a neighbour b > a of a, with c > b,
+** that is a neighbour of a too (stamp[c] == a + 1, set here with the edge ac in
+** stamp[n + c]), and empty.  Cost: the neighbours of a's neighbours, an emptiness test
+** (the points of a box) for each triangle. */
+static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out) {
   uint32_t lo = s->off[a], hi = s->off[a + 1];
-  for (uint32_t i = lo; i < hi; i++) stamp[s->nbr[i]] = a + 1;
+  for (uint32_t i = lo; i < hi; i++) stamp[s->nbr[i]] = a + 1, stamp[s->n + s->nbr[i]] = s->nbe[i];
   while (lo < hi && s->nbr[lo] < a) lo++;
   for (uint32_t i = lo; i < hi; i++) {
     uint32_t b = s->nbr[i], k = s->off[b + 1];
@@ -730,7 +757,9 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
       if (stamp[c] != a + 1) continue;
       int o = geom_orient(s->p[a], s->p[b], s->p[c]);
       if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
-      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(third, c, 0) != 0) return -1;
+      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(out, c, s->nbe[i]) != 0 ||
+          skel_vec_push(out, stamp[s->n + c], s->nbe[k]) != 0)
+        return -1;
     }
   }
   return 0;
@@ -738,9 +767,9 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
 
 /* The candidate triangles of points [a0, a1), in order. */
 static int skel_triangles_block(const skel *s, size_t a0, size_t a1, uint32_t *stamp,
-                                skel_vec *ab, skel_vec *c) {
+                                skel_vec *out) {
   for (size_t a = a0; a < a1; a++)
-    if (skel_triangles_at(s, (uint32_t)a, stamp, ab, c) != 0) return -1;
+    if (skel_triangles_at(s, (uint32_t)a, stamp, out) != 0) return -1;
   return 0;
 }
 
@@ -769,53 +798,47 @@ static int skel_incidence(skel *s) {
   return 0;
 }
 
-/* Every candidate triangle into s->tv, found in parallel by blocks of points joined in
-** order (the same list for any thread count), each block freed once copied. */
+/* Every candidate triangle into s->tv and its edges into s->te, found in parallel by
+** blocks of points joined in order (the same list for any thread count), each block freed
+** once copied. */
 static int skel_triangles_find(skel *s) {
   size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK;
-  skel_vec *pab = calloc(nb, sizeof *pab), *pc = calloc(nb, sizeof *pc);
-  int fail = !pab || !pc;
+  skel_vec *part = calloc(nb, sizeof *part);
+  int fail = !part;
 #pragma omp parallel num_threads(s->threads) reduction(| : fail)
   {
-    uint32_t *stamp = calloc(s->n, sizeof *stamp);
+    uint32_t *stamp = calloc(2 * s->n, sizeof *stamp);
     fail |= stamp == NULL;
 #pragma omp for schedule(dynamic, 1)
     for (long long b = 0; b < (long long)nb; b++)
       if (!fail)
         fail |= skel_triangles_block(s, (size_t)b * SKEL_BLOCK,
                                      fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), stamp,
-                                     &pab[b], &pc[b]) != 0;
+                                     &part[b]) != 0;
     free(stamp);
   }
   s->nt = 0;
-  for (size_t b = 0; pab && b < nb; b++) s->nt += pab[b].n;
+  for (size_t b = 0; part && b < nb; b++) s->nt += part[b].n / 3;
   s->tv = fail ? NULL : malloc(3 * s->nt * sizeof *s->tv + 1);
-  for (size_t b = 0, t = 0; pab && pc && b < nb; b++) {
-    for (size_t k = 0; k < pab[b].n && s->tv; k++, t++)
-      s->tv[3 * t] = pab[b].v[2 * k], s->tv[3 * t + 1] = pab[b].v[2 * k + 1],
-      s->tv[3 * t + 2] = pc[b].v[2 * k];
-    free(pab[b].v), free(pc[b].v);
+  s->te = fail ? NULL : malloc(3 * s->nt * sizeof *s->te + 1);
+  for (size_t b = 0, t = 0; part && b < nb; b++) {
+    for (size_t k = 0; k < part[b].n && s->tv && s->te; k += 3, t++) {
+      const uint32_t *v = part[b].v + 2 * k;
+      s->tv[3 * t] = v[0], s->tv[3 * t + 1] = v[1], s->tv[3 * t + 2] = v[2];
+      s->te[3 * t] = v[3], s->te[3 * t + 1] = v[4], s->te[3 * t + 2] = v[5];
+    }
+    free(part[b].v);
   }
-  free(pab), free(pc);
-  return s->tv ? 0 : -1;
+  free(part);
+  return s->tv && s->te ? 0 : -1;
 }
 
-/* The candidate triangles, their edges (binary searches, in parallel), incidence and
-** measures. */
+/* The candidate triangles, their edges, incidence and measures. */
 static int skel_triangles(skel *s) {
   if (skel_triangles_find(s) != 0) return -1;
-  s->te = malloc(3 * s->nt * sizeof *s->te + 1);
   s->talive = malloc(s->nt + 1);
-  if (!s->te || !s->talive) return -1;
-  long long nt = (long long)s->nt;
-#pragma omp parallel for schedule(static) num_threads(s->threads)
-  for (long long t = 0; t < nt; t++) {
-    uint32_t a = s->tv[3 * t], b = s->tv[3 * t + 1], cc = s->tv[3 * t + 2];
-    s->te[3 * t] = skel_edge_find(s, a, b);
-    s->te[3 * t + 1] = skel_edge_find(s, a, cc);
-    s->te[3 * t + 2] = skel_edge_find(s, b, cc);
-    s->talive[t] = 1;
-  }
+  if (!s->talive) return -1;
+  memset(s->talive, 1, s->nt);
   if (s->kind == SKEL_CERTIFIED) {
     s->bad = malloc(s->nt * sizeof *s->bad + 1);
     if (!s->bad) return -1;
