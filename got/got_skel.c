@@ -3,8 +3,11 @@
 ** "Point sets: the skeleton"): candidate edges, the LMT-skeleton loop, the certain edges.
 **
 ** 1. Candidates.  P_1 (the minimum-weight triangulation): the diamond test on a uniform grid
-**    (skel_diamond_point); every other sum rule: every segment through no third point, for
-**    n <= GOT_SKEL_ALL_MAX (no exclusion is proven for them).
+**    (skel_diamond_point: a ring search bounded by sectors, far rings read by the open
+**    sectors' arcs, pairs tried on the points seen before the full test); every other sum
+**    rule: every segment through no third point, for n <= GOT_SKEL_ALL_MAX (no exclusion
+**    is proven for them).  P_1 works on the points renumbered in the grid's cell order
+**    (skel_renumber), mapped back at the output.
 ** 2. Candidate triangles: every empty triangle whose three edges are candidates, found from
 **    pairs of neighbours in the candidate graph, emptiness tested exactly on the grid.
 ** 3. LMT loop, in rounds: an edge that is not a hull edge stays only while some pair of live
