@@ -4,15 +4,19 @@
 ** random points in the unit square, then another sum rule at the largest n its
 ** skeleton takes; wall and CPU seconds (median of REPS runs where given), seconds
 ** per stage, candidate and certain edges (and their share of the 3n - h - 3 edges
-** of a triangulation), faces left and the largest, the certified verdict.  The load
-** average is printed: on a shared machine wall times grow with it.
+** of a triangulation), faces left and the largest, the certified verdict, and the
+** process's peak resident memory so far (getrusage: rows run in the order given, so a
+** row's figure is its own peak when sizes ascend).  The load average is printed: on a
+** shared machine wall times grow with it.
 ** Usage: bench_got_points [--reps R] [--threads T] [--rule RULE N] [N ...]
 **        (default: 10000 100000 1000000 for P_1, medians of 3 below 10^6, 1 at 10^6;
 **        then a_2 at 200 points).
 */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include "benchutil.h"
 #include "got.h"
 
@@ -55,10 +59,13 @@ static void bench_row(const rule *r, size_t n, int reps, int threads) {
   }
   const got_result *g = &res[m];
   size_t tedges = n - 1 + g->ntri;
-  printf("%-8s %9zu %4d %9.2f %9.2f %8.2f %8.2f %7.3f %7.3f %10zu %6.2f%% %8zu %7zu %s\n",
+  struct rusage ru;
+  double peak = getrusage(RUSAGE_SELF, &ru) == 0 ? (double)ru.ru_maxrss / 1024 : NAN;
+  printf("%-8s %9zu %4d %9.2f %9.2f %8.2f %8.2f %7.3f %7.3f %10zu %6.2f%% %8zu %7zu %7.0f "
+         "%s\n",
          rule_name(r), n, reps, t[m].wall, t[m].cpu, g->seconds_candidates, g->seconds_lmt,
          g->seconds_faces, g->seconds_solve, g->candidates,
-         100.0 * (double)g->certain / (double)tedges, g->faces_left, g->largest_face,
+         100.0 * (double)g->certain / (double)tedges, g->faces_left, g->largest_face, peak,
          g->cert_unique ? "unique" : "tie not excluded");
   fflush(stdout);             /* a row at a time: the large sizes take minutes */
   for (int k = 0; k < reps; k++) got_result_free(&res[k]);
@@ -83,9 +90,9 @@ int main(int argc, char **argv) {
   if (reps < 0 || reps > 5) reps = 5;
   printf("# bench_got_points: uniform points (seed 1), skeleton lmt, threads %d (0: all); "
          "load %.2f\n", threads, bench_load());
-  printf("%-8s %9s %4s %9s %9s %8s %8s %7s %7s %10s %7s %8s %7s %s\n", "rule", "n", "reps",
-         "wall s", "cpu s", "cand s", "lmt s", "faces s", "solve s", "candidates", "certain",
-         "faces>3", "largest", "certified");
+  printf("%-8s %9s %4s %9s %9s %8s %8s %7s %7s %10s %7s %8s %7s %7s %s\n", "rule", "n",
+         "reps", "wall s", "cpu s", "cand s", "lmt s", "faces s", "solve s", "candidates",
+         "certain", "faces>3", "largest", "peak MB", "certified");
   rule p1 = bench_rule("P_1"), ro = bench_rule(other);
   for (int i = 0; i < nn; i++)
     bench_row(&p1, ns[i], reps ? reps : ns[i] < 1000000 ? 3 : 1, threads);

@@ -64,11 +64,12 @@ static void bench_one(const char *rname, size_t n) {
   size_t cert = 0;
   for (size_t e = 0; e < s.nedges; e++) cert += s.state[e] == GOT_EDGE_CERTAIN;
   bench_time m = bench_median_time(t, BENCH_RUNS);
-  printf("%-9s %8zu %7.2f n %6.3f n %6.1f%% %3zu  %7.3f %7.3f %7.3f %7.3f  %7.3f  %s\n", rname,
+  printf("%-9s %8zu %7.2f n %6.3f n %6.1f%% %3zu  %7.3f %7.3f %7.3f %7.3f  %7.3f  %s %016llx\n",
+         rname,
          n, (double)s.candidates / (double)n, (double)s.nedges / (double)n,
          100.0 * (double)cert / (double)s.nedges, s.rounds, bench_median(cand, BENCH_RUNS),
          bench_median(lmt, BENCH_RUNS), m.wall, m.cpu, t1.wall,
-         bench_hash(&s1) == h2 ? "same" : "DIFFERENT");
+         bench_hash(&s1) == h2 ? "same" : "DIFFERENT", (unsigned long long)h2);
   got_skel_free(&s);
   got_skel_free(&s1);
   free(p);
@@ -83,7 +84,7 @@ int main(int argc, char **argv) {
   printf("# bench_got_skel: uniform points in the unit square, median of %d runs on 2 threads;"
          " load average %.2f\n", BENCH_RUNS, bench_load());
   printf("# rule          n  candid.    kept  certain rnd  cand(s)  lmt(s)  wall(s)  cpu(s)"
-         "  1 thr(s)  1 vs 2 threads\n");
+         "  1 thr(s)  1 vs 2 threads, hash\n");
   for (size_t k = 0; k < ns; k++) bench_one("P_1", sizes[k]);
   bench_one("-alpha_1", 200);
   return 0;

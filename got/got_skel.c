@@ -3,8 +3,11 @@
 ** "Point sets: the skeleton"): candidate edges, the LMT-skeleton loop, the certain edges.
 **
 ** 1. Candidates.  P_1 (the minimum-weight triangulation): the diamond test on a uniform grid
-**    (skel_diamond_point); every other sum rule: every segment through no third point, for
-**    n <= GOT_SKEL_ALL_MAX (no exclusion is proven for them).
+**    (skel_diamond_point: a ring search bounded by sectors, far rings read by the open
+**    sectors' arcs, pairs tried on the points seen before the full test); every other sum
+**    rule: every segment through no third point, for n <= GOT_SKEL_ALL_MAX (no exclusion
+**    is proven for them).  P_1 works on the points renumbered in the grid's cell order
+**    (skel_renumber), mapped back at the output.
 ** 2. Candidate triangles: every empty triangle whose three edges are candidates, found from
 **    pairs of neighbours in the candidate graph, emptiness tested exactly on the grid.
 ** 3. LMT loop, in rounds: an edge that is not a hull edge stays only while some pair of live
@@ -198,20 +201,23 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
 
 /* The far-edge argument of the diamond search.  A point q at distance r from a, at an
 ** angle delta in (0, pi/8) anticlockwise from the direction of b, lies strictly inside
-** the left diamond triangle of ab whenever |ab| >= 2 r: its angle at a is delta, and its
-** angle at b has tangent r sin(delta) / (|ab| - r cos(delta)) <= tan(delta) since |ab| -
-** r cos(delta) >= r cos(delta).  The same clockwise for the right triangle.  Directions
-** fall into SKEL_SECT sectors of pi/64 (atan2, whose error of a few ulps is far below
-** the margin of a sector): for b in sector t, sectors t+2 .. t+6 lie strictly within
-** the left cone (psi, psi + pi/8) of every direction psi of sector t, and t-6 .. t-2
-** within the right one.  With dmin[s] the distance of the nearest point seen in sector
-** s, every edge ab of sector t fails the diamond test when |ab| >= far[t] = 2 max(min
-** over the left sectors, min over the right ones), with a relative margin of 1e-9 for
-** the rounding of distances. */
+** the left diamond triangle of ab whenever |ab| > r f(delta), f(delta) = cos(delta) +
+** sin(delta) / tan(pi/8): its angle at a is delta, and its angle at b has tangent
+** r sin(delta) / (|ab| - r cos(delta)) < tan(pi/8).  The same clockwise for the right
+** triangle.  Directions fall into SKEL_SECT sectors of w = pi/64 (skel_sector, whose
+** rounding is far below a sector): for b in sector t, a point of sector t+k, k = 2 .. 6,
+** has delta in ((k - 1) w, (k + 1) w), inside (0, pi/8) with a sector to spare, and f
+** grows on it, so f((k + 1) w) = SKEL_FK[k] bounds it (1.34 for k = 2 to 1.75 for k = 6;
+** the same for t-k on the right).  With dmin[s] the distance of the nearest point seen in
+** sector s, every edge ab of sector t fails the diamond test when |ab| >= far[t] =
+** max(min over k of dmin[t+k] SKEL_FK[k], min over k of dmin[t-k] SKEL_FK[k]), with a
+** relative margin of 1e-6, far above the rounding of distances and f, so that the point
+** is inside by more than skel_in_cone's tolerance and the full test drops the pair too. */
 #define SKEL_SECT 128
 #define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
-typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; } skel_seen;
+/* A point q seen from a: its sector, distance, ring and coordinates. */
+typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; int ring; } skel_seen;
 
 /* The scratch of one search (one per thread), with the directions of the sectors'
 ** boundaries: sector t holds the angles from t w - pi to (t + 1) w - pi, w = 2 pi / 128. */
@@ -220,13 +226,22 @@ typedef struct skel_search {
   size_t ns, cap;
   double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
   unsigned char done[SKEL_SECT];
-  double bx[SKEL_SECT], by[SKEL_SECT];
+  int open[SKEL_SECT], nopen;       /* the sectors not done, ascending */
+  double bx[SKEL_SECT], by[SKEL_SECT], fk[7];   /* fk: the far argument's factors */
+  uint32_t *stamp, tick;            /* ring places visited (skel_ring_arcs), by tick */
+  size_t stcap;
+  uint32_t *sidx, scap;             /* the seen points by sector (skel_seen_fails) */
+  uint32_t soff[SKEL_SECT + 1];
 } skel_search;
 
 static void skel_search_init(skel_search *z) {
   for (int t = 0; t < SKEL_SECT; t++) {
     double th = t * (2 * M_PI / SKEL_SECT) - M_PI;
     z->bx[t] = cos(th), z->by[t] = sin(th);
+  }
+  for (int k = 2; k <= 6; k++) {
+    double d = (k + 1) * (2 * M_PI / SKEL_SECT);
+    z->fk[k] = cos(d) + sin(d) / tan(M_PI / 8);
   }
 }
 
@@ -246,14 +261,15 @@ static int skel_sector(const skel_search *z, double dx, double dy) {
 }
 
 static void skel_far_update(skel_search *z) {
-  for (int t = 0; t < SKEL_SECT; t++) {
-    if (z->done[t]) continue;
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j];
     double l = INFINITY, r = INFINITY;
     for (int k = 2; k <= 6; k++) {
-      double x = z->dmin[(t + k) % SKEL_SECT], y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT];
+      double x = z->dmin[(t + k) % SKEL_SECT] * z->fk[k];
+      double y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT] * z->fk[k];
       l = x < l ? x : l, r = y < r ? y : r;
     }
-    z->far[t] = 2 * (l > r ? l : r) * (1 + 1e-9);
+    z->far[t] = (l > r ? l : r) * (1 + 1e-6);
   }
 }
 
@@ -324,13 +340,17 @@ static int skel_search_done(const skel_grid *g, geom_point a, skel_search *z, in
   if (k - 1 >= g->nx && k - 1 >= g->ny) return 1;
   if (k < 2) return 0;
   double r = (k - 1 - 2 * SKEL_PAD) * g->h;
+  /* a sector reaches at least as far as the nearest side of the box: no need to ask
+  ** skel_reach (four atan2) before r gets there */
+  double side = fmin(fmin(a.x - g->x0, g->x1 - a.x), fmin(a.y - g->y0, g->y1 - a.y));
   int open = 0;
-  for (int t = 0; t < SKEL_SECT; t++) {
-    if (z->done[t]) continue;
-    if (!(z->far[t] <= r) && isnan(z->reach[t])) z->reach[t] = skel_reach(g, a, t);
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j];
+    if (!(z->far[t] <= r) && r >= side && isnan(z->reach[t])) z->reach[t] = skel_reach(g, a, t);
     z->done[t] = z->far[t] <= r || z->reach[t] <= r;
-    open += !z->done[t];
+    if (!z->done[t]) z->open[open++] = t;
   }
+  z->nopen = open;
   return open == 0;
 }
 
@@ -360,24 +380,105 @@ static int skel_seen_push(skel_search *z, skel_seen v) {
   return 0;
 }
 
-/* Adds the points of the live cells of ring k to the search. */
+/* Adds the points of cell (ix, iy) of ring k to the search. */
+static int skel_cell_take(const skel_grid *g, geom_point pa, uint32_t a, size_t c, int k,
+                          skel_search *z) {
+  for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
+    uint32_t q = g->pt[j];
+    if (q == a) continue;
+    double dx = g->gp[j].x - pa.x, dy = g->gp[j].y - pa.y, d = sqrt(dx * dx + dy * dy);
+    int t = skel_sector(z, dx, dy);
+    if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j], k}) != 0) return -1;
+    z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
+  }
+  return 0;
+}
+
+/* Ring k (cells at Chebyshev offset k >= 1 from a's) by places 0 .. 8k - 1, anticlockwise
+** from offset (-k, 0), the direction -pi where sector 0 starts: seen from any point of
+** a's cell the places are in the order of their directions. */
+static int skel_ring_place(int dx, int dy, int k) {
+  if (dx == -k && dy <= 0) return -dy;
+  if (dy == -k) return 2 * k + dx;
+  if (dx == k) return 4 * k + dy;
+  if (dy == k) return 6 * k - dx;
+  return 8 * k - dy;
+}
+
+static void skel_ring_offset(int i, int k, int *dx, int *dy) {
+  if (i <= k) *dx = -k, *dy = -i;
+  else if (i <= 3 * k) *dx = i - 2 * k, *dy = -k;
+  else if (i <= 5 * k) *dx = k, *dy = i - 4 * k;
+  else if (i <= 7 * k) *dx = 6 * k - i, *dy = k;
+  else *dx = -k, *dy = 8 * k - i;
+}
+
+/* The place on ring k of the cell where the ray from a in direction (c, s) crosses the
+** square of half-side k cells around the centre of a's cell ((fx, fy): a's offset from
+** that centre, in cells). */
+static int skel_ray_place(double c, double s, double fx, double fy, int k) {
+  double rx = c > 0 ? (k - fx) / c : c < 0 ? (-k - fx) / c : INFINITY;
+  double ry = s > 0 ? (k - fy) / s : s < 0 ? (-k - fy) / s : INFINITY;
+  double v = rx <= ry ? fy + rx * s : fx + ry * c;
+  int w = (int)floor(fmin(fmax(v + 0.5, -k), k));
+  if (rx <= ry) return skel_ring_place(c > 0 ? k : -k, w, k);
+  return skel_ring_place(w, s > 0 ? k : -k, k);
+}
+
+/* Ring k by the cells that meet the open sectors: for each, the places between its two
+** boundary rays, padded by SKEL_ARC_PAD places, each place once (stamps).  Why the pad
+** suffices: a ray crosses the ring's band (one cell wide) within 1.6 cells of its
+** crossing of the middle square, so within 3 places of that crossing's cell (4 pads it
+** for cells' and sectors' rounding).  Cost: the open sectors times (k w sqrt 2 + 9)
+** places, against 8k for the whole ring (w = 2 pi / 128). */
+#define SKEL_ARC_PAD 4
+static int skel_ring_arcs(const skel_grid *g, geom_point pa, uint32_t a, int cx, int cy, int k,
+                          skel_search *z) {
+  int len = 8 * k;
+  if ((size_t)len > z->stcap) {
+    uint32_t *st = realloc(z->stamp, 2 * (size_t)len * sizeof *st);
+    if (!st) return -1;
+    memset(st, 0, 2 * (size_t)len * sizeof *st);
+    z->stamp = st, z->stcap = 2 * (size_t)len, z->tick = 0;
+  }
+  if (++z->tick == 0) memset(z->stamp, 0, z->stcap * sizeof *z->stamp), z->tick = 1;
+  double fx = (pa.x - g->x0) * g->inv - (cx + 0.5), fy = (pa.y - g->y0) * g->inv - (cy + 0.5);
+  for (int j = 0; j < z->nopen; j++) {
+    int t = z->open[j], u = (t + 1) % SKEL_SECT;
+    int i0 = skel_ray_place(z->bx[t], z->by[t], fx, fy, k);
+    int i1 = skel_ray_place(z->bx[u], z->by[u], fx, fy, k);
+    int span = (i1 - i0 + len) % len + 2 * SKEL_ARC_PAD + 1;
+    span = span > len ? len : span;
+    for (int v = 0; v < span; v++) {
+      int i = ((i0 - SKEL_ARC_PAD + v) % len + len) % len, dx, dy;
+      if (z->stamp[i] == z->tick) continue;
+      z->stamp[i] = z->tick;
+      skel_ring_offset(i, k, &dx, &dy);
+      int ix = cx + dx, iy = cy + dy;
+      if (ix < 0 || ix >= g->nx || iy < 0 || iy >= g->ny || skel_cell_dead(g, z, dx, dy)) continue;
+      if (skel_cell_take(g, pa, a, (size_t)iy * (size_t)g->nx + (size_t)ix, k, z) != 0) return -1;
+    }
+  }
+  return 0;
+}
+
+/* Adds the points of the live cells of ring k to the search: by arcs when the open sectors
+** need fewer places than the ring has, else the whole ring. */
 static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
                      skel_search *z) {
   int cx = skel_cellx(g, p[a].x), cy = skel_celly(g, p[a].y);
+  if (k >= 2 && z->nopen * (0.11 * k + 2 * SKEL_ARC_PAD + 2) < 8.0 * k) {
+    if (skel_ring_arcs(g, p[a], a, cx, cy, k, z) != 0) return -1;
+    skel_far_update(z);
+    return 0;
+  }
   for (int iy = cy - k; iy <= cy + k; iy++) {
     if (iy < 0 || iy >= g->ny) continue;
     int step = (iy == cy - k || iy == cy + k || k == 0) ? 1 : 2 * k;
     for (int ix = cx - k; ix <= cx + k; ix += step) {
       if (ix < 0 || ix >= g->nx || skel_cell_dead(g, z, ix - cx, iy - cy)) continue;
-      size_t c = (size_t)iy * (size_t)g->nx + (size_t)ix;
-      for (uint32_t j = g->off[c]; j < g->off[c + 1]; j++) {
-        uint32_t q = g->pt[j];
-        if (q == a) continue;
-        double dx = g->gp[j].x - p[a].x, dy = g->gp[j].y - p[a].y, d = sqrt(dx * dx + dy * dy);
-        int t = skel_sector(z, dx, dy);
-        if (skel_seen_push(z, (skel_seen){q, t, d, g->gp[j]}) != 0) return -1;
-        z->dmin[t] = d < z->dmin[t] ? d : z->dmin[t];
-      }
+      if (skel_cell_take(g, p[a], a, (size_t)iy * (size_t)g->nx + (size_t)ix, k, z) != 0)
+        return -1;
     }
   }
   skel_far_update(z);
@@ -389,25 +490,85 @@ static int skel_cmp_seen(const void *x, const void *y) {
   return (a > b) - (a < b);
 }
 
-/* The diamond candidates (a, b), b > a, into out, ascending in b.  Cost: the live cells
-** around a (about a hundred points for uniform points) and a diamond test for each point
-** the sectors do not rule out. */
-static int skel_diamond_point(const skel_grid *g, const geom_point *p, uint32_t a,
-                              skel_search *z, skel_vec *out) {
+/* The seen points by sector, each sector's in the order seen (ring by ring): sidx[soff[t]
+** .. soff[t + 1]).  A counting sort: O(seen + sectors). */
+static int skel_seen_sectors(skel_search *z) {
+  if (z->ns > z->scap) {
+    uint32_t *v = realloc(z->sidx, 2 * z->ns * sizeof *v);
+    if (!v) return -1;
+    z->sidx = v, z->scap = (uint32_t)(2 * z->ns);
+  }
+  memset(z->soff, 0, sizeof z->soff);
+  for (size_t i = 0; i < z->ns; i++) z->soff[z->seen[i].sect + 1]++;
+  for (int t = 0; t < SKEL_SECT; t++) z->soff[t + 1] += z->soff[t];
+  uint32_t fill[SKEL_SECT];
+  memcpy(fill, z->soff, sizeof fill);
+  for (size_t i = 0; i < z->ns; i++) z->sidx[fill[z->seen[i].sect]++] = (uint32_t)i;
+  return 0;
+}
+
+/* 1 when the points seen around a prove that pair ab (b = z->seen[ib]) fails the diamond
+** test: a point certainly inside each diamond triangle (skel_in_cone, the pair's ends in
+** the order P, Q that skel_edge_ok gets, so this drops only pairs that skel_edge_ok
+** drops).  A triangle's directions from a are within pi/8 (8 sectors) of b's, so only the
+** 19 sectors around b's are read, nearest first; both triangles lie within |ab| /
+** cos(pi/8) < 1.09 |ab| of a, and points of ring k are at least (k - 1) h away, so each
+** sector is read up to ring 1.09 |ab| / h + 2.  Cost: those points, until both sides hold
+** one. */
+static int skel_seen_fails(const skel_search *z, size_t ib, geom_point P, geom_point Q,
+                           double h) {
+  const skel_seen *b = &z->seen[ib];
+  double kmax = 1.09 * b->d / h + 2;
+  int left = 0, right = 0;
+  for (int k = 0; k <= 18; k++) {
+    int t = (b->sect + (k & 1 ? (k + 1) / 2 : SKEL_SECT - k / 2)) % SKEL_SECT;
+    for (uint32_t j = z->soff[t]; j < z->soff[t + 1]; j++) {
+      const skel_seen *q = &z->seen[z->sidx[j]];
+      if (q->ring > kmax) break;
+      if (z->sidx[j] == ib) continue;
+      left |= skel_in_cone(P, Q, q->pt, 1);
+      right |= skel_in_cone(P, Q, q->pt, -1);
+      if (left && right) return 1;
+    }
+  }
+  return 0;
+}
+
+/* The diamond candidates (a, b), b > a, into out, ascending in b.  The test of a pair is
+** run with its ends in input order (orig: the input index of each point, or NULL), so
+** its rounding, and the candidates, do not depend on the internal numbering.  The pairs
+** the sectors leave are queued behind the seen points, sorted, tried on the seen points
+** (skel_seen_fails), and the survivors get the full test.  Cost: the live cells around a
+** (about a hundred points for uniform points), and for each pair left the seen points
+** near a until the diamond holds a point on both sides, or the points of its box. */
+static int skel_diamond_point(const skel_grid *g, const geom_point *p, const uint32_t *orig,
+                              uint32_t a, skel_search *z, skel_vec *out) {
   z->ns = 0;
   for (int t = 0; t < SKEL_SECT; t++)
-    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0;
+    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0, z->open[t] = t;
+  z->nopen = SKEL_SECT;
   for (int k = 0; !skel_search_done(g, p[a], z, k); k++)
     if (skel_ring(g, p, a, k, z) != 0) return -1;
-  size_t m = 0;
-  for (size_t i = 0; i < z->ns; i++)
-    if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d))
-      z->seen[m++] = z->seen[i];
-  qsort(z->seen, m, sizeof *z->seen, skel_cmp_seen);
-  for (size_t i = 0; i < m; i++)
-    if (skel_edge_ok(g, a, p[a], z->seen[i].q, z->seen[i].pt, 1) &&
-        skel_vec_push(out, a, z->seen[i].q) != 0)
-      return -1;
+  size_t ns = z->ns;
+  for (size_t i = 0; i < ns; i++)
+    if (z->seen[i].q > a && !(z->far[z->seen[i].sect] <= z->seen[i].d)) {
+      skel_seen v = z->seen[i];
+      v.ring = (int)i;                      /* its place among the seen points */
+      if (skel_seen_push(z, v) != 0) return -1;
+    }
+  size_t m = z->ns - ns;
+  skel_seen *pair = z->seen + ns;
+  qsort(pair, m, sizeof *pair, skel_cmp_seen);
+  z->ns = ns;
+  if (skel_seen_sectors(z) != 0) return -1;
+  for (size_t i = 0; i < m; i++) {
+    uint32_t b = pair[i].q;
+    int fwd = orig == NULL || orig[a] < orig[b];
+    geom_point P = fwd ? p[a] : p[b], Q = fwd ? p[b] : p[a];
+    if (skel_seen_fails(z, (size_t)pair[i].ring, P, Q, g->h)) continue;
+    int ok = fwd ? skel_edge_ok(g, a, p[a], b, p[b], 1) : skel_edge_ok(g, b, p[b], a, p[a], 1);
+    if (ok && skel_vec_push(out, a, b) != 0) return -1;
+  }
   return 0;
 }
 
@@ -435,6 +596,8 @@ typedef struct skel {
   uint32_t *hpair;         /* 2 per hull edge (a < b) */
   size_t nh;
   skel_grid g;
+  uint32_t *orig;          /* P_1: the input index of each point (skel_renumber), else NULL */
+  geom_point *q;           /* ... and the points in that order (s->p == q) */
   skel_kind kind;
   const rule *r;
   measure_points_fn mp;
@@ -447,6 +610,7 @@ static void skel_free_all(skel *s) {
   free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
   free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
   skel_grid_free(&s->g);
+  free(s->orig), free(s->q);
 }
 
 /* The adjacency of the sorted edge list: pushing edges in order leaves every list
@@ -486,7 +650,7 @@ static int skel_candidates_block(const skel *s, size_t a0, size_t a1, int diamon
                                  skel_search *z, skel_vec *out) {
   for (size_t a = a0; a < a1; a++) {
     if (diamond) {
-      if (skel_diamond_point(&s->g, s->p, (uint32_t)a, z, out) != 0) return -1;
+      if (skel_diamond_point(&s->g, s->p, s->orig, (uint32_t)a, z, out) != 0) return -1;
       continue;
     }
     for (size_t b = a + 1; b < s->n; b++)
@@ -516,7 +680,7 @@ static int skel_candidates(skel *s, int diamond) {
         fail |= skel_candidates_block(s, (size_t)b * SKEL_BLOCK,
                                       fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), diamond,
                                       &z, &part[b]) != 0;
-    free(z.seen);
+    free(z.seen), free(z.stamp), free(z.sidx);
   }
   for (size_t b = 0; part && b < nb; b++) total += part[b].n;
   s->ev = fail ? NULL : malloc(2 * total * sizeof *s->ev + 1);
@@ -531,35 +695,62 @@ static int skel_candidates(skel *s, int diamond) {
 
 /* ---- candidate triangles ------------------------------------------------- */
 
-/* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
-** are candidates, so none lies on them). */
-static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
-  const geom_point *p = s->p;
-  double xa = geom_min3(p[a].x, p[b].x, p[c].x), xb = geom_max3(p[a].x, p[b].x, p[c].x);
-  double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
-  skel_box bx = skel_grid_box(&s->g, xa, xb, ya, yb);
-  for (int iy = bx.iy0; iy <= bx.iy1; iy++)
-    for (int ix = bx.ix0; ix <= bx.ix1; ix++) {
-      size_t cell = (size_t)iy * (size_t)s->g.nx + (size_t)ix;
-      for (uint32_t k = s->g.off[cell]; k < s->g.off[cell + 1]; k++) {
-        uint32_t q = s->g.pt[k];
-        geom_point pq = s->g.gp[k];
-        if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
-          continue;
-        if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
+/* The x-range of the triangle (x[k], y[k]) over the band ya <= y <= yb: its vertices in
+** the band and its sides' crossings of the band's two lines.  A crossing is interpolated
+** between the side's ends (t in [0, 1]), within a few ulps of the coordinates' spread of
+** its exact place, far below the padding SKEL_PAD of the callers. */
+static void skel_band_x(const double *x, const double *y, double ya, double yb, double *lo,
+                        double *hi) {
+  *lo = INFINITY, *hi = -INFINITY;
+  for (int k = 0; k < 3; k++) {
+    double px = x[k], py = y[k], qx = x[(k + 1) % 3], qy = y[(k + 1) % 3];
+    if (py >= ya && py <= yb) *lo = fmin(*lo, px), *hi = fmax(*hi, px);
+    for (int j = 0; j < 2; j++) {
+      double yy = j ? yb : ya;
+      if ((py - yy) * (qy - yy) < 0) {
+        double xx = px + (yy - py) / (qy - py) * (qx - px);
+        *lo = fmin(*lo, xx), *hi = fmax(*hi, xx);
       }
     }
+  }
+}
+
+/* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
+** are candidates, so none lies on them).  Row by row of cells, only the cells of the
+** triangle's x-range over the row's band (padded by SKEL_PAD: a point's cell is exact to
+** that), each point first against the triangle's box.  Cost: the points of those cells. */
+static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
+  const geom_point *p = s->p;
+  const skel_grid *g = &s->g;
+  double xa = geom_min3(p[a].x, p[b].x, p[c].x), xb = geom_max3(p[a].x, p[b].x, p[c].x);
+  double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
+  double x[3] = {p[a].x - g->x0, p[b].x - g->x0, p[c].x - g->x0};
+  double y[3] = {p[a].y - g->y0, p[b].y - g->y0, p[c].y - g->y0}, e = SKEL_PAD * g->h, lo, hi;
+  skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
+  for (int iy = bx.iy0; iy <= bx.iy1; iy++) {
+    skel_band_x(x, y, iy * g->h - e, (iy + 1) * g->h + e, &lo, &hi);
+    if (lo > hi) continue;
+    int ix0 = skel_cell(lo - e, g->inv, g->nx), ix1 = skel_cell(hi + e, g->inv, g->nx);
+    size_t row = (size_t)iy * (size_t)g->nx;
+    for (uint32_t k = g->off[row + (size_t)ix0]; k < g->off[row + (size_t)ix1 + 1]; k++) {
+      uint32_t q = g->pt[k];
+      geom_point pq = g->gp[k];
+      if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
+        continue;
+      if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
+    }
+  }
   return 1;
 }
 
-/* The candidate triangles with smallest vertex a, appended to out (a, b) and third (c):
-** each neighbour c of a neighbour b > a of a, with c > b, that is a neighbour of a too
-** (stamp[c] == a + 1, set here), and empty.  Cost: the neighbours of a's neighbours, an
-** emptiness test (the points of a box) for each triangle. */
-static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out,
-                             skel_vec *third) {
+/* The candidate triangles with smallest vertex a, appended to out as three pairs: (a, b),
+** (c, edge ab), (edge ac, edge bc): each neighbour c of a neighbour b > a of a, with c > b,
+** that is a neighbour of a too (stamp[c] == a + 1, set here with the edge ac in
+** stamp[n + c]), and empty.  Cost: the neighbours of a's neighbours, an emptiness test
+** (the points of a box) for each triangle. */
+static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out) {
   uint32_t lo = s->off[a], hi = s->off[a + 1];
-  for (uint32_t i = lo; i < hi; i++) stamp[s->nbr[i]] = a + 1;
+  for (uint32_t i = lo; i < hi; i++) stamp[s->nbr[i]] = a + 1, stamp[s->n + s->nbr[i]] = s->nbe[i];
   while (lo < hi && s->nbr[lo] < a) lo++;
   for (uint32_t i = lo; i < hi; i++) {
     uint32_t b = s->nbr[i], k = s->off[b + 1];
@@ -569,7 +760,9 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
       if (stamp[c] != a + 1) continue;
       int o = geom_orient(s->p[a], s->p[b], s->p[c]);
       if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
-      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(third, c, 0) != 0) return -1;
+      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(out, c, s->nbe[i]) != 0 ||
+          skel_vec_push(out, stamp[s->n + c], s->nbe[k]) != 0)
+        return -1;
     }
   }
   return 0;
@@ -577,9 +770,9 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
 
 /* The candidate triangles of points [a0, a1), in order. */
 static int skel_triangles_block(const skel *s, size_t a0, size_t a1, uint32_t *stamp,
-                                skel_vec *ab, skel_vec *c) {
+                                skel_vec *out) {
   for (size_t a = a0; a < a1; a++)
-    if (skel_triangles_at(s, (uint32_t)a, stamp, ab, c) != 0) return -1;
+    if (skel_triangles_at(s, (uint32_t)a, stamp, out) != 0) return -1;
   return 0;
 }
 
@@ -608,51 +801,47 @@ static int skel_incidence(skel *s) {
   return 0;
 }
 
-/* Every candidate triangle, found in parallel by blocks of points joined in order (the
-** same list for any thread count); then edges, incidence and measures. */
-static int skel_triangles_find(skel *s, skel_vec *ab, skel_vec *c) {
+/* Every candidate triangle into s->tv and its edges into s->te, found in parallel by
+** blocks of points joined in order (the same list for any thread count), each block freed
+** once copied. */
+static int skel_triangles_find(skel *s) {
   size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK;
-  skel_vec *pab = calloc(nb, sizeof *pab), *pc = calloc(nb, sizeof *pc);
-  int fail = !pab || !pc;
+  skel_vec *part = calloc(nb, sizeof *part);
+  int fail = !part;
 #pragma omp parallel num_threads(s->threads) reduction(| : fail)
   {
-    uint32_t *stamp = calloc(s->n, sizeof *stamp);
+    uint32_t *stamp = calloc(2 * s->n, sizeof *stamp);
     fail |= stamp == NULL;
 #pragma omp for schedule(dynamic, 1)
     for (long long b = 0; b < (long long)nb; b++)
       if (!fail)
         fail |= skel_triangles_block(s, (size_t)b * SKEL_BLOCK,
                                      fmin((double)s->n, (double)(b + 1) * SKEL_BLOCK), stamp,
-                                     &pab[b], &pc[b]) != 0;
+                                     &part[b]) != 0;
     free(stamp);
   }
-  for (size_t b = 0; pab && pc && b < nb; b++) {
-    for (size_t k = 0; k < pab[b].n && !fail; k++)
-      fail = skel_vec_push(ab, pab[b].v[2 * k], pab[b].v[2 * k + 1]) != 0 ||
-             skel_vec_push(c, pc[b].v[2 * k], 0) != 0;
-    free(pab[b].v), free(pc[b].v);
+  s->nt = 0;
+  for (size_t b = 0; part && b < nb; b++) s->nt += part[b].n / 3;
+  s->tv = fail ? NULL : malloc(3 * s->nt * sizeof *s->tv + 1);
+  s->te = fail ? NULL : malloc(3 * s->nt * sizeof *s->te + 1);
+  for (size_t b = 0, t = 0; part && b < nb; b++) {
+    for (size_t k = 0; k < part[b].n && s->tv && s->te; k += 3, t++) {
+      const uint32_t *v = part[b].v + 2 * k;
+      s->tv[3 * t] = v[0], s->tv[3 * t + 1] = v[1], s->tv[3 * t + 2] = v[2];
+      s->te[3 * t] = v[3], s->te[3 * t + 1] = v[4], s->te[3 * t + 2] = v[5];
+    }
+    free(part[b].v);
   }
-  free(pab), free(pc);
-  return fail ? -1 : 0;
+  free(part);
+  return s->tv && s->te ? 0 : -1;
 }
 
+/* The candidate triangles, their edges, incidence and measures. */
 static int skel_triangles(skel *s) {
-  skel_vec ab = {0}, c = {0};
-  if (skel_triangles_find(s, &ab, &c) != 0) return free(ab.v), free(c.v), -1;
-  s->nt = ab.n;
-  s->tv = malloc(3 * s->nt * sizeof *s->tv + 1);
-  s->te = malloc(3 * s->nt * sizeof *s->te + 1);
+  if (skel_triangles_find(s) != 0) return -1;
   s->talive = malloc(s->nt + 1);
-  if (!s->tv || !s->te || !s->talive) return free(ab.v), free(c.v), -1;
-  for (size_t t = 0; t < s->nt; t++) {
-    uint32_t a = ab.v[2 * t], b = ab.v[2 * t + 1], cc = c.v[2 * t];
-    s->tv[3 * t] = a, s->tv[3 * t + 1] = b, s->tv[3 * t + 2] = cc;
-    s->te[3 * t] = skel_edge_find(s, a, b);
-    s->te[3 * t + 1] = skel_edge_find(s, a, cc);
-    s->te[3 * t + 2] = skel_edge_find(s, b, cc);
-    s->talive[t] = 1;
-  }
-  free(ab.v), free(c.v);
+  if (!s->talive) return -1;
+  memset(s->talive, 1, s->nt);
   if (s->kind == SKEL_CERTIFIED) {
     s->bad = malloc(s->nt * sizeof *s->bad + 1);
     if (!s->bad) return -1;
@@ -946,7 +1135,30 @@ static int skel_decider(skel *s, const rule *r, char *err, size_t errlen) {
   return 0;
 }
 
-/* The live edges into out, in ascending order, with their states. */
+/* The output's edges in ascending order (a, b): a counting sort by b, then a stable one
+** by a.  O(n + m). */
+static int skel_sort_edges(got_skel *o) {
+  size_t m = o->nedges;
+  uint32_t *e2 = malloc(2 * m * sizeof *e2 + 1), *cnt = malloc((o->n + 1) * sizeof *cnt);
+  unsigned char *s2 = malloc(m + 1);
+  if (!e2 || !cnt || !s2) return free(e2), free(cnt), free(s2), -1;
+  for (int key = 1; key >= 0; key--) {
+    memset(cnt, 0, (o->n + 1) * sizeof *cnt);
+    for (size_t e = 0; e < m; e++) cnt[o->edge[2 * e + key] + 1]++;
+    for (size_t v = 0; v < o->n; v++) cnt[v + 1] += cnt[v];
+    for (size_t e = 0; e < m; e++) {
+      uint32_t k = cnt[o->edge[2 * e + key]]++;
+      e2[2 * k] = o->edge[2 * e], e2[2 * k + 1] = o->edge[2 * e + 1], s2[k] = o->state[e];
+    }
+    uint32_t *te = o->edge;
+    unsigned char *ts = o->state;
+    o->edge = e2, o->state = s2, e2 = te, s2 = ts;
+  }
+  free(e2), free(cnt), free(s2);
+  return 0;
+}
+
+/* The live edges into out, in ascending order of input indices, with their states. */
 static int skel_output(const skel *s, got_skel *out) {
   unsigned char *cert = malloc(s->m + 1);
   size_t k = 0, live = 0;
@@ -957,17 +1169,43 @@ static int skel_output(const skel *s, got_skel *out) {
   if (!out->edge || !out->state) return free(cert), -1;
   for (size_t e = 0; e < s->m; e++) {
     if (!s->ealive[e]) continue;
-    out->edge[2 * k] = s->ev[2 * e], out->edge[2 * k + 1] = s->ev[2 * e + 1];
+    uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
+    if (s->orig) a = s->orig[a], b = s->orig[b];
+    out->edge[2 * k] = a < b ? a : b, out->edge[2 * k + 1] = a < b ? b : a;
     out->state[k++] = cert[e] ? GOT_EDGE_CERTAIN : GOT_EDGE_POSSIBLE;
   }
   out->nedges = live;
   free(cert);
+  return s->orig ? skel_sort_edges(out) : 0;
+}
+
+/* P_1: the points renumbered in the grid's cell order (rows of cells), so that the
+** searches, the box scans and the loop read neighbours from nearby memory; s->orig maps
+** back, and the hull's pairs are renumbered.  The grid then built on the renumbered points
+** has the same cells, and holds point k at place k.  O(n).  (The other rules take at most
+** GOT_SKEL_ALL_MAX points and keep the input's numbering: their flip decisions round the
+** measures of triangles whose vertices come in index order.) */
+static int skel_renumber(skel *s) {
+  if (skel_grid_build(&s->g, s->p, s->n) != 0) return -1;
+  s->orig = s->g.pt, s->q = s->g.gp, s->g.pt = NULL, s->g.gp = NULL;
+  skel_grid_free(&s->g);
+  memset(&s->g, 0, sizeof s->g);
+  uint32_t *inv = malloc(s->n * sizeof *inv);
+  if (!inv) return -1;
+  for (size_t k = 0; k < s->n; k++) inv[s->orig[k]] = (uint32_t)k;
+  for (size_t k = 0; k < s->nh; k++) {
+    uint32_t a = inv[s->hpair[2 * k]], b = inv[s->hpair[2 * k + 1]];
+    s->hpair[2 * k] = a < b ? a : b, s->hpair[2 * k + 1] = a < b ? b : a;
+  }
+  free(inv);
+  s->p = s->q;
   return 0;
 }
 
 /* Candidates, triangles and the hull, with the time they took. */
 static int skel_prepare(skel *s) {
-  if (skel_grid_build(&s->g, s->p, s->n) != 0 ||
+  if ((s->kind == SKEL_EXACT_LENGTH && skel_renumber(s) != 0) ||
+      skel_grid_build(&s->g, s->p, s->n) != 0 ||
       skel_candidates(s, s->kind == SKEL_EXACT_LENGTH) != 0)
     return -1;
   if (s->m >= UINT32_MAX / 4) return -1;

@@ -188,26 +188,38 @@ static size_t sk_diamond_brute(const geom_point *p, int n) {
   return cnt;
 }
 
+/* Point i of diamond-search set `rep`: uniform, a thin strip (boundary effects), clusters,
+** a disc, a full 32 x 32 grid (collinear points, exact binary fractions), points hugging
+** two sides of the square (sectors reaching the boundary), then a strip of 2000 points
+** and tight clusters of 1200 (the far rings read by arcs). */
+static geom_point sk_diamond_point(int rep, int i, testutil_rng *g) {
+  double x = testutil_uniform(g), y = testutil_uniform(g);
+  if (rep == 1 || rep == 6) y *= rep == 1 ? 0.05 : 0.02;
+  if (rep == 2 || rep == 7) {
+    double w = rep == 2 ? 0.1 : 0.02;
+    x = w * x + (double)(i % 5) * 0.2, y = w * y + (double)(i % 3) * 0.3;
+  }
+  if (rep == 3) {
+    double t = 2 * M_PI * x, rad = sqrt(y);
+    x = rad * cos(t), y = rad * sin(t);
+  }
+  if (rep == 4) x = (double)(i % 32) / 32, y = (double)(i / 32) / 32;
+  if (rep == 5 && i % 3 == 0) y *= 1e-3;
+  if (rep == 5 && i % 3 == 1) x *= 1e-3;
+  return (geom_point){x, y};
+}
+
 static void test_diamond_search(void **state) {
   (void)state;
   testutil_rng g = {385};
   rule r;
   char err[256];
   assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
-  static geom_point p[800];
-  for (int rep = 0; rep < 4; rep++) {
-    int n = 600 + 50 * rep;
-    for (int i = 0; i < n; i++) {
-      double x = testutil_uniform(&g), y = testutil_uniform(&g);
-      /* uniform, a thin strip (boundary effects), clusters, a disc */
-      if (rep == 1) y *= 0.05;
-      if (rep == 2) x = 0.1 * x + (double)(i % 5) * 0.2, y = 0.1 * y + (double)(i % 3) * 0.3;
-      if (rep == 3) {
-        double t = 2 * M_PI * x, rad = sqrt(y);
-        x = rad * cos(t), y = rad * sin(t);
-      }
-      p[i] = (geom_point){x, y};
-    }
+  static geom_point p[2500];
+  const int size[8] = {600, 650, 700, 750, 1024, 900, 2000, 1200};
+  for (int rep = 0; rep < 8; rep++) {
+    int n = size[rep];
+    for (int i = 0; i < n; i++) p[i] = sk_diamond_point(rep, i, &g);
     got_skel s;
     if (got_skel_build(p, (size_t)n, &r, 2, &s, err, sizeof err) != 0) fail_msg("%s", err);
     assert_int_equal(s.candidates, sk_diamond_brute(p, n));
