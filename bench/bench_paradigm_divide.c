@@ -8,7 +8,11 @@
 **     Delaunay_triangulation_2 (bench_lot_cgal, the child program bench_lot
 **     runs: target at most 0.35);
 **   - dc-vertical on one thread, and dc-alternating with the counting layer
-**     on against off (the cost of counting).
+**     on against off (the cost of counting);
+**   - dc-alternating on two threads through the registry's runner
+**     (paradigm_run: duplicates merged, indices mapped back, triangles in
+**     canonical order), whose time beyond the algorithm's own is the
+**     runner's overhead, printed apart: the targets time the algorithm.
 ** Each round runs every contender once, in turn, so that all see the same
 ** load; the figures are medians of RUNS rounds.  Sorting is part of every
 ** time.  Before timing, dc-alternating's triangles (one and two threads)
@@ -25,12 +29,13 @@
 #include "lot.h"
 #include "paradigm_internal.h"
 
-enum { BD_INCR, BD_VERT, BD_ALT1, BD_ALT1_COUNT, BD_ALT2, BD_CGAL, BD_ROWS };
+enum { BD_INCR, BD_VERT, BD_ALT1, BD_ALT1_COUNT, BD_ALT2, BD_RUN2, BD_CGAL, BD_ROWS };
 
 static const char *const bd_names[BD_ROWS] = {
   "lot incremental (lot_build, 1 thread)", "dc-vertical, 1 thread",
   "dc-alternating, 1 thread", "dc-alternating, 1 thread, counting on",
-  "dc-alternating, 2 threads", "CGAL Delaunay_triangulation_2 (Epick, 1 thread)"};
+  "dc-alternating, 2 threads", "dc-alternating, 2 threads, through paradigm_run",
+  "CGAL Delaunay_triangulation_2 (Epick, 1 thread)"};
 
 /* One run of paradigm_divide, timed; exits on failure. */
 static bench_time bd_divide(const paradigm_input *in, int alternating, int counting,
@@ -46,6 +51,23 @@ static bench_time bd_divide(const paradigm_input *in, int alternating, int count
   }
   *ntri = out.ntri;
   free(out.tri);
+  return t;
+}
+
+/* dc-alternating through the runner, timed whole; *alone gets the
+** algorithm's own time (the runner's clock). */
+static bench_time bd_runner(const paradigm_input *in, double *alone) {
+  paradigm_result res;
+  char err[256];
+  double w = bench_wall(), c = bench_cpu();
+  int rc = paradigm_run(paradigm_find("dc-alternating"), in, &res, err, sizeof err);
+  bench_time t = {bench_wall() - w, bench_cpu() - c};
+  if (rc != 0) {
+    fprintf(stderr, "bench_paradigm_divide: %s\n", err);
+    exit(1);
+  }
+  *alone = res.seconds;
+  paradigm_result_free(&res);
   return t;
 }
 
@@ -69,7 +91,7 @@ static void bd_check(const paradigm_input *in0, int threads) {
 
 /* One round: every contender once, in turn. */
 static void bd_round(const char *argv0, const paradigm_input *in, uint64_t seed,
-                     bench_time *t) {
+                     bench_time *t, double *overhead) {
   rule dt = rule_delaunay();
   size_t ntri;
   paradigm_input in2 = *in;
@@ -79,12 +101,20 @@ static void bd_round(const char *argv0, const paradigm_input *in, uint64_t seed,
   t[BD_ALT1] = bd_divide(in, 1, 0, &ntri);
   t[BD_ALT1_COUNT] = bd_divide(in, 1, 1, &ntri);
   t[BD_ALT2] = bd_divide(&in2, 1, 0, &ntri);
+  double alone;
+  t[BD_RUN2] = bd_runner(&in2, &alone);
+  *overhead = t[BD_RUN2].wall - alone;
   char args[128];
   snprintf(args, sizeof args, "%zu 1 %llu", in->n, (unsigned long long)seed);
   bench_sibling(argv0, "bench_lot_cgal", args, &t[BD_CGAL].wall, &t[BD_CGAL].cpu);
 }
 
-static void bd_table(bench_time t[][BD_ROWS], int runs) {
+static int bd_dcmp(const void *x, const void *y) {
+  double a = *(const double *)x, b = *(const double *)y;
+  return (a > b) - (a < b);
+}
+
+static void bd_table(bench_time t[][BD_ROWS], double *overhead, int runs) {
   bench_time m[BD_ROWS];
   for (int r = 0; r < BD_ROWS; r++) {
     bench_time v[16];
@@ -102,6 +132,9 @@ static void bd_table(bench_time t[][BD_ROWS], int runs) {
          m[BD_ALT2].wall / m[BD_CGAL].wall, isnan(m[BD_CGAL].wall) ? " (CGAL not built)" : "");
   printf("counting on / off (dc-alternating, 1 thread): %.3f (CPU %.3f)\n",
          m[BD_ALT1_COUNT].wall / m[BD_ALT1].wall, m[BD_ALT1_COUNT].cpu / m[BD_ALT1].cpu);
+  qsort(overhead, (size_t)runs, sizeof *overhead, bd_dcmp);
+  printf("the runner's overhead (paradigm_run's time beyond the algorithm's, 2 threads): "
+         "%.3f s\n", overhead[runs / 2]);
 }
 
 int main(int argc, char **argv) {
@@ -131,8 +164,9 @@ int main(int argc, char **argv) {
   bd_check(&in, 1);
   bd_check(&in, 2);
   bench_time t[16][BD_ROWS];
-  for (int k = 0; k < runs; k++) bd_round(argv[0], &in, seed, t[k]);
-  bd_table(t, runs);
+  double overhead[16];
+  for (int k = 0; k < runs; k++) bd_round(argv[0], &in, seed, t[k], &overhead[k]);
+  bd_table(t, overhead, runs);
   printf("(load average at the end: %.2f)\n", bench_load());
   free(p);
   return 0;
