@@ -504,40 +504,46 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int
 
 /* ---- the run ---- */
 
-/* The faces of pool p's half-edges, in input indices, into tri: the face
-** left of half-edge a is Org(a), Dest(a), Dest(b) with b = Lnext(a), and it
-** is written from its smallest half-edge (a < b and a < c = Lnext(b)); the
+/* The faces of pool p's half-edges, in input indices, into the t slots of
+** tri from slot `at` on (back: from slot at - 1 down): the face left of
+** half-edge a is Org(a), Dest(a), Dest(b) with b = Lnext(a), and it is
+** written from its smallest half-edge (a < b and a < c = Lnext(b)); the
 ** outer face is skipped by the mark DC_OUTER on the origins of its
-** half-edges.  b and its twin hold b, c and Dest(b): one random read a
-** half-edge, prefetched a few half-edges ahead.  Returns the number of
-** faces, at most p's half-edges. */
+** half-edges.  a's twin holds b; b's twin holds c and Dest(b): one random
+** read, only when b > a, prefetched a few half-edges ahead.  A face past
+** the array's ends is counted, not written (a broken mesh: the caller's
+** count check fails).  Returns the number of faces. */
 #define DC_OUTER 0x80000000u   /* origins are below DC_MAX_POINTS < 2^31 */
 #define DC_AHEAD 16
 
-static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri) {
+static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t t, size_t at,
+                       int back) {
   const dc_half *h = R->h;
   const uint32_t *id = R->id;
-  size_t t = 0;
+  size_t k = 0;
   uint32_t end = 2 * p->used;
   for (uint32_t a = 2 * p->base; a < end; a++) {
-    if (a + DC_AHEAD < end) __builtin_prefetch(&h[h[(a + DC_AHEAD) ^ 1].prev ^ 1]);
+    uint32_t ahead = a + DC_AHEAD < end ? h[(a + DC_AHEAD) ^ 1].prev : 0;
+    if (ahead > a + DC_AHEAD) __builtin_prefetch(&h[ahead ^ 1]);
     uint32_t o = h[a].org;
     if (o & DC_OUTER) continue;   /* deleted (DC_NONE) or outer */
-    uint32_t b = h[a ^ 1].prev;   /* read with a: the random read, c, only when b > a */
+    uint32_t b = h[a ^ 1].prev;   /* read with a */
     if (b < a || h[b ^ 1].prev < a) continue;
-    tri[3 * t] = id[o];
-    tri[3 * t + 1] = id[h[a ^ 1].org & ~DC_OUTER];
-    tri[3 * t + 2] = id[h[b ^ 1].org & ~DC_OUTER];
-    t++;
+    size_t slot = back ? at - 1 - k : at + k;
+    k++;
+    if (back ? k > at : slot >= t) continue;
+    tri[3 * slot] = id[o];
+    tri[3 * slot + 1] = id[h[a ^ 1].org & ~DC_OUTER];
+    tri[3 * slot + 2] = id[h[b ^ 1].org & ~DC_OUTER];
   }
-  return t;
+  return k;
 }
 
-/* The triangles of the mesh, each pool's on its own thread (into its own
-** stretch of a scratch array sized for the most faces a pool can hold),
-** then copied, pool by pool on the threads, into an array of the exact
-** size, in the order of the pools: the same array whatever the threads.
-** O(n). */
+/* The triangles of the mesh, 2n - 2 - h of them (h on the hull), into an
+** array of that size from both ends: the first half of the pools' faces
+** from the front, in pool order, the second half's from the back, in
+** reverse (the pools read by two threads, the same array whatever the
+** threads: no scratch, no copy).  O(n). */
 static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
                         paradigm_output *out) {
   uint32_t e0 = top.l ^ 1, e = e0, hull = 0;
@@ -547,27 +553,17 @@ static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n
     e = dc_lnext(R->h, e);
   } while (e != e0);
   const dc_pool *pool[DC_NODES];
-  size_t at[DC_NODES + 1] = {0}, got[DC_NODES], to[DC_NODES + 1] = {0};
-  int np = 0, team = R->threads < 4 ? R->threads : 4;
-  for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more, np++) {
-    pool[np] = p;
-    at[np + 1] = at[np] + 2 * (size_t)(p->used - p->base);
-  }
-  uint32_t *scratch = malloc(3 * at[np] * sizeof *scratch);
-  if (scratch == NULL) return -1;
-#pragma omp parallel for schedule(static, 1) num_threads(team) if (R->threads > 1)
-  for (int k = 0; k < np; k++) got[k] = dc_faces(R, pool[k], scratch + 3 * at[k]);
-  for (int k = 0; k < np; k++) to[k + 1] = to[k] + got[k];
-  out->tri = malloc((to[np] ? 3 * to[np] : 1) * sizeof *out->tri);
-  if (out->tri != NULL) {
-#pragma omp parallel for schedule(static, 1) num_threads(team) if (R->threads > 1)
-    for (int k = 0; k < np; k++)
-      memcpy(out->tri + 3 * to[k], scratch + 3 * at[k], 3 * got[k] * sizeof *out->tri);
-  }
-  free(scratch);
+  int np = 0;
+  for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more) pool[np++] = p;
+  size_t t = 2 * (size_t)n - 2 - hull, got[2] = {0, 0};
+  out->tri = malloc(3 * t * sizeof *out->tri);
   if (out->tri == NULL) return -1;
-  out->ntri = to[np];
-  return to[np] == 2 * (size_t)n - 2 - hull ? 0 : -2;
+#pragma omp parallel for schedule(static, 1) num_threads(2) if (R->threads > 1)
+  for (int f = 0; f < 2; f++)   /* front 0: pools 0 .. np/2 - 1; front 1: np - 1 down */
+    for (int k = f ? np - 1 : 0; f ? k >= np / 2 : k < np / 2; k += f ? -1 : 1)
+      got[f] += dc_faces(R, pool[k], out->tri, t, f ? t - got[f] : got[f], f);
+  out->ntri = t;
+  return got[0] + got[1] == t ? 0 : -2;
 }
 
 /* Merge and triangulate the sites s (in the order of the cuts). */
