@@ -506,13 +506,15 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int
 
 /* The faces of pool p's half-edges, in input indices, into the t slots of
 ** tri from slot `at` on (back: from slot at - 1 down): the face left of
-** half-edge a is Org(a), Dest(a), Dest(b) with b = Lnext(a), and it is
-** written from its smallest half-edge (a < b and a < c = Lnext(b)); the
-** outer face is skipped by the mark DC_OUTER on the origins of its
-** half-edges.  a's twin holds b; b's twin holds c and Dest(b): one random
-** read, only when b > a, prefetched a few half-edges ahead.  A face past
-** the array's ends is counted, not written (a broken mesh: the caller's
-** count check fails).  Returns the number of faces. */
+** half-edge a is Org(a), Dest(a), Org(c) with c = Lprev(a) = Sym(Onext(a)),
+** and it is written from its smallest half-edge (a < b = Lnext(a) and
+** a < c); the outer face is skipped by the mark DC_OUTER on the origins of
+** its half-edges.  a holds c, its twin b and Dest(a), so the test reads
+** no other half-edge: one random read a face, Org(c), prefetched a few
+** half-edges ahead for every live half-edge (measured: a third faster
+** than prefetching only the faces to write, whose lines the others share).  A face past the array's ends is counted, not written
+** (a broken mesh: the caller's count check fails).  Returns the number of
+** faces. */
 #define DC_OUTER 0x80000000u   /* origins are below DC_MAX_POINTS < 2^31 */
 #define DC_AHEAD 16
 
@@ -523,18 +525,16 @@ static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t 
   size_t k = 0;
   uint32_t end = 2 * p->used;
   for (uint32_t a = 2 * p->base; a < end; a++) {
-    uint32_t ahead = a + DC_AHEAD < end ? h[(a + DC_AHEAD) ^ 1].prev : 0;
-    if (ahead > a + DC_AHEAD) __builtin_prefetch(&h[ahead ^ 1]);
-    uint32_t o = h[a].org;
-    if (o & DC_OUTER) continue;   /* deleted (DC_NONE) or outer */
-    uint32_t b = h[a ^ 1].prev;   /* read with a */
-    if (b < a || h[b ^ 1].prev < a) continue;
+    uint32_t f = a + DC_AHEAD;
+    if (f < end && !(h[f].org & DC_OUTER)) __builtin_prefetch(&h[h[f].next ^ 1]);
+    uint32_t o = h[a].org, c = h[a].next ^ 1;
+    if ((o & DC_OUTER) || h[a ^ 1].prev < a || c < a) continue;   /* deleted, outer */
     size_t slot = back ? at - 1 - k : at + k;
     k++;
     if (back ? k > at : slot >= t) continue;
     tri[3 * slot] = id[o];
     tri[3 * slot + 1] = id[h[a ^ 1].org & ~DC_OUTER];
-    tri[3 * slot + 2] = id[h[b ^ 1].org & ~DC_OUTER];
+    tri[3 * slot + 2] = id[h[c].org & ~DC_OUTER];
   }
   return k;
 }
