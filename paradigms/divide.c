@@ -512,9 +512,9 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int
 ** its half-edges.  a holds c, its twin b and Dest(a), so the test reads
 ** no other half-edge: one random read a face, Org(c), prefetched a few
 ** half-edges ahead for every live half-edge (measured: a third faster
-** than prefetching only the faces to write, whose lines the others share).  A face past the array's ends is counted, not written
-** (a broken mesh: the caller's count check fails).  Returns the number of
-** faces. */
+** than prefetching only the faces to write, whose lines the others
+** share).  A face past the array's ends is counted, not written (a broken
+** mesh: the caller's count check fails).  Returns the number of faces. */
 #define DC_OUTER 0x80000000u   /* origins are below DC_MAX_POINTS < 2^31 */
 #define DC_AHEAD 16
 
