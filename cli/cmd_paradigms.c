@@ -78,11 +78,10 @@ static const cli_spec cli_par_spec = {
   "Chapter 2's triangulation algorithms (flip, incremental, sweepline, ...)\n"
   "behind one registry.  --list shows them; otherwise each chosen algorithm\n"
   "triangulates each input family of --problem at each size, for each rule,\n"
-  "--runs times:\n"
-  "a Markdown table (table 2.4 anew: median times, the growth exponent of the\n"
-  "time, counts per site at the largest size) on stdout; --csv every cell,\n"
-  "--svg a plot.  Every algorithm's triangles are compared; one that refuses\n"
-  "a rule gets a row saying why (docs/paradigms.md).\n",
+  "--runs times: a Markdown table (table 2.4 anew: median times, the growth\n"
+  "exponent of the time, counts per site at the largest size) on stdout;\n"
+  "--csv every cell, --svg a plot.  Every algorithm's triangles are compared;\n"
+  "one that refuses a problem or rule gets a row saying why (docs/paradigms.md).\n",
   cli_par_table, CLI_NOPTS(cli_par_table), NULL};
 
 /* The next comma-separated item of *s into item (cut at len - 1): its
