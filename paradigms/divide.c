@@ -267,9 +267,9 @@ static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, 
 
 /* Sites sampled for a pivot, by piece size.  The median of s samples sits
 ** at a rank of m (1/2 +- 1/(2 sqrt(s + 2))) (one standard deviation), so 63
-** samples leave the sides 44:56 as often as not; the top cuts, whose
-** halves are the threads' shares, take 4,095 (+- 0.8%).  The cost, s
-** random reads and an O(s) selection, stays under 1% of the pass. */
+** samples leave the sides 46:54 or worse as often as not; the top cuts,
+** whose halves are the threads' shares, take 4,095 (+- 0.8%).  The cost,
+** s random reads and an O(s) selection, stays under 1% of the pass. */
 static const struct { uint32_t from, sample; } dc_samples[] = {
   {(uint32_t)1 << 18, 4095}, {64 * 63, 63}, {0, DC_SMALL}};
 
