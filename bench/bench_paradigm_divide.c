@@ -8,9 +8,17 @@
 **     Delaunay_triangulation_2 (bench_lot_cgal, the child program bench_lot
 **     runs: target at most 0.35);
 **   - dc-vertical on one thread, and dc-alternating with the counting layer
-**     on against off (the cost of counting).
+**     on against off (the cost of counting);
+**   - dc-alternating on two threads through the registry's runner
+**     (paradigm_run: duplicates merged, indices mapped back, triangles in
+**     canonical order), whose time beyond the algorithm's own is the
+**     runner's overhead, printed apart: the targets time the algorithm.
 ** Each round runs every contender once, in turn, so that all see the same
-** load; the figures are medians of RUNS rounds.  Sorting is part of every
+** load; the figures are medians of RUNS rounds.  On a loaded machine two
+** threads rarely get two cores at once, so the two-thread run also reports
+** the CPU time of its busier thread (its critical path, which is its wall
+** time on two idle cores): run with OMP_WAIT_POLICY=passive, so that a
+** waiting thread sleeps instead of spinning into its CPU time.  Sorting is part of every
 ** time.  Before timing, dc-alternating's triangles (one and two threads)
 ** are checked equal to the incremental algorithm's.
 **
@@ -24,7 +32,9 @@
 **   bench_paradigm_divide [N [RUNS [SEED]]]     (defaults 1000000 5 1)
 */
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
+#include <time.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -32,12 +42,23 @@
 #include "lot.h"
 #include "paradigm_internal.h"
 
-enum { BD_INCR, BD_VERT, BD_ALT1, BD_ALT1_COUNT, BD_ALT2, BD_CGAL, BD_ROWS };
+enum { BD_INCR, BD_VERT, BD_ALT1, BD_ALT1_COUNT, BD_ALT2, BD_RUN2, BD_CGAL, BD_ROWS };
 
 static const char *const bd_names[BD_ROWS] = {
   "lot incremental (lot_build, 1 thread)", "dc-vertical, 1 thread",
   "dc-alternating, 1 thread", "dc-alternating, 1 thread, counting on",
-  "dc-alternating, 2 threads", "CGAL Delaunay_triangulation_2 (Epick, 1 thread)"};
+  "dc-alternating, 2 threads", "dc-alternating, 2 threads, through paradigm_run",
+  "CGAL Delaunay_triangulation_2 (Epick, 1 thread)"};
+
+/* The CPU time of each of the team's first two threads into cpu[2]. */
+static void bd_thread_cpu(double cpu[2]) {
+#pragma omp parallel num_threads(2)
+  {
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    cpu[omp_get_thread_num()] = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+  }
+}
 
 /* One run of paradigm_divide, timed; exits on failure. */
 static bench_time bd_divide(const paradigm_input *in, int alternating, int counting,
@@ -53,6 +74,23 @@ static bench_time bd_divide(const paradigm_input *in, int alternating, int count
   }
   *ntri = out.ntri;
   free(out.tri);
+  return t;
+}
+
+/* dc-alternating through the runner, timed whole; *alone gets the
+** algorithm's own time (the runner's clock). */
+static bench_time bd_runner(const paradigm_input *in, double *alone) {
+  paradigm_result res;
+  char err[256];
+  double w = bench_wall(), c = bench_cpu();
+  int rc = paradigm_run(paradigm_find("dc-alternating"), in, &res, err, sizeof err);
+  bench_time t = {bench_wall() - w, bench_cpu() - c};
+  if (rc != 0) {
+    fprintf(stderr, "bench_paradigm_divide: %s\n", err);
+    exit(1);
+  }
+  *alone = res.seconds;
+  paradigm_result_free(&res);
   return t;
 }
 
@@ -76,7 +114,7 @@ static void bd_check(const paradigm_input *in0, int threads) {
 
 /* One round: every contender once, in turn. */
 static void bd_round(const char *argv0, const paradigm_input *in, uint64_t seed,
-                     bench_time *t) {
+                     bench_time *t, double *overhead, double *busier) {
   rule dt = rule_delaunay();
   size_t ntri;
   paradigm_input in2 = *in;
@@ -85,13 +123,25 @@ static void bd_round(const char *argv0, const paradigm_input *in, uint64_t seed,
   t[BD_VERT] = bd_divide(in, 0, 0, &ntri);
   t[BD_ALT1] = bd_divide(in, 1, 0, &ntri);
   t[BD_ALT1_COUNT] = bd_divide(in, 1, 1, &ntri);
+  double c0[2] = {0, 0}, c1[2] = {0, 0};
+  bd_thread_cpu(c0);
   t[BD_ALT2] = bd_divide(&in2, 1, 0, &ntri);
+  bd_thread_cpu(c1);
+  *busier = c1[0] - c0[0] > c1[1] - c0[1] ? c1[0] - c0[0] : c1[1] - c0[1];
+  double alone;
+  t[BD_RUN2] = bd_runner(&in2, &alone);
+  *overhead = t[BD_RUN2].wall - alone;
   char args[128];
   snprintf(args, sizeof args, "%zu 1 %llu", in->n, (unsigned long long)seed);
   bench_sibling(argv0, "bench_lot_cgal", args, &t[BD_CGAL].wall, &t[BD_CGAL].cpu);
 }
 
-static void bd_table(bench_time t[][BD_ROWS], int runs) {
+static int bd_dcmp(const void *x, const void *y) {
+  double a = *(const double *)x, b = *(const double *)y;
+  return (a > b) - (a < b);
+}
+
+static void bd_table(bench_time t[][BD_ROWS], double *overhead, double *busier, int runs) {
   bench_time m[BD_ROWS];
   for (int r = 0; r < BD_ROWS; r++) {
     bench_time v[16];
@@ -109,6 +159,13 @@ static void bd_table(bench_time t[][BD_ROWS], int runs) {
          m[BD_ALT2].wall / m[BD_CGAL].wall, isnan(m[BD_CGAL].wall) ? " (CGAL not built)" : "");
   printf("counting on / off (dc-alternating, 1 thread): %.3f (CPU %.3f)\n",
          m[BD_ALT1_COUNT].wall / m[BD_ALT1].wall, m[BD_ALT1_COUNT].cpu / m[BD_ALT1].cpu);
+  qsort(busier, (size_t)runs, sizeof *busier, bd_dcmp);
+  printf("dc-alternating 2 threads, the busier thread's CPU: %.3f s, %.2f of CGAL's CPU "
+         "(%.2f of one thread's)\n", busier[runs / 2], busier[runs / 2] / m[BD_CGAL].cpu,
+         busier[runs / 2] / m[BD_ALT1].cpu);
+  qsort(overhead, (size_t)runs, sizeof *overhead, bd_dcmp);
+  printf("the runner's overhead (paradigm_run's time beyond the algorithm's, 2 threads): "
+         "%.3f s\n", overhead[runs / 2]);
 }
 
 /* ---- the empty-shape rules ---- */
@@ -223,8 +280,9 @@ int main(int argc, char **argv) {
   bd_check(&in, 1);
   bd_check(&in, 2);
   bench_time t[16][BD_ROWS];
-  for (int k = 0; k < runs; k++) bd_round(argv[0], &in, seed, t[k]);
-  bd_table(t, runs);
+  double overhead[16], busier[16];
+  for (int k = 0; k < runs; k++) bd_round(argv[0], &in, seed, t[k], &overhead[k], &busier[k]);
+  bd_table(t, overhead, busier, runs);
   be_table(p, n < 100000 ? n : 100000, seed, runs);
   printf("(load average at the end: %.2f)\n", bench_load());
   free(p);

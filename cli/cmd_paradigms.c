@@ -22,7 +22,7 @@
 #define CLI_PAR_MAX_FAMILIES 16
 
 typedef struct cli_par_opts {
-  int list, measure;
+  int list, measure, problem;   /* problem: an index of cli_par_problems */
   const char *algorithms, *rules, *families, *sizes, *csv, *svg;
   uint64_t runs, seed;
 } cli_par_opts;
@@ -32,6 +32,12 @@ static int cli_par_measure_find(const char *v) {
   return strcmp(v, "seconds") == 0 ? OPS_COUNT : ops_find(v);
 }
 
+/* --problem's values, paradigm_problem 1 << k for value k; each with the
+** family it draws when --families is not given. */
+static const char *const cli_par_problem_names[] = {"delaunay", "constrained", "polygon",
+                                                    "convex", NULL};
+static const char *const cli_par_default_family[] = {"uniform", "uniform", "star", "valtr"};
+
 #define T cli_par_opts
 static const cli_option cli_par_table[] = {
   CLI_OPT_FLAG("--list", "list the algorithms: name, paradigm, section, problems, cost,\n"
@@ -39,9 +45,16 @@ static const cli_option cli_par_table[] = {
   CLI_OPT_STRING("--algorithms", "A,A,...", "all", "algorithms of --list, or all", T,
                  algorithms),
   CLI_OPT_STRING("--rules", "R,R,...", "DT", "DT or empty-shape rules ES:SHAPE", T, rules),
-  CLI_OPT_STRING("--families", "F,F,...", "uniform",
-                 "point families of lot --random (uniform, grid, clustered,\n"
-                 "                     lines, dups, ...)", T, families),
+  {.name = "--problem", .arg = "P", .dflt = "delaunay",
+   .help = "delaunay, constrained (n/4 random segments), polygon (simple)\n"
+           "                     or convex", .kind = CLI_CHOICE, .off = CLI_AT(T, problem, int),
+   .names = cli_par_problem_names, .idef = 0,
+   .bad = "unknown problem '%s' (delaunay, constrained, polygon, convex)"},
+  CLI_OPT_STRING("--families", "F,F,...", "uniform, star (polygon), valtr (convex)",
+                 "delaunay, constrained: point families of lot --random\n"
+                 "                     (uniform, grid, clustered, lines, dups, ...); polygon:\n"
+                 "                     star, monotone; convex: the samplers of fliplab convex",
+                 T, families),
   CLI_OPT_STRING("--sizes", "N,N,...", CLI_PAR_SIZES,
                  "points per set (3 .. 10^8 each, at most 16 sizes)", T, sizes),
   CLI_OPT_U64("--runs", "K", "timed runs per cell (the median is shown)", T, runs, 1, 99, 3),
@@ -64,11 +77,11 @@ static const cli_spec cli_par_spec = {
   CMD, "usage: fliplab paradigms [--list] [options]",
   "Chapter 2's triangulation algorithms (flip, incremental, sweepline, ...)\n"
   "behind one registry.  --list shows them; otherwise each chosen algorithm\n"
-  "triangulates each point family at each size, for each rule, --runs times:\n"
-  "a Markdown table (table 2.4 anew: median times, the growth exponent of the\n"
-  "time, counts per site at the largest size) on stdout; --csv every cell,\n"
-  "--svg a plot.  Every algorithm's triangles are compared; one that refuses\n"
-  "a rule gets a row saying why (docs/paradigms.md).\n",
+  "triangulates each input family of --problem at each size, for each rule,\n"
+  "--runs times: a Markdown table (table 2.4 anew: median times, the growth\n"
+  "exponent of the time, counts per site at the largest size) on stdout;\n"
+  "--csv every cell, --svg a plot.  Every algorithm's triangles are compared;\n"
+  "one that refuses a problem or rule gets a row saying why (docs/paradigms.md).\n",
   cli_par_table, CLI_NOPTS(cli_par_table), NULL};
 
 /* The next comma-separated item of *s into item (cut at len - 1): its
@@ -103,14 +116,16 @@ static int cli_par_algorithms(const char *s, size_t *alg) {
   return (int)n;
 }
 
-static int cli_par_families(const char *s, int *fam) {
+static int cli_par_families(const char *s, paradigm_problem pb, int *fam) {
   int n = 0;
-  char name[64];
+  char name[64], names[512];
   for (long len; (len = cli_par_item(&s, name, sizeof name)) >= 0;) {
-    int k = (size_t)len < sizeof name ? sampler_points_find(name) : -1;
-    if (k < 0)
-      return cli_error(CMD, "--families: unknown family '%.40s' (valid: %s)", name,
-                       sampler_points_names), -1;
+    int k = (size_t)len < sizeof name ? study_paradigms_family_find(pb, name) : -1;
+    if (k < 0) {
+      study_paradigms_family_names(pb, names, sizeof names);
+      return cli_error(CMD, "--families: unknown family '%.40s' of the %s problem (valid: %s)",
+                       name, paradigm_problem_name(pb), names), -1;
+    }
     for (int j = 0; j < n; j++)
       if (fam[j] == k) return cli_error(CMD, "--families: '%s' given twice", name), -1;
     if (n == CLI_PAR_MAX_FAMILIES) return cli_error(CMD, "--families: at most %d", n), -1;
@@ -166,8 +181,9 @@ static int cli_par_write(const cli_par_opts *o, const study_paradigms_plan *pl,
     FILE *f = cli_open_out(CMD, o->svg);
     if (f == NULL) return 2;
     char title[160];
-    snprintf(title, sizeof title, "%.60s, %s points (seed %llu)", pl->rules[0].name,
-             sampler_points_name((sampler_points_kind)pl->families[0]),
+    snprintf(title, sizeof title, "%.60s, %s, %s (seed %llu)", pl->rules[0].name,
+             paradigm_problem_name(pl->problem),
+             study_paradigms_family_name(pl->problem, pl->families[0]),
              (unsigned long long)pl->seed);
     if (cli_finish_out(CMD, f, report_paradigms_svg(f, title, pl, cells, o->measure)) != 0)
       return 1;
@@ -185,9 +201,10 @@ static int cli_par_matrix(const cli_par_opts *o, const study_paradigms_plan *pl)
     free(cells);
     return rc == -2 ? (cli_error(CMD, "out of memory"), 1) : (cli_error(CMD, "%s", err), 1);
   }
-  printf("# fliplab paradigms: %zu algorithms, %zu rules, %zu families, %zu sizes, median of "
-         "%d runs, seed %llu\n\n", pl->nalgorithms, pl->nrules, pl->nfamilies, pl->nsizes,
-         pl->runs, (unsigned long long)pl->seed);
+  printf("# fliplab paradigms: %s problem, %zu algorithms, %zu rules, %zu families, %zu sizes, "
+         "median of %d runs, seed %llu\n\n", paradigm_problem_name(pl->problem),
+         pl->nalgorithms, pl->nrules, pl->nfamilies, pl->nsizes, pl->runs,
+         (unsigned long long)pl->seed);
   report_paradigms_md(stdout, pl, cells);
   rc = cli_par_write(o, pl, cells);
   free(cells);
@@ -205,14 +222,21 @@ int cli_cmd_paradigms(int argc, char **argv) {
   uint64_t sizes[CLI_PAR_MAX_SIZES];
   rule *rules = NULL;
   int na = cli_par_algorithms(o.algorithms ? o.algorithms : "all", alg);
-  int nf = na < 0 ? -1 : cli_par_families(o.families ? o.families : "uniform", fam);
+  paradigm_problem pb = (paradigm_problem)(1 << o.problem);
+  int nf = na < 0 ? -1 : cli_par_families(o.families ? o.families
+                                                    : cli_par_default_family[o.problem], pb, fam);
   int ns = nf < 0 ? -1 : cli_par_sizes(o.sizes ? o.sizes : CLI_PAR_SIZES, sizes);
+  char err[256];
+  for (int f = 0; f < nf && ns > 0; f++)   /* a convex sampler's sizes */
+    for (int k = 0; k < ns && ns > 0; k++)
+      if (study_paradigms_family_check(pb, fam[f], sizes[k], err, sizeof err) != 0)
+        ns = -1, cli_error(CMD, "--families: %s", err);
   int nr = ns < 0 ? -1 : cli_rule_list_new(CMD, o.rules ? o.rules : "DT", &rules);
   if (nr < 0) rules = NULL;   /* freed by cli_rule_list_new */
   int rc = 2;
   if (nr > 0) {
     study_paradigms_plan pl = {alg, (size_t)na, rules, (size_t)nr, fam, (size_t)nf, sizes,
-                               (size_t)ns, (int)o.runs, o.seed};
+                               (size_t)ns, (int)o.runs, o.seed, pb};
     rc = cli_par_matrix(&o, &pl);
   }
   free(rules);

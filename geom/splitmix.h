@@ -61,7 +61,8 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **                           (sampler_quad: the Delaunay-equivalence check
 **                           of `rule`), unrelated to pentagon i.
 **   GEOM_STREAM_GOT_POLYGON `got --random N`: the polygon samplers (star,
-**                           monotone, convex, ...) of cli/cmd_got.c.
+**                           monotone, convex, ...) of cli/cmd_got.c; the
+**                           simple polygons of `paradigms --problem polygon`.
 **   GEOM_STREAM_POINTS      "points" in ASCII: sampler_points, the point
 **                           sets of `lot --random`.
 **   GEOM_STREAM_BRIO        "brio": lot's biased randomised insertion order.
@@ -71,7 +72,8 @@ static inline int geom_disc_accept(double u, double v, geom_point *p) {
 **                           segments) of `sample --sampler holes|grid`.
 **   GEOM_STREAM_SEGMENTS    "segments": the segments sampler_segments draws
 **                           on a point set drawn from GEOM_STREAM_POINTS
-**                           (`sample --sampler segments`, the benchmark).
+**                           (`sample --sampler segments`, the benchmark,
+**                           `paradigms --problem constrained`).
 **   GEOM_STREAM_CPDT        "cpdt": xored into the seed of the randomised
 **                           convex-polygon Delaunay algorithms (cpdt/: the
 **                           random sides, the random insertion order).

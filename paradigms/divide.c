@@ -301,9 +301,18 @@ static dc_hull dc_merge_across(dc_run *R, dc_pool *p, ops_counts *c, dc_hull a, 
 ** and then halved in the middle by vertical cuts, as Guibas and Stolfi's
 ** sorted sites are. ---- */
 
-#define DC_SAMPLE 63      /* sites sampled for a pivot ... */
-#define DC_SMALL 11       /* ... or fewer, in pieces under 64 samples */
+#define DC_SMALL 11       /* sites sampled for a pivot in the smallest pieces */
 #define DC_SORTED 24      /* smaller pieces are sorted, then take vertical cuts only */
+#define DC_CHUNKS 8       /* a wide cut's partition: fixed chunks, run as tasks ... */
+#define DC_WIDE 16384     /* ... in pieces of this many sites or more */
+
+/* Sites sampled for a pivot, by piece size.  The median of s samples sits
+** at a rank of m (1/2 +- 1/(2 sqrt(s + 2))) (one standard deviation), so 63
+** samples leave the sides 46:54 or worse as often as not; the top cuts,
+** whose halves are the threads' shares, take 4,095 (+- 0.8%).  The cost,
+** s random reads and an O(s) selection, stays under 1% of the pass. */
+static const struct { uint32_t from, sample; } dc_samples[] = {
+  {(uint32_t)1 << 18, 4095}, {64 * 63, 63}, {0, DC_SMALL}};
 
 static void dc_sift(geom_point *a, uint32_t i, uint32_t n, int frame) {
   for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
@@ -377,40 +386,88 @@ static geom_point dc_pivot(dc_run *R, uint32_t lo, uint32_t hi, int frame, int e
     memcpy(t, s + lo, (size_t)m * sizeof *t);
     return dc_select(t, m, m / 2, frame);
   }
-  uint32_t size = m < 64 * DC_SAMPLE ? DC_SMALL : DC_SAMPLE;
+  size_t row = 0;
+  while (m < dc_samples[row].from) row++;   /* the last row's is 0 */
+  uint32_t size = dc_samples[row].sample;
   uint64_t g = (uint64_t)lo << 32 | hi;
   for (uint32_t k = 0; k < size; k++) t[k] = s[lo + geom_splitmix64(&g) % m];
   return dc_select(t, size, size / 2, frame);
 }
 
-/* Partition [lo, hi) of buffer w by piv into the other buffer: the sites
-** before it from the front, the others from the back.  Returns the count
-** before.  Without branches: each site is written to both free ends, one
-** kept.  Inline, so that each frame gets its own loop. */
-static inline uint32_t dc_partition_in(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv,
-                                       int frame, int w) {
+/* Partition [lo, hi) of buffer w by piv into the other buffer's slice of
+** the piece that starts at base: the sites before it at a, a + 1, ... and
+** the others at b - 1, b - 2, ... (the back).  Returns the last a.  Without
+** branches: a conditional move picks the slot.  Inline, so that each frame
+** gets its own loop. */
+static inline uint32_t dc_partition_in(dc_run *R, uint32_t base, uint32_t lo, uint32_t hi,
+                                       geom_point piv, int frame, int w, uint32_t a,
+                                       uint32_t b) {
   const geom_point *s = R->sb[w];
   const uint32_t *id = R->ib[w];
-  geom_point *t = dc_to(R, w) + lo;
-  uint32_t *tid = dc_to_id(R, w) + lo, a = 0, b = hi - lo;
+  geom_point *t = dc_to(R, w) + base;
+  uint32_t *tid = dc_to_id(R, w) + base;
   for (uint32_t k = lo; k < hi; k++) {
     geom_point v = s[k];
-    uint32_t i = id ? id[k] : k, low = (uint32_t)dc_before(v, piv, frame);
-    t[a] = v, tid[a] = i, t[b - 1] = v, tid[b - 1] = i;
+    uint32_t low = (uint32_t)dc_before(v, piv, frame), at = low ? a : b - 1;
+    t[at] = v, tid[at] = id ? id[k] : k;
     a += low, b -= 1 - low;
   }
   return a;
+}
+
+/* The sites of [lo, hi) of buffer w before piv. */
+static inline uint32_t dc_count_in(const dc_run *R, uint32_t lo, uint32_t hi, geom_point piv,
+                                   int frame, int w) {
+  const geom_point *s = R->sb[w];
+  uint32_t a = 0;
+  for (uint32_t k = lo; k < hi; k++) a += (uint32_t)dc_before(s[k], piv, frame);
+  return a;
+}
+
+/* A wide cut (the top one, when threads share the work): DC_CHUNKS
+** chunks counted, then each written from where the chunks before it end,
+** as tasks.  Chunk j's sites before piv go after those of chunks 0 .. j-1,
+** its others before theirs from the back, so the result is the one pass's,
+** site for site, whatever the threads.  Two passes, each split. */
+static uint32_t dc_partition_wide(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv,
+                                  int frame, int w) {
+  uint32_t c[DC_CHUNKS + 1], low[DC_CHUNKS + 1] = {0};
+  for (int j = 0; j <= DC_CHUNKS; j++)
+    c[j] = lo + (uint32_t)((uint64_t)(hi - lo) * (uint64_t)j / DC_CHUNKS);
+  for (int j = 0; j < DC_CHUNKS; j++) {
+#pragma omp task shared(c, low)
+    low[j + 1] = frame ? dc_count_in(R, c[j], c[j + 1], piv, 1, w)
+                       : dc_count_in(R, c[j], c[j + 1], piv, 0, w);
+  }
+#pragma omp taskwait
+  for (int j = 0; j < DC_CHUNKS; j++) low[j + 1] += low[j];
+  for (int j = 0; j < DC_CHUNKS; j++) {
+    uint32_t a = low[j], b = hi - c[j] + low[j];   /* (hi - lo) - (c[j] - lo - low[j]) */
+#pragma omp task shared(c)
+    if (frame) dc_partition_in(R, lo, c[j], c[j + 1], piv, 1, w, a, b);
+    else dc_partition_in(R, lo, c[j], c[j + 1], piv, 0, w, a, b);
+  }
+#pragma omp taskwait
+  return low[DC_CHUNKS];
+}
+
+/* Partition [lo, hi) of buffer w by piv (wide: in chunks, as tasks). */
+static uint32_t dc_partition(dc_run *R, uint32_t lo, uint32_t hi, geom_point piv, int frame,
+                             int w, int wide) {
+  if (wide) return dc_partition_wide(R, lo, hi, piv, frame, w);
+  return frame ? dc_partition_in(R, lo, lo, hi, piv, 1, w, 0, hi - lo)
+               : dc_partition_in(R, lo, lo, hi, piv, 0, w, 0, hi - lo);
 }
 
 /* Split [lo, hi) (at least DC_SORTED sites, in buffer w) in the frame's
 ** order into the other buffer; returns where the second side starts.
 ** O(hi - lo) expected: one pass with the sample's pivot, redone with the
 ** exact median when a side is under an eighth (buffer w is untouched). */
-static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame, int w) {
+static uint32_t dc_split(dc_run *R, uint32_t lo, uint32_t hi, int frame, int w, int wide) {
   uint32_t m = hi - lo, a;
   for (int exact = 0; exact < 2; exact++) {
     geom_point piv = dc_pivot(R, lo, hi, frame, exact, w);
-    a = frame ? dc_partition_in(R, lo, hi, piv, 1, w) : dc_partition_in(R, lo, hi, piv, 0, w);
+    a = dc_partition(R, lo, hi, piv, frame, w, wide);
     if (a >= m / 8 + 2 && m - a >= m / 8 + 2) break;
   }
   return lo + a;
@@ -437,13 +494,15 @@ static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi, int w) {
 ** the sites to the other buffer; small pieces come back and are sorted. */
 static uint32_t dc_cut(dc_run *R, uint32_t lo, uint32_t hi, int depth, int *state,
                        int *frame) {
+  /* The top cut runs before the threads split: its partition is shared. */
+  int wide = depth == 0 && R->threads > 1 && hi - lo >= DC_WIDE;
   if (*state != DC_SORTED_S && hi - lo < DC_SORTED) {
     dc_sort_small(R, lo, hi, *state);
     *state = DC_SORTED_S;
   }
   *frame = *state != DC_SORTED_S && R->alternating ? depth & 1 : 0;
   if (*state == DC_SORTED_S) return lo + (hi - lo) / 2;
-  uint32_t mid = dc_split(R, lo, hi, *frame, *state);
+  uint32_t mid = dc_split(R, lo, hi, *frame, *state, wide);
   *state = *state == DC_IN_T ? DC_IN_S : DC_IN_T;
   return mid;
 }
@@ -486,38 +545,46 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int
 
 /* ---- the run ---- */
 
-/* The faces of pool p's half-edges, in input indices, into tri: the face
-** left of half-edge a is Org(a), Dest(a), Dest(b) with b = Lnext(a), and it
-** is written from its smallest half-edge (a < b and a < c = Lnext(b)); the
-** outer face is skipped by the mark DC_OUTER on the origins of its
-** half-edges.  b and its twin hold b, c and Dest(b): one random read a
-** half-edge, prefetched a few half-edges ahead.  Returns the number of
-** faces, at most p's half-edges. */
+/* The faces of pool p's half-edges, in input indices, into the t slots of
+** tri from slot `at` on (back: from slot at - 1 down): the face left of
+** half-edge a is Org(a), Dest(a), Org(c) with c = Lprev(a) = Sym(Onext(a)),
+** and it is written from its smallest half-edge (a < b = Lnext(a) and
+** a < c); the outer face is skipped by the mark DC_OUTER on the origins of
+** its half-edges.  a holds c, its twin b and Dest(a), so the test reads
+** no other half-edge: one random read a face, Org(c), prefetched a few
+** half-edges ahead for every live half-edge (measured: a third faster
+** than prefetching only the faces to write, whose lines the others
+** share).  A face past the array's ends is counted, not written (a broken
+** mesh: the caller's count check fails).  Returns the number of faces. */
 #define DC_OUTER 0x80000000u   /* origins are below DC_MAX_POINTS < 2^31 */
 #define DC_AHEAD 16
 
-static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri) {
+static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t t, size_t at,
+                       int back) {
   const dc_half *h = R->h;
   const uint32_t *id = R->id;
-  size_t t = 0;
+  size_t k = 0;
   uint32_t end = 2 * p->used;
   for (uint32_t a = 2 * p->base; a < end; a++) {
-    if (a + DC_AHEAD < end) __builtin_prefetch(&h[h[(a + DC_AHEAD) ^ 1].prev ^ 1]);
-    uint32_t o = h[a].org;
-    if (o & DC_OUTER) continue;   /* deleted (DC_NONE) or outer */
-    uint32_t b = h[a ^ 1].prev, c = h[b ^ 1].prev;
-    if (b < a || c < a) continue;
-    tri[3 * t] = id[o];
-    tri[3 * t + 1] = id[h[a ^ 1].org & ~DC_OUTER];
-    tri[3 * t + 2] = id[h[b ^ 1].org & ~DC_OUTER];
-    t++;
+    uint32_t f = a + DC_AHEAD;
+    if (f < end && !(h[f].org & DC_OUTER)) __builtin_prefetch(&h[h[f].next ^ 1]);
+    uint32_t o = h[a].org, c = h[a].next ^ 1;
+    if ((o & DC_OUTER) || h[a ^ 1].prev < a || c < a) continue;   /* deleted, outer */
+    size_t slot = back ? at - 1 - k : at + k;
+    k++;
+    if (back ? k > at : slot >= t) continue;
+    tri[3 * slot] = id[o];
+    tri[3 * slot + 1] = id[h[a ^ 1].org & ~DC_OUTER];
+    tri[3 * slot + 2] = id[h[c].org & ~DC_OUTER];
   }
-  return t;
+  return k;
 }
 
-/* The triangles of the mesh, each pool's on its own thread (into its own
-** stretch of the output, closed up after), in the order of the pools, so
-** the same array whatever the threads.  O(n). */
+/* The triangles of the mesh, 2n - 2 - h of them (h on the hull), into an
+** array of that size from both ends: the first half of the pools' faces
+** from the front, in pool order, the second half's from the back, in
+** reverse (the pools read by two threads, the same array whatever the
+** threads: no scratch, no copy).  O(n). */
 static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
                         paradigm_output *out) {
   uint32_t e0 = top.l ^ 1, e = e0, hull = 0;
@@ -527,25 +594,17 @@ static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n
     e = dc_lnext(R->h, e);
   } while (e != e0);
   const dc_pool *pool[DC_NODES];
-  size_t at[DC_NODES + 1] = {0}, got[DC_NODES], t = 0;
   int np = 0;
-  for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more, np++) {
-    pool[np] = p;
-    at[np + 1] = at[np] + 2 * (size_t)(p->used - p->base);
-  }
-  out->tri = malloc(3 * at[np] * sizeof *out->tri);
+  for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more) pool[np++] = p;
+  size_t t = 2 * (size_t)n - 2 - hull, got[2] = {0, 0};
+  out->tri = malloc(3 * t * sizeof *out->tri);
   if (out->tri == NULL) return -1;
-#pragma omp parallel for schedule(static, 1) num_threads(R->threads < 4 ? R->threads : 4) \
-  if (R->threads > 1)
-  for (int k = 0; k < np; k++) got[k] = dc_faces(R, pool[k], out->tri + 3 * at[k]);
-  for (int k = 0; k < np; k++) {
-    memmove(out->tri + 3 * t, out->tri + 3 * at[k], 3 * got[k] * sizeof *out->tri);
-    t += got[k];
-  }
-  uint32_t *tri = realloc(out->tri, (t ? 3 * t : 1) * sizeof *tri);
-  out->tri = tri ? tri : out->tri;
+#pragma omp parallel for schedule(static, 1) num_threads(2) if (R->threads > 1)
+  for (int f = 0; f < 2; f++)   /* front 0: pools 0 .. np/2 - 1; front 1: np - 1 down */
+    for (int k = f ? np - 1 : 0; f ? k >= np / 2 : k < np / 2; k += f ? -1 : 1)
+      got[f] += dc_faces(R, pool[k], out->tri, t, f ? t - got[f] : got[f], f);
   out->ntri = t;
-  return t == 2 * (size_t)n - 2 - hull ? 0 : -2;
+  return got[0] + got[1] == t ? 0 : -2;
 }
 
 /* Merge and triangulate the sites s (in the order of the cuts). */

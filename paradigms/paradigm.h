@@ -107,7 +107,8 @@ int paradigm_run(const paradigm_algorithm *a, const paradigm_input *in, paradigm
 void paradigm_result_free(paradigm_result *r);
 
 /* Sort triangles into the canonical order above (used by the runner; for
-** tests comparing with lot's output).  O(t log t). */
+** tests comparing with lot's output).  O(t + n) for a triangulation's
+** triangles (a bucket sort by the smallest index); O(t log t) otherwise. */
 void paradigm_canonical(uint32_t *tri, size_t ntri);
 
 #endif

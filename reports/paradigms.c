@@ -8,7 +8,6 @@
 #include <string.h>
 #include "report_internal.h"
 #include "paradigm.h"
-#include "sampler.h"
 
 /* The cell of (a, r, f, s), as study_paradigms.h lays them out. */
 static const study_paradigms_cell *rp_cell(const study_paradigms_plan *pl,
@@ -17,7 +16,8 @@ static const study_paradigms_cell *rp_cell(const study_paradigms_plan *pl,
   return &cells[((a * pl->nrules + r) * pl->nfamilies + f) * pl->nsizes + s];
 }
 
-enum { RP_FIXED = 10, RP_NF = RP_FIXED + 2 * OPS_COUNT + 1 };
+/* The fixed columns, the counts per site and growth exponents, the problem. */
+enum { RP_FIXED = 10, RP_PROBLEM = RP_FIXED + 2 * OPS_COUNT + 1, RP_NF = RP_PROBLEM + 1 };
 
 static int rp_header(FILE *f) {
   static const char *fixed[RP_FIXED] = {"algorithm", "paradigm", "section", "rule", "family",
@@ -32,6 +32,7 @@ static int rp_header(FILE *f) {
     fld[RP_FIXED + OPS_COUNT + 1 + k] = names[OPS_COUNT + k];
   }
   fld[RP_FIXED + OPS_COUNT] = "growth_seconds";
+  fld[RP_PROBLEM] = "problem";
   return report_csv_row(f, fld, RP_NF);
 }
 
@@ -48,7 +49,7 @@ static int rp_row(FILE *f, const study_paradigms_plan *pl, const study_paradigms
   const paradigm_algorithm *alg = paradigm_get(c->algorithm);
   char buf[RP_NF][48], status[STUDY_PARADIGMS_WHY + 16];
   const char *fld[RP_NF] = {alg->name, alg->paradigm, alg->section, pl->rules[r].name,
-                            sampler_points_name((sampler_points_kind)c->family)};
+                            study_paradigms_family_name(pl->problem, c->family)};
   snprintf(buf[5], sizeof buf[5], "%llu", (unsigned long long)c->n);
   snprintf(buf[6], sizeof buf[6], "%zu", c->distinct);
   snprintf(buf[7], sizeof buf[7], "%zu", c->triangles);
@@ -61,6 +62,7 @@ static int rp_row(FILE *f, const study_paradigms_plan *pl, const study_paradigms
     if (k < OPS_COUNT) fld[i] = rp_num(buf[i], sizeof buf[i], c->refused ? NAN : c->per_site[k]);
     fld[j] = rp_num(buf[j], sizeof buf[j], study_paradigms_growth(pl, cells, a, r, fa, k));
   }
+  fld[RP_PROBLEM] = paradigm_problem_name(pl->problem);
   return report_csv_row(f, fld, RP_NF);
 }
 
@@ -95,7 +97,7 @@ static void rp_md_row(FILE *f, const study_paradigms_plan *pl, const study_parad
   const study_paradigms_cell *last = rp_cell(pl, cells, a, r, fa, pl->nsizes - 1);
   const paradigm_algorithm *alg = paradigm_get(last->algorithm);
   fprintf(f, "| %s | %s | %s | %s |", alg->name, alg->paradigm, pl->rules[r].name,
-          sampler_points_name((sampler_points_kind)last->family));
+          study_paradigms_family_name(pl->problem, last->family));
   const study_paradigms_cell *bad = NULL;   /* the first refused or failed size */
   for (size_t s = 0; s < pl->nsizes && bad == NULL; s++)
     if (rp_cell(pl, cells, a, r, fa, s)->refused) bad = rp_cell(pl, cells, a, r, fa, s);

@@ -5,7 +5,8 @@
 ** random, grid, cocircular, collinear-heavy and duplicate-heavy sets, for DT
 ** and two empty-shape rules; the in-shape test with its tie-break agrees
 ** with lot's choice of diagonal on every convex quadrilateral of a small
-** grid (where ties abound); the counting layer's names round-trip.
+** grid (where ties abound); the counting layer's names round-trip; the
+** canonical order's bucket sort is qsort's order.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -169,12 +170,49 @@ static void test_refusals(void **state) {
   assert_non_null(strstr(err, "point 4"));
 }
 
+/* The canonical order, by the bucket sort, is the lexicographic order of
+** the rotated triangles: checked against qsort with a comparison, on
+** indices up to n (the bucket sort), up to 5 (buckets past 16 triangles,
+** repeated triangles) and up to 2^31 (sparse: qsort), and on small arrays
+** (qsort). */
+static int tp_cmp(const void *x, const void *y) {
+  const uint32_t *s = x, *t = y;
+  for (int i = 0; i < 3; i++)
+    if (s[i] != t[i]) return s[i] < t[i] ? -1 : 1;
+  return 0;
+}
+
+static void test_canonical(void **state) {
+  (void)state;
+  testutil_rng g = {17};
+  static const uint32_t range[] = {1u << 31, 0, 5};   /* 0: n */
+  for (size_t r = 0; r < sizeof range / sizeof *range; r++)
+    for (size_t n = 1; n < 40000; n = 3 * n + 7) {
+      uint32_t *tri = malloc(3 * n * sizeof *tri), *want = malloc(3 * n * sizeof *want);
+      assert_true(tri != NULL && want != NULL);
+      for (size_t t = 0; t < n; t++) {
+        uint32_t *v = tri + 3 * t;
+        do {
+          for (int i = 0; i < 3; i++)
+            v[i] = (uint32_t)(testutil_next(&g) % (range[r] ? range[r] : n + 3));
+        } while (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]);
+        int k = v[0] < v[1] && v[0] < v[2] ? 0 : v[1] < v[2] ? 1 : 2;
+        for (int i = 0; i < 3; i++) want[3 * t + (size_t)i] = v[(k + i) % 3];
+      }
+      qsort(want, n, 3 * sizeof *want, tp_cmp);
+      paradigm_canonical(tri, n);
+      assert_memory_equal(tri, want, 3 * n * sizeof *tri);
+      free(tri), free(want);
+    }
+}
+
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_registry),
     cmocka_unit_test(test_rows_agree),
     cmocka_unit_test(test_inshape_tiebreak),
     cmocka_unit_test(test_refusals),
+    cmocka_unit_test(test_canonical),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,6 +22,7 @@
 
 #include "paradigm.h"
 #include "sampler.h"
+#include "splitmix.h"
 #include "testutil.h"
 
 static char tpl_out[1 << 17], tpl_err[4096];
@@ -145,6 +146,92 @@ static void test_matrix(void **state) {
   free(g);
 }
 
+/* The constrained problem recomputed: family f's n points (seed 5), up to
+** n/4 segments from the segments' stream; the incremental row's triangles.
+** Every segment through no other point is an edge of them (the meaning of
+** a constrained triangulation). */
+static size_t tpl_constrained(sampler_points_kind f, size_t n) {
+  geom_point *p = malloc(n * sizeof *p);
+  uint32_t *seg = malloc(2 * (n / 4 + 1) * sizeof *seg);
+  assert_true(p != NULL && seg != NULL);
+  sampler_points(f, 5, n, p);
+  sampler_rng g;
+  sampler_seed(&g, 5, GEOM_STREAM_SEGMENTS);
+  size_t m;
+  assert_int_equal(sampler_segments(&g, p, n, n / 4, seg, &m), 0);
+  assert_true(m > 0);
+  rule r = rule_delaunay();
+  paradigm_input in = {.p = p, .n = n, .r = &r, .problem = PARADIGM_CONSTRAINED, .seed = 5,
+                       .threads = 1, .segments = seg, .nsegments = m};
+  paradigm_result res;
+  char err[256];
+  if (paradigm_run(paradigm_find("incremental"), &in, &res, err, sizeof err) != 0)
+    fail_msg("%s", err);
+  for (size_t k = 0; k < m; k++) {
+    uint32_t a = seg[2 * k], b = seg[2 * k + 1];
+    int through = 0, edge = 0;
+    for (size_t i = 0; i < n; i++) {   /* p[i] strictly between p[a] and p[b] */
+      double dot = (p[i].x - p[a].x) * (p[i].x - p[b].x) + (p[i].y - p[a].y) * (p[i].y - p[b].y);
+      through |= i != a && i != b && geom_orient(p[a], p[b], p[i]) == 0 && dot < 0;
+    }
+    for (size_t t = 0; t < res.ntri && !through; t++)
+      for (int e = 0; e < 3; e++) {
+        uint32_t u = res.tri[3 * t + e], v = res.tri[3 * t + (e + 1) % 3];
+        edge |= (u == a && v == b) || (u == b && v == a);
+      }
+    if (!through && !edge) fail_msg("segment %zu (%u, %u) is no edge", k, a, b);
+  }
+  size_t t = res.ntri;
+  paradigm_result_free(&res);
+  free(p), free(seg);
+  return t;
+}
+
+/* --problem: the constrained problem's rows agree (the matrix compares
+** them) and their triangles are the recomputed ones; a polygon's rows,
+** simple or convex, make n - 2 triangles each; the problem is named in the
+** CSV and on stdout; a row that does not serve the problem says so. */
+static void test_problems(void **state) {
+  (void)state;
+  char csv[512], buf[256];
+  testutil_tmppath(csv, sizeof csv, "problems.csv");
+  static const struct {
+    const char *problem, *args, *row, *family;
+    int kind;   /* the constrained points' sampler_points_kind, -1 for a polygon */
+  } run[] = {
+    {"constrained", "incremental,flip,select-constrained,sweep --families uniform,lines",
+     "select-constrained", "lines", SAMPLER_LINES},
+    {"constrained", "incremental,flip,select-constrained --families uniform",
+     "flip", "uniform", SAMPLER_UNIFORM},
+    {"polygon", "incremental,flip,select-constrained,watson --families star,monotone",
+     "flip", "monotone", -1},
+    {"convex", "convex-divide,convex-random,convex-flip,incremental --families valtr,vector",
+     "convex-divide", "vector", -1},
+  };
+  for (size_t i = 0; i < sizeof run / sizeof *run; i++) {
+    if (testutil_runf(tpl_out, sizeof tpl_out, tpl_err, sizeof tpl_err, "paradigms --problem "
+                      "%s --algorithms %s --sizes 200,600 --runs 1 --seed 5 --csv %s",
+                      run[i].problem, run[i].args, csv) != 0)
+      fail_msg("%s: %s", run[i].args, tpl_err);
+    char head[96];
+    snprintf(head, sizeof head, "# fliplab paradigms: %s problem", run[i].problem);
+    assert_non_null(strstr(tpl_out, head));
+    char *t = testutil_read_file(csv);
+    assert_non_null(t);
+    int tr = tpl_column(t, "triangles"), pr = tpl_column(t, "problem");
+    int st = tpl_column(t, "status");
+    for (unsigned n = 200; n <= 600; n += 400) {
+      const char *line = tpl_line(t, run[i].row, "DT", run[i].family, n);
+      size_t want = run[i].kind < 0 ? n - 2 : tpl_constrained(run[i].kind, n);
+      assert_int_equal(strtoull(tpl_field(line, tr, buf, sizeof buf), NULL, 10), want);
+      assert_string_equal(tpl_field(line, st, buf, sizeof buf), "ok");
+      assert_string_equal(tpl_field(line, pr, buf, sizeof buf), run[i].problem);
+    }
+    if (i != 1) assert_non_null(strstr(t, "refused: algorithm"));
+    free(t);
+  }
+}
+
 static void test_errors(void **state) {
   (void)state;
   char csv[512];
@@ -154,7 +241,10 @@ static void test_errors(void **state) {
     "--families uniform,uniform", "--sizes 2", "--sizes 100,x", "--sizes 1e9", "--runs 0",
     "--runs 100", "--rules NOPE", "--rules ''", "--sizes 100,", "--measure nope", "--seed -1",
     "--bogus", "--svg x.csv",
-    "--sizes 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17",
+    "--sizes 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17", "--problem nope", "--problem",
+    "--problem convex --families uniform", "--problem polygon --families valtr",
+    "--problem delaunay --families star", "--problem convex --families naive",
+    "--problem convex --families rejection",
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
     unlink(csv);
@@ -170,6 +260,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_list),
     cmocka_unit_test(test_matrix),
+    cmocka_unit_test(test_problems),
     cmocka_unit_test(test_errors),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);

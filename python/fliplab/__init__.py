@@ -29,6 +29,9 @@ from ._convex import CONVEX_INNER, CONVEX_SAMPLERS, REGIONS, ConvexPolygons, con
 from ._scipy import from_shapely, lot_polygon
 from ._cpdt import (CPDT_ALGORITHMS, CPDT_COUNTS, CPDT_SAMPLERS, convex_dt,
                     convex_dt_experiment)
+from ._paradigms import OPS_NAMES, PARADIGM_ALGORITHMS, PARADIGM_PROBLEMS, paradigms, triangulate_by
+from ._linf import (LINF_METHODS, LinfCube, linf_bound, linf_circumcubes, linf_delaunay,
+                    linf_extremal, linf_montecarlo)
 
 __version__ = "0.1.0"
 library_path: str = _lib.path
@@ -42,4 +45,7 @@ __all__ = ["AC", "BD", "EITHER", "UNDECIDED", "Rule", "badness", "decide", "defi
            "from_shapely", "lot_polygon",
            "compare_got", "ch5_averages", "ch5_measure", "CH5_METHODS", "CH5_QUANTITIES",
            "CPDT_ALGORITHMS", "CPDT_COUNTS", "CPDT_SAMPLERS", "convex_dt", "convex_dt_experiment",
-           "CONVEX_INNER", "CONVEX_SAMPLERS", "REGIONS", "ConvexPolygons", "convex_polygons"]
+           "CONVEX_INNER", "CONVEX_SAMPLERS", "REGIONS", "ConvexPolygons", "convex_polygons",
+           "OPS_NAMES", "PARADIGM_ALGORITHMS", "PARADIGM_PROBLEMS", "paradigms", "triangulate_by",
+           "LINF_METHODS", "LinfCube", "linf_bound", "linf_circumcubes", "linf_delaunay",
+           "linf_extremal", "linf_montecarlo"]

@@ -29,7 +29,8 @@ from ._mirrors import (FlipgraphCounts, FlipgraphRun, GeomTri, Joint, LotCdf, Lo
                        ReportMeta, ReportPoly, ReportRow, Rule, Rule_p, RuleQuad,
                        SamplerPentagons, SamplerRng, SiteflipCounts, SiteflipGraph_p,
                        SiteflipResult, StudyConvexRun, c_double_p, c_int32_p, c_uint32_p,
-                       RULE_TRIANGLE)
+                       RULE_TRIANGLE, OPS_COUNT, LinfCube, LinfSelectStats, LinfSimplices,
+                       ParadigmAlgorithm, ParadigmInput, ParadigmResult, StudyLinfMc)
 
 SONAME = "libfliplab.so.0.1"
 
@@ -290,6 +291,29 @@ _PROTOS = {
     "study_avg_degcount_text": (_size, [_void_p, _int, _int, _int, _char_p, _size]),
     "study_tri_measure": (_int, [c_uint32_p, _size, ctypes.c_uint32, _u64_p, c_uint32_p,
                                  _char_p, _size]),
+    # paradigms/paradigm.h, geom/ops.h: chapter 2's registry and runner (_paradigms.py)
+    "ops_name": (_char_p, [_int]),
+    "paradigm_count": (_size, []),
+    "paradigm_get": (ctypes.POINTER(ParadigmAlgorithm), [_size]),
+    "paradigm_problem_name": (_char_p, [_int]),
+    "paradigm_run": (_int, [ctypes.POINTER(ParadigmAlgorithm), ctypes.POINTER(ParadigmInput),
+                            ctypes.POINTER(ParadigmResult), _char_p, _size]),
+    "paradigm_result_free": (None, [ctypes.POINTER(ParadigmResult)]),
+    # linf/linf.h, studies/study_linf.h: section 4.2's l_inf circumcubes (_linf.py)
+    "linf_circumcubes": (_int, [c_double_p, _int, ctypes.POINTER(LinfCube)]),
+    "linf_cube_side": (_int, [ctypes.POINTER(LinfCube), c_double_p]),
+    "linf_cube_centre": (None, [ctypes.POINTER(LinfCube), _char_p, _size]),
+    "linf_cube_distance": (None, [ctypes.POINTER(LinfCube), c_double_p, _char_p, _size]),
+    "linf_bound": (_int, [_int]),
+    "linf_extremal": (None, [_int, c_double_p]),
+    "linf_simplices_init": (None, [ctypes.POINTER(LinfSimplices), _int]),
+    "linf_simplices_free": (None, [ctypes.POINTER(LinfSimplices)]),
+    "linf_delaunay_brute": (_int, [c_double_p, _size, _int, ctypes.POINTER(LinfSimplices),
+                                   _u64_p]),
+    "linf_delaunay_select": (_int, [c_double_p, _size, _int, ctypes.POINTER(LinfSimplices),
+                                    ctypes.POINTER(LinfSelectStats)]),
+    "study_linf_montecarlo": (_int, [_int, _u64, _u64, _int, ctypes.POINTER(StudyLinfMc),
+                                     _char_p, _size]),
 }
 
 # the C library's own, for a table written into memory (_report.py)
@@ -365,6 +389,8 @@ def _check_layout():
     if lib.geom_threads_check(MAX_THREADS, None, 0) != 0 or \
             lib.geom_threads_check(MAX_THREADS + 1, None, 0) == 0:
         raise ImportError("fliplab: python/fliplab/_args.py's MAX_THREADS does not match geom.h")
+    if len(c_names(lib.ops_name)) != OPS_COUNT:
+        raise ImportError("fliplab: python/fliplab/_mirrors.py's OPS_COUNT does not match ops.h")
 
 
 _check_layout()

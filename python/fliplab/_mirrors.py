@@ -218,3 +218,65 @@ class ReportCensusMeta(ctypes.Structure):
     _fields_ = [("has_seed", ctypes.c_int), ("seed", ctypes.c_uint64),
                 ("has_tie_eps", ctypes.c_int), ("tie_eps", ctypes.c_double),
                 ("shard_k", ctypes.c_uint64), ("shard_n", ctypes.c_uint64)]
+
+
+# ---- chapter 2's registry (paradigms/paradigm.h, geom/ops.h) ----------------
+OPS_COUNT = 11   # ops_kind's OPS_COUNT, checked against ops_name at import (_lib.py)
+
+
+class OpsCounts(ctypes.Structure):
+    """ops_counts (geom/ops.h)."""
+    _fields_ = [("v", ctypes.c_uint64 * OPS_COUNT), ("bytes", ctypes.c_uint64)]
+
+
+class ParadigmAlgorithm(ctypes.Structure):
+    """paradigm_algorithm (paradigms/paradigm.h): a row of the registry."""
+    _fields_ = [("name", ctypes.c_char_p), ("paradigm", ctypes.c_char_p),
+                ("section", ctypes.c_char_p), ("problems", ctypes.c_uint),
+                ("rules", ctypes.c_uint), ("refusal", ctypes.c_char_p), ("cost", ctypes.c_char_p),
+                ("param", ctypes.c_char_p), ("run", ctypes.c_void_p)]
+
+
+class ParadigmInput(ctypes.Structure):
+    """paradigm_input (paradigms/paradigm.h)."""
+    _fields_ = [("p", Point_p), ("n", ctypes.c_size_t), ("r", Rule_p), ("problem", ctypes.c_int),
+                ("segments", c_uint32_p), ("nsegments", ctypes.c_size_t),
+                ("seed", ctypes.c_uint64), ("threads", ctypes.c_int), ("param", ctypes.c_double)]
+
+
+class ParadigmResult(ctypes.Structure):
+    """paradigm_result (paradigms/paradigm.h)."""
+    _fields_ = [("tri", c_uint32_p), ("ntri", ctypes.c_size_t), ("ops", OpsCounts),
+                ("seconds", ctypes.c_double), ("distinct", ctypes.c_size_t)]
+
+
+# ---- section 4.2's l_inf circumcubes (linf/linf.h, studies/study_linf.h) -----
+LINF_DIM_MIN, LINF_DIM_MAX = 2, 8
+LINF_CUBES_MAX = 1 << (LINF_DIM_MAX - 1)
+LINF_INFINITE = -1
+
+
+class LinfCube(ctypes.Structure):
+    """linf_cube (linf/linf.h)."""
+    _fields_ = [("d", ctypes.c_int), ("side", ctypes.c_byte * LINF_DIM_MAX),
+                ("face", ctypes.c_double * LINF_DIM_MAX), ("top", ctypes.c_double),
+                ("bottom", ctypes.c_double)]
+
+
+class LinfSimplices(ctypes.Structure):
+    """linf_simplices (linf/linf.h)."""
+    _fields_ = [("d", ctypes.c_int), ("n", ctypes.c_size_t), ("cap", ctypes.c_size_t),
+                ("v", ctypes.POINTER(ctypes.c_ubyte))]
+
+
+class LinfSelectStats(ctypes.Structure):
+    """linf_select_stats (linf/linf.h)."""
+    _fields_ = [(n, ctypes.c_uint64) for n in ("facets", "hull_facets", "cube_tests",
+                                               "largest_set", "degenerate")]
+
+
+class StudyLinfMc(ctypes.Structure):
+    """study_linf_mc (studies/study_linf.h)."""
+    _fields_ = [("d", ctypes.c_int), ("trials", ctypes.c_uint64), ("seed", ctypes.c_uint64),
+                ("count", ctypes.c_uint64 * (LINF_CUBES_MAX + 1)), ("infinite", ctypes.c_uint64),
+                ("law", ctypes.c_uint64 * (LINF_CUBES_MAX + 1)), ("law_total", ctypes.c_uint64)]

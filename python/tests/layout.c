@@ -22,6 +22,9 @@
 #include "got.h"
 #include "report.h"
 #include "study.h"
+#include "paradigm.h"
+#include "linf.h"
+#include "study_linf.h"
 
 #define Z(S) printf("%s sizeof %zu\n", #S, sizeof(S))
 #define F(S, m) printf("%s %s %zu %zu\n", #S, #m, offsetof(S, m), sizeof(((S *)0)->m))
@@ -146,8 +149,33 @@ static void layout_got(void) {
   F(got_result, seconds_faces); F(got_result, seconds_solve);
 }
 
+/* Chapter 2's registry and runner, section 4.2's cubes (_paradigms.py, _linf.py). */
+static void layout_paradigms(void) {
+  Z(ops_counts); F(ops_counts, v); F(ops_counts, bytes);
+  Z(paradigm_algorithm); F(paradigm_algorithm, name); F(paradigm_algorithm, paradigm);
+  F(paradigm_algorithm, section); F(paradigm_algorithm, problems); F(paradigm_algorithm, rules);
+  F(paradigm_algorithm, refusal); F(paradigm_algorithm, cost); F(paradigm_algorithm, param);
+  F(paradigm_algorithm, run);
+  Z(paradigm_input); F(paradigm_input, p); F(paradigm_input, n); F(paradigm_input, r);
+  F(paradigm_input, problem); F(paradigm_input, segments); F(paradigm_input, nsegments);
+  F(paradigm_input, seed); F(paradigm_input, threads); F(paradigm_input, param);
+  Z(paradigm_result); F(paradigm_result, tri); F(paradigm_result, ntri);
+  F(paradigm_result, ops); F(paradigm_result, seconds); F(paradigm_result, distinct);
+  Z(linf_cube); F(linf_cube, d); F(linf_cube, side); F(linf_cube, face); F(linf_cube, top);
+  F(linf_cube, bottom);
+  Z(linf_simplices); F(linf_simplices, d); F(linf_simplices, n); F(linf_simplices, cap);
+  F(linf_simplices, v);
+  Z(linf_select_stats); F(linf_select_stats, facets); F(linf_select_stats, hull_facets);
+  F(linf_select_stats, cube_tests); F(linf_select_stats, largest_set);
+  F(linf_select_stats, degenerate);
+  Z(study_linf_mc); F(study_linf_mc, d); F(study_linf_mc, trials); F(study_linf_mc, seed);
+  F(study_linf_mc, count); F(study_linf_mc, infinite); F(study_linf_mc, law);
+  F(study_linf_mc, law_total);
+}
+
 int main(void) {
   layout_geom();
+  layout_paradigms();
   layout_rules();
   layout_lot();
   layout_census();

@@ -55,6 +55,14 @@ MIRRORS = {
     "_mirrors.ReportCensusRow": ("report_census_row", True, {}),
     "_mirrors.ReportCensusMeta": ("report_census_meta", True, {}),
     "_classify.Flipgraph": ("flipgraph", True, {}),
+    "_mirrors.OpsCounts": ("ops_counts", True, {}),
+    "_mirrors.ParadigmAlgorithm": ("paradigm_algorithm", True, {}),
+    "_mirrors.ParadigmInput": ("paradigm_input", True, {}),
+    "_mirrors.ParadigmResult": ("paradigm_result", True, {}),
+    "_mirrors.LinfCube": ("linf_cube", True, {}),
+    "_mirrors.LinfSimplices": ("linf_simplices", True, {}),
+    "_mirrors.LinfSelectStats": ("linf_select_stats", True, {}),
+    "_mirrors.StudyLinfMc": ("study_linf_mc", True, {}),
 }
 # structures set by verbs: field -> the verb that sets it (default
 # lot_options_set_FIELD), None for what a binding does not set
