@@ -90,14 +90,27 @@ def test_constrained_and_polygons():
     seg = np.array([[0, 1], [2, 3], [4, 5]])
     want = _canon(fliplab.lot(p, "DT", segments=seg, keep_hull=True).triangles)
     for a in _serving("constrained"):
+        if a == "dc-constrained":   # serves segments that are Delaunay edges only
+            with pytest.raises(ValueError, match="virtual sites"):
+                fliplab.triangulate_by(p, a, problem="constrained", segments=seg)
+            continue
         t, _ = fliplab.triangulate_by(p, a, problem="constrained", segments=seg)
         assert np.array_equal(t, want), a
-    poly = fliplab.samplers.polygon(60, "star", seed=2)
-    for a in _serving("polygon"):
-        t, _ = fliplab.triangulate_by(poly, a, problem="polygon")
-        assert len(t) == 58, a
-        assert np.array_equal(t, _canon(fliplab.lot(poly, "DT", segments=np.c_[np.arange(60),
-                              (np.arange(60) + 1) % 60]).triangles)), a
+    dt = _canon(fliplab.lot(p, "DT").triangles)
+    seg = np.array([[dt[k, 0], dt[k, 1]] for k in range(0, len(dt), 25)])
+    t, _ = fliplab.triangulate_by(p, "dc-constrained", problem="constrained", segments=seg)
+    assert np.array_equal(t, dt)
+    for kind in ("star", "monotone"):
+        poly = fliplab.samplers.polygon(60, kind, seed=2)
+        for a in _serving("polygon"):
+            if a == "sweep-monotone" and kind == "star":   # x-monotone polygons only
+                with pytest.raises(ValueError, match="not x-monotone"):
+                    fliplab.triangulate_by(poly, a, problem="polygon")
+                continue
+            t, _ = fliplab.triangulate_by(poly, a, problem="polygon")
+            assert len(t) == 58, a
+            assert np.array_equal(t, _canon(fliplab.lot(poly, "DT", segments=np.c_[
+                np.arange(60), (np.arange(60) + 1) % 60]).triangles)), a
     conv = fliplab.convex_polygons(80, 1, sampler="valtr", seed=1).points[0]
     want = _canon(fliplab.convex_dt(conv)[0])
     for a in _serving("convex"):
@@ -108,7 +121,7 @@ def test_constrained_and_polygons():
 def test_refusals():
     p = fliplab.samplers.points(20, "uniform", seed=1)
     cases = [(dict(algorithm="nope"), "algorithm: unknown algorithm 'nope'"),
-             (dict(algorithm="watson", rule="ES:square"), "needs the rule DT"),
+             (dict(algorithm="sweep-constrained", rule="ES:square"), "needs the rule DT"),
              (dict(algorithm="sweep", problem="polygon"), "does not solve the polygon problem"),
              (dict(algorithm="flip", problem="bogus"), "problem: unknown problem"),
              (dict(algorithm="flip", segments=[[0, 1]]), "segments: only for problem"),
