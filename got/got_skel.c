@@ -106,47 +106,91 @@ static int skel_witness(skel *s, uint32_t e) {
   return 0;
 }
 
-/* The next round's queue: the live edges (not hull edges) of the triangles that edge e's
-** removal kills, each once (flag). */
-static void skel_remove(skel *s, uint32_t e, uint32_t *next, size_t *nn, unsigned char *flag) {
-  s->ealive[e] = 0;
-  for (uint32_t i = s->toff[e]; i < s->toff[e + 1]; i++) {
-    uint32_t t = s->tinc[i] >> 1;
-    if (!s->talive[t]) continue;
-    s->talive[t] = 0;
-    for (int k = 0; k < 3; k++) {
-      uint32_t f = s->te[3 * t + k];
-      if (f != e && s->ealive[f] && !s->hull[f] && !flag[f]) flag[f] = 1, next[(*nn)++] = f;
-    }
+/* A round's removals, in three parallel sweeps over its losers (every !keep[i]), each
+** reading only what no thread writes during it: the losers die; each live triangle of a
+** loser flags its live edges that are no hull edges (the next round's queue, by
+** skel_flagged: each once, ascending, whatever the thread count); the losers' triangles
+** die.  The queue holds every edge the sequential removal in queue order would have
+** queued, but those that die in the same round (they would be kept at once as dead), so
+** the rounds decide the same edges.  Cost: the triangles of the losers. */
+static void skel_remove_round(skel *s, const uint32_t *W, const unsigned char *keep,
+                              long long nw, unsigned char *flag) {
+#pragma omp parallel num_threads(s->threads) if (nw >= SKEL_BLOCK)
+  {
+#pragma omp for schedule(static)
+    for (long long i = 0; i < nw; i++)
+      if (!keep[i]) s->ealive[W[i]] = 0;
+#pragma omp for schedule(dynamic, 256)
+    for (long long i = 0; i < nw; i++)
+      for (uint32_t j = s->toff[W[i]]; !keep[i] && j < s->toff[W[i] + 1]; j++) {
+        uint32_t t = s->tinc[j] >> 1;
+        for (int k = 0; k < 3 && s->talive[t]; k++) {
+          uint32_t f = s->te[3 * t + k];
+          if (s->ealive[f] && !s->hull[f]) {
+#pragma omp atomic write
+            flag[f] = 1;
+          }
+        }
+      }
+#pragma omp for schedule(dynamic, 256)
+    for (long long i = 0; i < nw; i++)
+      for (uint32_t j = s->toff[W[i]]; !keep[i] && j < s->toff[W[i] + 1]; j++) {
+#pragma omp atomic write
+        s->talive[s->tinc[j] >> 1] = 0;
+      }
   }
 }
 
+/* The flagged edges into out, ascending, their flags cleared; their count.  Blocks of
+** SKEL_FLAG_BLOCK edges counted in parallel, then written in parallel at their offsets.
+** cnt: one entry per block.  O(m) per call. */
+#define SKEL_FLAG_BLOCK 65536
+static size_t skel_flagged(const skel *s, unsigned char *flag, uint32_t *out, size_t *cnt) {
+  long long nb = (long long)(s->m / SKEL_FLAG_BLOCK + 1);
+  size_t total = 0;
+#pragma omp parallel for schedule(static) num_threads(s->threads) if (nb > 1)
+  for (long long b = 0; b < nb; b++) {
+    size_t e1 = (size_t)(b + 1) * SKEL_FLAG_BLOCK, c = 0;
+    for (size_t e = (size_t)b * SKEL_FLAG_BLOCK; e < e1 && e < s->m; e++) c += flag[e];
+    cnt[b] = c;
+  }
+  for (long long b = 0; b < nb; b++) {
+    size_t c = cnt[b];
+    cnt[b] = total, total += c;
+  }
+#pragma omp parallel for schedule(static) num_threads(s->threads) if (nb > 1)
+  for (long long b = 0; b < nb; b++) {
+    size_t e1 = (size_t)(b + 1) * SKEL_FLAG_BLOCK, k = cnt[b];
+    for (size_t e = (size_t)b * SKEL_FLAG_BLOCK; e < e1 && e < s->m; e++)
+      if (flag[e]) out[k++] = (uint32_t)e, flag[e] = 0;
+  }
+  return total;
+}
+
 /* The LMT loop in rounds (Jacobi: every queued edge is judged against the state at the
-** start of its round, in parallel, then the losers are removed in queue order).  Cost per
-** round: the witness searches of the queued edges. */
+** start of its round, in parallel, then the losers are removed: skel_remove_round).  Cost
+** per round: the witness searches of the queued edges, the triangles of the losers, and a
+** sweep of the edges' flags. */
 static int skel_lmt(skel *s, size_t *rounds) {
-  uint32_t *W = malloc(s->m * sizeof *W + 1), *next = malloc(s->m * sizeof *next + 1);
+  uint32_t *W = malloc(s->m * sizeof *W + 1);
   unsigned char *keep = malloc(s->m + 1), *flag = calloc(s->m + 1, 1);
-  if (!W || !next || !keep || !flag) return free(W), free(next), free(keep), free(flag), -1;
+  size_t *cnt = malloc((s->m / SKEL_FLAG_BLOCK + 1) * sizeof *cnt);
+  int fail = !W || !keep || !flag || !cnt;
   size_t nw = 0;
-  for (size_t e = 0; e < s->m; e++)
+  for (size_t e = 0; !fail && e < s->m; e++)
     if (!s->hull[e]) W[nw++] = (uint32_t)e;
   *rounds = 0;
-  while (nw > 0) {
+  while (!fail && nw > 0) {
     ++*rounds;
     long long nwl = (long long)nw;
-#pragma omp parallel for schedule(dynamic, 256) num_threads(s->threads)
+#pragma omp parallel for schedule(dynamic, 256) num_threads(s->threads) if (nwl >= 256)
     for (long long i = 0; i < nwl; i++)
-      keep[i] = !s->ealive[W[i]] || skel_witness(s, W[i]);
-    size_t nn = 0;
-    for (size_t i = 0; i < nw; i++)
-      if (!keep[i]) skel_remove(s, W[i], next, &nn, flag);
-    for (size_t i = 0; i < nn; i++) flag[next[i]] = 0;
-    uint32_t *t = W;
-    W = next, next = t, nw = nn;
+      keep[i] = skel_witness(s, W[i]);
+    skel_remove_round(s, W, keep, nwl, flag);
+    nw = skel_flagged(s, flag, W, cnt);
   }
-  free(W), free(next), free(keep), free(flag);
-  return 0;
+  free(W), free(keep), free(flag), free(cnt);
+  return fail ? -1 : 0;
 }
 
 /* ---- certain edges ------------------------------------------------------- */
