@@ -39,7 +39,7 @@
 
 static void skel_free_all(skel *s) {
   free(s->ev), free(s->off), free(s->nbr), free(s->nbe);
-  free(s->tv), free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
+  free(s->te), free(s->bad), free(s->toff), free(s->tinc), free(s->tmid);
   free(s->ealive), free(s->hull), free(s->talive), free(s->wit), free(s->hpair);
   skel_grid_free(&s->g);
   free(s->orig), free(s->q);
@@ -79,8 +79,7 @@ static int skel_flip_better(const skel *s, uint32_t a, uint32_t b, uint32_t c, u
 ** the quadrilateral is not strictly convex, or the flip is not certainly better. */
 static int skel_pair_keeps(const skel *s, uint32_t e, uint32_t t1, uint32_t t2) {
   uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
-  const uint32_t *v1 = s->tv + 3 * t1, *v2 = s->tv + 3 * t2;
-  uint32_t c = v1[0] + v1[1] + v1[2] - a - b, d = v2[0] + v2[1] + v2[2] - a - b;
+  uint32_t c = skel_tri_sum(s, t1) - a - b, d = skel_tri_sum(s, t2) - a - b;
   const geom_point *p = s->p;
   if (geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) >= 0) return 1;
   return !skel_flip_better(s, a, b, c, d, t1, t2);

@@ -74,7 +74,7 @@ typedef struct skel {
   uint32_t *ev;            /* 2 per edge (a, b), a < b, ascending */
   uint32_t *off, *nbr, *nbe;   /* neighbours of each point, ascending, with edge ids */
   size_t nt;               /* candidate triangles */
-  uint32_t *tv, *te;       /* 3 per triangle: a < b < c, and edges ab, ac, bc */
+  uint32_t *te;            /* 3 per triangle a < b < c: its edges ab, ac, bc */
   double *bad;             /* the measure of each triangle (SKEL_CERTIFIED) */
   uint32_t *toff, *tinc;   /* per edge its triangles, 2 t + (1: third vertex on the left) */
   uint32_t *tmid;          /* ... the left ones in [toff[e], tmid[e]), the right ones after */
@@ -91,6 +91,12 @@ typedef struct skel {
   double rho, alpha;
   int threads;
 } skel;
+
+/* The sum of triangle t's vertices (modulo 2^32): a + b + c, the ends of ab and of ac. */
+static inline uint32_t skel_tri_sum(const skel *s, uint32_t t) {
+  const uint32_t *ab = s->ev + 2 * s->te[3 * t], *ac = s->ev + 2 * s->te[3 * t + 1];
+  return ab[0] + ab[1] + ac[1];
+}
 
 typedef void (*skel_cell_fn)(void *ctx, size_t cell);
 

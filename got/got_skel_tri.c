@@ -65,10 +65,10 @@ static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) 
   return 1;
 }
 
-/* The candidate triangles with smallest vertex a, appended to out as three pairs: (a, b),
-** (c, edge ab), (edge ac, edge bc): each neighbour c of a neighbour b > a of a, with c > b,
-** that is a neighbour of a too (stamp[c] == a + 1, set here with the edge ac in
-** stamp[n + c]), and empty.  Cost: the neighbours of a's neighbours, an emptiness test
+/* The candidate triangles with smallest vertex a, appended to out as two pairs: (edge ab,
+** edge ac), (edge bc, 1 when c is left of ab): each neighbour c of a neighbour b > a of a,
+** with c > b, that is a neighbour of a too (stamp[c] == a + 1, set here with the edge ac
+** in stamp[n + c]), and empty.  Cost: the neighbours of a's neighbours, an emptiness test
 ** (the points of a box) for each triangle. */
 static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_vec *out) {
   uint32_t lo = s->off[a], hi = s->off[a + 1];
@@ -82,8 +82,8 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
       if (stamp[c] != a + 1) continue;
       int o = geom_orient(s->p[a], s->p[b], s->p[c]);
       if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
-      if (skel_vec_push(out, a, b) != 0 || skel_vec_push(out, c, s->nbe[i]) != 0 ||
-          skel_vec_push(out, stamp[s->n + c], s->nbe[k]) != 0)
+      if (skel_vec_push(out, s->nbe[i], stamp[s->n + c]) != 0 ||
+          skel_vec_push(out, s->nbe[k], o > 0) != 0)
         return -1;
     }
   }
@@ -98,38 +98,71 @@ static int skel_triangles_block(const skel *s, size_t a0, size_t a1, uint32_t *s
   return 0;
 }
 
-/* Fills tv, te, the per-edge incidence (tinc: 2 t + side) and the measures. */
-static int skel_incidence(skel *s) {
+/* Sorts v[0 .. n) ascending (dir 1) or descending (dir -1): insertion, for the few
+** triangles of one edge. */
+static void skel_sort_few(uint32_t *v, uint32_t n, int dir) {
+  for (uint32_t i = 1; i < n; i++) {
+    uint32_t x = v[i], j = i;
+    for (; j > 0 && (dir > 0 ? v[j - 1] > x : v[j - 1] < x); j--) v[j] = v[j - 1];
+    v[j] = x;
+  }
+}
+
+/* The per-edge incidence (tinc: 2 t + side, the left ones ascending in [toff[e], tmid[e]),
+** the right ones descending after), from the side bits left[t] (the third vertex is left
+** of ab and of bc when abc turns anticlockwise, of ac when it turns clockwise).  Counted
+** and placed in parallel with atomic counters, then each edge's lists sorted, so the
+** result is the same for any thread count.  Cost: O(triangles), the sorts of a few each. */
+static int skel_incidence(skel *s, const unsigned char *left) {
   s->toff = calloc(s->m + 1, sizeof *s->toff);
   s->tmid = malloc((s->m + 1) * sizeof *s->tmid);
   s->tinc = malloc(3 * s->nt * sizeof *s->tinc + 1);
   uint32_t *hi = malloc((s->m + 1) * sizeof *hi);
   if (!s->toff || !s->tmid || !s->tinc || !hi) return free(hi), -1;
-  for (size_t t = 0; t < 3 * s->nt; t++) s->toff[s->te[t] + 1]++;
-  for (size_t e = 0; e < s->m; e++) s->toff[e + 1] += s->toff[e];
-  memcpy(s->tmid, s->toff, (s->m + 1) * sizeof *hi);
-  memcpy(hi, s->toff + 1, s->m * sizeof *hi);
-  for (size_t t = 0; t < s->nt; t++) {
-    const uint32_t *v = s->tv + 3 * t;
-    int o = geom_orient(s->p[v[0]], s->p[v[1]], s->p[v[2]]);
-    /* the third vertex is left of ab and of bc when o > 0, of ac when o < 0 */
-    int side[3] = {o > 0, o < 0, o > 0};
-    for (int k = 0; k < 3; k++) {
-      uint32_t e = s->te[3 * t + k];
-      s->tinc[side[k] ? s->tmid[e]++ : --hi[e]] = (uint32_t)(2 * t) + side[k];
+  long long nt3 = 3 * (long long)s->nt, nt = (long long)s->nt, m = (long long)s->m;
+#pragma omp parallel num_threads(s->threads)
+  {
+#pragma omp for schedule(static)
+    for (long long t = 0; t < nt3; t++) {
+#pragma omp atomic
+      s->toff[s->te[t] + 1]++;
+    }
+#pragma omp single
+    {
+      for (size_t e = 0; e < s->m; e++) s->toff[e + 1] += s->toff[e];
+      memcpy(s->tmid, s->toff, (s->m + 1) * sizeof *hi);
+      memcpy(hi, s->toff + 1, s->m * sizeof *hi);
+    }
+#pragma omp for schedule(static)
+    for (long long t = 0; t < nt; t++)
+      for (int k = 0; k < 3; k++) {
+        uint32_t e = s->te[3 * t + k], at, side = (k == 1) ^ left[t];
+        if (side) {
+#pragma omp atomic capture
+          at = s->tmid[e]++;
+        } else {
+#pragma omp atomic capture
+          at = --hi[e];
+        }
+        s->tinc[at] = (uint32_t)(2 * t) + side;
+      }
+#pragma omp for schedule(static, 4096)
+    for (long long e = 0; e < m; e++) {
+      skel_sort_few(s->tinc + s->toff[e], s->tmid[e] - s->toff[e], 1);
+      skel_sort_few(s->tinc + s->tmid[e], s->toff[e + 1] - s->tmid[e], -1);
     }
   }
   free(hi);
   return 0;
 }
 
-/* Every candidate triangle into s->tv and its edges into s->te, found in parallel by
-** blocks of points joined in order (the same list for any thread count), each block freed
-** once copied. */
-static int skel_triangles_find(skel *s) {
-  size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK;
+/* Every candidate triangle's edges into s->te and its side bit into *left, found in
+** parallel by blocks of points, each block copied at its offset (the same list for any
+** thread count) and freed. */
+static int skel_triangles_find(skel *s, unsigned char **left) {
+  size_t nb = (s->n + SKEL_BLOCK - 1) / SKEL_BLOCK, *at = calloc(nb + 1, sizeof *at);
   skel_vec *part = calloc(nb, sizeof *part);
-  int fail = !part;
+  int fail = !part || !at;
 #pragma omp parallel num_threads(s->threads) reduction(| : fail)
   {
     uint32_t *stamp = calloc(2 * s->n, sizeof *stamp);
@@ -142,33 +175,40 @@ static int skel_triangles_find(skel *s) {
                                      &part[b]) != 0;
     free(stamp);
   }
-  s->nt = 0;
-  for (size_t b = 0; part && b < nb; b++) s->nt += part[b].n / 3;
-  s->tv = fail ? NULL : malloc(3 * s->nt * sizeof *s->tv + 1);
+  for (size_t b = 0; part && at && b < nb; b++) at[b + 1] = at[b] + part[b].n / 2;
+  s->nt = fail ? 0 : at[nb];
   s->te = fail ? NULL : malloc(3 * s->nt * sizeof *s->te + 1);
-  for (size_t b = 0, t = 0; part && b < nb; b++) {
-    for (size_t k = 0; k < part[b].n && s->tv && s->te; k += 3, t++) {
+  *left = fail ? NULL : malloc(s->nt + 1);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(s->threads)
+  for (long long b = 0; b < (long long)(part ? nb : 0); b++) {
+    for (size_t k = 0, t = at ? at[b] : 0; k < part[b].n && s->te && *left; k += 2, t++) {
       const uint32_t *v = part[b].v + 2 * k;
-      s->tv[3 * t] = v[0], s->tv[3 * t + 1] = v[1], s->tv[3 * t + 2] = v[2];
-      s->te[3 * t] = v[3], s->te[3 * t + 1] = v[4], s->te[3 * t + 2] = v[5];
+      s->te[3 * t] = v[0], s->te[3 * t + 1] = v[1], s->te[3 * t + 2] = v[2];
+      (*left)[t] = (unsigned char)v[3];
     }
     free(part[b].v);
   }
-  free(part);
-  return s->tv && s->te ? 0 : -1;
+  free(part), free(at);
+  return s->te && *left ? 0 : -1;
 }
 
-/* The candidate triangles, their edges, incidence and measures. */
+/* The candidate triangles, their edges, incidence and measures (a triangle's vertices
+** a < b < c are the ends of its edges ab and ac). */
 int skel_triangles(skel *s) {
-  if (skel_triangles_find(s) != 0) return -1;
+  unsigned char *left = NULL;
+  if (skel_triangles_find(s, &left) != 0) return free(left), -1;
   s->talive = malloc(s->nt + 1);
-  if (!s->talive) return -1;
+  if (!s->talive) return free(left), -1;
   memset(s->talive, 1, s->nt);
   if (s->kind == SKEL_CERTIFIED) {
     s->bad = malloc(s->nt * sizeof *s->bad + 1);
-    if (!s->bad) return -1;
-    for (size_t t = 0; t < s->nt; t++)
-      s->bad[t] = s->mp(s->p[s->tv[3 * t]], s->p[s->tv[3 * t + 1]], s->p[s->tv[3 * t + 2]]);
+    if (!s->bad) return free(left), -1;
+    for (size_t t = 0; t < s->nt; t++) {
+      const uint32_t *ab = s->ev + 2 * s->te[3 * t], *ac = s->ev + 2 * s->te[3 * t + 1];
+      s->bad[t] = s->mp(s->p[ab[0]], s->p[ab[1]], s->p[ac[1]]);
+    }
   }
-  return skel_incidence(s);
+  int rc = skel_incidence(s, left);
+  free(left);
+  return rc;
 }
