@@ -196,10 +196,29 @@ static int skel_lmt(skel *s, size_t *rounds) {
 
 typedef struct skel_cells { uint32_t *off, *list; uint32_t cur; int fill; } skel_cells;
 
+/* Counts (fill = 0) or places (fill = 1) edge cur in a cell, from any thread: a cell's list
+** comes in any order, which only changes which crossing is found first, not whether one is. */
 static void skel_cells_visit(void *ctx, size_t cell) {
   skel_cells *c = ctx;
-  if (c->fill) c->list[c->off[cell]++] = c->cur;
-  else c->off[cell + 1]++;
+  uint32_t at;
+  if (c->fill) {
+#pragma omp atomic capture
+    at = c->off[cell]++;
+    c->list[at] = c->cur;
+  } else {
+#pragma omp atomic
+    c->off[cell + 1]++;
+  }
+}
+
+/* Every live edge's cells through skel_cells_visit, in parallel. */
+static void skel_cells_all(const skel *s, skel_cells c) {
+  long long m = (long long)s->m;
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(s->threads) firstprivate(c)
+  for (long long e = 0; e < m; e++)
+    if (s->ealive[e])
+      c.cur = (uint32_t)e,
+      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_cells_visit, &c);
 }
 
 /* 1 when segments e and f (no common endpoint) cross (exact). */
@@ -232,19 +251,13 @@ static int skel_certain(const skel *s, unsigned char *cert) {
   skel_cells c = {calloc(cells + 1, sizeof(uint32_t)), NULL, 0, 0};
   uint32_t *start = malloc((cells + 1) * sizeof *start);
   if (!c.off || !start) return free(c.off), free(start), -1;
-  for (size_t e = 0; e < s->m; e++)
-    if (s->ealive[e])
-      c.cur = (uint32_t)e,
-      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_cells_visit, &c);
+  skel_cells_all(s, c);
   for (size_t k = 0; k < cells; k++) c.off[k + 1] += c.off[k];
   memcpy(start, c.off, (cells + 1) * sizeof *start);
   c.list = malloc((size_t)c.off[cells] * sizeof *c.list + 1);
   if (!c.list) return free(c.off), free(start), -1;
   c.fill = 1;
-  for (size_t e = 0; e < s->m; e++)
-    if (s->ealive[e])
-      c.cur = (uint32_t)e,
-      skel_segment_cells(&s->g, s->p[s->ev[2 * e]], s->p[s->ev[2 * e + 1]], skel_cells_visit, &c);
+  skel_cells_all(s, c);
   long long m = (long long)s->m;
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(s->threads)
   for (long long e = 0; e < m; e++) {
