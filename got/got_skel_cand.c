@@ -51,8 +51,9 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
                         geom_point pb, int diamond) {
   double ex = diamond ? 0.21 * fabs(pb.y - pa.y) : 0;
   double ey = diamond ? 0.21 * fabs(pb.x - pa.x) : 0;
-  double xa = fmin(pa.x, pb.x) - ex, xb = fmax(pa.x, pb.x) + ex;
-  double ya = fmin(pa.y, pb.y) - ey, yb = fmax(pa.y, pb.y) + ey;
+  int sx = pa.x < pb.x, sy = pa.y < pb.y;   /* plain selections: fmin is a library call */
+  double xa = (sx ? pa.x : pb.x) - ex, xb = (sx ? pb.x : pa.x) + ex;
+  double ya = (sy ? pa.y : pb.y) - ey, yb = (sy ? pb.y : pa.y) + ey;
   skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
   int left = 0, right = 0;
   for (int iy = bx.iy0; iy <= bx.iy1; iy++)

@@ -20,18 +20,19 @@ static int skel_in_triangle(geom_point a, geom_point b, geom_point c, geom_point
 /* The x-range of the triangle (x[k], y[k]) over the band ya <= y <= yb: its vertices in
 ** the band and its sides' crossings of the band's two lines.  A crossing is interpolated
 ** between the side's ends (t in [0, 1]), within a few ulps of the coordinates' spread of
-** its exact place, far below the padding SKEL_PAD of the callers. */
+** its exact place, far below the padding SKEL_PAD of the callers.  (Plain selections
+** rather than fmin and fmax, which are library calls: nothing here is NaN.) */
 static void skel_band_x(const double *x, const double *y, double ya, double yb, double *lo,
                         double *hi) {
   *lo = INFINITY, *hi = -INFINITY;
   for (int k = 0; k < 3; k++) {
     double px = x[k], py = y[k], qx = x[(k + 1) % 3], qy = y[(k + 1) % 3];
-    if (py >= ya && py <= yb) *lo = fmin(*lo, px), *hi = fmax(*hi, px);
+    if (py >= ya && py <= yb) *lo = px < *lo ? px : *lo, *hi = px > *hi ? px : *hi;
     for (int j = 0; j < 2; j++) {
       double yy = j ? yb : ya;
       if ((py - yy) * (qy - yy) < 0) {
         double xx = px + (yy - py) / (qy - py) * (qx - px);
-        *lo = fmin(*lo, xx), *hi = fmax(*hi, xx);
+        *lo = xx < *lo ? xx : *lo, *hi = xx > *hi ? xx : *hi;
       }
     }
   }
