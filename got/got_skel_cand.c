@@ -41,6 +41,23 @@ static int skel_in_cone(geom_point a, geom_point b, geom_point q, int side) {
 /* ---- candidate edges ----------------------------------------------------- */
 
 
+/* Where q stands for the diamond test of ab: 2 on the open segment ab (exact), +1 inside
+** the left diamond triangle, -1 inside the right one (skel_in_cone), 0 elsewhere.  One
+** orientation determinant decides which side to test: computed, it is within ecr of its
+** exact value (the bound of skel_in_cone, Shewchuk's), so beyond ecr q is certainly off
+** the line (skel_on_segment's exact test would say 0) and certainly not inside the other
+** side's triangle (skel_in_cone asks more than that margin); within it, neither cone test
+** can succeed, and only the exact test on the segment is left.  The same answers as
+** skel_on_segment and skel_in_cone on both sides, one cone test instead of two. */
+static int skel_diamond_side(geom_point a, geom_point b, geom_point q) {
+  double ux = b.x - a.x, uy = b.y - a.y, vx = q.x - a.x, vy = q.y - a.y;
+  double l = ux * vy, r = uy * vx, cr = l - r;
+  double ecr = (3 + 16 * SKEL_U) * SKEL_U * (fabs(l) + fabs(r));
+  if (!(fabs(cr) > ecr)) return skel_on_segment(a, b, q) ? 2 : 0;
+  int side = cr > 0 ? 1 : -1;
+  return skel_in_cone(a, b, q, side) ? side : 0;
+}
+
 /* Is ab an edge candidate?  0 when a third point lies on the open segment, or, with
 ** diamond = 1, when both diamond triangles on ab hold a point (Das and Joseph: an edge of
 ** a minimum-weight triangulation has an empty isosceles triangle with base angles pi/8 on
@@ -63,12 +80,10 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
         uint32_t q = g->pt[k];
         geom_point pq = g->gp[k];
         if (q == a || q == b || pq.x < xa || pq.x > xb || pq.y < ya || pq.y > yb) continue;
-        if (skel_on_segment(pa, pb, pq)) return 0;
-        if (diamond) {
-          left |= skel_in_cone(pa, pb, pq, 1);
-          right |= skel_in_cone(pa, pb, pq, -1);
-          if (left && right) return 0;
-        }
+        int w = diamond ? skel_diamond_side(pa, pb, pq) : 2 * skel_on_segment(pa, pb, pq);
+        if (w == 2) return 0;
+        left |= w == 1, right |= w == -1;
+        if (left && right) return 0;
       }
     }
   return 1;
@@ -383,7 +398,7 @@ static int skel_seen_sectors(skel_search *z) {
 }
 
 /* 1 when the points seen around a prove that pair ab (b = z->seen[ib]) fails the diamond
-** test: a point certainly inside each diamond triangle (skel_in_cone, the pair's ends in
+** test: a point certainly inside each diamond triangle (skel_diamond_side, the pair's ends in
 ** the order P, Q that skel_edge_ok gets, so this drops only pairs that skel_edge_ok
 ** drops).  A triangle's directions from a are within pi/8 (8 sectors) of b's, so only the
 ** 19 sectors around b's are read, nearest first; both triangles lie within |ab| /
@@ -401,8 +416,8 @@ static int skel_seen_fails(const skel_search *z, size_t ib, geom_point P, geom_p
       const skel_seen *q = &z->seen[z->sidx[j]];
       if (q->ring > kmax) break;
       if (z->sidx[j] == ib) continue;
-      left |= skel_in_cone(P, Q, q->pt, 1);
-      right |= skel_in_cone(P, Q, q->pt, -1);
+      int w = skel_diamond_side(P, Q, q->pt);
+      left |= w == 1, right |= w == -1;
       if (left && right) return 1;
     }
   }

@@ -49,7 +49,8 @@ static inline int skel_celly(const skel_grid *g, double y) {
 /* The cells that can hold a point of the box [xa, xb] x [ya, yb] (padded: SKEL_PAD). */
 typedef struct skel_box { int ix0, ix1, iy0, iy1; } skel_box;
 
-static inline skel_box skel_grid_box(const skel_grid *g, double xa, double xb, double ya, double yb) {
+static inline skel_box skel_grid_box(const skel_grid *g, double xa, double xb, double ya,
+                                     double yb) {
   double e = SKEL_PAD * g->h;
   skel_box r = {skel_cell((xa - g->x0) - e, g->inv, g->nx),
                 skel_cell((xb - g->x0) + e, g->inv, g->nx),
