@@ -47,15 +47,12 @@ void skel_grid_free(skel_grid *g) {
   free(g->sect_n);
 }
 
-int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
-  if (s->n == s->cap) {
-    size_t cap = s->cap ? 2 * s->cap : 64;
-    uint32_t *v = realloc(s->v, 2 * cap * sizeof *v);
-    if (!v) return -1;
-    s->v = v, s->cap = cap;
-  }
-  s->v[2 * s->n] = a, s->v[2 * s->n + 1] = b;
-  s->n++;
+/* A full array doubled (64 pairs at first): 0, or -1 out of memory. */
+int skel_vec_grow(skel_vec *s) {
+  size_t cap = s->cap ? 2 * s->cap : 64;
+  uint32_t *v = realloc(s->v, 2 * cap * sizeof *v);
+  if (!v) return -1;
+  s->v = v, s->cap = cap;
   return 0;
 }
 

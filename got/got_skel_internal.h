@@ -62,6 +62,16 @@ static inline skel_box skel_grid_box(const skel_grid *g, double xa, double xb, d
 /* A growing array of edges (a, b), a < b, 2 entries each. */
 typedef struct skel_vec { uint32_t *v; size_t n, cap; } skel_vec;
 
+FLIPLAB_INTERNAL int skel_vec_grow(skel_vec *s);
+/* Appends (a, b): inline, as the searches push tens of pairs a point; 0, or -1 out of
+** memory. */
+static inline int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
+  if (s->n == s->cap && skel_vec_grow(s) != 0) return -1;
+  s->v[2 * s->n] = a, s->v[2 * s->n + 1] = b;
+  s->n++;
+  return 0;
+}
+
 /* How a flip is decided (chosen once, skel_decider). */
 typedef enum skel_kind {
   SKEL_EXACT_LENGTH,    /* P_1: exact squared lengths of the diagonals */
@@ -104,7 +114,6 @@ typedef void (*skel_cell_fn)(void *ctx, size_t cell);
 /* got_skel_grid.c */
 FLIPLAB_INTERNAL int skel_grid_build(skel_grid *g, const geom_point *p, size_t n);
 FLIPLAB_INTERNAL void skel_grid_free(skel_grid *g);
-FLIPLAB_INTERNAL int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b);
 FLIPLAB_INTERNAL void skel_segment_cells(const skel_grid *g, geom_point a, geom_point b,
                                          skel_cell_fn visit, void *ctx);
 /* got_skel_cand.c */
