@@ -227,6 +227,34 @@ static void test_diamond_search(void **state) {
   }
 }
 
+/* ---- the same skeleton for any thread count ---- */
+
+/* 6000 uniform points: about 130,000 candidate edges, so the loop's rounds remove in
+** parallel sweeps and gather their queues from several blocks of flags, and the triangles'
+** incidence is placed by racing threads; 1, 2 and 3 threads must give the same edges and
+** states (the output is the same whatever the thread count), and the same rounds. */
+static void test_threads(void **state) {
+  (void)state;
+  enum { N = 6000 };
+  static geom_point p[N];
+  testutil_rng g = {386};
+  rule r;
+  char err[256];
+  assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
+  for (int i = 0; i < N; i++) p[i] = (geom_point){testutil_uniform(&g), testutil_uniform(&g)};
+  got_skel s[3];
+  for (int t = 0; t < 3; t++)
+    if (got_skel_build(p, N, &r, t + 1, &s[t], err, sizeof err) != 0) fail_msg("%s", err);
+  assert_true(s[0].candidates > 65536);
+  for (int t = 1; t < 3; t++) {
+    assert_int_equal(s[t].nedges, s[0].nedges);
+    assert_int_equal(s[t].rounds, s[0].rounds);
+    assert_memory_equal(s[t].edge, s[0].edge, 2 * s[0].nedges * sizeof *s[0].edge);
+    assert_memory_equal(s[t].state, s[0].state, s[0].nedges);
+  }
+  for (int t = 0; t < 3; t++) got_skel_free(&s[t]);
+}
+
 /* ---- refusals ---- */
 
 static void sk_refuse(const geom_point *p, size_t n, const char *rname) {
@@ -262,6 +290,7 @@ int main(void) {
     cmocka_unit_test(test_grids_and_circles),
     cmocka_unit_test(test_convex_position),
     cmocka_unit_test(test_diamond_search),
+    cmocka_unit_test(test_threads),
     cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
