@@ -94,7 +94,7 @@ static int dp_in_triangle(dp_run *R, uint32_t a, uint32_t b, uint32_t c, uint32_
 ** a cell between those of the triangle's extreme coordinates, and the
 ** exact orientation tests decide. */
 typedef struct dp_ears {
-  uint32_t *next, *prev, *link, *head;
+  uint32_t *next, *prev, *cell, *off;   /* cell: the bent vertices, cell by cell */
   uint8_t *bent;
   double x0, y0, sx, sy;
   uint32_t w;           /* cells a side */
@@ -103,6 +103,12 @@ typedef struct dp_ears {
 static uint32_t dp_cell(double v, double v0, double s, uint32_t w) {
   double c = (v - v0) * s;
   return c <= 0 ? 0 : c >= (double)(w - 1) ? w - 1 : (uint32_t)c;
+}
+
+/* The grid cell of vertex v (row-major). */
+static size_t dp_vertex_cell(const dp_run *R, const dp_ears *E, uint32_t v) {
+  return (size_t)dp_cell(R->q[v].y, E->y0, E->sy, E->w) * E->w
+         + dp_cell(R->q[v].x, E->x0, E->sx, E->w);
 }
 
 /* Is v an ear of the remaining polygon?  Strictly convex, and no reflex or
@@ -120,8 +126,10 @@ static int dp_is_ear(dp_run *R, const dp_ears *E, uint32_t v) {
   uint32_t cy1 = dp_cell(hy, E->y0, E->sy, E->w);
   for (uint32_t cy = dp_cell(ly, E->y0, E->sy, E->w); cy <= cy1; cy++)
     for (uint32_t cx = cx0; cx <= cx1; cx++)
-      for (uint32_t w = E->head[cy * E->w + cx]; w != UINT32_MAX; w = E->link[w])
+      for (uint32_t k = E->off[cy * E->w + cx]; k < E->off[cy * E->w + cx + 1]; k++) {
+        uint32_t w = E->cell[k];
         if (E->bent[w] && w != a && w != b && dp_in_triangle(R, a, v, b, w)) return 0;
+      }
   return 1;
 }
 
@@ -132,7 +140,7 @@ static void dp_bend(dp_run *R, dp_ears *E, uint32_t v) {
 /* The ring, the bent vertices and their grid of about one cell each. */
 static int dp_ears_begin(dp_run *R, dp_ears *E, uint32_t *lst) {
   uint32_t n = R->n, r = 0;
-  E->next = lst, E->prev = lst + n, E->link = lst + 2 * n, E->bent = (uint8_t *)(lst + 3 * n);
+  E->next = lst, E->prev = lst + n, E->cell = lst + 2 * n, E->bent = (uint8_t *)(lst + 3 * n);
   double x1 = R->q[0].x, y1 = R->q[0].y;
   E->x0 = x1, E->y0 = y1;
   for (uint32_t v = 0; v < n; v++) {
@@ -144,16 +152,21 @@ static int dp_ears_begin(dp_run *R, dp_ears *E, uint32_t *lst) {
   for (uint32_t v = 0; v < n; v++) dp_bend(R, E, v), r += E->bent[v];
   for (E->w = 1; (E->w + 1) * (E->w + 1) <= r; E->w++) {}
   E->sx = E->w / (x1 - E->x0), E->sy = E->w / (y1 - E->y0);   /* ranges > 0: no line */
-  E->head = malloc((size_t)E->w * E->w * sizeof *E->head);
-  if (E->head == NULL) return -1;
-  ops_memory(R->c, (int64_t)E->w * E->w * 4);
-  memset(E->head, 0xff, (size_t)E->w * E->w * sizeof *E->head);
+  size_t cells = (size_t)E->w * E->w;
+  E->off = calloc(cells + 1, sizeof *E->off);
+  if (E->off == NULL) return -1;
+  ops_memory(R->c, (int64_t)(cells + 1) * 4);
+  /* a counting sort by cell (the vertex's cell computed twice, the same both times); an
+  ** earlier linked-list insertion (link[v] = head[c], head[c] = v) came out of clang 14 at
+  ** -O3 -march=native vectorised (AVX-512 gathers and scatters) and lost vertices that
+  ** shared a cell: ears were cut over reflex vertices (test_dc_polygon caught it) */
   for (uint32_t v = 0; v < n; v++)
-    if (E->bent[v]) {
-      uint32_t *h = &E->head[dp_cell(R->q[v].y, E->y0, E->sy, E->w) * E->w
-                             + dp_cell(R->q[v].x, E->x0, E->sx, E->w)];
-      E->link[v] = *h, *h = v;
-    }
+    if (E->bent[v]) E->off[dp_vertex_cell(R, E, v) + 1]++;
+  for (size_t c = 0; c < cells; c++) E->off[c + 1] += E->off[c];
+  for (uint32_t v = 0; v < n; v++)
+    if (E->bent[v]) E->cell[E->off[dp_vertex_cell(R, E, v)]++] = v;
+  memmove(E->off + 1, E->off, cells * sizeof *E->off);   /* back to the cells' starts */
+  E->off[0] = 0;
   return 0;
 }
 
@@ -180,7 +193,7 @@ static int dp_ears_cut(dp_run *R, uint32_t *lst) {
   R->tri[3 * t] = E.prev[v], R->tri[3 * t + 1] = v, R->tri[3 * t + 2] = E.next[v];
   ops_add(R->c, OPS_EDGES_MADE, 2 * (uint64_t)R->n - 3);   /* n sides, n - 3 diagonals */
   ops_memory(R->c, -(int64_t)E.w * E.w * 4);
-  free(E.head);
+  free(E.off);
   return left > 3 ? -2 : 0;
 }
 
