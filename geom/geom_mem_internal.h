@@ -1,9 +1,9 @@
 /*
 ** geom_mem_internal.h: the one growth rule of the library's growable
-** arrays (lot/sweep.c's nodes and heaps, got/got_face.c's memo): capacity
-** doubled from 256 until it holds need elements of size bytes, so n
-** appends cost O(n) copies in all.  Inline: no symbol of its own.  Not
-** installed.
+** arrays (lot/sweep.c's nodes and heaps, got/got_face.c's memo, the got
+** skeleton's edge lists): capacity doubled from 256 until it holds need
+** elements of size bytes, so n appends cost O(n) copies in all.  Inline:
+** no symbol of its own.  Not installed.
 */
 #ifndef FLIPLAB_GEOM_MEM_INTERNAL_H
 #define FLIPLAB_GEOM_MEM_INTERNAL_H

@@ -47,15 +47,6 @@ void skel_grid_free(skel_grid *g) {
   free(g->sect_n);
 }
 
-/* A full array doubled (64 pairs at first): 0, or -1 out of memory. */
-int skel_vec_grow(skel_vec *s) {
-  size_t cap = s->cap ? 2 * s->cap : 64;
-  uint32_t *v = realloc(s->v, 2 * cap * sizeof *v);
-  if (!v) return -1;
-  s->v = v, s->cap = cap;
-  return 0;
-}
-
 /* The cells segment ab passes through (padded: SKEL_PAD), line by line along its major
 ** axis: for each column (|dx| >= |dy|; rows otherwise) the range of the other coordinate
 ** over the column, in positions relative to the grid's corner.  With a slope of at most

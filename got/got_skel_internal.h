@@ -9,6 +9,7 @@
 #include "measure.h"
 #include "got_internal.h"
 #include "got_skel.h"
+#include "geom_mem_internal.h"
 
 #define SKEL_U 0x1p-53
 
@@ -59,14 +60,14 @@ static inline skel_box skel_grid_box(const skel_grid *g, double xa, double xb, d
   return r;
 }
 
-/* A growing array of edges (a, b), a < b, 2 entries each. */
+/* A growing array of edges (a, b), a < b, 2 entries each (n and cap count pairs; the
+** library's one growth rule, geom_grow). */
 typedef struct skel_vec { uint32_t *v; size_t n, cap; } skel_vec;
 
-FLIPLAB_INTERNAL int skel_vec_grow(skel_vec *s);
 /* Appends (a, b): inline, as the searches push tens of pairs a point; 0, or -1 out of
 ** memory. */
 static inline int skel_vec_push(skel_vec *s, uint32_t a, uint32_t b) {
-  if (s->n == s->cap && skel_vec_grow(s) != 0) return -1;
+  if (geom_grow((void **)&s->v, &s->cap, s->n + 1, 2 * sizeof *s->v) != 0) return -1;
   s->v[2 * s->n] = a, s->v[2 * s->n + 1] = b;
   s->n++;
   return 0;

@@ -24,6 +24,11 @@
   "incremental and flip (2.4.3's own polygon selection is not built)"
 
 /* One row per algorithm; problems and rules as in paradigm.h. */
+/* Why Watson's insertion and the history DAG refuse constraints and polygons. */
+#define PARADIGM_CAVITY_REFUSAL \
+  "constraints and polygons: not built (a cavity would have to stop at segments); " \
+  "the row incremental inserts segments"
+
 static const paradigm_algorithm paradigm_algorithms[] = {
   {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
    | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",
@@ -94,13 +99,11 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "O(n) expected for uniform sites (n buckets in Morton order, walk)",
    "buckets (0: n)", paradigm_incr_quaternary},
   {"watson", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints and polygons: not built (a cavity would have to stop at segments); "
-   "the row incremental inserts segments",
+   PARADIGM_CAVITY_REFUSAL,
    "O(n) expected for uniform sites (quaternary order, walk), O(n^2) worst",
    "1: random order (0: quaternary buckets)", paradigm_watson},
   {"incremental-dag", "incremental", "2.3.1; 2.3.6", PARADIGM_DELAUNAY, BOTH_RULES,
-   "constraints and polygons: not built (a cavity would have to stop at segments); "
-   "the row incremental inserts segments",
+   PARADIGM_CAVITY_REFUSAL,
    "O(n log n) expected (random order, history DAG)",
    "1: quaternary buckets (0: random order)", paradigm_incr_dag},
   /* chapter 5's convex polygon algorithms (paradigms/convex_rows.c, cpdt/) */
