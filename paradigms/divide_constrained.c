@@ -25,25 +25,6 @@
 #include <stdlib.h>
 #include "paradigm_internal.h"
 
-static uint64_t dcc_key(uint32_t a, uint32_t b) {
-  return a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
-}
-
-static int dcc_cmp(const void *x, const void *y) {
-  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-  return (a > b) - (a < b);
-}
-
-static int dcc_has(const uint64_t *key, size_t m, uint64_t k) {
-  size_t lo = 0, hi = m;
-  while (lo < hi) {
-    size_t mid = lo + (hi - lo) / 2;
-    if (key[mid] < k) lo = mid + 1;
-    else hi = mid;
-  }
-  return lo < m && key[lo] == k;
-}
-
 /* Is every segment an edge of out's triangles?  0, or -1 naming the first
 ** that is not (or joins a point to itself), or out of memory. */
 static int dcc_segments_are_edges(const paradigm_input *in, const paradigm_output *out,
@@ -56,14 +37,15 @@ static int dcc_segments_are_edges(const paradigm_input *in, const paradigm_outpu
   }
   for (size_t t = 0; t < out->ntri; t++)
     for (int k = 0; k < 3; k++)
-      key[3 * t + k] = dcc_key(out->tri[3 * t + k], out->tri[3 * t + (k + 1) % 3]);
-  qsort(key, m, sizeof *key, dcc_cmp);
+      key[3 * t + k] = paradigm_edge_key(out->tri[3 * t + k], out->tri[3 * t + (k + 1) % 3]);
+  qsort(key, m, sizeof *key, paradigm_key_cmp);
   int rc = 0;
   for (size_t s = 0; s < in->nsegments && rc == 0; s++) {
     uint32_t a = in->segments[2 * s], b = in->segments[2 * s + 1];
     if (a == b)
       snprintf(err, errlen, "segment %zu joins a point to itself", s), rc = -1;
-    else if (!dcc_has(key, m, dcc_key(a, b)))
+    else if (!bsearch(&(uint64_t){paradigm_edge_key(a, b)}, key, m, sizeof *key,
+                      paradigm_key_cmp))
       snprintf(err, errlen, "dc-constrained: segment %zu is no edge of the strips' Delaunay "
                "triangulation, and the virtual sites that carry a segment across strip "
                "borders (Chew, 2.6.2) are not built", s), rc = -1;

@@ -9,15 +9,6 @@
 #include "paradigm_internal.h"
 #include "lot.h"
 
-static uint64_t fin_key(uint32_t u, uint32_t v) {
-  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
-}
-
-static int fin_cmp(const void *x, const void *y) {
-  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-  return a < b ? -1 : a > b;
-}
-
 /* The corner of triangle u across which triangle t lies (-1: none). */
 static int fin_back(const int32_t *nb, size_t u, size_t t) {
   for (int k = 0; k < 3; k++)
@@ -76,8 +67,8 @@ static void fin_edge(fin_state *F, size_t t, int k) {
   int32_t ui = F->nb[3 * t + (size_t)k];
   uint32_t *v = F->tri + 3 * t;
   uint32_t P = v[k], A = v[(k + 1) % 3], B = v[(k + 2) % 3];
-  uint64_t key = fin_key(A, B);
-  if (ui < 0 || bsearch(&key, F->cons, F->ncons, sizeof key, fin_cmp) != NULL) return;
+  uint64_t key = paradigm_edge_key(A, B);
+  if (ui < 0 || bsearch(&key, F->cons, F->ncons, sizeof key, paradigm_key_cmp) != NULL) return;
   size_t u = (size_t)ui;
   int j = fin_back(F->nb, u, t);
   uint32_t Q = F->tri[3 * u + (size_t)j];
@@ -134,8 +125,8 @@ int paradigm_sweep_finish(const paradigm_input *in, uint32_t *tri, size_t ntri,
              "a bug, please report the input", ntri, in->n);
     rc = -1;
   } else {
-    for (size_t i = 0; i < ncons; i++) keys[i] = fin_key(cons[2 * i], cons[2 * i + 1]);
-    qsort(keys, ncons, sizeof *keys, fin_cmp);
+    for (size_t i = 0; i < ncons; i++) keys[i] = paradigm_edge_key(cons[2 * i], cons[2 * i + 1]);
+    qsort(keys, ncons, sizeof *keys, paradigm_key_cmp);
     fin_state F = {in->p, in->r, c, tri, nb, keys, ncons, stack, 0, cap, 0};
     fin_lawson(&F, ntri);
     stack = F.stack;
