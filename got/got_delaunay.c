@@ -16,6 +16,7 @@
 */
 #include <stdlib.h>
 #include "got_internal.h"
+#include "geom_key_internal.h"
 
 int got_delaunay(const geom_point *p, size_t n, got_triangle *out, int *unique) {
   if (n < 3) return -1;
@@ -42,27 +43,16 @@ int got_delaunay(const geom_point *p, size_t n, got_triangle *out, int *unique) 
 }
 
 /* Diagonals and triangles as sorted keys, then a merge. */
-static int got_cmp_u64(const void *a, const void *b) {
-  unsigned long long x = *(const unsigned long long *)a, y = *(const unsigned long long *)b;
-  return x < y ? -1 : x > y;
-}
-
-static unsigned long long got_pair_key(int a, int b) {
-  if (a > b) { int t = a; a = b; b = t; }
-  return ((unsigned long long)(unsigned)a << 32) | (unsigned)b;
-}
-
-static unsigned long long got_tri_key(const got_triangle *t) {
+static uint64_t got_tri_key(const got_triangle *t) {
   int v[3] = {t->i, t->k, t->j};
   for (int x = 0; x < 2; x++)
     for (int y = 0; y < 2 - x; y++)
       if (v[y] > v[y + 1]) { int s = v[y]; v[y] = v[y + 1]; v[y + 1] = s; }
-  return ((unsigned long long)(unsigned)v[0] << 42) | ((unsigned long long)(unsigned)v[1] << 21) |
-         (unsigned)v[2];
+  return ((uint64_t)(unsigned)v[0] << 42) | ((uint64_t)(unsigned)v[1] << 21) | (unsigned)v[2];
 }
 
 /* The diagonals of a triangulation: triangle sides that are not hull edges. */
-static size_t got_diagonals(const got_triangle *t, size_t n, unsigned long long *out) {
+static size_t got_diagonals(const got_triangle *t, size_t n, uint64_t *out) {
   size_t m = 0;
   for (size_t q = 0; q + 2 < n; q++) {
     int v[3] = {t[q].i, t[q].k, t[q].j};
@@ -70,18 +60,18 @@ static size_t got_diagonals(const got_triangle *t, size_t n, unsigned long long 
       int a = v[e], b = v[(e + 1) % 3];
       int d = abs(a - b);
       if (d == 1 || (size_t)d == n - 1) continue;
-      out[m++] = got_pair_key(a, b);
+      out[m++] = geom_edge_key((uint32_t)a, (uint32_t)b);
     }
   }
-  qsort(out, m, sizeof *out, got_cmp_u64);
+  qsort(out, m, sizeof *out, geom_u64_cmp);
   size_t u = 0;   /* each diagonal is shared by two triangles */
   for (size_t q = 0; q < m; q++)
     if (u == 0 || out[u - 1] != out[q]) out[u++] = out[q];
   return u;
 }
 
-static size_t got_common(const unsigned long long *a, size_t na,
-                         const unsigned long long *b, size_t nb) {
+static size_t got_common(const uint64_t *a, size_t na,
+                         const uint64_t *b, size_t nb) {
   size_t x = 0, y = 0, c = 0;
   while (x < na && y < nb) {
     if (a[x] < b[y]) x++;
@@ -93,7 +83,7 @@ static size_t got_common(const unsigned long long *a, size_t na,
 
 int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff *out) {
   if (n < 3 || n > ((size_t)1 << 20)) return -1;
-  unsigned long long *da = malloc(4 * n * sizeof *da), *db = malloc(4 * n * sizeof *db);
+  uint64_t *da = malloc(4 * n * sizeof *da), *db = malloc(4 * n * sizeof *db);
   if (da == NULL || db == NULL) {
     free(da);
     free(db);
@@ -106,8 +96,8 @@ int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff
     da[q] = got_tri_key(&a[q]);
     db[q] = got_tri_key(&b[q]);
   }
-  qsort(da, n - 2, sizeof *da, got_cmp_u64);
-  qsort(db, n - 2, sizeof *db, got_cmp_u64);
+  qsort(da, n - 2, sizeof *da, geom_u64_cmp);
+  qsort(db, n - 2, sizeof *db, geom_u64_cmp);
   out->triangles = n - 2;
   out->triangles_common = got_common(da, n - 2, db, n - 2);
   free(da);

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "lot.h"
+#include "geom_key_internal.h"
 
 /* Edge classes in the sort below. */
 enum { LOT_CDF_CANDIDATE = 1, LOT_CDF_NONEDGE = 2, LOT_CDF_KEPT = 4 };
@@ -34,10 +35,6 @@ static int lot_cdf_cmp(const void *x, const void *y) {
   return a < b ? -1 : a > b;
 }
 
-static uint64_t lot_cdf_key(uint32_t u, uint32_t v) {
-  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
-}
-
 /* Classify every triangle: kept ones are copied to out->tri, and each of the
 ** 3 ntri edge records says what its triangle makes of it. */
 static void lot_cdf_classify(const geom_point *p, const uint32_t *tri, size_t ntri,
@@ -52,7 +49,7 @@ static void lot_cdf_classify(const geom_point *p, const uint32_t *tri, size_t nt
     }
     for (int e = 0; e < 3; e++) {
       lot_cdf_rec *r = rec + 3 * t + (size_t)e;
-      r->key = lot_cdf_key(v[e], v[(e + 1) % 3]);
+      r->key = geom_edge_key(v[e], v[(e + 1) % 3]);
       r->cls = bad < 0 ? LOT_CDF_KEPT : bad == e ? LOT_CDF_NONEDGE : LOT_CDF_CANDIDATE;
     }
   }

@@ -24,11 +24,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cdt.h"
+#include "geom_key_internal.h"
 
 /* ---- the set of constrained edges -------------------------------------- */
 
+/* The set's key of edge uv: its edge key + 1, so that 0 marks an empty slot. */
 static uint64_t lot_cons_key(uint32_t u, uint32_t v) {
-  return u < v ? ((uint64_t)u << 32 | v) + 1 : ((uint64_t)v << 32 | u) + 1;
+  return geom_edge_key(u, v) + 1;
 }
 
 static size_t lot_cons_slot(const lot_cons *s, uint64_t key) {
@@ -496,7 +498,7 @@ static int lot_cdt_count_removed(lot_cdt *C, const lot_mesh *m, const lot_option
     int lost = 0;
     for (size_t i = C->chain_at[k]; i + 1 < C->chain_at[k + 1] && !lost; i++) {
       uint32_t u = m->inp[C->chain[i]], v = m->inp[C->chain[i + 1]];
-      uint64_t q = u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+      uint64_t q = geom_edge_key(u, v);
       lost = bsearch(&q, key, ne, sizeof *key, lot_key_cmp64) == NULL;
     }
     st->segments_removed += lost;

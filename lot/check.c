@@ -14,6 +14,7 @@
 #include "lot.h"
 #include "measure.h"
 #include "order.h"
+#include "geom_key_internal.h"
 
 typedef struct lot_dedge {
   uint64_t key;         /* min << 32 | max */
@@ -25,10 +26,6 @@ static int lot_dedge_cmp(const void *x, const void *y) {
   const lot_dedge *a = x, *b = y;
   if (a->key != b->key) return a->key < b->key ? -1 : 1;
   return a->t < b->t ? -1 : a->t > b->t;
-}
-
-static uint64_t lot_ukey(uint32_t u, uint32_t v) {
-  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
 }
 
 static int lot_strictly_convex(const geom_point q[4]) {
@@ -92,10 +89,9 @@ static void lot_check_edge(const geom_point *p, const double *w, uint32_t u, uin
   }
 }
 
-static int lot_u64_cmp(const void *x, const void *y);
 
 /* The structure and local optimality of tri; the edges in skip (sorted
-** lot_ukey keys: constrained) are interior but not decided.  Sets
+** geom_edge_key keys: constrained) are interior but not decided.  Sets
 ** out->valid for the structure alone; *vertices: the points used. */
 static int lot_check_run(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
                          size_t ntri, const rule *r, const uint64_t *skip, size_t nskip,
@@ -117,7 +113,7 @@ static int lot_check_run(const geom_point *p, const double *w, size_t n, const u
     if (geom_orient(p[v[0]], p[v[1]], p[v[2]]) <= 0) valid = 0;
     for (int i = 0; i < 3; i++) {
       used[v[i]] = 1;
-      e[3 * t + i] = (lot_dedge){lot_ukey(v[i], v[(i + 1) % 3]), (uint32_t)t, (uint8_t)i};
+      e[3 * t + i] = (lot_dedge){geom_edge_key(v[i], v[(i + 1) % 3]), (uint32_t)t, (uint8_t)i};
     }
   }
   qsort(e, 3 * ntri, sizeof *e, lot_dedge_cmp);
@@ -133,7 +129,7 @@ static int lot_check_run(const geom_point *p, const double *w, size_t n, const u
       if (u2 != v) valid = 0;   /* the same direction in both: inconsistent */
       else {
         out->interior_edges++;
-        if (skip == NULL || bsearch(&e[i].key, skip, nskip, sizeof *skip, lot_u64_cmp) == NULL)
+        if (skip == NULL || bsearch(&e[i].key, skip, nskip, sizeof *skip, geom_u64_cmp) == NULL)
           lot_check_edge(p, w, u, v, a, d, r, out, tie);
       }
     }
@@ -173,11 +169,6 @@ int lot_check(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
 int lot_check_weighted(const geom_point *p, const double *w, size_t n, const uint32_t *tri,
                        size_t ntri, const rule *r, lot_check_result *out) {
   return lot_check_all(p, w, n, tri, ntri, r, out, NULL);
-}
-
-static int lot_u64_cmp(const void *x, const void *y) {
-  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-  return a < b ? -1 : a > b;
 }
 
 /* ---- constrained triangulations ---------------------------------------- */
@@ -255,7 +246,7 @@ static int lot_chain(const geom_point *p, const uint64_t *adj, size_t nadj, uint
       *keys = k;
       *cap = c;
     }
-    (*keys)[(*nk)++] = lot_ukey(cur, next);
+    (*keys)[(*nk)++] = geom_edge_key(cur, next);
     cur = next;
   }
   return cur == v;
@@ -338,7 +329,7 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
       adj[nadj++] = (uint64_t)v << 32 | u;
     }
   qsort(d, 3 * ntri, sizeof *d, lot_darc_cmp);
-  qsort(adj, nadj, sizeof *adj, lot_u64_cmp);
+  qsort(adj, nadj, sizeof *adj, geom_u64_cmp);
   for (size_t k = 0; k < nseg; k++) {
     uint32_t u = seg[2 * k], v = seg[2 * k + 1];
     int ok = u < n && v < n && first[u] != first[v];
@@ -346,7 +337,7 @@ int lot_check_constrained(const geom_point *p, size_t n, const uint32_t *tri, si
     if (ok < 0) goto done;
     if (!ok && out->segments_missing++ == 0) out->missing_segment = k;
   }
-  if (nk > 0) qsort(keys, nk, sizeof *keys, lot_u64_cmp);
+  if (nk > 0) qsort(keys, nk, sizeof *keys, geom_u64_cmp);
   if (lot_check_run(p, NULL, n, tri, ntri, r, keys, nk, out, NULL, &vertices) != 0) goto done;
   long rhs = out->valid ? lot_euler_rhs(tri, ntri, n, d, 3 * ntri) : 0;
   if (rhs == LONG_MIN) goto done;
@@ -383,7 +374,7 @@ static uint64_t *lot_edge_keys(const uint32_t *t, size_t nt, int vb, size_t *nk)
       uint32_t u = t[3 * i + j], v = t[3 * i + (j + 1) % 3];
       k[3 * i + j] = u < v ? (uint64_t)u << vb | v : (uint64_t)v << vb | u;
     }
-  if (3 * nt > UINT32_MAX) qsort(k, 3 * nt, sizeof *k, lot_u64_cmp);
+  if (3 * nt > UINT32_MAX) qsort(k, 3 * nt, sizeof *k, geom_u64_cmp);
   else if (lot_radix(k, NULL, (uint32_t)(3 * nt), 2 * vb) != 0) {
     free(k);
     return NULL;

@@ -61,6 +61,7 @@
 #include "sweep_internal.h"
 #include "measure.h"
 #include "splitmix.h"
+#include "geom_key_internal.h"
 
 #define LOT_CYCLE_WINDOW (1u << 20)
 
@@ -157,12 +158,8 @@ static int lot_push(lot_run *R, uint32_t c) {
 
 /* ---- cycle detection --------------------------------------------------- */
 
-static uint64_t lot_edge_key(uint32_t u, uint32_t v) {
-  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
-}
-
 static uint64_t lot_edge_hash(uint32_t u, uint32_t v) {
-  uint64_t x = lot_edge_key(u, v);
+  uint64_t x = geom_edge_key(u, v);
   return geom_splitmix64(&x);   /* a bijection of the key, well mixed */
 }
 
@@ -225,8 +222,8 @@ static int lot_cancels(const lot_run *R, size_t k0, size_t k1) {
   size_t w = 0;
   for (size_t k = k0; k < k1; k++) {
     const uint32_t *q = R->log[k];
-    e[w++] = lot_edge_key(q[0], q[2]) << 1 | 1;   /* keys < 2^63: ids < 2^31 */
-    e[w++] = lot_edge_key(q[1], q[3]) << 1;
+    e[w++] = geom_edge_key(q[0], q[2]) << 1 | 1;   /* keys < 2^63: ids < 2^31 */
+    e[w++] = geom_edge_key(q[1], q[3]) << 1;
   }
   qsort(e, n, sizeof *e, lot_key_cmp);
   int ok = 1;
