@@ -79,8 +79,6 @@ int testutil_run(const char *args, char *out, size_t outcap, char *err, size_t e
 int testutil_run_in(const char *in, const char *args, char *out, size_t outcap, char *err,
                     size_t errcap) {
   char o[512], e[512], cmd[8192];
-  snprintf(cmd, sizeof cmd, "mkdir -p %s/testtmp", FLIPLAB_BUILD_DIR);
-  if (system(cmd) != 0) return -1;
   testutil_tmppath(o, sizeof o, "stdout");
   testutil_tmppath(e, sizeof e, "stderr");
   snprintf(cmd, sizeof cmd, "%s %s <%s >%s 2>%s", FLIPLAB_BIN, args, in, o, e);
@@ -95,8 +93,6 @@ int testutil_run_in(const char *in, const char *args, char *out, size_t outcap, 
 
 int testutil_run_to(const char *args, const char *stdout_path, char *err, size_t errcap) {
   char e[512], cmd[8192];
-  snprintf(cmd, sizeof cmd, "mkdir -p %s/testtmp", FLIPLAB_BUILD_DIR);
-  if (system(cmd) != 0) return -1;
   testutil_tmppath(e, sizeof e, "stderr");
   snprintf(cmd, sizeof cmd, "%s %s </dev/null >%s 2>%s", FLIPLAB_BIN, args, stdout_path, e);
   int st = system(cmd);
