@@ -10,7 +10,9 @@
 ** exactly when every segment, split at the sites on it, is a chain of
 ** edges of lot's Delaunay triangulation (found here by brute force), then
 ** with lot's constrained triangulation, and otherwise refuses on one line
-** naming the segment and what is missing.  A rotated grid with segments
+** naming the segment and what is missing.  So too with many parallel long
+** segments, vertical ones (on a cut line), and a convex polygon's sides and
+** chords (cocircular).  A rotated grid with segments
 ** along its lines (sampler_pslg_grid: unit squares cocircular, every
 ** piece a side) is always served.  Euler's count holds on every run; the
 ** other refusals are one line.
@@ -164,6 +166,61 @@ static void tdc_sampled(uint64_t k, int *served, int *refused) {
   paradigm_result_free(&del);
 }
 
+/* Segments that cross many strips or lie on a cut, with the sites they
+** need (n at most TDC_MAXN), by kind: 0 many parallel long segments,
+** left column to right column, up to 5 random sites between; 1 vertical segments
+** (every site of a column on one cut line; sites of equal x joined); 2 the
+** sides and some chords of a convex polygon (a fan from vertex 0: no two
+** cross), up to 15 random sites about it.  Returns the segments. */
+static size_t tdc_special(int kind, testutil_rng *g, geom_point *p, size_t *n, uint32_t *seg) {
+  size_t k = 0, ns = 0, rows = 3 + testutil_next(g) % 6;
+  for (size_t r = 0; kind == 0 && r < rows; r++) {   /* (0, 2r) - (9, 2r + 1) */
+    p[k] = (geom_point){0, 2.0 * (double)r}, p[k + 1] = (geom_point){9, 2.0 * (double)r + 1};
+    seg[2 * ns] = (uint32_t)k, seg[2 * ns + 1] = (uint32_t)k + 1, ns++, k += 2;
+  }
+  for (int x = 0; kind == 1 && x < 4; x++)   /* columns of 2 to 6 sites at x */
+    for (size_t j = 0, m = 2 + testutil_next(g) % 5; j < m; j++, k++) {
+      p[k] = (geom_point){x, (double)(testutil_next(g) % 9) + 0.5 * (double)j};
+      if (j > 0 && testutil_next(g) % 2)   /* may pass other sites of the column */
+        seg[2 * ns] = (uint32_t)k - 1, seg[2 * ns + 1] = (uint32_t)k, ns++;
+    }
+  for (int v = 0; kind == 2 && v < 12; v++, k++) {   /* a cocircular 12-gon */
+    static const int c[12][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0},
+                                 {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    p[k] = (geom_point){c[v][0], c[v][1]};
+    seg[2 * ns] = (uint32_t)v, seg[2 * ns + 1] = (uint32_t)(v + 1) % 12, ns++;
+    if (v > 1 && v < 11 && testutil_next(g) % 3 == 0)
+      seg[2 * ns] = 0, seg[2 * ns + 1] = (uint32_t)v, ns++;
+  }
+  size_t loose = kind == 1 ? 0 : testutil_next(g) % (kind ? 16 : 6);   /* on no segment */
+  for (size_t e = 0; e < loose; e++, k++) {
+    double u = testutil_uniform(g), v = testutil_uniform(g);
+    p[k] = kind == 0 ? (geom_point){1 + 7 * u, 2.0 * (double)rows * v}
+                     : (geom_point){6 * u - 3, 6 * v - 3};
+  }
+  *n = k;
+  return ns;
+}
+
+static void test_special(void **state) {
+  (void)state;
+  testutil_rng g = {263};
+  int count[3][2] = {{0, 0}, {0, 0}, {0, 0}}, sets = testutil_reps(300);
+  for (int s = 0; s < 3 * sets; s++) {
+    geom_point p[TDC_MAXN];
+    uint32_t first[TDC_MAXN], seg[4 * TDC_MAXN];
+    size_t n, ns = tdc_special(s % 3, &g, p, &n, seg);
+    paradigm_result del;
+    if (tdc_delaunay(p, n, &del, first) != 0) continue;
+    int ok = tdc_compare(p, n, seg, ns, &del, first);
+    count[s % 3][!ok]++;
+    paradigm_result_free(&del);
+  }
+  for (int k = 0; k < 3; k++)
+    print_message("special kind %d: %d served, %d refused\n", k, count[k][0], count[k][1]);
+  for (int k = 0; k < 3; k++) assert_true(count[k][0] > 0 && count[k][1] > 0);
+}
+
 /* A rotated grid with segments along its lines: always served. */
 static void tdc_grid(uint64_t k) {
   geom_pslg pg;
@@ -238,6 +295,7 @@ static void test_refusals(void **state) {
 int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_sets),
+    cmocka_unit_test(test_special),
     cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
