@@ -27,7 +27,6 @@
 */
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include "paradigm_internal.h"
 
 /* Each site's neighbours, nb[at[v] .. at[v + 1]): every side of every
