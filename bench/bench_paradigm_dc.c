@@ -5,6 +5,11 @@
 **   - N uniform sites with S segments drawn among their Delaunay edges (the
 **     case dc-constrained serves), and the refusal for one segment that is
 **     no Delaunay edge;
+**   - the same sites with 10^3 and 10^4 random non-crossing segments
+**     (sampler_segments, short and long ones in cells): lot's constrained
+**     triangulation timed, its counts per site, the share of the segments
+**     that are Delaunay edges, and dc-constrained's answer (it refuses such
+**     sets until Chew's virtual sites are built);
 **   - a star-shaped polygon of P vertices: dc-polygon beside incremental
 **     (lot's polygon insertion is slow on it: P smaller than N by default);
 **     a convex one: dc-polygon beside convex-divide (cpdt's 5.4.2).
@@ -21,6 +26,8 @@
 #include "benchutil.h"
 #include "lot.h"
 #include "paradigm.h"
+#include "sampler.h"
+#include "splitmix.h"
 
 #define BDC_MAX 3   /* contenders per case */
 
@@ -109,6 +116,56 @@ static void bdc_refusal(const paradigm_input *in0) {
   if (rc == 0) paradigm_result_free(&res);
 }
 
+/* How many of the ns segments seg are edges of the Delaunay triangulation
+** of in's sites: each site's neighbours listed (a counting sort of the
+** triangles' sides by first end), then each segment looked up among its
+** first end's. */
+static size_t bdc_delaunay_edges(const paradigm_input *in, const uint32_t *seg, size_t ns) {
+  paradigm_input d = *in;
+  d.problem = PARADIGM_DELAUNAY, d.segments = NULL, d.nsegments = 0;
+  paradigm_result dt = bdc_run("incremental", &d, NULL);
+  size_t m = 3 * dt.ntri, hits = 0, *at = calloc(in->n + 1, sizeof *at);
+  uint32_t *nb = malloc(m * sizeof *nb);
+  if (at == NULL || nb == NULL) exit(1);
+  for (size_t k = 0; k < m; k++) at[dt.tri[k] + 1]++;
+  for (size_t v = 0; v < in->n; v++) at[v + 1] += at[v];
+  for (size_t k = 0; k < m; k++) nb[at[dt.tri[k]]++] = dt.tri[k - k % 3 + (k + 1) % 3];
+  for (size_t v = in->n; v > 0; v--) at[v] = at[v - 1];   /* back to the starts */
+  at[0] = 0;
+  for (size_t s = 0; s < ns; s++) {
+    uint32_t u = seg[2 * s], v = seg[2 * s + 1], hit = 0;
+    for (size_t j = at[u]; j < at[u + 1]; j++) hit |= nb[j] == v;
+    for (size_t j = at[v]; j < at[v + 1]; j++) hit |= nb[j] == u;   /* hull sides: one way */
+    hits += hit;
+  }
+  free(at), free(nb);
+  paradigm_result_free(&dt);
+  return hits;
+}
+
+/* in's sites with up to m random non-crossing segments (sampler_segments):
+** lot's constrained triangulation timed, and what dc-constrained says. */
+static void bdc_random(const paradigm_input *base, size_t m, int runs) {
+  char title[160];
+  bdc_case k = {title, *base, {"incremental"}, 1};
+  uint32_t *seg = malloc(2 * m * sizeof *seg);
+  size_t ns;
+  sampler_rng g;
+  sampler_seed(&g, base->seed, GEOM_STREAM_SEGMENTS);
+  if (seg == NULL || sampler_segments(&g, base->p, base->n, m, seg, &ns) != 0) exit(1);
+  k.in.segments = seg, k.in.nsegments = ns;
+  size_t del = bdc_delaunay_edges(&k.in, seg, ns);
+  snprintf(title, sizeof title, "%zu uniform sites, %zu random non-crossing segments "
+           "(%zu of them Delaunay edges)", base->n, ns, del);
+  bdc_time(&k, runs);
+  paradigm_result res;
+  char err[512];
+  int rc = paradigm_run(paradigm_find("dc-constrained"), &k.in, &res, err, sizeof err);
+  printf("\ndc-constrained on them: %s%s\n", rc ? "refuses: " : "serves them", rc ? err : "");
+  if (rc == 0) paradigm_result_free(&res);
+  free(seg);
+}
+
 /* One polygon case: N vertices of `fn` as problem pb, rows a and b. */
 static void bdc_polygon(const char *what, bench_sampler fn, paradigm_problem pb,
                         const char *a, const char *b, int runs, const paradigm_input *base) {
@@ -150,6 +207,7 @@ int main(int argc, char **argv) {
   bdc_check(&cdt);
   bdc_time(&cdt, runs);
   bdc_refusal(&cdt.in);
+  for (size_t m = 1000; m <= 10000 && m <= n / 4; m *= 10) bdc_random(&cdt.in, m, runs);
   cdt.in.n = np;
   bdc_polygon("star-shaped", sampler_star, PARADIGM_POLYGON, "incremental", "dc-polygon",
               runs, &cdt.in);

@@ -61,9 +61,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"dc-constrained", "divide", "2.6.2", PARADIGM_CONSTRAINED, PARADIGM_RULE_DT,
    "DT only; point sets: dc-vertical, dc-alternating; polygons: dc-polygon; a segment "
-   "that is no Delaunay edge is refused: Chew's regions and virtual sites (2.6.2) are not "
-   "built", "O(n log n): dc-vertical's strips, then each segment looked up among the "
-   "edges", NULL, paradigm_dc_constrained},
+   "that is no Delaunay edge (nor a chain of them through the sites on it) is refused: "
+   "Chew's regions and virtual sites (2.6.2) are not built", "O(n log n): dc-vertical's "
+   "strips, then each segment followed along the edges on it", NULL,
+   paradigm_dc_constrained},
   {"dc-polygon", "divide", "2.6.3", PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT,
    "DT only: a rule's flips need not end at its LOT (2.6.6); point sets and constraints: "
    "the dc-* and select-constrained rows",

@@ -21,8 +21,8 @@ int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err
                        size_t errlen);
 
 /* The key of the undirected edge uv (smaller index << 32 | larger), and the
-** qsort/bsearch order of such keys (paradigms/paradigm.c): the constraint and
-** edge look-ups of sweep_finish.c and divide_constrained.c. */
+** qsort/bsearch order of such keys (paradigms/paradigm.c): the constraint
+** look-ups of sweep_finish.c. */
 static inline uint64_t paradigm_edge_key(uint32_t u, uint32_t v) {
   return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
 }
@@ -71,10 +71,12 @@ FLIPLAB_INTERNAL
 int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
 #define PARADIGM_DC_REFUSAL \
-  "constraints: the row dc-constrained (2.6.2, segments that are Delaunay edges " \
-  "only: Chew's virtual sites are not built); simple and convex polygons: dc-polygon (2.6.3)"
+  "constraints: the row dc-constrained (2.6.2, segments that are Delaunay edges or " \
+  "chains of them only: Chew's virtual sites are not built); simple and convex polygons: " \
+  "dc-polygon (2.6.3)"
 /* 2.6.2 as far as it is built (paradigms/divide_constrained.c): the vertical
-** strips' triangulation, served when every segment is one of its edges. */
+** strips' triangulation, served when every segment is one of its edges or a
+** chain of them through the sites on it. */
 FLIPLAB_INTERNAL
 int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);

@@ -90,7 +90,7 @@ def test_constrained_and_polygons():
     seg = np.array([[0, 1], [2, 3], [4, 5]])
     want = _canon(fliplab.lot(p, "DT", segments=seg, keep_hull=True).triangles)
     for a in _serving("constrained"):
-        if a == "dc-constrained":   # serves segments that are Delaunay edges only
+        if a == "dc-constrained":   # serves segments that are Delaunay edges (or chains) only
             with pytest.raises(ValueError, match="virtual sites"):
                 fliplab.triangulate_by(p, a, problem="constrained", segments=seg)
             continue
