@@ -173,8 +173,7 @@ static int siteflip_between(const geom_point *p, int i, int j, int k) {
 
 static int siteflip_crosses(const geom_point *p, int a, int b, int c, int d) {
   if (a == c || a == d || b == c || b == d) return 0;
-  return geom_orient(p[a], p[b], p[c]) * geom_orient(p[a], p[b], p[d]) < 0 &&
-         geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) < 0;
+  return geom_segments_cross(p[a], p[b], p[c], p[d]);
 }
 
 /* Is the triangle ijk proper and free of other sites (inside or on a side)? */

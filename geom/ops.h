@@ -69,6 +69,13 @@ static inline int ops_incircle(ops_counts *c, geom_point a, geom_point b, geom_p
   return geom_incircle_valid(a, b, d, e);
 }
 
+/* geom_segments_cross, counted: the orientation tests it makes. */
+static inline int ops_segments_cross(ops_counts *c, geom_point a, geom_point b, geom_point d,
+                                     geom_point e) {
+  return ops_orient(c, a, b, d) * ops_orient(c, a, b, e) < 0 &&
+         ops_orient(c, d, e, a) * ops_orient(c, d, e, b) < 0;
+}
+
 void ops_clear(ops_counts *c);
 /* into += from, kind by kind; the peaks add too (parallel halves hold their
 ** memory at the same time, so the sum bounds the true peak from above). */

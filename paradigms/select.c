@@ -102,9 +102,8 @@ static int sel_beats_es(sel_state *s, uint32_t a, uint32_t b, uint32_t c, uint32
 /* Does the open segment uv cross the open piece k at one point inside
 ** both?  Four orientation tests. */
 static int sel_crosses(sel_state *s, uint32_t u, uint32_t v, size_t k) {
-  geom_point pu = s->p[u], pv = s->p[v], p = s->p[s->piece[2 * k]], q = s->p[s->piece[2 * k + 1]];
-  if (ops_orient(s->c, pu, pv, p) * ops_orient(s->c, pu, pv, q) >= 0) return 0;
-  return ops_orient(s->c, p, q, pu) * ops_orient(s->c, p, q, pv) < 0;
+  return ops_segments_cross(s->c, s->p[u], s->p[v], s->p[s->piece[2 * k]],
+                            s->p[s->piece[2 * k + 1]]);
 }
 
 /* 2.4.2: apex d of edge ab must see a and b, across no constraint (a

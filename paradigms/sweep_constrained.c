@@ -454,9 +454,8 @@ static uint32_t cs_piece_above(const cs_state *S, uint32_t e) {
 static int cs_con_cross(cs_state *S, uint32_t e, uint32_t f) {
   if (e == 0 || f == CS_NONE) return 0;
   const geom_point *p = S->p;
-  geom_point a = p[S->cn[e].u], b = p[S->cn[e].v], c = p[S->cn[f].u], d = p[S->cn[f].v];
-  if (ops_orient(S->c, a, b, c) * ops_orient(S->c, a, b, d) >= 0) return 0;
-  if (ops_orient(S->c, c, d, a) * ops_orient(S->c, c, d, b) >= 0) return 0;
+  if (!ops_segments_cross(S->c, p[S->cn[e].u], p[S->cn[e].v], p[S->cn[f].u], p[S->cn[f].v]))
+    return 0;
   uint32_t s = S->cn[e].seg, r = S->cn[f].seg;
   snprintf(S->err, S->errlen, "segments %u and %u cross", s < r ? s : r, s < r ? r : s);
   return -1;

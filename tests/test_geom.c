@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "geom.h"
+#include "ops.h"
 #include "testutil.h"
 
 static geom_point tgeom_pt(double x, double y) {
@@ -592,6 +593,38 @@ static void test_twice_area_exact(void **state) {
 
 /* ---- small helpers and polygon validation ---- */
 
+/* geom_segments_cross (and ops_segments_cross, counted) against exact
+** integer arithmetic on every pair of segments between points of a 4 x 4
+** grid, scaled by 2^40 and shifted so that the filter meets large values:
+** ab and cd cross properly exactly when the lines are not parallel and the
+** intersection parameters t (on ab) and u (on cd) are strictly inside (0, 1). */
+static void test_segments_cross(void **state) {
+  (void)state;
+  long long gx[16], gy[16];
+  for (int i = 0; i < 16; i++) gx[i] = i % 4, gy[i] = i / 4;
+  int crossings = 0;
+  for (int a = 0; a < 16; a++)
+    for (int b = a + 1; b < 16; b++)
+      for (int c = 0; c < 16; c++)
+        for (int d = c + 1; d < 16; d++) {
+          long long rx = gx[b] - gx[a], ry = gy[b] - gy[a], sx = gx[d] - gx[c],
+                    sy = gy[d] - gy[c], qx = gx[c] - gx[a], qy = gy[c] - gy[a];
+          long long den = rx * sy - ry * sx, tn = qx * sy - qy * sx, un = qx * ry - qy * rx;
+          if (den < 0) den = -den, tn = -tn, un = -un;
+          int want = den != 0 && 0 < tn && tn < den && 0 < un && un < den;
+          geom_point P[4];
+          int id[4] = {a, b, c, d};
+          for (int k = 0; k < 4; k++)
+            P[k] = (geom_point){0x1p40 * (double)gx[id[k]] + 3.0, 0x1p40 * (double)gy[id[k]] - 5.0};
+          ops_counts n = {0};
+          assert_int_equal(geom_segments_cross(P[0], P[1], P[2], P[3]), want);
+          assert_int_equal(ops_segments_cross(&n, P[0], P[1], P[2], P[3]), want);
+          assert_true(n.v[OPS_ORIENT] == 2 || n.v[OPS_ORIENT] == 4);
+          crossings += want;
+        }
+  assert_true(crossings > 0);
+}
+
 static void test_dist_finite(void **state) {
   (void)state;
   assert_true(geom_dist(tgeom_pt(1, 1), tgeom_pt(4, 5)) == 5);
@@ -810,6 +843,7 @@ int main(void) {
     cmocka_unit_test(test_predicates_random),
     cmocka_unit_test(test_predicates_extreme),
     cmocka_unit_test(test_twice_area_exact),
+    cmocka_unit_test(test_segments_cross),
     cmocka_unit_test(test_dist_finite),
     cmocka_unit_test(test_polygon_check),
     cmocka_unit_test(test_number_parse),
