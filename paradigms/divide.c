@@ -599,8 +599,8 @@ static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t 
 ** reverse (the pools read by two threads, the same array whatever the
 ** threads: no scratch, no copy).  The array is the block of the sites
 ** and the cuts' scratch, dead by now (36 bytes a site hold the 12 a
-** triangle, under 24 a site), cut to size: no fresh memory, whose page
-** faults cost more than writing it.  O(n). */
+** triangle, under 24 a site), cut to size: no fresh memory to fault in
+** and zero.  O(n). */
 static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
                         paradigm_output *out) {
   uint32_t e0 = top.l ^ 1, e = e0, hull = 0;
