@@ -62,12 +62,24 @@ typedef struct dc_half {
   uint32_t org;           /* origin site; DC_NONE once deleted */
 } dc_half;
 
+/* Subtrees that run side by side write their pools (and counts) at every
+** edge made or deleted, so each sits on lines of its own, two cache lines
+** wide (the adjacent-line prefetcher fetches pairs).  Packed, 24 bytes
+** apart, the pools of nodes 3, 4 and 5 shared lines, and the two cores
+** passed them back and forth at every edge (false sharing). */
+#define DC_LINE 128
+
 /* A slice of the edge array: a free list, fresh slots [used, end), and the
 ** slice to take from when both are empty (the subtrees a merge joins). */
 typedef struct dc_pool {
-  uint32_t free, base, used, end;
+  _Alignas(DC_LINE) uint32_t free;
+  uint32_t base, used, end;
   struct dc_pool *more;
 } dc_pool;
+
+typedef struct dc_counts {
+  _Alignas(DC_LINE) ops_counts c;
+} dc_counts;
 
 /* A triangulated subset: ccw hull edge out of its leftmost site, cw hull
 ** edge out of its rightmost (Guibas and Stolfi's ldo and rdo). */
@@ -80,6 +92,7 @@ typedef struct dc_run {
   uint32_t *id;           /* their input indices */
   geom_point *ts;         /* the cuts' scratch */
   uint32_t *tid;
+  void *block;            /* s, ts and tid, 36 bytes a site: the triangles' array later */
   const geom_point *sb[3];   /* s, ts and the input: each cut moves a piece from */
   const uint32_t *ib[3];     /* one to s or ts (dc_to); the input's indices are k */
   dc_half *h;
@@ -584,7 +597,10 @@ static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t 
 ** array of that size from both ends: the first half of the pools' faces
 ** from the front, in pool order, the second half's from the back, in
 ** reverse (the pools read by two threads, the same array whatever the
-** threads: no scratch, no copy).  O(n). */
+** threads: no scratch, no copy).  The array is the block of the sites
+** and the cuts' scratch, dead by now (36 bytes a site hold the 12 a
+** triangle, under 24 a site), cut to size: no fresh memory to fault in
+** and zero.  O(n). */
 static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n,
                         paradigm_output *out) {
   uint32_t e0 = top.l ^ 1, e = e0, hull = 0;
@@ -597,12 +613,14 @@ static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n
   int np = 0;
   for (const dc_pool *p = first; p != NULL && np < DC_NODES; p = p->more) pool[np++] = p;
   size_t t = 2 * (size_t)n - 2 - hull, got[2] = {0, 0};
-  out->tri = malloc(3 * t * sizeof *out->tri);
-  if (out->tri == NULL) return -1;
+  out->tri = R->block;
 #pragma omp parallel for schedule(static, 1) num_threads(2) if (R->threads > 1)
   for (int f = 0; f < 2; f++)   /* front 0: pools 0 .. np/2 - 1; front 1: np - 1 down */
     for (int k = f ? np - 1 : 0; f ? k >= np / 2 : k < np / 2; k += f ? -1 : 1)
       got[f] += dc_faces(R, pool[k], out->tri, t, f ? t - got[f] : got[f], f);
+  void *fit = realloc(R->block, 3 * (t ? t : 1) * sizeof *out->tri);   /* shrinks */
+  out->tri = fit != NULL ? fit : R->block;
+  R->block = NULL;
   out->ntri = t;
   return got[0] + got[1] == t ? 0 : -2;
 }
@@ -610,9 +628,9 @@ static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n
 /* Merge and triangulate the sites s (in the order of the cuts). */
 static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, char *err,
                    size_t errlen) {
-  ops_counts part[DC_NODES];
+  dc_counts part[DC_NODES];
   memset(part, 0, sizeof part);
-  for (int k = 0; k < DC_NODES; k++) R->count[k] = c ? &part[k] : NULL;
+  for (int k = 0; k < DC_NODES; k++) R->count[k] = c ? &part[k].c : NULL;
   size_t bytes = 3 * (size_t)n * 2 * sizeof *R->h;
   R->h = malloc(bytes);
   if (R->h == NULL) {
@@ -629,26 +647,27 @@ static int dc_mesh(dc_run *R, uint32_t n, ops_counts *c, paradigm_output *out, c
   } else {
     top = dc_top(R, 0, n, 0, 0, DC_IN_P, &first, &tail);
   }
-  for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k]);
+  for (int k = 0; k < DC_NODES && c != NULL; k++) ops_merge(c, &part[k].c);
   int rc = R->failed ? -2 : dc_triangles(R, first, top, n, out);
   free(R->h);
   ops_memory(c, -(int64_t)bytes);
-  if (rc == -1) snprintf(err, errlen, "out of memory for the triangles of %u points", n);
   if (rc == -2) snprintf(err, errlen, "divide and conquer: the mesh of %u points is not a "
                          "triangulation (a bug: please report it)", n);
   return rc == 0 ? 0 : -1;
 }
 
 /* The sites, s[k] = p[id[k]] (in input order to begin with: the cuts
-** permute them), and the scratch of the cuts.  0, or -1 (out of memory). */
+** permute them), and the scratch of the cuts, s, ts and tid in one block
+** (dc_triangles writes the triangles there).  0, or -1 (out of memory). */
 static int dc_sites(const paradigm_input *in, ops_counts *c, dc_run *R) {
   uint32_t n = (uint32_t)in->n;
   R->id = malloc((size_t)n * sizeof *R->id);
-  R->s = malloc((size_t)n * sizeof *R->s);
-  R->tid = malloc((size_t)n * sizeof *R->tid);
-  R->ts = malloc((size_t)n * sizeof *R->ts);
+  R->block = malloc((size_t)(n ? n : 1) * (2 * sizeof *R->s + sizeof *R->tid));
   ops_memory(c, (int64_t)n * 40);
-  if (R->id == NULL || R->s == NULL || R->tid == NULL || R->ts == NULL) return -1;
+  if (R->id == NULL || R->block == NULL) return -1;
+  R->s = R->block;
+  R->ts = R->s + n;
+  R->tid = (uint32_t *)(R->ts + n);
   R->sb[0] = R->s, R->sb[1] = R->ts, R->sb[2] = in->p;
   R->ib[0] = R->id, R->ib[1] = R->tid, R->ib[2] = NULL;
   return 0;
@@ -663,7 +682,8 @@ static int dc_sites(const paradigm_input *in, ops_counts *c, dc_run *R) {
 ** the pieces square, a merge of m sites crosses O(sqrt m) edges, and the
 ** merges cost O(n) expected in all (Dwyer shows O(n log log n) for his
 ** variant).  Memory: 72 bytes a site for the mesh (3n edges of 24 bytes),
-** 40 for the sites and the scratch of the cuts. */
+** 40 for the sites and the scratch of the cuts, 36 of which then hold the
+** triangles. */
 int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
                     paradigm_output *out, char *err, size_t errlen) {
   if (in->n > DC_MAX_POINTS) {
@@ -678,7 +698,7 @@ int paradigm_divide(const paradigm_input *in, int alternating, ops_counts *c,
   int rc = dc_sites(in, c, &R);
   if (rc != 0) snprintf(err, errlen, "out of memory for the sites of %u points", n);
   else rc = dc_mesh(&R, n, c, out, err, errlen);
-  free(R.s), free(R.id), free(R.ts), free(R.tid);
+  free(R.block), free(R.id);
   ops_memory(c, -(int64_t)n * 40);
   return rc;
 }

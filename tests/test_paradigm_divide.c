@@ -6,9 +6,10 @@
 ** alternating cuts; one thread and two give the same triangles and the same
 ** counts; the counts obey Euler's relation (every merge adds and deletes
 ** edges so that edges made - edges deleted = 3n - 3 - h, h the sites on the
-** hull); the rows refuse the constrained problem with its reason, and a
-** set too large for the mesh with one line.  The empty-shape rules:
-** tests/test_paradigm_es.c.
+** hull); paradigm_divide's own array, before the runner's canonical
+** order, is the same on one thread and two; the rows refuse the
+** constrained problem with its reason, and a set too large for the mesh
+** with one line.  The empty-shape rules: tests/test_paradigm_es.c.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -108,6 +109,38 @@ static void test_threads(void **state) {
   free(p);
 }
 
+/* paradigm_divide itself, before the runner's canonical order: one thread
+** and two write the same array, triangle for triangle, of 2n - 2 - h
+** triangles (they are written into the sites' block, cut to size: a
+** convex set, every site on the hull, leaves the most of it unused). */
+static void test_raw_threads(void **state) {
+  (void)state;
+  size_t n = 20000;
+  geom_point *p = malloc(n * sizeof *p);
+  assert_non_null(p);
+  testutil_rng g = {91};
+  rule dt = rule_delaunay();
+  char err[256];
+  for (int f = 0; f < 2; f++) {
+    for (size_t i = 0; i < n; i++)   /* uniform; convex: the parabola y = x^2 */
+      p[i] = f == 0 ? (geom_point){testutil_uniform(&g), testutil_uniform(&g)}
+                    : (geom_point){(double)i - 10000, ((double)i - 10000) * ((double)i - 10000)};
+    paradigm_output out[2] = {{0}, {0}};
+    for (int t = 0; t < 2; t++) {
+      paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_DELAUNAY,
+                           .threads = 1 + t};
+      assert_int_equal(paradigm_divide(&in, 1, NULL, &out[t], err, sizeof err), 0);
+    }
+    if (f == 1) assert_int_equal(out[0].ntri, n - 2);   /* h = n */
+    assert_true(out[0].ntri >= n - 2 && out[0].ntri <= 2 * n - 5);
+    assert_int_equal(out[0].ntri, out[1].ntri);
+    assert_memory_equal(out[0].tri, out[1].tri, 3 * out[0].ntri * sizeof *out[0].tri);
+    for (size_t k = 0; k < 3 * out[0].ntri; k++) assert_true(out[0].tri[k] < n);
+    free(out[0].tri), free(out[1].tri);
+  }
+  free(p);
+}
+
 static void test_refusals(void **state) {
   (void)state;
   geom_point p[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
@@ -135,6 +168,7 @@ int main(void) {
   const struct CMUnitTest tests[] = {
     cmocka_unit_test(test_small_sets),
     cmocka_unit_test(test_threads),
+    cmocka_unit_test(test_raw_threads),
     cmocka_unit_test(test_refusals),
   };
   return cmocka_run_group_tests(tests, NULL, NULL);
