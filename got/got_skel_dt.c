@@ -88,6 +88,20 @@ static int dtc_triangles(const dtc *d, char *err, size_t errlen) {
   return 0;
 }
 
+/* Sorts v[0..k-1] ascending: insertion for the few edges of most points, qsort beyond. */
+static void dtc_sort(uint64_t *v, size_t k) {
+  if (k > 16) {
+    qsort(v, k, sizeof *v, geom_u64_cmp);
+    return;
+  }
+  for (size_t i = 1; i < k; i++) {
+    uint64_t x = v[i];
+    size_t j = i;
+    for (; j > 0 && v[j - 1] > x; j--) v[j] = v[j - 1];
+    v[j] = x;
+  }
+}
+
 /* Outgoing edges of each point, sorted by head; an edge used twice in one direction means
 ** overlapping triangles; a point on no triangle is missing.  O(t) and the sorts. */
 static int dtc_outgoing(dtc *d, char *err, size_t errlen) {
@@ -105,7 +119,7 @@ static int dtc_outgoing(dtc *d, char *err, size_t errlen) {
       snprintf(err, errlen, "delaunay certificate: point %zu is a vertex of no triangle", v);
       return -1;
     }
-    qsort(d->out + a, b - a, sizeof *d->out, geom_u64_cmp);
+    dtc_sort(d->out + a, b - a);
     for (size_t k = a + 1; k < b; k++)
       if (d->out[k] >> 32 == d->out[k - 1] >> 32) {
         snprintf(err, errlen, "delaunay certificate: edge %zu -> %u is used by two triangles "
