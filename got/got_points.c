@@ -13,7 +13,8 @@
 ** every face's optimum is.
 **
 ** Steps and costs (n points, E certain edges, F faces):
-**   validation (sort: O(n log n)); the skeleton (got_skel_build, or got_skel_all in
+**   validation (sort: O(n log n)); the skeleton (got_skel_build, got_skel_delaunay on a
+**   caller's Delaunay triangulation for the rules of rule_got_is_cdt, or got_skel_all in
 **   O(n^3)); the planar graph of the certain edges: neighbours in exact angular order
 **   (O(sum deg^2), insertion sorts of short lists), its closed walks (O(E)), components
 **   (union-find), each component not holding the hull and each isolated point located in
