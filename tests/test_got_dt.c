@@ -4,12 +4,8 @@
 ** skeleton "delaunay"; studies/gotpoints.c's study_got_points makes lot's Delaunay
 ** triangulation and hands it over).
 **
-** - Enumeration: n <= 10 on random (disc, square), grid (subsets of a 4 x 4 integer grid)
-**   and cocircular sets (the 12 integer points of the circle of radius 5 and its centre);
-**   for the eight rules of rule_got_is_cdt every triangulation is enumerated
-**   (classify/siteflip.h) and keyed (measure_eval): the triangles are a triangulation of
-**   least key (relative 1e-9), and "unique" is never certified where two triangulations
-**   tie within 1e-9.
+** - Enumeration: tests/test_got_points.c's sets (n <= 11) also run the eight rules of
+**   rule_got_is_cdt with this skeleton against every triangulation.
 ** - The LMT path (every clear pair a candidate, then the loop) on 20 to 200 random, grid,
 **   cocircular and collinear-heavy points, for the rules it can decide: the same total
 **   within both certified bounds, the same triangles when either is certified unique, and
@@ -36,11 +32,8 @@
 #include "got.h"
 #include "lot.h"
 #include "sampler.h"
-#include "siteflip.h"
 #include "study.h"
 #include "testutil.h"
-
-#define TGD_REL 1e-9
 
 static const char *const tgd_rules[] = {"R_1", "R_2", "R_0", "R_-1", "-r_1", "abc_1",
                                         "-r/R_1", "-r2/A_0"};
@@ -54,100 +47,12 @@ static rule tgd_rule(const char *name) {
   return r;
 }
 
-static int tgd_near(double a, double b) {
-  return a == b || fabs(a - b) <= TGD_REL * fmax(fabs(a), fabs(b));
-}
-
-/* The node of g whose edges are the triangles' edges, or -1. */
-static int tgd_node(const siteflip_graph *g, const got_triangle *t, size_t nt) {
-  siteflip_mask m = {0, 0};
-  for (size_t q = 0; q < nt; q++) {
-    int v[3] = {t[q].i, t[q].k, t[q].j};
-    for (int e = 0; e < 3; e++) {
-      int b = siteflip_seg(g->n, v[e], v[(e + 1) % 3]);
-      if (b < 64) m.lo |= (uint64_t)1 << b;
-      else m.hi |= (uint64_t)1 << (b - 64);
-    }
-  }
-  for (int u = 0; u < g->nnodes; u++)
-    if (g->node[u].lo == m.lo && g->node[u].hi == m.hi) return u;
-  return -1;
-}
-
 static void tgd_solve(const geom_point *p, size_t n, const rule *r, got_skeleton sk,
                       got_result *res, const char *what) {
   got_options o = {1, RULE_DEFAULT_TIE_EPS};
   char err[512];
   if (study_got_points(p, n, r, &o, sk, res, err, sizeof err) != 0)
     fail_msg("%s, %s, skeleton %s: %s", what, rule_name(r), got_skeleton_name(sk), err);
-}
-
-/* ---- every triangulation enumerated ---- */
-
-static void tgd_check_set(const geom_point *p, int n, const char *what) {
-  char err[256];
-  siteflip_graph *g = siteflip_build(p, n, err, sizeof err);
-  if (g == NULL) fail_msg("%s: %s", what, err);
-  for (size_t i = 0; i < TGD_NRULES; i++) {
-    rule r = tgd_rule(tgd_rules[i]);
-    got_result res;
-    tgd_solve(p, (size_t)n, &r, GOT_SKELETON_AUTO, &res, what);
-    assert_int_equal(res.skeleton, GOT_SKELETON_DELAUNAY);
-    double k1 = INFINITY;
-    int nbest = 0;
-    for (int u = 0; u < g->nnodes; u++) k1 = fmin(k1, siteflip_node_key(g, &r, u));
-    for (int u = 0; u < g->nnodes; u++) nbest += tgd_near(siteflip_node_key(g, &r, u), k1);
-    int u = tgd_node(g, res.tri, res.ntri);
-    if (u < 0) fail_msg("%s, %s: the triangles are no triangulation", what, tgd_rules[i]);
-    if (!tgd_near(siteflip_node_key(g, &r, u), k1) || !tgd_near(res.key, k1))
-      fail_msg("%s, %s: key %.17g, its triangles %.17g, enumeration %.17g", what,
-               tgd_rules[i], res.key, siteflip_node_key(g, &r, u), k1);
-    if (nbest > 1 && res.cert_unique)
-      fail_msg("%s, %s: %d optima but certified unique", what, tgd_rules[i], nbest);
-    got_result_free(&res);
-  }
-  siteflip_free(g);
-}
-
-/* n distinct points of list[0..m-1], not all collinear, chosen by seed. */
-static void tgd_subset(const geom_point *list, int m, int n, uint64_t seed, geom_point *p) {
-  testutil_rng g = {seed * 0x9e3779b97f4a7c15ull + 1};
-  for (;;) {
-    int idx[32];
-    for (int i = 0; i < m; i++) idx[i] = i;
-    for (int i = 0; i < n; i++) {
-      int j = i + (int)(testutil_next(&g) % (uint64_t)(m - i)), t = idx[i];
-      idx[i] = idx[j], idx[j] = t;
-      p[i] = list[idx[i]];
-    }
-    for (int c = 2; c < n; c++)
-      if (geom_orient(p[0], p[1], p[c]) != 0) return;
-  }
-}
-
-static void test_enumeration(void **state) {
-  (void)state;
-  geom_point grid[16], circle[13] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
-                                     {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3},
-                                     {0, 0}};
-  for (int i = 0; i < 16; i++) grid[i] = (geom_point){i % 4, i / 4};
-  geom_point p[16];
-  char what[128];
-  int reps = testutil_reps(4);
-  for (int n = 3; n <= 10; n++)
-    for (int s = 0; s < (n <= 9 ? reps : 1); s++) {
-      for (int kind = 0; kind < SAMPLER_SITES_COUNT && kind <= SAMPLER_SITES_SQUARE; kind++) {
-        assert_int_equal(sampler_sites(kind, 38, (uint64_t)(100 * n + s), n, p), 0);
-        snprintf(what, sizeof what, "%s n = %d sample %d", sampler_sites_name(kind), n, s);
-        tgd_check_set(p, n, what);
-      }
-      tgd_subset(grid, 16, n, (uint64_t)(n * 10 + s), p);
-      snprintf(what, sizeof what, "grid n = %d sample %d", n, s);
-      tgd_check_set(p, n, what);
-      tgd_subset(circle, 13, n, (uint64_t)(n * 10 + s), p);
-      snprintf(what, sizeof what, "circle n = %d sample %d", n, s);
-      tgd_check_set(p, n, what);
-    }
 }
 
 /* ---- against the all-pairs LMT path ---- */
@@ -353,7 +258,6 @@ static void test_cli_large(void **state) {
 
 int main(void) {
   const struct CMUnitTest tests[] = {
-    cmocka_unit_test(test_enumeration),
     cmocka_unit_test(test_against_lmt),
     cmocka_unit_test(test_grid_ties),
     cmocka_unit_test(test_certificate_refuses),
