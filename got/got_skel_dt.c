@@ -211,8 +211,8 @@ static int dtc_certify(dtc *d, unsigned char *cocirc, char *err, size_t errlen) 
   }
   for (size_t h = 0; rc == 0 && h < m; h++) {
     uint32_t g = d->twin[h];
-    cocirc[h] = 0;
-    if (g == DT_NONE) continue;
+    cocirc[h] = g != DT_NONE && g < h && cocirc[g];   /* each edge tested once, at h < g */
+    if (g == DT_NONE || g < h) continue;
     uint32_t a = dtc_tail(d, h), b = dtc_head(d, h), c = dtc_third(d, h), e = dtc_third(d, g);
     int s = geom_incircle(d->p[a], d->p[b], d->p[c], d->p[e]);
     if (s > 0) {

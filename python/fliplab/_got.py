@@ -246,7 +246,8 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     ------
     ValueError
         A rule that is no sum rule, duplicate points (both rows named),
-        collinear points, a coordinate outside the contract, a bad keyword.
+        collinear points, a coordinate outside the contract, a bad keyword,
+        skeleton "delaunay" for a rule whose GOT need not be Delaunay.
     MemoryError
         The points do not fit in memory.
     """
