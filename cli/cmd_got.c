@@ -56,7 +56,7 @@ typedef struct cli_got_args {
 } cli_got_args;
 
 static const char *const cli_got_compares[] = {"DT", NULL};
-static const char *const cli_got_skeletons[] = {"auto", "all", "lmt", NULL};
+static const char *const cli_got_skeletons[] = {"auto", "all", "lmt", "delaunay", NULL};
 
 #define T cli_got_args
 static const cli_option cli_got_opts[] = {
@@ -107,9 +107,11 @@ static const cli_option cli_got_opts[] = {
    .kind = CLI_CALL, .off = CLI_AT(T, distribution, int), .idef = -1,
    .call = cli_option_points_sampler},
   {.name = "--skeleton", .arg = "S", .help = "point sets: lmt (the LMT-skeleton), all (every\n"
-           "                     edge, tiny n) or auto (lmt)",
+           "                     edge, tiny n), delaunay (the certified Delaunay\n"
+           "                     subdivision: R_1, -r_1, abc_1, ...) or auto (delaunay\n"
+           "                     where it applies, else lmt)",
    .kind = CLI_CHOICE, .off = CLI_AT(T, skeleton, int), .names = cli_got_skeletons,
-   .idef = GOT_SKELETON_AUTO, .bad = "unknown skeleton '%s' (valid: auto, all, lmt)"},
+   .idef = GOT_SKELETON_AUTO, .bad = "unknown skeleton '%s' (valid: auto, all, lmt, delaunay)"},
   CLI_OPT_FLAG("--no-lot", "point sets: skip the LOT's total and its gap to the GOT", T, no_lot),
   {.name = "--gap-table", .arg = "SETS", .dflt = "none",
    .help = "how far local is from global: for each rule of --rule\n"
@@ -383,8 +385,13 @@ static int cli_got_points_stats(const cli_got_args *a, const rule *r, const geom
   printf("faces: %zu bounded, %zu left to solve (more than a triangle), %zu with points "
          "inside or not simple; the largest has %zu points; %zu search states\n", res->faces,
          res->faces_left, res->faces_general, res->largest_face, res->face_states);
-  printf("seconds: candidates %.4f, skeleton loop %.4f, faces %.4f, solve %.4f\n",
-         res->seconds_candidates, res->seconds_lmt, res->seconds_faces, res->seconds_solve);
+  if (res->skeleton == GOT_SKELETON_DELAUNAY)
+    printf("seconds: Delaunay triangulation %.4f, certificate and candidates %.4f, faces %.4f, "
+           "solve %.4f\n", res->seconds_delaunay, res->seconds_candidates, res->seconds_faces,
+           res->seconds_solve);
+  else
+    printf("seconds: candidates %.4f, skeleton loop %.4f, faces %.4f, solve %.4f\n",
+           res->seconds_candidates, res->seconds_lmt, res->seconds_faces, res->seconds_solve);
   if (a->no_lot) return 0;
   char err[512], lt[64];
   double lk;
@@ -435,7 +442,7 @@ static int cli_got_points(const cli_got_args *a, const rule *r) {
   int rc = cli_got_points_in(a, &p, &n, desc, sizeof desc);
   got_options opt = {(int)a->threads, a->tie_eps};
   if (rc == 0 &&
-      got_points_solve(p, n, r, &opt, (got_skeleton)a->skeleton, &res, err, sizeof err) != 0)
+      study_got_points(p, n, r, &opt, (got_skeleton)a->skeleton, &res, err, sizeof err) != 0)
     rc = cli_error(CMD, "%s", err);
   if (rc == 0 && cli_userdefs_failed(CMD)) rc = 1;
   if (rc == 0) {

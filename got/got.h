@@ -97,6 +97,7 @@ typedef struct got_result {
   size_t candidates, edges, certain, rounds;
   size_t faces, faces_left, faces_general, largest_face, face_states;
   double seconds_candidates, seconds_lmt, seconds_faces, seconds_solve;
+  double seconds_delaunay;  /* the caller's Delaunay triangulation (study_got_points), or 0 */
 } got_result;
 
 /* Bytes of working memory the DP needs for n vertices and this measure. */
@@ -174,9 +175,11 @@ int got_compare(const got_triangle *a, const got_triangle *b, size_t n, got_diff
 ** of measure_eval summed over the 2n - h - 2 triangles (got_cert_err_of bounds a LOT's
 ** total with them); NaN when the rule has no such model. */
 typedef enum got_skeleton {
-  GOT_SKELETON_AUTO,    /* the LMT-skeleton */
+  GOT_SKELETON_AUTO,    /* DELAUNAY when it applies and a triangulation is given, else LMT */
   GOT_SKELETON_ALL,     /* every edge, the hull certain (tiny n: got_skel_all) */
-  GOT_SKELETON_LMT      /* the rule's candidate edges and the LMT loop (got_skel_build) */
+  GOT_SKELETON_LMT,     /* the rule's candidate edges and the LMT loop (got_skel_build) */
+  GOT_SKELETON_DELAUNAY /* rule_got_is_cdt's rules: the certified Delaunay subdivision's
+                           edges certain, its cocircular cells' diagonals possible */
 } got_skeleton;
 
 /* 0, or -1 with a one-line message: p[0..n-1] is no input of got_points_solve (fewer
@@ -192,7 +195,18 @@ int got_points_check_memory(size_t n, char *err, size_t errlen);
 ** skeleton's, a face's: too large for the exact search, out of memory). */
 int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                      got_skeleton skeleton, got_result *out, char *err, size_t errlen);
-/* The skeleton's name ("auto", "all", "lmt"), and back (-1 for none). */
+/* The same, given a triangulation of the points claimed to be Delaunay (dt: ndt
+** anticlockwise triples of point indices, such as lot's exact Delaunay triangulation;
+** NULL when none).  With the skeleton AUTO or DELAUNAY and a rule of rule_got_is_cdt, dt is
+** certified exactly (every triangle anticlockwise, matched edges, a convex boundary winding
+** once, every point a vertex, every edge locally Delaunay) and the candidates are its
+** subdivision's edges (docs/got.md, "Point sets: rules whose GOT is Delaunay"); a failed
+** certificate is refused with one line.  DELAUNAY without dt, or with another rule, is
+** refused; AUTO falls back to LMT. */
+int got_points_solve_dt(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                        got_skeleton skeleton, const uint32_t *dt, size_t ndt, got_result *out,
+                        char *err, size_t errlen);
+/* The skeleton's name ("auto", "all", "lmt", "delaunay"), and back (-1 for none). */
 const char *got_skeleton_name(got_skeleton s);
 int got_skeleton_find(const char *name);
 

@@ -13,7 +13,8 @@
 ** every face's optimum is.
 **
 ** Steps and costs (n points, E certain edges, F faces):
-**   validation (sort: O(n log n)); the skeleton (got_skel_build, or got_skel_all in
+**   validation (sort: O(n log n)); the skeleton (got_skel_build, got_skel_delaunay on a
+**   caller's Delaunay triangulation for the rules of rule_got_is_cdt, or got_skel_all in
 **   O(n^3)); the planar graph of the certain edges: neighbours in exact angular order
 **   (O(sum deg^2), insertion sorts of short lists), its closed walks (O(E)), components
 **   (union-find), each component not holding the hull and each isolated point located in
@@ -117,14 +118,15 @@ int got_points_check_memory(size_t n, char *err, size_t errlen) {
   return -1;
 }
 
-static const char *const got_skeleton_names[] = {"auto", "all", "lmt"};
+static const char *const got_skeleton_names[] = {"auto", "all", "lmt", "delaunay"};
+#define GOT_NSKELETONS (sizeof got_skeleton_names / sizeof *got_skeleton_names)
 
 const char *got_skeleton_name(got_skeleton s) {
-  return (unsigned)s < 3 ? got_skeleton_names[s] : "?";
+  return (unsigned)s < GOT_NSKELETONS ? got_skeleton_names[s] : "?";
 }
 
 int got_skeleton_find(const char *name) {
-  for (int i = 0; i < 3; i++)
+  for (int i = 0; i < (int)GOT_NSKELETONS; i++)
     if (name != NULL && strcmp(name, got_skeleton_names[i]) == 0) return i;
   return -1;
 }
@@ -720,10 +722,33 @@ static void got_points_fill(got_result *out, got_solver *S, size_t F, const rule
   qsort(out->tri, out->ntri, sizeof *out->tri, got_tri_cmp);
 }
 
-/* The skeleton asked for (AUTO: the LMT-skeleton). */
+/* The skeleton that runs: DELAUNAY for AUTO when the rule's GOT is Delaunay and a
+** triangulation is given, LMT for AUTO otherwise; -1 with err for DELAUNAY where it does not
+** apply. */
+static int got_points_which(got_skeleton sk, const rule *r, const uint32_t *dt, char *err,
+                            size_t errlen) {
+  int cdt = rule_got_is_cdt(r);
+  if (sk == GOT_SKELETON_AUTO) return cdt && dt != NULL ? GOT_SKELETON_DELAUNAY : GOT_SKELETON_LMT;
+  if (sk != GOT_SKELETON_DELAUNAY || (cdt && dt != NULL)) return (int)sk;
+  if (!cdt)
+    snprintf(err, errlen, "skeleton delaunay: rule %s's GOT need not be a Delaunay "
+             "triangulation (it applies to R_1, R_2, R_0, R_-1, -r_1, abc_1, -r/R_1, -r2/A_0)",
+             rule_name(r));
+  else
+    snprintf(err, errlen, "skeleton delaunay: no Delaunay triangulation was given");
+  return -1;
+}
+
+/* The skeleton asked for (got_points_which's). */
 static int got_points_skeleton(const geom_point *p, size_t n, const rule *r, int threads,
-                               got_skeleton sk, got_skel *s, char *err, size_t errlen) {
-  if (sk == GOT_SKELETON_ALL) return got_skel_all(p, n, s, err, errlen);
+                               got_skeleton sk, const uint32_t *dt, size_t ndt, got_skel *s,
+                               char *err, size_t errlen) {
+  switch (sk) {
+    case GOT_SKELETON_ALL: return got_skel_all(p, n, s, err, errlen);
+    case GOT_SKELETON_DELAUNAY: return got_skel_delaunay(p, n, dt, ndt, s, err, errlen);
+    case GOT_SKELETON_AUTO:
+    case GOT_SKELETON_LMT: break;
+  }
   return got_skel_build(p, n, r, threads, s, err, errlen);
 }
 
@@ -797,16 +822,24 @@ static int got_points_run(const geom_point *p, size_t n, const rule *r, int thre
 
 int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                      got_skeleton skeleton, got_result *out, char *err, size_t errlen) {
+  return got_points_solve_dt(p, n, r, opt, skeleton, NULL, 0, out, err, errlen);
+}
+
+int got_points_solve_dt(const geom_point *p, size_t n, const rule *r, const got_options *opt,
+                        got_skeleton skeleton, const uint32_t *dt, size_t ndt, got_result *out,
+                        char *err, size_t errlen) {
   memset(out, 0, sizeof *out);
   if (got_points_check(p, n, r, err, errlen) != 0) return -1;
   if (opt != NULL && geom_threads_check(opt->threads, err, errlen) != 0) return -1;
-  if ((unsigned)skeleton > GOT_SKELETON_LMT)
-    return got_points_err(err, errlen, "skeleton: expected auto, all or lmt");
+  if ((unsigned)skeleton >= GOT_NSKELETONS)
+    return got_points_err(err, errlen, "skeleton: expected auto, all, lmt or delaunay");
   if (got_points_check_memory(n, err, errlen) != 0) return -1;
+  int sk = got_points_which(skeleton, r, dt, err, errlen);
+  if (sk < 0) return -1;
   int threads = geom_threads_clamp(opt ? opt->threads : 0, omp_get_max_threads());
   double t0 = omp_get_wtime();
   got_skel s;
-  if (got_points_skeleton(p, n, r, threads, skeleton, &s, err, errlen) != 0) {
+  if (got_points_skeleton(p, n, r, threads, (got_skeleton)sk, dt, ndt, &s, err, errlen) != 0) {
     got_skel_free(&s);
     return -1;
   }
@@ -819,7 +852,7 @@ int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_opt
     out->cert_rho = out->cert_alpha = NAN;
   out->n = n;
   out->points = 1;
-  out->skeleton = skeleton == GOT_SKELETON_ALL ? GOT_SKELETON_ALL : GOT_SKELETON_LMT;
+  out->skeleton = sk;
   out->threads = threads;
   out->seconds = omp_get_wtime() - t0;
   if (rc != 0) got_result_free(out);

@@ -27,7 +27,7 @@ static const geom_field got_result_fields[] = {
   G(rounds, SIZE),
   G(faces, SIZE), G(faces_left, SIZE), G(faces_general, SIZE), G(largest_face, SIZE),
   G(face_states, SIZE), G(seconds_candidates, DOUBLE), G(seconds_lmt, DOUBLE),
-  G(seconds_faces, DOUBLE), G(seconds_solve, DOUBLE)};
+  G(seconds_faces, DOUBLE), G(seconds_solve, DOUBLE), G(seconds_delaunay, DOUBLE)};
 #undef G
 #define GOT_NFIELDS (sizeof got_result_fields / sizeof *got_result_fields)
 

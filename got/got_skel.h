@@ -1,6 +1,7 @@
 /* got_skel.h: the edges every GOT of a sum rule must contain, and the edges none can
 ** (private to got/, its tests and benchmarks; docs/got.md, "Point sets: the skeleton").
-** got_skel_build and got_skel_free: got/got_skel.c; got_skel_all: got/got_skel_all.c. */
+** got_skel_build and got_skel_free: got/got_skel.c; got_skel_all: got/got_skel_all.c;
+** got_skel_delaunay: got/got_skel_dt.c. */
 #ifndef FLIPLAB_GOT_SKEL_H
 #define FLIPLAB_GOT_SKEL_H
 
@@ -26,6 +27,14 @@ typedef struct got_skel {
 FLIPLAB_INTERNAL
 int got_skel_build(const geom_point *p, size_t n, const rule *r, int threads, got_skel *out,
                    char *err, size_t errlen);
+/* The rules of rule_got_is_cdt: every GOT is a Delaunay triangulation.  tri[0..3 ntri-1]
+** is a triangulation claimed to be Delaunay (anticlockwise triples of point indices); it is
+** certified exactly, then the Delaunay subdivision's edges are CERTAIN and every diagonal
+** of a cocircular cell POSSIBLE.  0, or -1 with a one-line message naming what fails
+** (got/got_skel_dt.c). */
+FLIPLAB_INTERNAL
+int got_skel_delaunay(const geom_point *p, size_t n, const uint32_t *tri, size_t ntri,
+                      got_skel *out, char *err, size_t errlen);
 /* All edges (no segment through a third point is an edge), hull edges CERTAIN: the trivial
 ** skeleton, for tests and tiny inputs (got/got_skel_all.c). */
 FLIPLAB_INTERNAL

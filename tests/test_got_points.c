@@ -13,7 +13,9 @@
 **   the second smallest key, and the certified verdict never says unique when the
 **   enumeration has two optima within 1e-9 (ties: -A_1 ties every triangulation, grids
 **   and the circle tie P_1), and says it for P_1 whenever the enumeration's gap is above
-**   1e-6.  The LOT of the same points (incremental) never totals less than the GOT.
+**   1e-6.  The LOT of the same points (incremental) never totals less than the GOT.  The
+**   eight rules whose GOT is Delaunay also run through study_got_points (the skeleton
+**   "delaunay"): the least key, never "unique" where two optima tie.
 ** - Convex position: the GOT equals got_solve of the hull polygon bit for bit (key,
 **   runner-up, certificate, triangles) for every rule.
 ** - The result does not depend on the thread count, bit for bit.
@@ -35,6 +37,7 @@
 #include "lot.h"
 #include "sampler.h"
 #include "siteflip.h"
+#include "study.h"
 #include "testutil.h"
 
 #define TGP_REL 1e-9
@@ -139,6 +142,34 @@ static void tgp_check_one(const geom_point *p, int n, const siteflip_graph *g, c
   got_result_free(&res);
 }
 
+/* The rules whose GOT is Delaunay, through study_got_points (the skeleton "delaunay" on
+** lot's Delaunay triangulation, tests/test_got_dt.c): the least enumerated key, and never
+** "unique" where two triangulations tie. */
+static const char *const tgp_dt_rules[] = {"R_1", "R_2", "R_0", "R_-1", "-r_1", "abc_1",
+                                           "-r/R_1", "-r2/A_0"};
+
+static void tgp_check_delaunay(const geom_point *p, int n, const siteflip_graph *g,
+                               const char *name, const char *what) {
+  rule r = tgp_rule(name);
+  got_options o = {1, RULE_DEFAULT_TIE_EPS};
+  got_result res;
+  char err[512];
+  assert_true(rule_got_is_cdt(&r));
+  if (study_got_points(p, (size_t)n, &r, &o, GOT_SKELETON_AUTO, &res, err, sizeof err) != 0)
+    fail_msg("%s, %s, skeleton delaunay: %s", what, name, err);
+  assert_int_equal(res.skeleton, GOT_SKELETON_DELAUNAY);
+  double k1, k2;
+  int nbest, u = tgp_node(g, res.tri, res.ntri);
+  tgp_best(g, &r, &k1, &k2, &nbest);
+  if (u < 0) fail_msg("%s, %s, delaunay: the triangles are no triangulation", what, name);
+  if (!tgp_near(res.key, k1) || !tgp_near(siteflip_node_key(g, &r, u), k1))
+    fail_msg("%s, %s, delaunay: key %.17g, its triangles %.17g, enumeration %.17g", what,
+             name, res.key, siteflip_node_key(g, &r, u), k1);
+  if (nbest > 1 && res.cert_unique)
+    fail_msg("%s, %s, delaunay: %d optima but certified unique", what, name, nbest);
+  got_result_free(&res);
+}
+
 static int tgp_checked;
 
 static void tgp_check_set(const geom_point *p, int n, const char *what) {
@@ -151,6 +182,8 @@ static void tgp_check_set(const geom_point *p, int n, const char *what) {
     tgp_check_one(p, n, g, &r, GOT_SKELETON_AUTO, what);
     tgp_checked++;
   }
+  for (size_t i = 0; i < sizeof tgp_dt_rules / sizeof *tgp_dt_rules; i++)
+    tgp_check_delaunay(p, n, g, tgp_dt_rules[i], what);
   siteflip_free(g);
 }
 

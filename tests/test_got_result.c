@@ -72,7 +72,7 @@ static size_t tgr_fields(const got_result *r) {
   TGR_I(r, certain); TGR_I(r, rounds); TGR_I(r, faces); TGR_I(r, faces_left);
   TGR_I(r, faces_general); TGR_I(r, largest_face); TGR_I(r, face_states);
   TGR_D(r, seconds_candidates); TGR_D(r, seconds_lmt); TGR_D(r, seconds_faces);
-  TGR_D(r, seconds_solve);
+  TGR_D(r, seconds_solve); TGR_D(r, seconds_delaunay);
   assert_true(got_result_get_text(r, "cert_why") == r->cert_why);
   assert_null(got_result_get_text(r, "total"));
   return seen + 2;                               /* and tri, cert_why: read by their verbs */

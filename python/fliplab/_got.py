@@ -24,8 +24,8 @@ _NUMBERS = ("n", "key", "total", "key2", "total2", "gap", "rel_gap", "tie_eps", 
 # a point set's statistics (got_points_solve; 0 for a polygon)
 _POINT_STATS = ("candidates", "edges", "certain", "rounds", "faces", "faces_left",
                 "faces_general", "largest_face", "face_states", "seconds_candidates",
-                "seconds_lmt", "seconds_faces", "seconds_solve")
-SKELETONS = ("auto", "all", "lmt")   # got_skeleton's names, in its order
+                "seconds_lmt", "seconds_faces", "seconds_solve", "seconds_delaunay")
+SKELETONS = ("auto", "all", "lmt", "delaunay")   # got_skeleton's names, in its order
 
 
 class Got:
@@ -82,6 +82,8 @@ class Got:
         those with points inside or not simple, the largest's points, the
         exact search's states.
     seconds_candidates, seconds_lmt, seconds_faces, seconds_solve : float
+    seconds_delaunay : float
+        The Delaunay triangulation's time (skeleton "delaunay"; else 0).
     """
 
     def __init__(self, res: Any, mapping: npt.NDArray[np.int64], reversed_: bool,
@@ -223,8 +225,11 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
         minimum-weight triangulation; not "DT", ES:SHAPE or a joint min or
         max).
     skeleton : str
-        One of SKELETONS: "auto" or "lmt" (the LMT-skeleton), "all" (every
-        edge: tiny sets).
+        One of SKELETONS: "lmt" (the LMT-skeleton), "all" (every edge: tiny
+        sets), "delaunay" (the rules whose GOT is a Delaunay triangulation,
+        R_1, -r_1, abc_1, ...: lot's exact Delaunay triangulation, certified,
+        its subdivision's edges certain), "auto" (delaunay where it applies,
+        else lmt).
     threads : int
         0 (all cores) or 1 .. 1024; the result does not depend on it.
     tie_eps : float, optional
@@ -241,7 +246,8 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     ------
     ValueError
         A rule that is no sum rule, duplicate points (both rows named),
-        collinear points, a coordinate outside the contract, a bad keyword.
+        collinear points, a coordinate outside the contract, a bad keyword,
+        skeleton "delaunay" for a rule whose GOT need not be Delaunay.
     MemoryError
         The points do not fit in memory.
     """
@@ -256,7 +262,7 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     e = _lib.errbuf()
     if lib.got_points_check_memory(len(p), e, _lib.ERRLEN) != 0:
         raise MemoryError(_lib.text(e))
-    return _solve(lambda opt, res: lib.got_points_solve(points_ptr(p), len(p),
+    return _solve(lambda opt, res: lib.study_got_points(points_ptr(p), len(p),
                                                         ctypes.byref(r._c), opt, sk, res, e,
                                                         _lib.ERRLEN),
                   nthreads, eps, e, lambda res: Got(res, np.arange(len(p)), False, r))

@@ -181,6 +181,7 @@ _PROTOS = {
     "got_format_total": (None, [_void_p, _double, _char_p, _size]),
     "got_points_check_memory": (_int, [_size, _char_p, _size]),
     "got_points_solve": (_int, [Point_p, _size, Rule_p, _void_p, _int, _void_p, _char_p, _size]),
+    "study_got_points": (_int, [Point_p, _size, Rule_p, _void_p, _int, _void_p, _char_p, _size]),
     "got_skeleton_find": (_int, [_char_p]),
     # classify/flipgraph.h, classify/siteflip.h
     "flipgraph_tally_run": (_int, [Rule_p, _int, ctypes.POINTER(FlipgraphRun),

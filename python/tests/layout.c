@@ -146,7 +146,7 @@ static void layout_got(void) {
   F(got_result, certain); F(got_result, rounds); F(got_result, faces);
   F(got_result, faces_left); F(got_result, faces_general); F(got_result, largest_face);
   F(got_result, face_states); F(got_result, seconds_candidates); F(got_result, seconds_lmt);
-  F(got_result, seconds_faces); F(got_result, seconds_solve);
+  F(got_result, seconds_faces); F(got_result, seconds_solve); F(got_result, seconds_delaunay);
 }
 
 /* Chapter 2's registry and runner, section 4.2's cubes (_paradigms.py, _linf.py). */

@@ -239,7 +239,7 @@ def test_choices_are_the_librarys():
     assert tuple(names.split(", ")) == fliplab.samplers.POINT_SETS
     for k in fliplab.samplers.SITE_SETS:
         assert lib.sampler_sites_find(k.encode()) >= 0
-    assert [lib.got_skeleton_find(k.encode()) for k in fliplab.SKELETONS] == [0, 1, 2]
+    assert [lib.got_skeleton_find(k.encode()) for k in fliplab.SKELETONS] == [0, 1, 2, 3]
     for k in fliplab.samplers.PENTAGON_SAMPLERS:
         assert lib.sampler_pentagons_find(k.encode())
     for k in fliplab.samplers.POLYGONS:
