@@ -310,6 +310,10 @@ double rule_gap(const rule *r, double key1, double key2) {
 ** joint, so a flip that improves a quadrilateral's pair improves the
 ** polygon's total: a GOT is locally optimal, and the only triangulation of
 ** a polygon in general position that is locally optimal for DT is its CDT.
+** `theorem` is the thesis's proof that the rule decides as DT does, strictly
+** off the circle (appendix A: 3 for R with any joint, 16 for -r_1, 18 for
+** abc_1); 0 for -r/R_1 and -r2/A_0, which table 3.4 reports as always
+** Delaunay from its samples, with no proof.
 ** R_-inf, R_inf and -alpha_inf are DT-equivalent too, but a total that is
 ** a min or a max ignores all triangles but one, so their GOT need not be
 ** locally optimal (the CDT attains the optimum of R_inf and -alpha_inf
@@ -317,16 +321,28 @@ double rule_gap(const rule *r, double key1, double key2) {
 static const struct {
   int measure;
   joint_id joint;
+  int theorem;
 } rule_got_cdt[] = {
-  {MEASURE_R, JOINT_SUM},          {MEASURE_R, JOINT_RSS},
-  {MEASURE_R, JOINT_PRODUCT},      {MEASURE_R, JOINT_HARMONIC},
-  {MEASURE_NEG_R, JOINT_SUM},      {MEASURE_ABC, JOINT_SUM},
-  {MEASURE_NEG_R_OVER_R, JOINT_SUM}, {MEASURE_NEG_R2_OVER_A, JOINT_PRODUCT},
+  {MEASURE_R, JOINT_SUM, 3},          {MEASURE_R, JOINT_RSS, 3},
+  {MEASURE_R, JOINT_PRODUCT, 3},      {MEASURE_R, JOINT_HARMONIC, 3},
+  {MEASURE_NEG_R, JOINT_SUM, 16},     {MEASURE_ABC, JOINT_SUM, 18},
+  {MEASURE_NEG_R_OVER_R, JOINT_SUM, 0}, {MEASURE_NEG_R2_OVER_A, JOINT_PRODUCT, 0},
 };
 
-int rule_got_is_cdt(const rule *r) {
+/* The row of rule_got_cdt for r, or -1. */
+static int rule_got_cdt_row(const rule *r) {
   for (size_t k = 0; r->kind == RULE_TRIANGLE && k < sizeof rule_got_cdt / sizeof *rule_got_cdt;
        k++)
-    if (r->measure == rule_got_cdt[k].measure && r->joint == rule_got_cdt[k].joint) return 1;
-  return 0;
+    if (r->measure == rule_got_cdt[k].measure && r->joint == rule_got_cdt[k].joint)
+      return (int)k;
+  return -1;
+}
+
+int rule_got_is_cdt(const rule *r) {
+  return rule_got_cdt_row(r) >= 0;
+}
+
+int rule_got_cdt_theorem(const rule *r) {
+  int k = rule_got_cdt_row(r);
+  return k >= 0 ? rule_got_cdt[k].theorem : 0;
 }

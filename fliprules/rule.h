@@ -216,9 +216,14 @@ double rule_gap(const rule *r, double key1, double key2);
 
 /* ---- what a rule's GOT is ----------------------------------------------
 ** 1 when the rule's GOT of every simple polygon in general position is the
-** polygon's constrained Delaunay triangulation (theorem 3 and appendix A:
-** R_1, R_2, R_0, R_-1, -r_1, abc_1, -r/R_1, -r2/A_0, docs/lot.md), so that
-** its constrained LOT, the CDT, must have the GOT's triangles; else 0. */
+** polygon's constrained Delaunay triangulation (R_1, R_2, R_0, R_-1, -r_1,
+** abc_1 by theorems 3, 16 and 18 of appendix A; -r/R_1 and -r2/A_0 as table
+** 3.4 observes them on its samples, unproven; docs/lot.md), so that its
+** constrained LOT, the CDT, must have the GOT's triangles; else 0. */
 int rule_got_is_cdt(const rule *r);
+/* The theorem of appendix A proving that r decides every strictly convex
+** quadrilateral as DT does, strictly off the circle (3, 16 or 18), or 0:
+** what a certified answer may rest on (got's skeleton `delaunay`). */
+int rule_got_cdt_theorem(const rule *r);
 
 #endif

@@ -14,7 +14,7 @@
 **
 ** Steps and costs (n points, E certain edges, F faces):
 **   validation (sort: O(n log n)); the skeleton (got_skel_build, got_skel_delaunay on a
-**   caller's Delaunay triangulation for the rules of rule_got_is_cdt, or got_skel_all in
+**   caller's Delaunay triangulation for the rules of rule_got_cdt_theorem, or got_skel_all in
 **   O(n^3)); the planar graph of the certain edges: neighbours in exact angular order
 **   (O(sum deg^2), insertion sorts of short lists), its closed walks (O(E)), components
 **   (union-find), each component not holding the hull and each isolated point located in
@@ -722,18 +722,22 @@ static void got_points_fill(got_result *out, got_solver *S, size_t F, const rule
   qsort(out->tri, out->ntri, sizeof *out->tri, got_tri_cmp);
 }
 
-/* The skeleton that runs: DELAUNAY for AUTO when the rule's GOT is Delaunay and a
+/* The skeleton that runs: DELAUNAY for AUTO when a theorem makes the rule's GOT Delaunay
+** (rule_got_cdt_theorem: an observation is no ground for a certified answer) and a
 ** triangulation is given, LMT for AUTO otherwise; -1 with err for DELAUNAY where it does not
 ** apply. */
 static int got_points_which(got_skeleton sk, const rule *r, const uint32_t *dt, char *err,
                             size_t errlen) {
-  int cdt = rule_got_is_cdt(r);
+  int cdt = rule_got_cdt_theorem(r) > 0;
   if (sk == GOT_SKELETON_AUTO) return cdt && dt != NULL ? GOT_SKELETON_DELAUNAY : GOT_SKELETON_LMT;
   if (sk != GOT_SKELETON_DELAUNAY || (cdt && dt != NULL)) return (int)sk;
-  if (!cdt)
+  if (rule_got_is_cdt(r) && !cdt)
+    snprintf(err, errlen, "skeleton delaunay: that rule %s's GOT is Delaunay is observed on "
+             "samples (table 3.4), not proven, so it cannot certify (the skeleton applies to "
+             "R_1, R_2, R_0, R_-1, -r_1, abc_1)", rule_name(r));
+  else if (!cdt)
     snprintf(err, errlen, "skeleton delaunay: rule %s's GOT need not be a Delaunay "
-             "triangulation (it applies to R_1, R_2, R_0, R_-1, -r_1, abc_1, -r/R_1, -r2/A_0)",
-             rule_name(r));
+             "triangulation (it applies to R_1, R_2, R_0, R_-1, -r_1, abc_1)", rule_name(r));
   else
     snprintf(err, errlen, "skeleton delaunay: no Delaunay triangulation was given");
   return -1;

@@ -1,12 +1,13 @@
 /*
 ** got_skel_dt.c: the skeleton of a point set's GOT for the rules whose GOT is a Delaunay
-** triangulation (rule_got_is_cdt), built from a triangulation the caller claims is
+** triangulation (rule_got_cdt_theorem), built from a triangulation the caller claims is
 ** Delaunay and certified here exactly (got_skel.h; docs/got.md, "Point sets: rules whose
 ** GOT is Delaunay").  got/ does not triangulate: the caller brings the triangulation
 ** (lot's exact Delaunay triangulation, through studies/), and nothing it brings is trusted.
 **
-** Why the candidates are sound.  Each rule of rule_got_is_cdt decides every strictly convex
-** quadrilateral as Delaunay's rule does, strictly when the four points are not cocircular,
+** Why the candidates are sound.  Each rule rule_got_cdt_theorem names decides every strictly
+** convex quadrilateral as Delaunay's rule does, strictly when the four points are not
+** cocircular (a theorem of the thesis's appendix A, not an observation on samples),
 ** and its joint's keys add (a strictly monotone sum).  A GOT is weakly locally optimal (no
 ** flip lowers its total strictly: got_points.c), so at each of its edges whose quadrilateral
 ** is strictly convex the fourth point is not strictly inside the circle of the other three;

@@ -54,7 +54,7 @@ static int study_delaunay(const geom_point *p, size_t n, uint32_t **tri, size_t 
 
 int study_got_points(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                      got_skeleton sk, got_result *out, char *err, size_t errlen) {
-  if ((sk != GOT_SKELETON_AUTO && sk != GOT_SKELETON_DELAUNAY) || !rule_got_is_cdt(r))
+  if ((sk != GOT_SKELETON_AUTO && sk != GOT_SKELETON_DELAUNAY) || rule_got_cdt_theorem(r) == 0)
     return got_points_solve(p, n, r, opt, sk, out, err, errlen);
   memset(out, 0, sizeof *out);
   /* got's own checks first: its one-line errors (equal points, collinear sets) stand */
