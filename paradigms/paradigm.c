@@ -23,17 +23,12 @@
   "constraints: the row select-constrained (2.4.2); simple polygons: select-constrained, " \
   "incremental and flip (2.4.3's own polygon selection is not built)"
 
-/* One row per algorithm; problems and rules as in paradigm.h. */
-int paradigm_key_cmp(const void *x, const void *y) {
-  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-  return (a > b) - (a < b);
-}
-
 /* Why Watson's insertion and the history DAG refuse constraints and polygons. */
 #define PARADIGM_CAVITY_REFUSAL \
   "constraints and polygons: not built (a cavity would have to stop at segments); " \
   "the row incremental inserts segments"
 
+/* One row per algorithm; problems and rules as in paradigm.h. */
 static const paradigm_algorithm paradigm_algorithms[] = {
   {"incremental", "incremental", "2.3.1", PARADIGM_DELAUNAY | PARADIGM_CONSTRAINED
    | PARADIGM_POLYGON, BOTH_RULES, "convex polygons: the convex-* rows",

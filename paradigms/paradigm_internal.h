@@ -20,14 +20,6 @@ FLIPLAB_INTERNAL
 int paradigm_lot_sweep(const paradigm_input *in, paradigm_output *out, char *err,
                        size_t errlen);
 
-/* The key of the undirected edge uv (smaller index << 32 | larger), and the
-** qsort/bsearch order of such keys (paradigms/paradigm.c): the constraint
-** look-ups of sweep_finish.c. */
-static inline uint64_t paradigm_edge_key(uint32_t u, uint32_t v) {
-  return u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
-}
-FLIPLAB_INTERNAL int paradigm_key_cmp(const void *x, const void *y);
-
 /* lot's triangles into out and L freed (paradigms/lot_rows.c), or -1 with a
 ** one-line message when L did not converge (the flip budget ran out) or
 ** memory ran out; L is freed either way. */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "geom_mem_internal.h"
+#include "geom_key_internal.h"
 #include "paradigm_internal.h"
 #include "lot.h"
 
@@ -67,8 +68,8 @@ static void fin_edge(fin_state *F, size_t t, int k) {
   int32_t ui = F->nb[3 * t + (size_t)k];
   uint32_t *v = F->tri + 3 * t;
   uint32_t P = v[k], A = v[(k + 1) % 3], B = v[(k + 2) % 3];
-  uint64_t key = paradigm_edge_key(A, B);
-  if (ui < 0 || bsearch(&key, F->cons, F->ncons, sizeof key, paradigm_key_cmp) != NULL) return;
+  uint64_t key = geom_edge_key(A, B);
+  if (ui < 0 || bsearch(&key, F->cons, F->ncons, sizeof key, geom_u64_cmp) != NULL) return;
   size_t u = (size_t)ui;
   int j = fin_back(F->nb, u, t);
   uint32_t Q = F->tri[3 * u + (size_t)j];
@@ -125,8 +126,8 @@ int paradigm_sweep_finish(const paradigm_input *in, uint32_t *tri, size_t ntri,
              "a bug, please report the input", ntri, in->n);
     rc = -1;
   } else {
-    for (size_t i = 0; i < ncons; i++) keys[i] = paradigm_edge_key(cons[2 * i], cons[2 * i + 1]);
-    qsort(keys, ncons, sizeof *keys, paradigm_key_cmp);
+    for (size_t i = 0; i < ncons; i++) keys[i] = geom_edge_key(cons[2 * i], cons[2 * i + 1]);
+    qsort(keys, ncons, sizeof *keys, geom_u64_cmp);
     fin_state F = {in->p, in->r, c, tri, nb, keys, ncons, stack, 0, cap, 0};
     fin_lawson(&F, ntri);
     stack = F.stack;
