@@ -281,6 +281,11 @@ static void test_refusals(void **state) {
   sk_refuse(line, 4, "P_1");
   const geom_point dup[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
   sk_refuse(dup, 4, "P_1");
+  /* coordinates outside the contract (the orientations skip the tiny-difference test) */
+  const geom_point tiny[4] = {{0, 0}, {1, 0}, {0, 1}, {1e-40, 0.5}};
+  sk_refuse(tiny, 4, "P_1");
+  const geom_point inf[4] = {{0, 0}, {1, 0}, {0, INFINITY}, {0.5, 0.5}};
+  sk_refuse(inf, 4, "-alpha_1");
 }
 
 int main(void) {
