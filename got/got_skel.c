@@ -81,7 +81,7 @@ static int skel_pair_keeps(const skel *s, uint32_t e, uint32_t t1, uint32_t t2) 
   uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1];
   uint32_t c = skel_tri_sum(s, t1) - a - b, d = skel_tri_sum(s, t2) - a - b;
   const geom_point *p = s->p;
-  if (geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) >= 0) return 1;
+  if (geom_orient_valid(p[c], p[d], p[a]) * geom_orient_valid(p[c], p[d], p[b]) >= 0) return 1;
   return !skel_flip_better(s, a, b, c, d, t1, t2);
 }
 
@@ -226,8 +226,8 @@ static int skel_cross(const skel *s, uint32_t e, uint32_t f) {
   const geom_point *p = s->p;
   uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1], c = s->ev[2 * f], d = s->ev[2 * f + 1];
   if (a == c || a == d || b == c || b == d) return 0;
-  return geom_orient(p[a], p[b], p[c]) * geom_orient(p[a], p[b], p[d]) < 0 &&
-         geom_orient(p[c], p[d], p[a]) * geom_orient(p[c], p[d], p[b]) < 0;
+  return geom_orient_valid(p[a], p[b], p[c]) * geom_orient_valid(p[a], p[b], p[d]) < 0 &&
+         geom_orient_valid(p[c], p[d], p[a]) * geom_orient_valid(p[c], p[d], p[b]) < 0;
 }
 
 typedef struct skel_probe {
@@ -436,7 +436,9 @@ static int skel_prepare(skel *s) {
   return skel_triangles(s);
 }
 
-/* The checks of the arguments: 0, or -1 with the message. */
+/* The checks of the arguments: 0, or -1 with the message.  The coordinates must obey the
+** contract (geom_coord_check): the skeleton's hot orientations then skip the filter's test
+** for tiny differences (geom_orient_valid): a tenth of the instructions at 10^4 points. */
 static int skel_check(skel *s, const rule *r, int threads, char *err, size_t errlen) {
   size_t bad = 0, bad2 = 0;
   if (geom_threads_check(threads, err, errlen) != 0 || skel_decider(s, r, err, errlen) != 0)
@@ -450,6 +452,15 @@ static int skel_check(skel *s, const rule *r, int threads, char *err, size_t err
              "points is a candidate for it (no exclusion test), so at most %d points",
              s->n, rule_name(r), GOT_SKEL_ALL_MAX);
     return -1;
+  }
+  for (size_t i = 0; i < s->n; i++) {
+    geom_coorderr e = geom_coord_check(s->p[i].x);
+    if (e == GEOM_COORD_OK) e = geom_coord_check(s->p[i].y);
+    if (e != GEOM_COORD_OK) {
+      snprintf(err, errlen, "got skeleton: point %zu (0-based): a coordinate %s", i,
+               geom_coorderr_str(e));
+      return -1;
+    }
   }
   int rc = skel_hull(s, &bad, &bad2);
   if (rc == -2)

@@ -23,7 +23,8 @@ typedef struct got_skel {
 } got_skel;
 /* Every edge that can be in a GOT of the sum rule r for p[0..n-1] (distinct points, not all
 ** collinear): 0, or -1 with a one-line message (a non-sum rule, out of memory, n too large for
-** the rule's exclusion test).  threads as in got_options. */
+** the rule's exclusion test, a coordinate outside the contract of geom_coord_check).  threads
+** as in got_options. */
 FLIPLAB_INTERNAL
 int got_skel_build(const geom_point *p, size_t n, const rule *r, int threads, got_skel *out,
                    char *err, size_t errlen);

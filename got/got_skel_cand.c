@@ -106,6 +106,11 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
 #define SKEL_SECT 128
 #define SKEL_WIN 64       /* cell offsets with a table of the sectors they can meet */
 
+/* Bins of the pseudo-angle of skel_sector: 512 over its range [0, 2), each narrower
+** than 0.008 rad (the pseudo-angle grows at least half as fast as the angle), so a bin
+** meets at most one sector boundary (w = 0.049 rad). */
+#define SKEL_GUESS 512
+
 /* A point q seen from a: its sector, distance, ring and coordinates. */
 typedef struct skel_seen { uint32_t q; int sect; double d; geom_point pt; int ring; } skel_seen;
 
@@ -116,11 +121,14 @@ typedef struct skel_search {
   size_t ns, cap;
   double dmin[SKEL_SECT], far[SKEL_SECT], reach[SKEL_SECT];
   unsigned char done[SKEL_SECT];
+  int cover[SKEL_SECT];             /* rings 0 .. cover[t] - 1 read whole in sector t */
+  unsigned char gap[SKEL_SECT];     /* sector t has a cell left out of the current ring */
   int open[SKEL_SECT], nopen;       /* the sectors not done, ascending */
   double bx[SKEL_SECT], by[SKEL_SECT], fk[7];   /* fk: the far argument's factors */
+  unsigned char guess[SKEL_GUESS];  /* skel_sector's first guess by pseudo-angle */
   uint32_t *stamp, tick;            /* ring places visited (skel_ring_arcs), by tick */
   size_t stcap;
-  uint32_t *sidx, scap;             /* the seen points by sector (skel_seen_fails) */
+  uint32_t *sidx, scap;             /* the seen points by sector (skel_seen_decides) */
   uint32_t soff[SKEL_SECT + 1];
 } skel_search;
 
@@ -133,30 +141,42 @@ static void skel_search_init(skel_search *z) {
     double d = (k + 1) * (2 * M_PI / SKEL_SECT);
     z->fk[k] = cos(d) + sin(d) / tan(M_PI / 8);
   }
+  for (int i = 0; i < SKEL_GUESS; i++) {
+    double q = 2.0 * i / SKEL_GUESS, phi = q <= 1 ? atan2(q, 1 - q) : atan2(2 - q, 1 - q);
+    int t = (int)floor(phi / (2 * M_PI / SKEL_SECT));
+    z->guess[i] = (unsigned char)(t < 0 ? 0 : t > SKEL_SECT / 2 - 1 ? SKEL_SECT / 2 - 1 : t);
+  }
 }
 
 /* The sector of direction (dx, dy) != 0: the lower half plane holds sectors 0 .. 63, the
-** upper one 64 .. 127, and within a half the boundaries are in anticlockwise order, so a
-** binary search with cross products finds the last boundary at or before the direction.
-** The boundaries' rounding moves them by about 1e-16 rad, far inside the margins of the
-** far argument (a sector's neighbours at two sectors' distance). */
+** upper one 64 .. 127, and within a half the boundaries are in anticlockwise order, so the
+** sector is the last boundary t of the half with cross(b_t, d) >= 0 (that test is true up
+** to the sector and false after it).  A first guess from the pseudo-angle's bin (the
+** direction turned into the upper half as (u, v), q = 1 - u / (|u| + v), which grows with
+** the angle) is then moved to that last boundary: the answer of a binary search over the
+** half, in one or two tests instead of six unpredictable ones.  The boundaries' rounding
+** moves them by about 1e-16 rad, far inside the margins of the far argument (a sector's
+** neighbours at two sectors' distance). */
 static int skel_sector(const skel_search *z, double dx, double dy) {
-  int lo = dy < 0 || (dy == 0 && dx < 0) ? 0 : SKEL_SECT / 2, hi = lo + SKEL_SECT / 2 - 1;
-  while (lo < hi) {
-    int mid = (lo + hi + 1) / 2;
-    if (z->bx[mid] * dy - z->by[mid] * dx >= 0) lo = mid;
-    else hi = mid - 1;
-  }
-  return lo;
+  int low = dy < 0 || (dy == 0 && dx < 0), base = low ? 0 : SKEL_SECT / 2;
+  int top = base + SKEL_SECT / 2 - 1;
+  double u = low ? -dx : dx, v = low ? -dy : dy, q = 1 - u / (fabs(u) + v);
+  int i = (int)(q * (SKEL_GUESS / 2)), t;
+  t = base + z->guess[i < 0 ? 0 : i > SKEL_GUESS - 1 ? SKEL_GUESS - 1 : i];
+  while (t > base && !(z->bx[t] * dy - z->by[t] * dx >= 0)) t--;
+  while (t < top && z->bx[t + 1] * dy - z->by[t + 1] * dx >= 0) t++;
+  return t;
 }
 
+/* far[t] for the open sectors (indices wrap by a mask: SKEL_SECT is a power of two).
+** Cost: 10 products an open sector. */
 static void skel_far_update(skel_search *z) {
   for (int j = 0; j < z->nopen; j++) {
-    int t = z->open[j];
+    unsigned t = (unsigned)z->open[j];
     double l = INFINITY, r = INFINITY;
-    for (int k = 2; k <= 6; k++) {
-      double x = z->dmin[(t + k) % SKEL_SECT] * z->fk[k];
-      double y = z->dmin[(t + SKEL_SECT - k) % SKEL_SECT] * z->fk[k];
+    for (unsigned k = 2; k <= 6; k++) {
+      double x = z->dmin[(t + k) & (SKEL_SECT - 1)] * z->fk[k];
+      double y = z->dmin[(t - k) & (SKEL_SECT - 1)] * z->fk[k];
       l = x < l ? x : l, r = y < r ? y : r;
     }
     z->far[t] = (l > r ? l : r) * (1 + 1e-6);
@@ -245,8 +265,9 @@ static int skel_search_done(const skel_grid *g, geom_point a, skel_search *z, in
 }
 
 /* 1 when no point of the cell at offset (dx, dy) can end an edge that passes: each of
-** its sectors is done, or its far distance is below the cell's nearest possible point. */
-static int skel_cell_dead(const skel_grid *g, const skel_search *z, int dx, int dy) {
+** its sectors is done, or its far distance is below the cell's nearest possible point.
+** The cell is then left out, and its sectors marked as not read whole in this ring. */
+static int skel_cell_dead(const skel_grid *g, skel_search *z, int dx, int dy) {
   if (g->sect_lo == NULL || abs(dx) > SKEL_WIN || abs(dy) > SKEL_WIN) return 0;
   size_t o = (size_t)(dy + SKEL_WIN) * (2 * SKEL_WIN + 1) + (size_t)(dx + SKEL_WIN);
   int ax = abs(dx) - 1, ay = abs(dy) - 1;
@@ -256,6 +277,7 @@ static int skel_cell_dead(const skel_grid *g, const skel_search *z, int dx, int 
     int t = (g->sect_lo[o] + k) % SKEL_SECT;
     if (!z->done[t] && !(z->far[t] <= mind)) return 0;
   }
+  for (int k = 0; k < g->sect_n[o]; k++) z->gap[(g->sect_lo[o] + k) % SKEL_SECT] = 1;
   return 1;
 }
 
@@ -352,16 +374,29 @@ static int skel_ring_arcs(const skel_grid *g, geom_point pa, uint32_t a, int cx,
   return 0;
 }
 
+/* After ring k: the far distances, and the sectors read whole so far (cover).  A ring by
+** arcs reads every cell that meets an open sector (skel_ring_arcs) but the dead ones; a
+** whole ring every cell but the dead ones; a dead cell marks every sector it can meet
+** (the grid's table, padded by a sector), so a sector with no mark lost no point. */
+static void skel_ring_cover(skel_search *z, int k) {
+  for (int t = 0; t < SKEL_SECT; t++)
+    if (!z->gap[t] && z->cover[t] == k) z->cover[t] = k + 1;
+  skel_far_update(z);
+}
+
 /* Adds the points of the live cells of ring k to the search: by arcs when the open sectors
-** need fewer places than the ring has, else the whole ring. */
+** need fewer places than the ring has, else the whole ring; the sectors' cover updated. */
 static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
                      skel_search *z) {
   int cx = skel_cellx(g, p[a].x), cy = skel_celly(g, p[a].y);
   if (k >= 2 && z->nopen * (0.11 * k + 2 * SKEL_ARC_PAD + 2) < 8.0 * k) {
+    memset(z->gap, 1, sizeof z->gap);
+    for (int j = 0; j < z->nopen; j++) z->gap[z->open[j]] = 0;
     if (skel_ring_arcs(g, p[a], a, cx, cy, k, z) != 0) return -1;
-    skel_far_update(z);
+    skel_ring_cover(z, k);
     return 0;
   }
+  memset(z->gap, 0, sizeof z->gap);
   for (int iy = cy - k; iy <= cy + k; iy++) {
     if (iy < 0 || iy >= g->ny) continue;
     int step = (iy == cy - k || iy == cy + k || k == 0) ? 1 : 2 * k;
@@ -371,7 +406,7 @@ static int skel_ring(const skel_grid *g, const geom_point *p, uint32_t a, int k,
         return -1;
     }
   }
-  skel_far_update(z);
+  skel_ring_cover(z, k);
   return 0;
 }
 
@@ -397,45 +432,53 @@ static int skel_seen_sectors(skel_search *z) {
   return 0;
 }
 
-/* 1 when the points seen around a prove that pair ab (b = z->seen[ib]) fails the diamond
-** test: a point certainly inside each diamond triangle (skel_diamond_side, the pair's ends in
-** the order P, Q that skel_edge_ok gets, so this drops only pairs that skel_edge_ok
-** drops).  A triangle's directions from a are within pi/8 (8 sectors) of b's, so only the
-** 19 sectors around b's are read, nearest first; both triangles lie within |ab| /
-** cos(pi/8) < 1.09 |ab| of a, and points of ring k are at least (k - 1) h away, so each
-** sector is read up to ring 1.09 |ab| / h + 2.  Cost: those points, until both sides hold
+/* What the points seen around a say of pair ab (b = z->seen[ib]): 1 it fails the diamond
+** test (a point certainly inside each diamond triangle, or one on the open segment:
+** skel_diamond_side, the pair's ends in the order P, Q that skel_edge_ok gets, so this
+** drops only pairs that skel_edge_ok drops); 2 it passes; 0 the seen points cannot tell.
+** A triangle's directions from a are within pi/8 (8 sectors) of b's, so only the 19
+** sectors around b's are read, nearest first (b's sector anywhere in [t, t + 1) w, the
+** triangles span 16 sectors and a bit: a sector to spare at each end for the rounding of
+** sectors); both triangles lie within |ab| / cos(pi/8) < 1.09 |ab| of a, and points of
+** ring k are at least (k - 1 - 2 SKEL_PAD) h away, so they lie in rings up to 1.09 |ab| / h
+** + 1 + 1e-5, and each sector is read up to ring 1.09 |ab| / h + 2.  When those rings were
+** read whole in all 19 sectors (z->cover), the seen points hold every point of the two
+** triangles and the segment: the pair passes when neither fails (skel_edge_ok would find
+** the same points, and the others give it 0).  Cost: those points, until both sides hold
 ** one. */
-static int skel_seen_fails(const skel_search *z, size_t ib, geom_point P, geom_point Q,
-                           double h) {
+static int skel_seen_decides(const skel_search *z, size_t ib, geom_point P, geom_point Q,
+                             double h) {
   const skel_seen *b = &z->seen[ib];
   double kmax = 1.09 * b->d / h + 2;
-  int left = 0, right = 0;
+  int left = 0, right = 0, whole = 1, kneed = (int)(1.09 * b->d / h + 1 + 1e-5);
   for (int k = 0; k <= 18; k++) {
     int t = (b->sect + (k & 1 ? (k + 1) / 2 : SKEL_SECT - k / 2)) % SKEL_SECT;
+    whole &= z->cover[t] > kneed;
     for (uint32_t j = z->soff[t]; j < z->soff[t + 1]; j++) {
       const skel_seen *q = &z->seen[z->sidx[j]];
       if (q->ring > kmax) break;
       if (z->sidx[j] == ib) continue;
       int w = skel_diamond_side(P, Q, q->pt);
       left |= w == 1, right |= w == -1;
-      if (left && right) return 1;
+      if ((left && right) || w == 2) return 1;
     }
   }
-  return 0;
+  return whole ? 2 : 0;
 }
 
 /* The diamond candidates (a, b), b > a, into out, ascending in b.  The test of a pair is
 ** run with its ends in input order (orig: the input index of each point, or NULL), so
 ** its rounding, and the candidates, do not depend on the internal numbering.  The pairs
 ** the sectors leave are queued behind the seen points, sorted, tried on the seen points
-** (skel_seen_fails), and the survivors get the full test.  Cost: the live cells around a
+** (skel_seen_decides), and the survivors get the full test.  Cost: the live cells around a
 ** (about a hundred points for uniform points), and for each pair left the seen points
 ** near a until the diamond holds a point on both sides, or the points of its box. */
 static int skel_diamond_point(const skel_grid *g, const geom_point *p, const uint32_t *orig,
                               uint32_t a, skel_search *z, skel_vec *out) {
   z->ns = 0;
   for (int t = 0; t < SKEL_SECT; t++)
-    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0, z->open[t] = t;
+    z->dmin[t] = z->far[t] = INFINITY, z->reach[t] = NAN, z->done[t] = 0, z->open[t] = t,
+    z->cover[t] = 0;
   z->nopen = SKEL_SECT;
   for (int k = 0; !skel_search_done(g, p[a], z, k); k++)
     if (skel_ring(g, p, a, k, z) != 0) return -1;
@@ -455,8 +498,10 @@ static int skel_diamond_point(const skel_grid *g, const geom_point *p, const uin
     uint32_t b = pair[i].q;
     int fwd = orig == NULL || orig[a] < orig[b];
     geom_point P = fwd ? p[a] : p[b], Q = fwd ? p[b] : p[a];
-    if (skel_seen_fails(z, (size_t)pair[i].ring, P, Q, g->h)) continue;
-    int ok = fwd ? skel_edge_ok(g, a, p[a], b, p[b], 1) : skel_edge_ok(g, b, p[b], a, p[a], 1);
+    int seen = skel_seen_decides(z, (size_t)pair[i].ring, P, Q, g->h);
+    if (seen == 1) continue;
+    int ok = seen == 2 || (fwd ? skel_edge_ok(g, a, p[a], b, p[b], 1)
+                               : skel_edge_ok(g, b, p[b], a, p[a], 1));
     if (ok && skel_vec_push(out, a, b) != 0) return -1;
   }
   return 0;

@@ -10,28 +10,31 @@
 #include <omp.h>
 #include "got_skel_internal.h"
 
-/* 1 when q lies strictly inside triangle abc of orientation o (+1 or -1), exactly. */
+/* 1 when q lies strictly inside triangle abc of orientation o (+1 or -1), exactly (the
+** coordinates obey the contract, checked by got_skel_build: geom_orient_valid). */
 static int skel_in_triangle(geom_point a, geom_point b, geom_point c, geom_point q, int o) {
-  return geom_orient(a, b, q) == o && geom_orient(b, c, q) == o && geom_orient(c, a, q) == o;
+  return geom_orient_valid(a, b, q) == o && geom_orient_valid(b, c, q) == o &&
+         geom_orient_valid(c, a, q) == o;
 }
 
 /* ---- candidate triangles ------------------------------------------------- */
 
 /* The x-range of the triangle (x[k], y[k]) over the band ya <= y <= yb: its vertices in
-** the band and its sides' crossings of the band's two lines.  A crossing is interpolated
-** between the side's ends (t in [0, 1]), within a few ulps of the coordinates' spread of
-** its exact place, far below the padding SKEL_PAD of the callers.  (Plain selections
-** rather than fmin and fmax, which are library calls: nothing here is NaN.) */
-static void skel_band_x(const double *x, const double *y, double ya, double yb, double *lo,
-                        double *hi) {
+** the band and its sides' crossings of the band's two lines.  A crossing is the side's
+** start moved along its inverse slope sl[k] = dx / dy (computed once a triangle), within
+** a few ulps of the coordinates' spread of its exact place, far below the padding
+** SKEL_PAD of the callers.  (Plain selections rather than fmin and fmax, which are library
+** calls: nothing here is NaN.) */
+static void skel_band_x(const double *x, const double *y, const double *sl, double ya,
+                        double yb, double *lo, double *hi) {
   *lo = INFINITY, *hi = -INFINITY;
   for (int k = 0; k < 3; k++) {
-    double px = x[k], py = y[k], qx = x[(k + 1) % 3], qy = y[(k + 1) % 3];
+    double px = x[k], py = y[k], qy = y[k == 2 ? 0 : k + 1];
     if (py >= ya && py <= yb) *lo = px < *lo ? px : *lo, *hi = px > *hi ? px : *hi;
     for (int j = 0; j < 2; j++) {
       double yy = j ? yb : ya;
       if ((py - yy) * (qy - yy) < 0) {
-        double xx = px + (yy - py) / (qy - py) * (qx - px);
+        double xx = px + (yy - py) * sl[k];
         *lo = xx < *lo ? xx : *lo, *hi = xx > *hi ? xx : *hi;
       }
     }
@@ -41,7 +44,8 @@ static void skel_band_x(const double *x, const double *y, double ya, double yb, 
 /* 1 when no point lies strictly inside triangle abc of orientation o (exact; the edges
 ** are candidates, so none lies on them).  Row by row of cells, only the cells of the
 ** triangle's x-range over the row's band (padded by SKEL_PAD: a point's cell is exact to
-** that), each point first against the triangle's box.  Cost: the points of those cells. */
+** that), each point first against the triangle's open box (which a vertex may pass, but
+** no vertex is strictly inside).  Cost: the points of those cells. */
 static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) {
   const geom_point *p = s->p;
   const skel_grid *g = &s->g;
@@ -49,17 +53,20 @@ static int skel_empty(const skel *s, uint32_t a, uint32_t b, uint32_t c, int o) 
   double ya = geom_min3(p[a].y, p[b].y, p[c].y), yb = geom_max3(p[a].y, p[b].y, p[c].y);
   double x[3] = {p[a].x - g->x0, p[b].x - g->x0, p[c].x - g->x0};
   double y[3] = {p[a].y - g->y0, p[b].y - g->y0, p[c].y - g->y0}, e = SKEL_PAD * g->h, lo, hi;
+  double sl[3];
+  for (int k = 0; k < 3; k++) {
+    double dy = y[k == 2 ? 0 : k + 1] - y[k];
+    sl[k] = dy != 0 ? (x[k == 2 ? 0 : k + 1] - x[k]) / dy : 0;
+  }
   skel_box bx = skel_grid_box(g, xa, xb, ya, yb);
   for (int iy = bx.iy0; iy <= bx.iy1; iy++) {
-    skel_band_x(x, y, iy * g->h - e, (iy + 1) * g->h + e, &lo, &hi);
+    skel_band_x(x, y, sl, iy * g->h - e, (iy + 1) * g->h + e, &lo, &hi);
     if (lo > hi) continue;
     int ix0 = skel_cell(lo - e, g->inv, g->nx), ix1 = skel_cell(hi + e, g->inv, g->nx);
     size_t row = (size_t)iy * (size_t)g->nx;
     for (uint32_t k = g->off[row + (size_t)ix0]; k < g->off[row + (size_t)ix1 + 1]; k++) {
-      uint32_t q = g->pt[k];
       geom_point pq = g->gp[k];
-      if (q == a || q == b || q == c || pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb)
-        continue;
+      if (pq.x <= xa || pq.x >= xb || pq.y <= ya || pq.y >= yb) continue;
       if (skel_in_triangle(p[a], p[b], p[c], pq, o)) return 0;
     }
   }
@@ -81,7 +88,7 @@ static int skel_triangles_at(const skel *s, uint32_t a, uint32_t *stamp, skel_ve
     for (; k < s->off[b + 1]; k++) {
       uint32_t c = s->nbr[k];
       if (stamp[c] != a + 1) continue;
-      int o = geom_orient(s->p[a], s->p[b], s->p[c]);
+      int o = geom_orient_valid(s->p[a], s->p[b], s->p[c]);
       if (o == 0 || !skel_empty(s, a, b, c, o)) continue;
       if (skel_vec_push(out, s->nbe[i], stamp[s->n + c]) != 0 ||
           skel_vec_push(out, s->nbe[k], o > 0) != 0)

@@ -191,7 +191,9 @@ static size_t sk_diamond_brute(const geom_point *p, int n) {
 /* Point i of diamond-search set `rep`: uniform, a thin strip (boundary effects), clusters,
 ** a disc, a full 32 x 32 grid (collinear points, exact binary fractions), points hugging
 ** two sides of the square (sectors reaching the boundary), then a strip of 2000 points
-** and tight clusters of 1200 (the far rings read by arcs). */
+** and tight clusters of 1200 (the far rings read by arcs), then eight sets of seven
+** clusters of growing sizes (pairs whose diamond holds a point the search never read:
+** accepting a pair on the seen points alone, without its rings read whole, fails here). */
 static geom_point sk_diamond_point(int rep, int i, testutil_rng *g) {
   double x = testutil_uniform(g), y = testutil_uniform(g);
   if (rep == 1 || rep == 6) y *= rep == 1 ? 0.05 : 0.02;
@@ -206,6 +208,10 @@ static geom_point sk_diamond_point(int rep, int i, testutil_rng *g) {
   if (rep == 4) x = (double)(i % 32) / 32, y = (double)(i / 32) / 32;
   if (rep == 5 && i % 3 == 0) y *= 1e-3;
   if (rep == 5 && i % 3 == 1) x *= 1e-3;
+  if (rep >= 8) {
+    int c = i % 7;
+    x = c * 0.15 + 0.003 * x * (c + 1), y = (c % 3) * 0.2 + 0.003 * y * (c + 1);
+  }
   return (geom_point){x, y};
 }
 
@@ -216,8 +222,9 @@ static void test_diamond_search(void **state) {
   char err[256];
   assert_int_equal(rule_parse("P_1", &r, err, sizeof err), 0);
   static geom_point p[2500];
-  const int size[8] = {600, 650, 700, 750, 1024, 900, 2000, 1200};
-  for (int rep = 0; rep < 8; rep++) {
+  const int size[16] = {600, 650, 700, 750, 1024, 900, 2000, 1200,
+                        640, 660, 680, 700, 720, 740, 760, 780};
+  for (int rep = 0; rep < 16; rep++) {
     int n = size[rep];
     for (int i = 0; i < n; i++) p[i] = sk_diamond_point(rep, i, &g);
     got_skel s;
@@ -281,6 +288,11 @@ static void test_refusals(void **state) {
   sk_refuse(line, 4, "P_1");
   const geom_point dup[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
   sk_refuse(dup, 4, "P_1");
+  /* coordinates outside the contract (the orientations skip the tiny-difference test) */
+  const geom_point tiny[4] = {{0, 0}, {1, 0}, {0, 1}, {1e-40, 0.5}};
+  sk_refuse(tiny, 4, "P_1");
+  const geom_point inf[4] = {{0, 0}, {1, 0}, {0, INFINITY}, {0.5, 0.5}};
+  sk_refuse(inf, 4, "-alpha_1");
 }
 
 int main(void) {
