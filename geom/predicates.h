@@ -95,16 +95,6 @@ static inline int geom_orient(geom_point a, geom_point b, geom_point c) {
   return geom_orient_filtered(a, b, c, 1);
 }
 
-/* 1 when the segments ab and cd cross at one point interior to both: the
-** ends of each strictly on opposite sides of the other's line.  Touching,
-** an end on the other segment, overlapping and shared ends are no crossing.
-** Exact; the second pair of tests only when the first separates.  The one
-** crossing test of the library (ops_segments_cross counts it). */
-static inline int geom_segments_cross(geom_point a, geom_point b, geom_point c, geom_point d) {
-  return geom_orient(a, b, c) * geom_orient(a, b, d) < 0 &&
-         geom_orient(c, d, a) * geom_orient(c, d, b) < 0;
-}
-
 /* The incircle determinant of a, b, c, d translated so that d is the origin:
 **   | adx ady adx^2+ady^2 |
 **   | bdx bdy bdx^2+bdy^2 |
@@ -161,6 +151,27 @@ static inline int geom_orient_valid(geom_point a, geom_point b, geom_point c) {
 
 static inline int geom_incircle_valid(geom_point a, geom_point b, geom_point c, geom_point d) {
   return geom_incircle_filtered(a, b, c, d, 0);
+}
+
+/* 1 when the segments ab and cd cross at one point interior to both: the
+** ends of each strictly on opposite sides of the other's line.  Touching,
+** an end on the other segment, overlapping and shared ends are no crossing.
+** Exact; the second pair of tests only when the first separates.  The one
+** crossing test of the library: `tiny` as for geom_orient_filtered, _valid
+** for points known to obey the contract; ops_segments_cross counts it. */
+static inline int geom_segments_cross_filtered(geom_point a, geom_point b, geom_point c,
+                                               geom_point d, int tiny) {
+  return geom_orient_filtered(a, b, c, tiny) * geom_orient_filtered(a, b, d, tiny) < 0 &&
+         geom_orient_filtered(c, d, a, tiny) * geom_orient_filtered(c, d, b, tiny) < 0;
+}
+
+static inline int geom_segments_cross(geom_point a, geom_point b, geom_point c, geom_point d) {
+  return geom_segments_cross_filtered(a, b, c, d, 1);
+}
+
+static inline int geom_segments_cross_valid(geom_point a, geom_point b, geom_point c,
+                                            geom_point d) {
+  return geom_segments_cross_filtered(a, b, c, d, 0);
 }
 
 /* The sign of |ab|^2 - |cd|^2: +1 when segment ab is strictly longer than

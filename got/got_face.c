@@ -52,6 +52,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "geom_mem_internal.h"
+#include "geom_key_internal.h"
 #include "measure.h"
 #include "got_internal.h"
 #include "got_face.h"
@@ -145,11 +146,6 @@ static int got_face_u32_cmp(const void *x, const void *y) {
   return a < b ? -1 : a > b;
 }
 
-static int got_face_u64_cmp(const void *x, const void *y) {
-  uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-  return a < b ? -1 : a > b;
-}
-
 /* Holes sorted by their least half-edge: (first, second) of the rotated
 ** walk, packed, with the hole's index, start and rotation. */
 typedef struct got_face_hole { uint64_t key; uint32_t k; size_t off, rot; } got_face_hole;
@@ -218,12 +214,6 @@ static int got_face_corner_ok(const geom_point *P, uint32_t v, uint32_t q, uint3
          !got_face_in_cone(P, v, x1, x2, q) && !got_face_in_cone(P, v, x1, x2, p);
 }
 
-/* 1 when the segments ab and uv cross at a point interior to both. */
-static int got_face_cross(geom_point a, geom_point b, geom_point u, geom_point v) {
-  return geom_orient(a, b, u) * geom_orient(a, b, v) < 0 &&
-         geom_orient(u, v, a) * geom_orient(u, v, b) < 0;
-}
-
 /* The winding number of the closed walk w[0..n-1] round q (not on it):
 ** crossings of the rightward ray from q, signed (exact comparisons and
 ** orientations only). */
@@ -241,7 +231,7 @@ static int got_face_winding(const geom_point *P, const uint32_t *w, size_t n, ge
 }
 
 static int got_face_allowed(const got_face_ctx *x, uint32_t u, uint32_t v) {
-  uint64_t k = u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+  uint64_t k = geom_edge_key(u, v);
   size_t lo = 0, hi = x->nedges;
   while (lo < hi) {
     size_t mid = lo + (hi - lo) / 2;
@@ -291,8 +281,8 @@ static int got_face_tri_empty(const got_face_ctx *x, const got_face_view *w, uin
       if ((U.x < x0 && V.x < x0) || (U.x > x1 && V.x > x1) || (U.y < y0 && V.y < y0) ||
           (U.y > y1 && V.y > y1))
         continue;
-      if (u != a && u != c && v != a && v != c && got_face_cross(A, C, U, V)) return 0;
-      if (u != b && u != c && v != b && v != c && got_face_cross(B, C, U, V)) return 0;
+      if (u != a && u != c && v != a && v != c && geom_segments_cross(A, C, U, V)) return 0;
+      if (u != b && u != c && v != b && v != c && geom_segments_cross(B, C, U, V)) return 0;
     }
     off += w->len[k];
   }
@@ -727,9 +717,9 @@ static int got_face_number(got_face_ctx *x, const got_face_in *in, uint32_t *raw
     uint32_t u = got_face_local(a, V, in->edge[2 * e]);
     uint32_t v = got_face_local(a, V, in->edge[2 * e + 1]);
     if (u < V && v < V)
-      x->edge[x->nedges++] = u < v ? (uint64_t)u << 32 | v : (uint64_t)v << 32 | u;
+      x->edge[x->nedges++] = geom_edge_key(u, v);
   }
-  qsort(x->edge, x->nedges, sizeof *x->edge, got_face_u64_cmp);
+  qsort(x->edge, x->nedges, sizeof *x->edge, geom_u64_cmp);
   free(a);
   return 0;
 }

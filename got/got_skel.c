@@ -226,8 +226,7 @@ static int skel_cross(const skel *s, uint32_t e, uint32_t f) {
   const geom_point *p = s->p;
   uint32_t a = s->ev[2 * e], b = s->ev[2 * e + 1], c = s->ev[2 * f], d = s->ev[2 * f + 1];
   if (a == c || a == d || b == c || b == d) return 0;
-  return geom_orient_valid(p[a], p[b], p[c]) * geom_orient_valid(p[a], p[b], p[d]) < 0 &&
-         geom_orient_valid(p[c], p[d], p[a]) * geom_orient_valid(p[c], p[d], p[b]) < 0;
+  return geom_segments_cross_valid(p[a], p[b], p[c], p[d]);
 }
 
 typedef struct skel_probe {

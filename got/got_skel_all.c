@@ -41,8 +41,7 @@ static int got_skel_classify(const geom_point *p, size_t n, size_t a, size_t b) 
 ** touch except at a shared end, so crossing is proper crossing: four exact orientations. */
 static int got_skel_cross(const geom_point *p, const uint32_t *e, const uint32_t *f) {
   if (e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1]) return 0;
-  return geom_orient(p[e[0]], p[e[1]], p[f[0]]) * geom_orient(p[e[0]], p[e[1]], p[f[1]]) < 0 &&
-         geom_orient(p[f[0]], p[f[1]], p[e[0]]) * geom_orient(p[f[0]], p[f[1]], p[e[1]]) < 0;
+  return geom_segments_cross(p[e[0]], p[e[1]], p[f[0]], p[f[1]]);
 }
 
 /* Every POSSIBLE edge that crosses no edge becomes CERTAIN. */
