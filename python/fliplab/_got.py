@@ -226,10 +226,10 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
         max).
     skeleton : str
         One of SKELETONS: "lmt" (the LMT-skeleton), "all" (every edge: tiny
-        sets), "delaunay" (the rules whose GOT is a Delaunay triangulation,
-        R_1, -r_1, abc_1, ...: lot's exact Delaunay triangulation, certified,
-        its subdivision's edges certain), "auto" (delaunay where it applies,
-        else lmt).
+        sets), "delaunay" (the rules whose GOT is a Delaunay triangulation
+        by a theorem: R_1, R_2, R_0, R_-1, -r_1, abc_1; lot's exact Delaunay
+        triangulation, certified, its subdivision's edges certain), "auto"
+        (delaunay where it applies, else lmt).
     threads : int
         0 (all cores) or 1 .. 1024; the result does not depend on it.
     tie_eps : float, optional
@@ -247,7 +247,8 @@ def got_points(points: npt.ArrayLike, rule: str | Rule, skeleton: str = "auto",
     ValueError
         A rule that is no sum rule, duplicate points (both rows named),
         collinear points, a coordinate outside the contract, a bad keyword,
-        skeleton "delaunay" for a rule whose GOT need not be Delaunay.
+        skeleton "delaunay" for a rule whose GOT need not be Delaunay, or is
+        Delaunay on samples only (-r/R_1, -r2/A_0).
     MemoryError
         The points do not fit in memory.
     """
