@@ -178,7 +178,7 @@ typedef enum got_skeleton {
   GOT_SKELETON_AUTO,    /* DELAUNAY when it applies and a triangulation is given, else LMT */
   GOT_SKELETON_ALL,     /* every edge, the hull certain (tiny n: got_skel_all) */
   GOT_SKELETON_LMT,     /* the rule's candidate edges and the LMT loop (got_skel_build) */
-  GOT_SKELETON_DELAUNAY /* rule_got_is_cdt's rules: the certified Delaunay subdivision's
+  GOT_SKELETON_DELAUNAY /* rule_got_cdt_theorem's rules: the certified Delaunay subdivision's
                            edges certain, its cocircular cells' diagonals possible */
 } got_skeleton;
 
@@ -197,7 +197,7 @@ int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_opt
                      got_skeleton skeleton, got_result *out, char *err, size_t errlen);
 /* The same, given a triangulation of the points claimed to be Delaunay (dt: ndt
 ** anticlockwise triples of point indices, such as lot's exact Delaunay triangulation;
-** NULL when none).  With the skeleton AUTO or DELAUNAY and a rule of rule_got_is_cdt, dt is
+** NULL when none).  With the skeleton AUTO or DELAUNAY and a rule of rule_got_cdt_theorem, dt is
 ** certified exactly (every triangle anticlockwise, matched edges, a convex boundary winding
 ** once, every point a vertex, every edge locally Delaunay) and the candidates are its
 ** subdivision's edges (docs/got.md, "Point sets: rules whose GOT is Delaunay"); a failed

@@ -751,6 +751,8 @@ static void got_points_fill(got_result *out, got_solver *S, size_t F, const rule
 ** (rule_got_cdt_theorem: an observation is no ground for a certified answer) and a
 ** triangulation is given, LMT for AUTO otherwise; -1 with err for DELAUNAY where it does not
 ** apply. */
+#define GOT_DT_RULES "R_1, R_2, R_0, R_-1, -r_1, abc_1"   /* rule_got_cdt_theorem's */
+
 static int got_points_which(got_skeleton sk, const rule *r, const uint32_t *dt, char *err,
                             size_t errlen) {
   int cdt = rule_got_cdt_theorem(r) > 0;
@@ -759,10 +761,10 @@ static int got_points_which(got_skeleton sk, const rule *r, const uint32_t *dt, 
   if (rule_got_is_cdt(r) && !cdt)
     snprintf(err, errlen, "skeleton delaunay: that rule %s's GOT is Delaunay is observed on "
              "samples (table 3.4), not proven, so it cannot certify (the skeleton applies to "
-             "R_1, R_2, R_0, R_-1, -r_1, abc_1)", rule_name(r));
+             GOT_DT_RULES ")", rule_name(r));
   else if (!cdt)
     snprintf(err, errlen, "skeleton delaunay: rule %s's GOT need not be a Delaunay "
-             "triangulation (it applies to R_1, R_2, R_0, R_-1, -r_1, abc_1)", rule_name(r));
+             "triangulation (it applies to " GOT_DT_RULES ")", rule_name(r));
   else
     snprintf(err, errlen, "skeleton delaunay: no Delaunay triangulation was given");
   return -1;

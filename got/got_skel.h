@@ -28,7 +28,7 @@ typedef struct got_skel {
 FLIPLAB_INTERNAL
 int got_skel_build(const geom_point *p, size_t n, const rule *r, int threads, got_skel *out,
                    char *err, size_t errlen);
-/* The rules of rule_got_is_cdt: every GOT is a Delaunay triangulation.  tri[0..3 ntri-1]
+/* The rules of rule_got_cdt_theorem: every GOT is a Delaunay triangulation.  tri[0..3 ntri-1]
 ** is a triangulation claimed to be Delaunay (anticlockwise triples of point indices); it is
 ** certified exactly, then the Delaunay subdivision's edges are CERTAIN and every diagonal
 ** of a cocircular cell POSSIBLE.  0, or -1 with a one-line message naming what fails
