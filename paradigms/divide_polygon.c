@@ -55,6 +55,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom_mem_internal.h"
 #include "paradigm_internal.h"
 #include "cpdt.h"
 
@@ -246,14 +247,6 @@ static uint32_t dp_diagonal(dp_run *R, uint32_t t0, uint32_t m, uint32_t *t, int
 
 /* ---- the merges: Lawson's flips ---- */
 
-static int dp_corner_of(const dp_run *R, uint32_t u, uint32_t t) {
-  return R->nb[3 * u] == (int32_t)t ? 0 : R->nb[3 * u + 1] == (int32_t)t ? 1 : 2;
-}
-
-static void dp_relink(dp_run *R, int32_t x, uint32_t from, uint32_t to) {
-  if (x >= 0) R->nb[3 * (uint32_t)x + dp_corner_of(R, (uint32_t)x, from)] = (int32_t)to;
-}
-
 static void dp_set(dp_run *R, uint32_t t, const uint32_t v[3], const int32_t nb[3],
                    const uint8_t w[3]) {
   for (int i = 0; i < 3; i++)
@@ -270,8 +263,8 @@ static void dp_flip(dp_run *R, uint32_t t, int k, uint32_t u, int j) {
   int32_t nc = R->nb[DP_AT(u, j + 1)], nd = R->nb[DP_AT(u, j + 2)];
   uint8_t wa = R->wall[DP_AT(t, k + 1)], wb = R->wall[DP_AT(t, k + 2)];
   uint8_t wc = R->wall[DP_AT(u, j + 1)], wd = R->wall[DP_AT(u, j + 2)];
-  dp_relink(R, na, t, u);
-  dp_relink(R, nc, u, t);
+  paradigm_nb_relink(R->nb, na, t, u);
+  paradigm_nb_relink(R->nb, nc, u, t);
   dp_set(R, t, (uint32_t[3]){a, b, d}, (int32_t[3]){nc, (int32_t)u, nB},
          (uint8_t[3]){wc, 0, wb});
   dp_set(R, u, (uint32_t[3]){d, c, a}, (int32_t[3]){na, (int32_t)t, nd},
@@ -282,13 +275,9 @@ static void dp_flip(dp_run *R, uint32_t t, int k, uint32_t u, int j) {
 }
 
 static int dp_push(dp_run *R, size_t *top, uint32_t t, int k) {
-  if (*top == R->cap) {
-    size_t cap = 2 * R->cap;
-    uint32_t *s = realloc(R->stack, cap * sizeof *s);
-    if (s == NULL) return -1;
-    ops_memory(R->c, (int64_t)(R->cap * sizeof *s));
-    R->stack = s, R->cap = cap;
-  }
+  size_t old = R->cap;
+  if (geom_grow((void **)&R->stack, &R->cap, *top + 1, sizeof *R->stack) != 0) return -1;
+  ops_memory(R->c, (int64_t)((R->cap - old) * sizeof *R->stack));   /* the peak counts it */
   R->stack[(*top)++] = 3 * t + (uint32_t)k;
   return 0;
 }
@@ -304,7 +293,7 @@ static int dp_lawson(dp_run *R, uint32_t t0, int k0) {
     int k = (int)(e % 3);
     int32_t u = R->nb[e];
     if (u < 0 || R->wall[e]) continue;
-    int j = dp_corner_of(R, (uint32_t)u, t);
+    int j = paradigm_nb_corner(R->nb, (uint32_t)u, t);
     const geom_point *q = R->q;
     if (paradigm_inshape(R->r, R->c, q[R->tri[e]], q[R->tri[DP_AT(t, k + 1)]],
                          q[R->tri[DP_AT(t, k + 2)]], q[R->tri[DP_AT(u, j)]]) <= 0)
@@ -341,11 +330,11 @@ static int dp_solve(dp_run *R, uint32_t t0, uint32_t m) {
   uint32_t e = dp_diagonal(R, t0, m, &t, &k);
   uint32_t u = (uint32_t)R->nb[3 * t + k], a = R->tri[DP_AT(t, k + 1)];
   uint32_t b = R->tri[DP_AT(t, k + 2)];
-  R->wall[3 * t + k] = R->wall[3 * u + dp_corner_of(R, u, t)] = 1;
+  R->wall[3 * t + k] = R->wall[3 * u + paradigm_nb_corner(R->nb, u, t)] = 1;
   if (dp_solve(R, t, m - e + 1) != 0 || dp_solve(R, u, e + 1) != 0) return -1;
   dp_find(R, a, b, &t, &k);
   u = (uint32_t)R->nb[3 * t + k];
-  R->wall[3 * t + k] = R->wall[3 * u + dp_corner_of(R, u, t)] = 0;
+  R->wall[3 * t + k] = R->wall[3 * u + paradigm_nb_corner(R->nb, u, t)] = 0;
   return dp_lawson(R, t, k);
 }
 

@@ -182,4 +182,18 @@ PARADIGM_CONVEX_FN(paradigm_convex_random)
 PARADIGM_CONVEX_FN(paradigm_convex_flip)
 PARADIGM_CONVEX_FN(paradigm_convex_corners)
 
+/* The triangle meshes of the rows that flip edges (sweep_finish.c, divide_polygon.c):
+** nb[3 t + k] is the triangle across the side of t opposite its corner k, -1 outside.
+** The corner of triangle u whose side borders triangle t, or -1 when none does. */
+static inline int paradigm_nb_corner(const int32_t *nb, size_t u, size_t t) {
+  for (int k = 0; k < 3; k++)
+    if (nb[3 * u + (size_t)k] == (int32_t)t) return k;
+  return -1;
+}
+
+/* Neighbour x's link to triangle `from` pointed at `to` instead (x < 0: the outside). */
+static inline void paradigm_nb_relink(int32_t *nb, int32_t x, size_t from, size_t to) {
+  if (x >= 0) nb[3 * (size_t)x + (size_t)paradigm_nb_corner(nb, (size_t)x, from)] = (int32_t)to;
+}
+
 #endif

@@ -10,13 +10,6 @@
 #include "paradigm_internal.h"
 #include "lot.h"
 
-/* The corner of triangle u across which triangle t lies (-1: none). */
-static int fin_back(const int32_t *nb, size_t u, size_t t) {
-  for (int k = 0; k < 3; k++)
-    if (nb[3 * u + (size_t)k] == (int32_t)t) return k;
-  return -1;
-}
-
 /* A triangulation of the hull of the n sites: every triangle strictly
 ** anticlockwise, every neighbour link an involution across the reversed
 ** edge, and Euler's count t = 2n - 2 - h with h the edges on one triangle
@@ -33,7 +26,7 @@ static int fin_valid(const geom_point *p, size_t n, const uint32_t *tri, size_t 
         h++;
         continue;
       }
-      int b = fin_back(nb, (size_t)u, t);
+      int b = paradigm_nb_corner(nb, (size_t)u, t);
       if (b < 0 || tri[3 * (size_t)u + (size_t)(b + 1) % 3] != v[(k + 2) % 3]) return 0;
     }
   }
@@ -52,13 +45,6 @@ typedef struct fin_state {
   int oom;
 } fin_state;
 
-/* Point neighbour u's link to `from` at `to` instead. */
-static void fin_relink(fin_state *F, int32_t u, size_t from, size_t to) {
-  if (u < 0) return;
-  int b = fin_back(F->nb, (size_t)u, from);
-  F->nb[3 * (size_t)u + (size_t)b] = (int32_t)to;
-}
-
 /* The edge of triangle t opposite its corner k: flipped when the apex
 ** across it lies inside the circle of t (paradigm_inshape: lot's
 ** tie-break) and the quadrilateral is strictly convex, as lot flips.  The
@@ -71,7 +57,7 @@ static void fin_edge(fin_state *F, size_t t, int k) {
   uint64_t key = geom_edge_key(A, B);
   if (ui < 0 || bsearch(&key, F->cons, F->ncons, sizeof key, geom_u64_cmp) != NULL) return;
   size_t u = (size_t)ui;
-  int j = fin_back(F->nb, u, t);
+  int j = paradigm_nb_corner(F->nb, u, t);
   uint32_t Q = F->tri[3 * u + (size_t)j];
   const geom_point *p = F->p;
   if (paradigm_inshape(F->r, F->c, p[P], p[A], p[B], p[Q]) <= 0) return;
@@ -83,8 +69,8 @@ static void fin_edge(fin_state *F, size_t t, int k) {
   int32_t *nt = F->nb + 3 * t, *nu = F->nb + 3 * u;
   nt[0] = uB, nt[1] = (int32_t)u, nt[2] = tB;
   nu[0] = tA, nu[1] = (int32_t)t, nu[2] = uA;
-  fin_relink(F, uB, u, t);
-  fin_relink(F, tA, t, u);
+  paradigm_nb_relink(F->nb, uB, u, t);
+  paradigm_nb_relink(F->nb, tA, t, u);
   ops_add(F->c, OPS_FLIPS, 1);
   ops_add(F->c, OPS_EDGES_MADE, 1);
   ops_add(F->c, OPS_EDGES_DELETED, 1);
