@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include "geom_key_internal.h"
 #include "paradigm_internal.h"
 #include "lot.h"
 #include "shape.h"
@@ -257,38 +258,20 @@ static int paradigm_tri_cmp(const void *x, const void *y) {
   return 0;
 }
 
-/* Sort rotated triangles by v0 with one counting pass (a bucket per
-** index up to the largest v0), then each bucket by (v1, v2): by insertion
-** (a triangulation's vertex is the smallest of about two triangles), by
-** qsort past 16.  O(t + n + sum of k log k over buckets of k > 16), one
-** scattered write a triangle, against qsort's O(t log t) calls of a
-** comparison (about ten times slower at 2 x 10^6 triangles).  -1 when the
-** indices are sparse (the largest above 4t + 1024: no triangulation's) or
-** the scratch cannot be had; the caller then sorts by qsort. */
+/* A rotated triangle's smallest index, its bucket (geom_bucket_sort). */
+static uint32_t paradigm_tri_first(const void *x) {
+  return *(const uint32_t *)x;
+}
+
+/* Rotated triangles in paradigm_tri_cmp's order by geom_bucket_sort: -1 when the indices
+** are sparse (the largest above 4t + 1024: no triangulation's) or the scratch cannot be
+** had; the caller then sorts by qsort. */
 static int paradigm_bucket_sort(uint32_t *tri, size_t ntri) {
   uint32_t top = 0;
   for (size_t t = 0; t < ntri; t++) top = tri[3 * t] > top ? tri[3 * t] : top;
   if ((size_t)top > 4 * ntri + 1024) return -1;
-  uint32_t *tmp = malloc(3 * ntri * sizeof *tmp);
-  size_t *at = calloc((size_t)top + 2, sizeof *at);
-  if (tmp == NULL || at == NULL) return free(tmp), free(at), -1;
-  for (size_t t = 0; t < ntri; t++) at[tri[3 * t] + 1]++;
-  for (size_t v = 0; v <= top; v++) at[v + 1] += at[v];
-  for (size_t t = 0; t < ntri; t++) memcpy(tmp + 3 * at[tri[3 * t]]++, tri + 3 * t, 12);
-  for (size_t v = 0, lo = 0; v <= top; lo = at[v++]) {   /* bucket v: [lo, at[v]) */
-    uint32_t *b = tmp + 3 * lo;
-    size_t k = at[v] - lo;
-    if (k > 16) qsort(b, k, 3 * sizeof *b, paradigm_tri_cmp);
-    for (size_t i = 1; i < k && k <= 16; i++)
-      for (size_t j = i; j > 0 && paradigm_tri_cmp(b + 3 * j, b + 3 * (j - 1)) < 0; j--) {
-        uint32_t x[3];
-        memcpy(x, b + 3 * j, 12), memcpy(b + 3 * j, b + 3 * (j - 1), 12);
-        memcpy(b + 3 * (j - 1), x, 12);
-      }
-  }
-  memcpy(tri, tmp, 3 * ntri * sizeof *tri);
-  free(tmp), free(at);
-  return 0;
+  return geom_bucket_sort(tri, ntri, 3 * sizeof *tri, top, paradigm_tri_first,
+                          paradigm_tri_cmp);
 }
 
 void paradigm_canonical(uint32_t *tri, size_t ntri) {
