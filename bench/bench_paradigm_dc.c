@@ -2,14 +2,11 @@
 ** bench_paradigm_dc.c: divide and conquer with constraints (rows
 ** dc-constrained and dc-polygon, docs/paradigms.md) beside lot's
 ** constrained triangulation (the row incremental), side by side in one run:
-**   - N uniform sites with S segments drawn among their Delaunay edges (the
-**     case dc-constrained serves), and the refusal for one segment that is
-**     no Delaunay edge;
+**   - N uniform sites with S segments drawn among their Delaunay edges, and
+**     with one long segment from site 0 to site N - 1;
 **   - the same sites with 10^3 and 10^4 random non-crossing segments
-**     (sampler_segments, short and long ones in cells): lot's constrained
-**     triangulation timed, its counts per site, the share of the segments
-**     that are Delaunay edges, and dc-constrained's answer (it refuses such
-**     sets until Chew's virtual sites are built);
+**     (sampler_segments, short and long ones in cells; the share that are
+**     Delaunay edges printed): lot, dc-constrained and sweep-constrained;
 **   - a star-shaped polygon of P vertices: dc-polygon beside incremental
 **     (lot's polygon insertion is slow on it: P smaller than N by default);
 **     a convex one: dc-polygon beside convex-divide (cpdt's 5.4.2).
@@ -104,16 +101,17 @@ static uint32_t *bdc_segments(const paradigm_input *in, size_t s) {
   return seg;
 }
 
-static void bdc_refusal(const paradigm_input *in0) {
-  paradigm_input in = *in0;
-  uint32_t far[2] = {0, (uint32_t)(in.n - 1)};
-  in.segments = far, in.nsegments = 1;
-  paradigm_result res;
-  char err[512];
-  int rc = paradigm_run(paradigm_find("dc-constrained"), &in, &res, err, sizeof err);
-  printf("\none segment from site 1 to site %zu: dc-constrained %s%s\n", in.n,
-         rc ? "refuses: " : "serves it", rc ? err : "");
-  if (rc == 0) paradigm_result_free(&res);
+/* One segment from site 0 to site N - 1 (a long one, crossing about
+** sqrt(N) triangles and most strips), timed as the other cases. */
+static void bdc_long(const paradigm_input *in0, int runs) {
+  char title[128];
+  bdc_case k = {title, *in0, {"incremental", "dc-constrained", "sweep-constrained"}, 3};
+  uint32_t far[2] = {0, (uint32_t)(in0->n - 1)};
+  k.in.segments = far, k.in.nsegments = 1;
+  snprintf(title, sizeof title, "%zu uniform sites, one segment from site 0 to site %zu",
+           in0->n, in0->n - 1);
+  bdc_check(&k);
+  bdc_time(&k, runs);
 }
 
 /* How many of the ns segments seg are edges of the Delaunay triangulation
@@ -144,10 +142,11 @@ static size_t bdc_delaunay_edges(const paradigm_input *in, const uint32_t *seg, 
 }
 
 /* in's sites with up to m random non-crossing segments (sampler_segments):
-** lot's constrained triangulation timed, and what dc-constrained says. */
+** lot's constrained triangulation, dc-constrained and the constrained
+** sweep, checked and timed. */
 static void bdc_random(const paradigm_input *base, size_t m, int runs) {
   char title[160];
-  bdc_case k = {title, *base, {"incremental"}, 1};
+  bdc_case k = {title, *base, {"incremental", "dc-constrained", "sweep-constrained"}, 3};
   uint32_t *seg = malloc(2 * m * sizeof *seg);
   size_t ns;
   sampler_rng g;
@@ -157,12 +156,8 @@ static void bdc_random(const paradigm_input *base, size_t m, int runs) {
   size_t del = bdc_delaunay_edges(&k.in, seg, ns);
   snprintf(title, sizeof title, "%zu uniform sites, %zu random non-crossing segments "
            "(%zu of them Delaunay edges)", base->n, ns, del);
+  bdc_check(&k);
   bdc_time(&k, runs);
-  paradigm_result res;
-  char err[512];
-  int rc = paradigm_run(paradigm_find("dc-constrained"), &k.in, &res, err, sizeof err);
-  printf("\ndc-constrained on them: %s%s\n", rc ? "refuses: " : "serves them", rc ? err : "");
-  if (rc == 0) paradigm_result_free(&res);
   free(seg);
 }
 
@@ -206,7 +201,7 @@ int main(int argc, char **argv) {
   cdt.in.segments = seg, cdt.in.nsegments = s;
   bdc_check(&cdt);
   bdc_time(&cdt, runs);
-  bdc_refusal(&cdt.in);
+  bdc_long(&cdt.in, runs);
   for (size_t m = 1000; m <= 10000 && m <= n / 4; m *= 10) bdc_random(&cdt.in, m, runs);
   cdt.in.n = np;
   bdc_polygon("star-shaped", sampler_star, PARADIGM_POLYGON, "incremental", "dc-polygon",

@@ -19,11 +19,8 @@
 ** the frame of the cut.  There is no sort: each cut partitions its piece at
 ** a sampled median (below).
 **
-** The mesh is a half-edge structure: half-edges 2k and 2k + 1 are one edge's
-** two directions, each on the ring of its origin's half-edges in
-** anticlockwise order (next, prev), so Lnext(e) = Oprev(Sym e) and
-** Rprev(e) = Onext(Sym e), and Guibas and Stolfi's splice swaps two ring
-** successors.  The top two levels of the recursion are fixed: four subtrees,
+** The mesh is paradigm_half's (paradigm_internal.h: origin rings, Guibas
+** and Stolfi's splice).  The top two levels of the recursion are fixed: four subtrees,
 ** each allocating edges from its own slice of the array, their counts kept
 ** apart and added in a fixed order, so that one thread and two (OpenMP
 ** tasks, the halves side by side) do the same operations and make the same
@@ -56,11 +53,6 @@
 #define DC_TOP 2          /* levels of the recursion run as tasks: 4 subtrees */
 #define DC_NODES 7        /* nodes of those levels, heap-numbered */
 #define DC_MAX_POINTS ((DC_NONE - 1) / 6)   /* 3n edges, 6n half-edges below DC_NONE */
-
-typedef struct dc_half {
-  uint32_t next, prev;    /* the origin's ring, anticlockwise */
-  uint32_t org;           /* origin site; DC_NONE once deleted */
-} dc_half;
 
 /* Subtrees that run side by side write their pools (and counts) at every
 ** edge made or deleted, so each sits on lines of its own, two cache lines
@@ -95,7 +87,7 @@ typedef struct dc_run {
   void *block;            /* s, ts and tid, 36 bytes a site: the triangles' array later */
   const geom_point *sb[3];   /* s, ts and the input: each cut moves a piece from */
   const uint32_t *ib[3];     /* one to s or ts (dc_to); the input's indices are k */
-  dc_half *h;
+  paradigm_half *h;
   const rule *r;
   int es;                 /* an empty-shape rule: the merge asks paradigm_beats */
   int alternating;
@@ -104,25 +96,6 @@ typedef struct dc_run {
   dc_pool pool[DC_NODES];
   ops_counts *count[DC_NODES];   /* NULL when not counting */
 } dc_run;
-
-static inline uint32_t dc_dest(const dc_half *h, uint32_t e) {
-  return h[e ^ 1].org;
-}
-
-static inline uint32_t dc_lnext(const dc_half *h, uint32_t e) {
-  return h[e ^ 1].prev;
-}
-
-static inline uint32_t dc_rprev(const dc_half *h, uint32_t e) {
-  return h[e ^ 1].next;
-}
-
-/* Guibas and Stolfi's splice, on the origin rings only (the faces follow). */
-static inline void dc_splice(dc_half *h, uint32_t a, uint32_t b) {
-  uint32_t alpha = h[a].next, beta = h[b].next;
-  h[a].next = beta, h[b].next = alpha;
-  h[beta].prev = a, h[alpha].prev = b;
-}
 
 static uint32_t dc_alloc(dc_run *R, dc_pool *p) {
   for (; p != NULL; p = p->more) {
@@ -139,7 +112,7 @@ static uint32_t dc_alloc(dc_run *R, dc_pool *p) {
 
 static uint32_t dc_make_edge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t a, uint32_t b) {
   uint32_t e = 2 * dc_alloc(R, p);
-  dc_half *h = R->h;
+  paradigm_half *h = R->h;
   h[e].org = a, h[e].next = h[e].prev = e;
   h[e + 1].org = b, h[e + 1].next = h[e + 1].prev = e + 1;
   ops_add(c, OPS_EDGES_MADE, 1);
@@ -148,16 +121,16 @@ static uint32_t dc_make_edge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t a, u
 
 /* A new edge from Dest(a) to Org(b), a's left face split off by it. */
 static uint32_t dc_connect(dc_run *R, dc_pool *p, ops_counts *c, uint32_t a, uint32_t b) {
-  uint32_t e = dc_make_edge(R, p, c, dc_dest(R->h, a), R->h[b].org);
-  dc_splice(R->h, e, dc_lnext(R->h, a));
-  dc_splice(R->h, e ^ 1, b);
+  uint32_t e = dc_make_edge(R, p, c, paradigm_he_dest(R->h, a), R->h[b].org);
+  paradigm_he_splice(R->h, e, paradigm_he_lnext(R->h, a));
+  paradigm_he_splice(R->h, e ^ 1, b);
   return e;
 }
 
 static void dc_delete(dc_run *R, dc_pool *p, ops_counts *c, uint32_t e) {
-  dc_half *h = R->h;
-  dc_splice(h, e, h[e].prev);
-  dc_splice(h, e ^ 1, h[e ^ 1].prev);
+  paradigm_half *h = R->h;
+  paradigm_he_splice(h, e, h[e].prev);
+  paradigm_he_splice(h, e ^ 1, h[e ^ 1].prev);
   h[e].org = h[e ^ 1].org = DC_NONE;
   h[e & ~1u].next = p->free;
   p->free = e >> 1;
@@ -169,7 +142,7 @@ static dc_hull dc_base(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32
   uint32_t a = dc_make_edge(R, p, c, lo, lo + 1);
   if (n == 2) return (dc_hull){a, a ^ 1};
   uint32_t b = dc_make_edge(R, p, c, lo + 1, lo + 2);
-  dc_splice(R->h, a ^ 1, b);
+  paradigm_he_splice(R->h, a ^ 1, b);
   int o = ops_orient(c, R->s[lo], R->s[lo + 1], R->s[lo + 2]);
   if (o > 0) {
     dc_connect(R, p, c, b, a);
@@ -184,11 +157,11 @@ static dc_hull dc_base(dc_run *R, dc_pool *p, ops_counts *c, uint32_t lo, uint32
 
 /* Site x strictly right of the directed edge e (to its left: swap). */
 static inline int dc_right_of(const dc_run *R, ops_counts *c, uint32_t x, uint32_t e) {
-  return ops_orient(c, R->s[x], R->s[dc_dest(R->h, e)], R->s[R->h[e].org]) > 0;
+  return ops_orient(c, R->s[x], R->s[paradigm_he_dest(R->h, e)], R->s[R->h[e].org]) > 0;
 }
 
 static inline int dc_left_of(const dc_run *R, ops_counts *c, uint32_t x, uint32_t e) {
-  return ops_orient(c, R->s[x], R->s[R->h[e].org], R->s[dc_dest(R->h, e)]) > 0;
+  return ops_orient(c, R->s[x], R->s[R->h[e].org], R->s[paradigm_he_dest(R->h, e)]) > 0;
 }
 
 /* lot's in-circle test: d strictly inside the circle through a, b, d
@@ -223,14 +196,14 @@ static inline int dc_inside(const dc_run *R, ops_counts *c, uint32_t a, uint32_t
 ** Inline: each side gets its own copy. */
 static inline uint32_t dc_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32_t basel,
                                     int right) {
-  dc_half *h = R->h;
-  uint32_t bo = h[basel].org, bd = dc_dest(h, basel), stop = right ? bd : bo;
+  paradigm_half *h = R->h;
+  uint32_t bo = h[basel].org, bd = paradigm_he_dest(h, basel), stop = right ? bd : bo;
   uint32_t e = right ? h[basel].prev : h[basel ^ 1].next;
-  if (!dc_right_of(R, c, dc_dest(h, e), basel)) return DC_NONE;
+  if (!dc_right_of(R, c, paradigm_he_dest(h, e), basel)) return DC_NONE;
   for (int deleted = 0;; deleted = 1) {
-    uint32_t t = right ? h[e].prev : h[e].next, far = dc_dest(h, t);
-    if (far == stop || !dc_inside(R, c, bd, bo, dc_dest(h, e), far))
-      return !deleted || dc_right_of(R, c, dc_dest(h, e), basel) ? e : DC_NONE;
+    uint32_t t = right ? h[e].prev : h[e].next, far = paradigm_he_dest(h, t);
+    if (far == stop || !dc_inside(R, c, bd, bo, paradigm_he_dest(h, e), far))
+      return !deleted || dc_right_of(R, c, paradigm_he_dest(h, e), basel) ? e : DC_NONE;
     dc_delete(R, p, c, e);
     e = t;
   }
@@ -241,9 +214,9 @@ static inline uint32_t dc_candidate(dc_run *R, dc_pool *p, ops_counts *c, uint32
 ** cross edge and the left one?  Both strictly above it: for ES,
 ** paradigm_beats needs no more. */
 static inline int dc_right_wins(const dc_run *R, ops_counts *c, uint32_t lc, uint32_t rc) {
-  const dc_half *h = R->h;
+  const paradigm_half *h = R->h;
   const geom_point *s = R->s;
-  uint32_t l = dc_dest(h, lc), bd = h[lc].org, bo = h[rc].org, r = dc_dest(h, rc);
+  uint32_t l = paradigm_he_dest(h, lc), bd = h[lc].org, bo = h[rc].org, r = paradigm_he_dest(h, rc);
   if (!R->es) return dc_incircle(R, c, l, bd, bo, r);
   return paradigm_beats(R->r, c, s[bd], s[bo], s[l], s[r]);
 }
@@ -253,10 +226,10 @@ static inline int dc_right_wins(const dc_run *R, ops_counts *c, uint32_t lc, uin
 ** each step adds or deletes an edge. */
 static dc_hull dc_merge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t ldo, uint32_t ldi,
                         uint32_t rdi, uint32_t rdo) {
-  dc_half *h = R->h;
+  paradigm_half *h = R->h;
   for (;;) {   /* the lower common tangent */
-    if (dc_left_of(R, c, h[rdi].org, ldi)) ldi = dc_lnext(h, ldi);
-    else if (dc_right_of(R, c, h[ldi].org, rdi)) rdi = dc_rprev(h, rdi);
+    if (dc_left_of(R, c, h[rdi].org, ldi)) ldi = paradigm_he_lnext(h, ldi);
+    else if (dc_right_of(R, c, h[ldi].org, rdi)) rdi = paradigm_he_rprev(h, rdi);
     else break;
   }
   uint32_t basel = dc_connect(R, p, c, rdi ^ 1, ldi);
@@ -284,10 +257,10 @@ static inline int dc_before(geom_point u, geom_point v, int frame) {
 ** the frame: the order is unimodal along a convex hull, so walk the way it
 ** improves.  O(hull). */
 static uint32_t dc_extreme(const dc_run *R, uint32_t e, int frame, int last) {
-  const dc_half *h = R->h;
+  const paradigm_half *h = R->h;
   const geom_point *s = R->s;
 #define DC_BETTER(u, v) (last ? dc_before(s[v], s[u], frame) : dc_before(s[u], s[v], frame))
-  while (DC_BETTER(dc_dest(h, e), h[e].org)) e = dc_rprev(h, e);
+  while (DC_BETTER(paradigm_he_dest(h, e), h[e].org)) e = paradigm_he_rprev(h, e);
   for (uint32_t b = h[e].prev ^ 1; DC_BETTER(h[b].org, h[e].org); b = h[e].prev ^ 1) e = b;
 #undef DC_BETTER
   return e;
@@ -574,7 +547,7 @@ static dc_hull dc_top(dc_run *R, uint32_t lo, uint32_t hi, int depth, int k, int
 
 static size_t dc_faces(const dc_run *R, const dc_pool *p, uint32_t *tri, size_t t, size_t at,
                        int back) {
-  const dc_half *h = R->h;
+  const paradigm_half *h = R->h;
   const uint32_t *id = R->id;
   size_t k = 0;
   uint32_t end = 2 * p->used;
@@ -607,7 +580,7 @@ static int dc_triangles(dc_run *R, const dc_pool *first, dc_hull top, uint32_t n
   do {
     hull++;
     R->h[e].org |= DC_OUTER;
-    e = dc_lnext(R->h, e);
+    e = paradigm_he_lnext(R->h, e);
   } while (e != e0);
   const dc_pool *pool[DC_NODES];
   int np = 0;

@@ -1,107 +1,543 @@
 /*
-** divide_constrained.c: the row dc-constrained, Chew's divide and conquer
-** for the constrained Delaunay triangulation (section 2.6.2), as far as it
-** is built.
+** divide_constrained.c: the row dc-constrained, divide and conquer for the
+** constrained Delaunay triangulation by vertical strips (section 2.6.2),
+** each pair of strips merged by flips.
 **
-** Chew cuts the sites into vertical strips (the cuts of dc-vertical, whose
-** merges are Guibas and Stolfi's).  A segment that crosses a strip's border
-** splits the strip into regions and ends, inside the strip, at a virtual
-** site on the border, infinitely far for the in-circle tests; a merge
-** matches the two strips' virtual sites on their common border, drops
-** them, and merges each pair of facing regions by the same zipper.  What
-** is built is the case with no virtual site: when every segment is an edge
-** of the strips' Delaunay triangulation, or a chain of its edges through
-** the sites that lie on the segment (lot splits a segment there, so its
-** pieces are the constraints), no region boundary ever stops a merge and
-** the constrained Delaunay triangulation is the Delaunay one (a piece that
-** is an edge crosses no edge, and every triangle's circle is empty of all
-** sites, so of the visible ones), which is then lot's exactly (the same
-** tie-break).  Any other segment is refused, naming it: the regions and
-** virtual sites that would carry it across strip borders are not built
-** (docs/paradigms.md says what they need).
+** The sites are sorted lexicographically and halved by rank: a piece of
+** ranks [lo, hi) is a vertical strip (the cut between ranks k - 1 and k is a
+** vertical line turned by an infinitesimal angle, so sites of equal x need
+** no case of their own).  A strip's triangulation is the constrained
+** Delaunay triangulation of its sites with the segments that have both ends
+** in it (a segment's sites on it have ranks between its ends', so they are
+** in the strip too).  Two strips, L left of R, are merged in three steps:
 **
-** Cost: dc-vertical's O(n log n), then each site's neighbours listed by a
-** counting sort of the 3t triangle sides, O(n), and each segment followed
-** from one end along the edges on it, O(sum of the degrees of its sites):
-** O(n + s d) for s segments through sites of degree at most d.
+**   1. The bridge.  From the lower common tangent (Guibas and Stolfi's walk)
+**      the region between the two hulls is triangulated upwards, each step
+**      taking the next hull site of L or of R: the one whose circle with the
+**      present cross edge holds the other (Guibas and Stolfi's choice) when
+**      that triangle leaves the other hull's next edge above the new cross
+**      edge, else the other one.  No edge of L or R is deleted, so this is a
+**      triangulation of the union's hull holding both strips' segments.
+**   2. Lawson's flips from the bridge's edges and the hull edges it covered,
+**      with lot's in-circle test (paradigm_inshape: its tie-break a
+**      symbolic perturbation of the lifts) over every edge that is no
+**      segment, flipping strictly convex quadrilaterals only.
+**   3. The segments joining L to R, each inserted by flips as Sloan does:
+**      the edges it crosses are queued; one whose quadrilateral is strictly
+**      convex is flipped, and queued again while its new diagonal still
+**      crosses the segment (Sloan proves this ends); a site on the segment
+**      ends a piece there.  Lawson's flips then run from every edge the
+**      insertion rewrote.  An edge it crosses that is a segment is a
+**      crossing: refused, naming both.
+**
+** Every edge that is not on Lawson's stack is locally Delaunay or a segment
+** (the bridge's and the insertion's edges, and the sides of every
+** quadrilateral flipped, are pushed), so each merge ends at a triangulation
+** that is locally constrained Delaunay everywhere: the constrained Delaunay
+** triangulation of the union, unique under the perturbation, which makes
+** the result lot's exactly, grids and cocircular sets included.
+**
+** What is not as Chew has it.  Chew keeps in each strip also the segments
+** that cross it (the regions they cut, and virtual sites where they cross
+** the strip's borders, infinitely far for the in-circle tests), so that a
+** strip's triangulation is already constrained by every segment and a
+** merge only zips each pair of facing regions (Guibas and Stolfi's zipper,
+** linear).  Here a strip sees only its own segments, and a merge repairs by
+** flips what the segments joining the two strips change: a merge by flips,
+** as dc-polygon's is; the virtual sites are not built (docs/paradigms.md
+** says what they need).
+**
+** Cost.  The sort, O(n log n); log n levels of merges.  A merge's bridge is
+** linear in the two hulls; its flips are the edges the union does not keep
+** (an edge that is locally Delaunay in the union is never flipped), O(m^2)
+** for a merge of m sites at worst, measured in bench_paradigm_dc; each
+** segment is inserted once, at the merge of the strips of its two ends, in
+** O(k) flips for k crossed edges when they come convex (Sloan's queue can
+** take O(k^2)).  Memory: 24 bytes a half-edge, 6n of them, and 32 a site.
 */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include "geom_mem_internal.h"
 #include "paradigm_internal.h"
 
-/* Each site's neighbours, nb[at[v] .. at[v + 1]): every side of every
-** triangle listed at both ends (an inner edge twice, a hull side once at
-** each), by a counting sort.  0, or -1 out of memory. */
-static int dcc_neighbours(const paradigm_output *out, size_t n, size_t **at, uint32_t **nb) {
-  size_t m = 3 * out->ntri;
-  *at = calloc(n + 1, sizeof **at);
-  *nb = malloc((m ? 2 * m : 1) * sizeof **nb);
-  if (*at == NULL || *nb == NULL) return -1;
-  const uint32_t *t = out->tri;
-  for (size_t k = 0; k < m; k++) (*at)[t[k]] += 2;   /* k's side to its successor and from */
-  for (size_t v = 1; v <= n; v++) (*at)[v] += (*at)[v - 1];   /* its predecessor */
-  for (size_t k = 0; k < m; k++) {   /* at[v] ends at v's start */
-    uint32_t u = t[k], w = t[k - k % 3 + (k + 1) % 3];
-    (*nb)[--(*at)[u]] = w, (*nb)[--(*at)[w]] = u;
+#define DCC_NONE UINT32_MAX
+#define DCC_FREE INT32_MIN    /* con[]: no segment on this edge */
+
+typedef struct dcc_run {
+  geom_point *s;          /* the sites, lexicographically sorted */
+  uint32_t *id;           /* s[k] = in->p[id[k]] */
+  uint32_t *pos;          /* pos[id[k]] = k */
+  paradigm_half *h;       /* 2 per edge; at most 3n edges */
+  int32_t *con;           /* per edge: the segment on it, or DCC_FREE */
+  uint32_t *out;          /* a half-edge out of each site */
+  uint32_t nedges;
+  uint32_t *at, *list;    /* the segments of each merge (by key, dcc_key) */
+  uint32_t *stack;        /* Lawson's edges to check */
+  size_t top, scap;
+  uint32_t *queue;        /* Sloan's crossed edges, in the order they wait */
+  size_t qcap;
+  const paradigm_input *in;
+  ops_counts *c;
+  char *err;
+  size_t errlen;
+} dcc_run;
+
+typedef struct dcc_hull {
+  uint32_t l, r;          /* ccw hull edge out of the leftmost site, cw out of the rightmost */
+} dcc_hull;
+
+static inline geom_point dcc_p(const dcc_run *R, uint32_t v) {
+  return R->s[v];
+}
+
+static inline uint32_t dcc_dest(const dcc_run *R, uint32_t e) {
+  return paradigm_he_dest(R->h, e);
+}
+
+static uint32_t dcc_make_edge(dcc_run *R, uint32_t a, uint32_t b) {
+  uint32_t e = 2 * R->nedges++;
+  paradigm_half *h = R->h;
+  h[e] = (paradigm_half){e, e, a};
+  h[e + 1] = (paradigm_half){e + 1, e + 1, b};
+  R->con[e / 2] = DCC_FREE;
+  R->out[a] = e, R->out[b] = e + 1;
+  ops_add(R->c, OPS_EDGES_MADE, 1);
+  return e;
+}
+
+/* A new edge from Dest(a) to Org(b), a's left face split off by it. */
+static uint32_t dcc_connect(dcc_run *R, uint32_t a, uint32_t b) {
+  uint32_t e = dcc_make_edge(R, dcc_dest(R, a), R->h[b].org);
+  paradigm_he_splice(R->h, e, paradigm_he_lnext(R->h, a));
+  paradigm_he_splice(R->h, e ^ 1, b);
+  return e;
+}
+
+/* Edge e (a -> b, triangles a b c on its left and b a d on its right)
+** becomes d -> c (Guibas and Stolfi's swap on the origin rings). */
+static void dcc_flip(dcc_run *R, uint32_t e) {
+  paradigm_half *h = R->h;
+  uint32_t a = h[e].prev, b = h[e ^ 1].prev;   /* a -> d, b -> c */
+  paradigm_he_splice(h, e, a);
+  paradigm_he_splice(h, e ^ 1, b);
+  paradigm_he_splice(h, e, paradigm_he_lnext(h, a));
+  paradigm_he_splice(h, e ^ 1, paradigm_he_lnext(h, b));
+  R->out[h[a].org] = a, R->out[h[b].org] = b;
+  h[e].org = dcc_dest(R, a), h[e ^ 1].org = dcc_dest(R, b);
+  ops_add(R->c, OPS_FLIPS, 1);
+  ops_add(R->c, OPS_EDGES_MADE, 1);
+  ops_add(R->c, OPS_EDGES_DELETED, 1);
+}
+
+static int dcc_orient(dcc_run *R, uint32_t a, uint32_t b, uint32_t d) {
+  return ops_orient(R->c, dcc_p(R, a), dcc_p(R, b), dcc_p(R, d));
+}
+
+/* Site x strictly right of (left of) the directed edge e. */
+static int dcc_right_of(dcc_run *R, uint32_t x, uint32_t e) {
+  return dcc_orient(R, x, dcc_dest(R, e), R->h[e].org) > 0;
+}
+
+static int dcc_left_of(dcc_run *R, uint32_t x, uint32_t e) {
+  return dcc_orient(R, x, R->h[e].org, dcc_dest(R, e)) > 0;
+}
+
+/* d strictly inside the circle through anticlockwise a, b, c: lot's test. */
+static int dcc_incircle(dcc_run *R, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  return paradigm_inshape(R->in->r, R->c, dcc_p(R, a), dcc_p(R, b), dcc_p(R, c),
+                          dcc_p(R, d)) > 0;
+}
+
+static int dcc_push(dcc_run *R, uint32_t e) {
+  size_t old = R->scap;
+  if (geom_grow((void **)&R->stack, &R->scap, R->top + 1, sizeof *R->stack) != 0) return -1;
+  ops_memory(R->c, (int64_t)((R->scap - old) * sizeof *R->stack));
+  R->stack[R->top++] = e >> 1;
+  return 0;
+}
+
+/* The apex of the face left of e when that face is a triangle (three
+** half-edges round), else DCC_NONE; the outer face of a three-site hull
+** is a round of three too, told apart by the flip's orientation tests. */
+static uint32_t dcc_apex(const dcc_run *R, uint32_t e) {
+  const paradigm_half *h = R->h;
+  uint32_t l1 = paradigm_he_lnext(h, e), l2 = paradigm_he_lnext(h, l1);
+  return paradigm_he_lnext(h, l2) == e ? h[l2].org : DCC_NONE;
+}
+
+/* Flip edge e (a -> b) when it is no segment, both its faces are
+** triangles a b c and b a d, and d lies strictly inside the circle of a b
+** c: then the quadrilateral is strictly convex (the two orientation tests
+** only tell a hull's outer round of three from a triangle); the four
+** sides are pushed.  0, or -1 out of memory. */
+static int dcc_check(dcc_run *R, uint32_t e) {
+  uint32_t a = R->h[e].org, b = dcc_dest(R, e), c = dcc_apex(R, e), d = dcc_apex(R, e ^ 1);
+  if (R->con[e / 2] != DCC_FREE || c == DCC_NONE || d == DCC_NONE) return 0;
+  if (!dcc_incircle(R, a, b, c, d)) return 0;
+  if (dcc_orient(R, a, b, c) <= 0 || dcc_orient(R, b, a, d) <= 0) return 0;
+  const paradigm_half *h = R->h;
+  uint32_t l1 = paradigm_he_lnext(h, e), r1 = paradigm_he_lnext(h, e ^ 1);
+  uint32_t l2 = paradigm_he_lnext(h, l1), r2 = paradigm_he_lnext(h, r1);
+  dcc_flip(R, e);
+  return dcc_push(R, l1) || dcc_push(R, l2) || dcc_push(R, r1) || dcc_push(R, r2) ? -1 : 0;
+}
+
+/* Lawson's flips until the stack is empty.  0, or -1 out of memory. */
+static int dcc_lawson(dcc_run *R) {
+  while (R->top > 0)
+    if (dcc_check(R, 2 * R->stack[--R->top]) != 0) return -1;
+  return 0;
+}
+
+/* Two or three sites, lexicographically sorted. */
+static dcc_hull dcc_base(dcc_run *R, uint32_t lo, uint32_t n) {
+  uint32_t a = dcc_make_edge(R, lo, lo + 1);
+  if (n == 2) return (dcc_hull){a, a ^ 1};
+  uint32_t b = dcc_make_edge(R, lo + 1, lo + 2);
+  paradigm_he_splice(R->h, a ^ 1, b);
+  int o = dcc_orient(R, lo, lo + 1, lo + 2);
+  if (o > 0) {
+    dcc_connect(R, b, a);
+    return (dcc_hull){a, b ^ 1};
+  }
+  if (o < 0) {
+    uint32_t t = dcc_connect(R, b, a);
+    return (dcc_hull){t ^ 1, t};
+  }
+  return (dcc_hull){a, b ^ 1};
+}
+
+/* Is the bridge's step to x (a left step: new cross edge r -> x) or to y
+** (right: y -> l) a triangle that leaves the other side's next site
+** strictly above the new cross edge?  Else the new edge would cut the
+** other hull's next edge. */
+static int dcc_step_ok(dcc_run *R, uint32_t from, uint32_t to, uint32_t other) {
+  return dcc_orient(R, other, to, from) > 0;
+}
+
+/* The bridge (step 1 above) from basel upwards; pushes its edges and the
+** hull edges it covers.  O(the two hulls' sites).  0, or -1. */
+static int dcc_bridge(dcc_run *R, uint32_t basel) {
+  paradigm_half *h = R->h;
+  int rc = dcc_push(R, basel);
+  for (;;) {
+    uint32_t lc = h[basel ^ 1].next, rc_ = h[basel].prev;
+    uint32_t l = dcc_dest(R, basel), r = h[basel].org, x = dcc_dest(R, lc), y = dcc_dest(R, rc_);
+    int lok = dcc_right_of(R, x, basel), rok = dcc_right_of(R, y, basel), right;
+    if (!lok && !rok) return rc;
+    if (!lok || !rok) right = !lok;
+    else {
+      right = dcc_incircle(R, x, l, r, y);
+      if (!dcc_step_ok(R, right ? y : r, right ? l : x, right ? x : y)) right = !right;
+    }
+    rc |= dcc_push(R, right ? rc_ : lc);
+    basel = right ? dcc_connect(R, rc_, basel ^ 1) : dcc_connect(R, basel ^ 1, lc ^ 1);
+    rc |= dcc_push(R, basel);
+  }
+}
+
+/* Merge left (ldo, ldi: cw hull edge out of its rightmost site) and right
+** (rdi: ccw hull edge out of its leftmost site, rdo): steps 1 and 2. */
+static int dcc_merge(dcc_run *R, dcc_hull a, dcc_hull b, dcc_hull *m) {
+  paradigm_half *h = R->h;
+  uint32_t ldo = a.l, ldi = a.r, rdi = b.l, rdo = b.r;
+  for (;;) {   /* the lower common tangent */
+    if (dcc_left_of(R, h[rdi].org, ldi)) ldi = paradigm_he_lnext(h, ldi);
+    else if (dcc_right_of(R, h[ldi].org, rdi)) rdi = paradigm_he_rprev(h, rdi);
+    else break;
+  }
+  uint32_t basel = dcc_connect(R, rdi ^ 1, ldi);
+  if (h[ldi].org == h[ldo].org) ldo = basel ^ 1;
+  if (h[rdi].org == h[rdo].org) rdo = basel;
+  *m = (dcc_hull){ldo, rdo};
+  return dcc_bridge(R, basel) != 0 || dcc_lawson(R) != 0 ? -1 : 0;
+}
+
+/* ---- step 3: a segment joining the two strips, inserted by flips ---- */
+
+/* Mark the edge u -> w (a ring neighbour of u) as segment sg. */
+static void dcc_mark(dcc_run *R, uint32_t e, uint32_t sg) {
+  R->con[e / 2] = (int32_t)sg;
+}
+
+/* Is w on the open segment from u towards v (on its line, u < w < v in
+** the order along it: lexicographic, which is monotone along a line)? */
+static int dcc_on(dcc_run *R, uint32_t u, uint32_t v, uint32_t w) {
+  int up = geom_lexless(dcc_p(R, u), dcc_p(R, v));
+  return geom_lexless(dcc_p(R, u), dcc_p(R, w)) == up
+         && geom_lexless(dcc_p(R, w), dcc_p(R, v)) == up && dcc_orient(R, u, v, w) == 0;
+}
+
+/* The first step of segment u -> v round u: the edge u -> w when w is v
+** or on the open segment (returned, *first DCC_NONE), or else the half-edge
+** x -> y of the triangle u x y whose open wedge at u holds v (in *first;
+** returns DCC_NONE).  O(degree of u). */
+static uint32_t dcc_start(dcc_run *R, uint32_t u, uint32_t v, uint32_t *first) {
+  const paradigm_half *h = R->h;
+  uint32_t e0 = R->out[u], e = e0;
+  *first = DCC_NONE;
+  do {
+    uint32_t x = dcc_dest(R, e);
+    ops_add(R->c, OPS_LOCATE, 1);
+    if (x == v || dcc_on(R, u, v, x)) return e;
+    uint32_t f = h[e].next, y = dcc_dest(R, f);
+    if (f != e && dcc_apex(R, e) == y && dcc_orient(R, u, x, v) > 0
+        && dcc_orient(R, u, v, y) > 0)
+      *first = paradigm_he_lnext(h, e);
+    e = f;
+  } while (e != e0 && *first == DCC_NONE);
+  return DCC_NONE;
+}
+
+static int dcc_enqueue(dcc_run *R, size_t *tail, uint32_t e) {
+  size_t old = R->qcap;
+  if (geom_grow((void **)&R->queue, &R->qcap, *tail + 1, sizeof *R->queue) != 0) return -1;
+  ops_memory(R->c, (int64_t)((R->qcap - old) * sizeof *R->queue));
+  R->queue[(*tail)++] = e >> 1;
+  return 0;
+}
+
+/* The edges the open segment u -> t crosses, walked from the half-edge
+** g (x -> y, x right of u -> v) into the queue, up to t: v or the first
+** site on the segment.  -1 when one is a segment (a crossing: both named)
+** or memory runs out. */
+static int dcc_walk(dcc_run *R, uint32_t sg, uint32_t u, uint32_t v, uint32_t g,
+                    uint32_t *t, size_t *n) {
+  for (;;) {
+    if (R->con[g / 2] != DCC_FREE) {
+      uint32_t o = (uint32_t)R->con[g / 2];
+      snprintf(R->err, R->errlen, "segments %u and %u cross", o < sg ? o : sg, o < sg ? sg : o);
+      return -1;
+    }
+    if (dcc_enqueue(R, n, g) != 0) return -1;
+    uint32_t z = dcc_apex(R, g ^ 1);
+    ops_add(R->c, OPS_LOCATE, 1);
+    int o = z == v ? 0 : dcc_orient(R, u, v, z);
+    if (o == 0) {
+      *t = z;
+      return 0;
+    }
+    /* the far triangle y x z: leave by x -> z (z left of u -> v) or z -> y */
+    uint32_t zx = paradigm_he_lnext(R->h, g ^ 1), yz = paradigm_he_lnext(R->h, zx);
+    g = o > 0 ? zx : yz;
+  }
+}
+
+/* Does the edge e cross the open segment u -> t (its ends strictly on
+** both sides of the line)? */
+static int dcc_crosses(dcc_run *R, uint32_t u, uint32_t t, uint32_t e) {
+  int a = dcc_orient(R, u, t, R->h[e].org), b = dcc_orient(R, u, t, dcc_dest(R, e));
+  return a * b < 0;
+}
+
+/* Sloan's flips: a queued edge whose quadrilateral is strictly convex is
+** flipped, and queued again while it crosses u -> t; else it waits its
+** turn again (at the queue's end).  0, or -1. */
+static int dcc_sloan(dcc_run *R, uint32_t u, uint32_t t, size_t tail) {
+  for (size_t head = 0; head < tail; head++) {
+    uint32_t e = 2 * R->queue[head], a = R->h[e].org, b = dcc_dest(R, e);
+    uint32_t c = dcc_apex(R, e), d = dcc_apex(R, e ^ 1);
+    if (dcc_orient(R, c, d, a) * dcc_orient(R, c, d, b) >= 0) {
+      if (dcc_enqueue(R, &tail, e) != 0) return -1;
+      continue;
+    }
+    const paradigm_half *h = R->h;
+    uint32_t l1 = paradigm_he_lnext(h, e), r1 = paradigm_he_lnext(h, e ^ 1);
+    uint32_t l2 = paradigm_he_lnext(h, l1), r2 = paradigm_he_lnext(h, r1);
+    dcc_flip(R, e);
+    if (dcc_push(R, l1) || dcc_push(R, l2) || dcc_push(R, r1) || dcc_push(R, r2)) return -1;
+    if (dcc_crosses(R, u, t, e) ? dcc_enqueue(R, &tail, e) : dcc_push(R, e)) return -1;
   }
   return 0;
 }
 
-/* Is w on the open segment (u, b) of the line through a and b?  The
-** lexicographic order is monotone along a line (up: u before b), so
-** "between" is two exact comparisons; on the line, one exact orientation. */
-static int dcc_between(const geom_point *p, ops_counts *c, uint32_t a, uint32_t b, uint32_t u,
-                       uint32_t w, int up) {
-  return w != b && geom_lexless(p[u], p[w]) == up && geom_lexless(p[w], p[b]) == up
-         && ops_orient(c, p[a], p[b], p[w]) == 0;
+/* The edge u -> w, found round u (it exists). */
+static uint32_t dcc_find(const dcc_run *R, uint32_t u, uint32_t w) {
+  uint32_t e = R->out[u];
+  while (dcc_dest(R, e) != w) e = R->h[e].next;
+  return e;
 }
 
-/* Is segment a-b an edge, or a chain of edges through the sites on it?
-** From u = a: done when b is u's neighbour, else on to u's neighbour on
-** the open segment (u, b) (a triangulation has at most one), else no. */
-static int dcc_chain(const paradigm_input *in, ops_counts *c, const size_t *at,
-                     const uint32_t *nb, uint32_t a, uint32_t b) {
-  int up = geom_lexless(in->p[a], in->p[b]);
-  for (uint32_t u = a;;) {
-    size_t j = at[u], end = at[u + 1];
-    while (j < end && nb[j] != b) j++;
-    if (j < end) return 1;
-    for (j = at[u]; j < end && !dcc_between(in->p, c, a, b, u, nb[j], up);) j++;
-    if (j == end) return 0;
-    u = nb[j];
+/* Segment sg from u to v: piece by piece (a site on it ends a piece), each
+** made an edge by Sloan's flips and marked, then Lawson's flips.  0, or -1
+** with the message. */
+static int dcc_insert(dcc_run *R, uint32_t sg, uint32_t u, uint32_t v) {
+  while (u != v) {
+    uint32_t g, t, e = dcc_start(R, u, v, &g);
+    if (e == DCC_NONE) {
+      size_t n = 0;
+      if (g == DCC_NONE) {
+        snprintf(R->err, R->errlen, "segment %u: no triangle round its end (a bug)", sg);
+        return -1;
+      }
+      if (dcc_walk(R, sg, u, v, g, &t, &n) != 0 || dcc_sloan(R, u, t, n) != 0) goto fail;
+      e = dcc_find(R, u, t);
+    }
+    dcc_mark(R, e, sg);
+    u = dcc_dest(R, e);
+    if (dcc_lawson(R) != 0) goto fail;
+  }
+  return 0;
+fail:
+  if (R->err[0] == '\0') snprintf(R->err, R->errlen, "out of memory for segment %u", sg);
+  return -1;
+}
+
+/* ---- the recursion ---- */
+
+/* Where segment a-b (ranks a < b) is inserted: at the merge whose cut
+** separates them (key 2 mid), or in the base piece holding both (key
+** 2 lo + 1); the halving is dcc_solve's.  O(log n). */
+static uint32_t dcc_key(uint32_t n, uint32_t a, uint32_t b) {
+  for (uint32_t lo = 0, hi = n;;) {
+    if (hi - lo <= 3) return 2 * lo + 1;
+    uint32_t mid = lo + (hi - lo) / 2;
+    if (b < mid) hi = mid;
+    else if (a >= mid) lo = mid;
+    else return 2 * mid;
   }
 }
 
-/* Is every segment an edge or a chain of edges of out's triangles?  0, or
-** -1 naming the first that is not (or joins a point to itself), or out of
-** memory. */
-static int dcc_segments_are_edges(const paradigm_input *in, paradigm_output *out, char *err,
-                                  size_t errlen) {
-  size_t *at;
-  uint32_t *nb;
-  int64_t bytes = (int64_t)((in->n + 1) * sizeof *at + 6 * out->ntri * sizeof *nb);
-  ops_memory(&out->ops, bytes);
-  int rc = dcc_neighbours(out, in->n, &at, &nb);
-  if (rc != 0)
-    snprintf(err, errlen, "out of memory for the edges of %zu triangles", out->ntri);
-  for (size_t s = 0; s < in->nsegments && rc == 0; s++) {
-    uint32_t a = in->segments[2 * s], b = in->segments[2 * s + 1];
-    if (a == b)
-      snprintf(err, errlen, "segment %zu joins a point to itself", s), rc = -1;
-    else if (!dcc_chain(in, &out->ops, at, nb, a, b))
-      snprintf(err, errlen, "dc-constrained: segment %zu is no edge (nor a chain of edges "
-               "through the sites on it) of the strips' Delaunay triangulation, and the "
-               "virtual sites that carry a segment across strip borders (Chew, 2.6.2) are "
-               "not built", s), rc = -1;
+/* The segments inserted at key k: list[at[k] .. at[k + 1]). */
+static int dcc_segments_at(dcc_run *R, uint32_t k) {
+  const uint32_t *sg = R->in->segments;
+  for (uint32_t j = R->at[k]; j < R->at[k + 1]; j++) {
+    uint32_t s = R->list[j];
+    if (dcc_insert(R, s, R->pos[sg[2 * s]], R->pos[sg[2 * s + 1]]) != 0) return -1;
   }
-  free(at), free(nb);
-  ops_memory(&out->ops, -bytes);
-  return rc;
+  return 0;
 }
 
+/* Sites [lo, hi): T(n) = 2 T(n/2) + merge.  0, or -1 with the message. */
+static int dcc_solve(dcc_run *R, uint32_t lo, uint32_t hi, dcc_hull *out) {
+  if (hi - lo <= 3) {
+    *out = dcc_base(R, lo, hi - lo);
+    return dcc_segments_at(R, 2 * lo + 1);
+  }
+  uint32_t mid = lo + (hi - lo) / 2;
+  dcc_hull a, b;
+  if (dcc_solve(R, lo, mid, &a) != 0 || dcc_solve(R, mid, hi, &b) != 0) return -1;
+  if (dcc_merge(R, a, b, out) != 0) {
+    snprintf(R->err, R->errlen, "out of memory for the merge of %u sites", hi - lo);
+    return -1;
+  }
+  return dcc_segments_at(R, 2 * mid);
+}
+
+/* ---- the run ---- */
+
+typedef struct dcc_site {
+  geom_point p;
+  uint32_t id;
+} dcc_site;
+
+static int dcc_cmp(const void *x, const void *y) {
+  const dcc_site *a = x, *b = y;
+  return geom_lexless(a->p, b->p) ? -1 : geom_lexless(b->p, a->p);
+}
+
+/* The sites sorted (ranks), the segments bucketed by key (a counting
+** sort), a segment joining a site to itself refused.  0, or -1. */
+static int dcc_prepare(dcc_run *R) {
+  const paradigm_input *in = R->in;
+  uint32_t n = (uint32_t)in->n, keys = 2 * n + 2;
+  dcc_site *t = malloc((n ? n : 1) * sizeof *t);
+  if (t == NULL) {
+    snprintf(R->err, R->errlen, "out of memory for the sort of %u sites", n);
+    return -1;
+  }
+  for (uint32_t k = 0; k < n; k++) t[k] = (dcc_site){in->p[k], k};
+  qsort(t, n, sizeof *t, dcc_cmp);   /* distinct points: a strict order */
+  for (uint32_t k = 0; k < n; k++) R->s[k] = t[k].p, R->id[k] = t[k].id, R->pos[t[k].id] = k;
+  free(t);
+  uint32_t *key = R->list + in->nsegments;
+  for (size_t s = 0; s < in->nsegments; s++) {
+    uint32_t a = R->pos[in->segments[2 * s]], b = R->pos[in->segments[2 * s + 1]];
+    if (a == b) {
+      snprintf(R->err, R->errlen, "segment %zu joins a point to itself", s);
+      return -1;
+    }
+    key[s] = dcc_key(n, a < b ? a : b, a < b ? b : a);
+    R->at[key[s]]++;
+  }
+  for (uint32_t k = 1; k <= keys; k++) R->at[k] += R->at[k - 1];   /* each bucket's end */
+  for (size_t s = in->nsegments; s-- > 0;) R->list[--R->at[key[s]]] = (uint32_t)s;
+  return 0;
+}
+
+/* The triangles: each face that is a round of three half-edges, written
+** once from its smallest, but the outer face (a three-site hull's is a
+** round of three too).  The count must be Euler's, 2n - 2 - h.  O(n). */
+static int dcc_triangles(dcc_run *R, dcc_hull top, paradigm_output *out) {
+  uint32_t n = (uint32_t)R->in->n, e0 = top.l ^ 1, e = e0, hull = 0, skip = e0;
+  do {
+    hull++;
+    skip = e < skip ? e : skip;
+    e = paradigm_he_lnext(R->h, e);
+  } while (e != e0);
+  size_t want = n >= 3 && hull < 2 * n - 2 ? 2 * (size_t)n - 2 - hull : 0, k = 0;
+  out->tri = malloc(3 * (want ? want : 1) * sizeof *out->tri);
+  if (out->tri == NULL) return -1;
+  for (uint32_t a = 0; a < 2 * R->nedges; a++) {
+    uint32_t b = paradigm_he_lnext(R->h, a), c = paradigm_he_lnext(R->h, b);
+    if (paradigm_he_lnext(R->h, c) != a || b < a || c < a || (hull == 3 && a == skip)) continue;
+    if (k < want) {
+      uint32_t *t = out->tri + 3 * k;
+      t[0] = R->id[R->h[a].org], t[1] = R->id[R->h[b].org], t[2] = R->id[R->h[c].org];
+    }
+    k++;
+  }
+  out->ntri = k;
+  return k == want ? 0 : -2;
+}
+
+/* Bytes a site: the sites, ranks, positions and ring ends (24), three
+** edges of two half-edges (72) and a segment mark each (12). */
+#define DCC_SITE_BYTES (sizeof(geom_point) + 3 * sizeof(uint32_t) \
+                        + 6 * sizeof(paradigm_half) + 3 * sizeof(int32_t))
+
+static int dcc_alloc(dcc_run *R) {
+  size_t n = R->in->n ? R->in->n : 1, ns = R->in->nsegments;
+  R->s = malloc(n * sizeof *R->s);
+  R->id = malloc(n * sizeof *R->id);
+  R->pos = malloc(n * sizeof *R->pos);
+  R->out = malloc(n * sizeof *R->out);
+  R->h = malloc(6 * n * sizeof *R->h);
+  R->con = malloc(3 * n * sizeof *R->con);
+  R->at = calloc(2 * n + 3, sizeof *R->at);
+  R->list = malloc((2 * ns + 1) * sizeof *R->list);
+  ops_memory(R->c, (int64_t)(n * DCC_SITE_BYTES + (2 * n + 3 + 2 * ns) * sizeof(uint32_t)));
+  return R->s && R->id && R->pos && R->out && R->h && R->con && R->at && R->list ? 0 : -1;
+}
+
+static void dcc_free(dcc_run *R) {
+  size_t n = R->in->n ? R->in->n : 1, ns = R->in->nsegments;
+  ops_memory(R->c, -(int64_t)(n * DCC_SITE_BYTES + (2 * n + 3 + 2 * ns) * sizeof(uint32_t)));
+  ops_memory(R->c, -(int64_t)(R->scap * sizeof *R->stack + R->qcap * sizeof *R->queue));
+  free(R->s), free(R->id), free(R->pos), free(R->out), free(R->h), free(R->con);
+  free(R->at), free(R->list), free(R->stack), free(R->queue);
+}
+
+/* Cost as above the file: O(n log n) for the sort and the bridges, plus the
+** merges' flips and the segments' insertions. */
 int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen) {
-  if (paradigm_divide(in, 0, &out->ops, out, err, errlen) != 0) return -1;
-  if (in->problem != PARADIGM_CONSTRAINED) return 0;
-  return dcc_segments_are_edges(in, out, err, errlen);
+  if (in->n > UINT32_MAX / 8) {
+    snprintf(err, errlen, "dc-constrained: %zu points, at most %u", in->n, UINT32_MAX / 8);
+    return -1;
+  }
+  dcc_run R = {.in = in, .c = &out->ops, .err = err, .errlen = errlen};
+  err[0] = '\0';
+  int rc = dcc_alloc(&R);
+  if (rc != 0) snprintf(err, errlen, "out of memory for the mesh of %zu points", in->n);
+  if (rc == 0) rc = dcc_prepare(&R);
+  dcc_hull top = {0, 0};
+  if (rc == 0 && in->n >= 2) rc = dcc_solve(&R, 0, (uint32_t)in->n, &top);
+  if (rc == 0 && in->n >= 2) rc = dcc_triangles(&R, top, out);
+  if (rc == -1 && err[0] == '\0') snprintf(err, errlen, "out of memory for the triangles");
+  if (rc == -2) snprintf(err, errlen, "dc-constrained: the mesh of %zu points is not a "
+                         "triangulation (a bug: please report it)", in->n);
+  dcc_free(&R);
+  return rc == 0 ? 0 : -1;
 }

@@ -63,12 +63,10 @@ FLIPLAB_INTERNAL
 int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
 #define PARADIGM_DC_REFUSAL \
-  "constraints: the row dc-constrained (2.6.2, segments that are Delaunay edges or " \
-  "chains of them only: Chew's virtual sites are not built); simple and convex polygons: " \
+  "constraints: the row dc-constrained (2.6.2); simple and convex polygons: " \
   "dc-polygon (2.6.3)"
-/* 2.6.2 as far as it is built (paradigms/divide_constrained.c): the vertical
-** strips' triangulation, served when every segment is one of its edges or a
-** chain of them through the sites on it. */
+/* 2.6.2 (paradigms/divide_constrained.c): vertical strips, each with its
+** own segments, merged by a bridge and flips. */
 FLIPLAB_INTERNAL
 int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);
@@ -181,6 +179,35 @@ PARADIGM_CONVEX_FN(paradigm_convex_incremental)
 PARADIGM_CONVEX_FN(paradigm_convex_random)
 PARADIGM_CONVEX_FN(paradigm_convex_flip)
 PARADIGM_CONVEX_FN(paradigm_convex_corners)
+
+/* The half-edge mesh of the divide-and-conquer rows (divide.c,
+** divide_constrained.c): half-edges 2k and 2k + 1 are one edge's two
+** directions, each on the ring of its origin's half-edges in anticlockwise
+** order (next, prev), so Lnext(e) = Oprev(Sym e) and Rprev(e) = Onext(Sym
+** e); Guibas and Stolfi's splice swaps two ring successors (the faces
+** follow: no face records). */
+typedef struct paradigm_half {
+  uint32_t next, prev;    /* the origin's ring, anticlockwise */
+  uint32_t org;           /* origin site */
+} paradigm_half;
+
+static inline uint32_t paradigm_he_dest(const paradigm_half *h, uint32_t e) {
+  return h[e ^ 1].org;
+}
+
+static inline uint32_t paradigm_he_lnext(const paradigm_half *h, uint32_t e) {
+  return h[e ^ 1].prev;
+}
+
+static inline uint32_t paradigm_he_rprev(const paradigm_half *h, uint32_t e) {
+  return h[e ^ 1].next;
+}
+
+static inline void paradigm_he_splice(paradigm_half *h, uint32_t a, uint32_t b) {
+  uint32_t alpha = h[a].next, beta = h[b].next;
+  h[a].next = beta, h[b].next = alpha;
+  h[beta].prev = a, h[alpha].prev = b;
+}
 
 /* The triangle meshes of the rows that flip edges (sweep_finish.c, divide_polygon.c):
 ** nb[3 t + k] is the triangle across the side of t opposite its corner k, -1 outside.

@@ -92,29 +92,35 @@ static int tdc_chain(const paradigm_result *dt, const geom_point *p, size_t n,
 }
 
 /* One set with its segments: dc-constrained against lot (the incremental
-** row) and lot's Delaunay triangulation; returns 1 when it served. */
+** row).  When lot refuses (crossing segments, or a segment whose ends are
+** duplicates), dc-constrained must refuse too, on one line naming a
+** crossing when lot's does; else it must give lot's triangles
+** exactly.  Returns 1 when it served a set with a segment that is no chain
+** of Delaunay edges (the merges' insertions ran), 2 when every segment was
+** one, 0 when both refused. */
 static int tdc_compare(const geom_point *p, size_t n, const uint32_t *seg, size_t ns,
                        const paradigm_result *dt, const uint32_t *first) {
   assert_true(n <= TDC_MAXN);
   char err[512], err2[512];
   paradigm_result ref, res;
-  if (tdc_run("incremental", p, n, seg, ns, &ref, err, sizeof err) != 0) return 0;
-  int edges = 1;
-  for (size_t s = 0; s < ns; s++) edges &= tdc_chain(dt, p, n, first, seg[2 * s], seg[2 * s + 1]);
+  int lot_rc = tdc_run("incremental", p, n, seg, ns, &ref, err, sizeof err);
   int rc = tdc_run("dc-constrained", p, n, seg, ns, &res, err2, sizeof err2);
-  if (rc != 0) {
-    if (edges || strstr(err2, "virtual sites") == NULL || strchr(err2, '\n') != NULL)
-      fail_msg("n %zu, %zu segments (edges %d): refused: %s", n, ns, edges, err2);
-    paradigm_result_free(&ref);
+  if (lot_rc != 0) {
+    if (rc == 0 || (strstr(err, "cross") == NULL) != (strstr(err2, "cross") == NULL)
+        || strchr(err2, '\n') != NULL)
+      fail_msg("n %zu, %zu segments: lot refused (%s), dc-constrained %s", n, ns, err,
+               rc ? err2 : "served");
     return 0;
   }
-  if (!edges || res.ntri != ref.ntri
-      || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) != 0)
+  if (rc != 0) fail_msg("n %zu, %zu segments: refused: %s", n, ns, err2);
+  int edges = 1;
+  for (size_t s = 0; s < ns; s++) edges &= tdc_chain(dt, p, n, first, seg[2 * s], seg[2 * s + 1]);
+  if (res.ntri != ref.ntri || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) != 0)
     fail_msg("n %zu, %zu segments: differs from lot's constrained triangulation", n, ns);
   size_t m = res.distinct, h = 2 * m - 2 - res.ntri;
   assert_int_equal(res.ops.v[OPS_EDGES_MADE] - res.ops.v[OPS_EDGES_DELETED], 3 * m - 3 - h);
   paradigm_result_free(&res), paradigm_result_free(&ref);
-  return 1;
+  return edges ? 2 : 1;
 }
 
 /* lot's Delaunay triangulation of p into *del and each point's first
@@ -128,7 +134,7 @@ static int tdc_delaunay(const geom_point *p, size_t n, paradigm_result *del, uin
   return 0;
 }
 
-static void tdc_set(int f, testutil_rng *g, int *served, int *refused) {
+static void tdc_set(int f, testutil_rng *g, int *tally) {
   geom_point p[TDC_MAXN];
   uint32_t first[TDC_MAXN], seg[2 * 3 * TDC_MAXN];
   size_t n = tdc_points(f, g, p);
@@ -140,18 +146,17 @@ static void tdc_set(int f, testutil_rng *g, int *served, int *refused) {
       int k = (int)(testutil_next(g) % 3);
       seg[2 * ns] = del.tri[3 * t + k], seg[2 * ns + 1] = del.tri[3 * t + (k + 1) % 3], ns++;
     }
-  *served += tdc_compare(p, n, seg, ns, &del, first);
+  assert_int_equal(tdc_compare(p, n, seg, ns, &del, first), 2);   /* Delaunay edges */
   for (size_t s = 0; s < 2; s++) {   /* one or two random segments */
     for (size_t k = 0; k < 2 * (s + 1); k++) seg[k] = (uint32_t)(testutil_next(g) % n);
     if (seg[0] == seg[1] || (s && seg[2] == seg[3])) continue;
-    int ok = tdc_compare(p, n, seg, s + 1, &del, first);
-    *served += ok, *refused += !ok;
+    tally[tdc_compare(p, n, seg, s + 1, &del, first)]++;
   }
   paradigm_result_free(&del);
 }
 
 /* Uniform sites with sampler_segments' non-crossing segments (seed k). */
-static void tdc_sampled(uint64_t k, int *served, int *refused) {
+static void tdc_sampled(uint64_t k, int *tally) {
   geom_point p[TDC_MAXN];
   uint32_t first[TDC_MAXN], seg[2 * TDC_MAXN];
   size_t n = 8 + k % (TDC_MAXN - 8), ns;
@@ -161,8 +166,7 @@ static void tdc_sampled(uint64_t k, int *served, int *refused) {
   assert_int_equal(sampler_segments(&sg, p, n, 1 + k % (n / 4), seg, &ns), 0);
   paradigm_result del;
   if (ns == 0 || tdc_delaunay(p, n, &del, first) != 0) return;
-  int ok = tdc_compare(p, n, seg, ns, &del, first);
-  *served += ok, *refused += !ok;
+  tally[tdc_compare(p, n, seg, ns, &del, first)]++;
   paradigm_result_free(&del);
 }
 
@@ -205,20 +209,20 @@ static size_t tdc_special(int kind, testutil_rng *g, geom_point *p, size_t *n, u
 static void test_special(void **state) {
   (void)state;
   testutil_rng g = {263};
-  int count[3][2] = {{0, 0}, {0, 0}, {0, 0}}, sets = testutil_reps(300);
+  int count[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, sets = testutil_reps(300);
   for (int s = 0; s < 3 * sets; s++) {
     geom_point p[TDC_MAXN];
     uint32_t first[TDC_MAXN], seg[4 * TDC_MAXN];
     size_t n, ns = tdc_special(s % 3, &g, p, &n, seg);
     paradigm_result del;
     if (tdc_delaunay(p, n, &del, first) != 0) continue;
-    int ok = tdc_compare(p, n, seg, ns, &del, first);
-    count[s % 3][!ok]++;
+    count[s % 3][tdc_compare(p, n, seg, ns, &del, first)]++;
     paradigm_result_free(&del);
   }
   for (int k = 0; k < 3; k++)
-    print_message("special kind %d: %d served, %d refused\n", k, count[k][0], count[k][1]);
-  for (int k = 0; k < 3; k++) assert_true(count[k][0] > 0 && count[k][1] > 0);
+    print_message("special kind %d: %d served with insertions, %d with Delaunay edges\n", k,
+                  count[k][1], count[k][2]);
+  for (int k = 0; k < 3; k++) assert_true(count[k][0] == 0 && count[k][1] > 0);
 }
 
 /* A rotated grid with segments along its lines: always served. */
@@ -230,7 +234,7 @@ static void tdc_grid(uint64_t k) {
   uint32_t first[TDC_MAXN];
   paradigm_result del;
   assert_int_equal(tdc_delaunay(pg.pts, pg.npts, &del, first), 0);
-  assert_int_equal(tdc_compare(pg.pts, pg.npts, pg.seg, pg.nseg, &del, first), pg.nseg > 0);
+  assert_int_equal(tdc_compare(pg.pts, pg.npts, pg.seg, pg.nseg, &del, first), 2);
   paradigm_result_free(&del);
   geom_pslg_free(&pg);
 }
@@ -238,14 +242,15 @@ static void tdc_grid(uint64_t k) {
 static void test_sets(void **state) {
   (void)state;
   testutil_rng g = {262};
-  int sets = testutil_reps(1500), served = 0, refused = 0;
-  for (int s = 0; s < sets; s++) tdc_set(s % 3, &g, &served, &refused);
-  print_message("dc-constrained: %d runs served, %d refused\n", served, refused);
-  assert_true(served > sets && refused > sets / 4);
-  int sampled[2] = {0, 0};
-  for (int s = 0; s < sets; s++) tdc_sampled((uint64_t)s + 1, &sampled[0], &sampled[1]);
-  print_message("sampler_segments: %d sets served, %d refused\n", sampled[0], sampled[1]);
-  assert_true(sampled[0] > 0 && sampled[1] > 0);
+  int sets = testutil_reps(1500), tally[3] = {0, 0, 0}, sampled[3] = {0, 0, 0};
+  for (int s = 0; s < sets; s++) tdc_set(s % 3, &g, tally);
+  print_message("random segments: %d crossing (refused by both), %d served with insertions, "
+                "%d with Delaunay edges\n", tally[0], tally[1], tally[2]);
+  assert_true(tally[0] > 0 && tally[1] > sets / 2);
+  for (int s = 0; s < sets; s++) tdc_sampled((uint64_t)s + 1, sampled);
+  print_message("sampler_segments: %d served with insertions, %d with Delaunay edges\n",
+                sampled[1], sampled[2]);
+  assert_true(sampled[0] == 0 && sampled[1] > sets / 2);
   for (int s = 0; s < sets / 5; s++) tdc_grid((uint64_t)s + 1);
 }
 
@@ -257,27 +262,25 @@ static void test_refusals(void **state) {
   paradigm_result res;
   assert_int_equal(tdc_run("dc-constrained", sq, 5, self, 1, &res, err, sizeof err), -1);
   assert_non_null(strstr(err, "segment 0 joins a point to itself"));
-  assert_int_equal(tdc_run("dc-constrained", sq, 5, diag, 1, &res, err, sizeof err), -1);
-  assert_non_null(strstr(err, "segment 0 is no edge"));
-  assert_null(strchr(err, '\n'));
-  assert_int_equal(tdc_run("dc-constrained", sq, 5, side, 1, &res, err, sizeof err), 0);
-  paradigm_result_free(&res);
-  const uint32_t cross[] = {0, 1, 0, 2, 1, 3};   /* two diagonals: the first named */
+  paradigm_result ref;
+  const uint32_t cross[] = {0, 1, 0, 2, 1, 3};   /* the two diagonals cross */
   assert_int_equal(tdc_run("dc-constrained", sq, 4, cross, 3, &res, err, sizeof err), -1);
-  assert_non_null(strstr(err, "segment 1 is no edge"));
+  assert_non_null(strstr(err, "segments 1 and 2 cross"));
   assert_null(strchr(err, '\n'));
-  /* Through site 1: served when its pieces are edges, as lot splits it. */
+  /* A diagonal, and a segment through site 1 (pinched: no Delaunay edge),
+  ** as lot has them. */
   const geom_point line[] = {{0, 0}, {1, 0}, {2, 0}, {1, 1}, {1, -1}};
   const geom_point pinch[] = {{0, 0}, {1, 0}, {2, 0}, {0.5, 0.1}, {0.5, -0.1}};
   const uint32_t through[] = {0, 2};
-  paradigm_result ref;
-  assert_int_equal(tdc_run("dc-constrained", line, 5, through, 1, &res, err, sizeof err), 0);
-  assert_int_equal(tdc_run("incremental", line, 5, through, 1, &ref, err, sizeof err), 0);
-  assert_int_equal(res.ntri, ref.ntri);
-  assert_memory_equal(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri);
-  paradigm_result_free(&res), paradigm_result_free(&ref);
-  assert_int_equal(tdc_run("dc-constrained", pinch, 5, through, 1, &res, err, sizeof err), -1);
-  assert_non_null(strstr(err, "segment 0 is no edge (nor a chain"));
+  const geom_point *set[] = {sq, line, pinch};
+  const uint32_t *segs[] = {diag, through, through};
+  for (int k = 0; k < 3; k++) {
+    assert_int_equal(tdc_run("dc-constrained", set[k], 5, segs[k], 1, &res, err, sizeof err), 0);
+    assert_int_equal(tdc_run("incremental", set[k], 5, segs[k], 1, &ref, err, sizeof err), 0);
+    assert_int_equal(res.ntri, ref.ntri);
+    assert_memory_equal(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri);
+    paradigm_result_free(&res), paradigm_result_free(&ref);
+  }
   rule es;
   assert_int_equal(rule_parse("ES:square", &es, err, sizeof err), 0);
   paradigm_input in = {.p = sq, .n = 5, .r = &es, .problem = PARADIGM_CONSTRAINED,

@@ -192,7 +192,7 @@ static void test_refusals(void **state) {
       assert_int_equal(paradigm_run(paradigm_find(te_rows[a]), &in, &res, err, sizeof err), -1);
       assert_null(strchr(err, '\n'));   /* one line */
       assert_non_null(strstr(err, "constraints"));
-      assert_non_null(strstr(err, a < 2 ? "Chew's virtual sites" : "stop at segments"));
+      assert_non_null(strstr(err, a < 2 ? "dc-constrained" : "stop at segments"));
     }
 }
 
