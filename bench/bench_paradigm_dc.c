@@ -10,6 +10,8 @@
 **   - a star-shaped polygon of P vertices: dc-polygon beside incremental
 **     (lot's polygon insertion is slow on it: P smaller than N by default);
 **     a convex one: dc-polygon beside convex-divide (cpdt's 5.4.2).
+** dc-constrained runs with its cuts alternating (its default) and, as
+** "dc-constrained:1" (its parameter 1), in vertical strips.
 ** Each round runs every contender once, in turn; the figures are medians of
 ** RUNS rounds: wall and CPU seconds, the ratio to lot's, and counts per
 ** site.  Before timing, every contender's triangles are checked equal.
@@ -26,7 +28,9 @@
 #include "sampler.h"
 #include "splitmix.h"
 
-#define BDC_MAX 3   /* contenders per case */
+#define BDC_MAX 4   /* contenders per case */
+/* The constrained cases' contenders (the first three for Delaunay edges). */
+#define BDC_CONSTRAINED {"incremental", "dc-constrained", "dc-constrained:1", "sweep-constrained"}
 
 typedef struct bdc_case {
   const char *title;
@@ -35,11 +39,16 @@ typedef struct bdc_case {
   int nrows;
 } bdc_case;
 
-static paradigm_result bdc_run(const char *row, const paradigm_input *in, bench_time *t) {
+/* A contender: a row of the registry, "ROW:PARAM" for its parameter. */
+static paradigm_result bdc_run(const char *row, const paradigm_input *in0, bench_time *t) {
   paradigm_result res;
-  char err[512];
+  paradigm_input in = *in0;
+  char err[512], name[64];
+  const char *colon = strchr(row, ':');
+  snprintf(name, sizeof name, "%.*s", colon ? (int)(colon - row) : (int)strlen(row), row);
+  in.param = colon ? atof(colon + 1) : 0;
   double w = bench_wall(), c = bench_cpu();
-  if (paradigm_run(paradigm_find(row), in, &res, err, sizeof err) != 0) {
+  if (paradigm_run(paradigm_find(name), &in, &res, err, sizeof err) != 0) {
     fprintf(stderr, "bench_paradigm_dc: %s: %s\n", row, err);
     exit(1);
   }
@@ -105,7 +114,7 @@ static uint32_t *bdc_segments(const paradigm_input *in, size_t s) {
 ** sqrt(N) triangles and most strips), timed as the other cases. */
 static void bdc_long(const paradigm_input *in0, int runs) {
   char title[128];
-  bdc_case k = {title, *in0, {"incremental", "dc-constrained", "sweep-constrained"}, 3};
+  bdc_case k = {title, *in0, BDC_CONSTRAINED, 4};
   uint32_t far[2] = {0, (uint32_t)(in0->n - 1)};
   k.in.segments = far, k.in.nsegments = 1;
   snprintf(title, sizeof title, "%zu uniform sites, one segment from site 0 to site %zu",
@@ -146,7 +155,7 @@ static size_t bdc_delaunay_edges(const paradigm_input *in, const uint32_t *seg, 
 ** sweep, checked and timed. */
 static void bdc_random(const paradigm_input *base, size_t m, int runs) {
   char title[160];
-  bdc_case k = {title, *base, {"incremental", "dc-constrained", "sweep-constrained"}, 3};
+  bdc_case k = {title, *base, BDC_CONSTRAINED, 4};
   uint32_t *seg = malloc(2 * m * sizeof *seg);
   size_t ns;
   sampler_rng g;
@@ -194,7 +203,7 @@ int main(int argc, char **argv) {
   snprintf(title, sizeof title, "%zu uniform sites (seed %llu), %zu segments among their "
            "Delaunay edges", n, (unsigned long long)seed, s);
   bdc_case cdt = {title, {.p = p, .n = n, .r = &dt, .problem = PARADIGM_CONSTRAINED,
-                          .seed = seed, .threads = 1}, {"incremental", "dc-constrained"}, 2};
+                          .seed = seed, .threads = 1}, BDC_CONSTRAINED, 3};
   printf("# bench_paradigm_dc: median of %d rounds\n(load average at start: %.2f on %ld "
          "cores)\n", runs, bench_load(), sysconf(_SC_NPROCESSORS_ONLN));
   uint32_t *seg = bdc_segments(&cdt.in, s);

@@ -246,24 +246,9 @@ static dc_hull dc_merge(dc_run *R, dc_pool *p, ops_counts *c, uint32_t ldo, uint
   return (dc_hull){ldo, rdo};
 }
 
-/* u before v in the frame of the cut: (x, y) for a vertical cut, (y, -x)
-** for a horizontal one (the frame turned a quarter clockwise). */
-static inline int dc_before(geom_point u, geom_point v, int frame) {
-  if (frame == 0) return (u.x < v.x) | ((u.x == v.x) & (u.y < v.y));   /* no branches: */
-  return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));   /* the partitions' answers are coins */
-}
-
-/* From ccw hull edge e, the ccw hull edge out of the first (last) site of
-** the frame: the order is unimodal along a convex hull, so walk the way it
-** improves.  O(hull). */
+/* The ccw hull edge out of the first (last) site of the frame. */
 static uint32_t dc_extreme(const dc_run *R, uint32_t e, int frame, int last) {
-  const paradigm_half *h = R->h;
-  const geom_point *s = R->s;
-#define DC_BETTER(u, v) (last ? dc_before(s[v], s[u], frame) : dc_before(s[u], s[v], frame))
-  while (DC_BETTER(paradigm_he_dest(h, e), h[e].org)) e = paradigm_he_rprev(h, e);
-  for (uint32_t b = h[e].prev ^ 1; DC_BETTER(h[b].org, h[e].org); b = h[e].prev ^ 1) e = b;
-#undef DC_BETTER
-  return e;
+  return paradigm_he_extreme(R->h, R->s, e, frame, last);
 }
 
 /* Merge two halves split by the cut of frame 1 (horizontal): find their
@@ -302,8 +287,8 @@ static const struct { uint32_t from, sample; } dc_samples[] = {
 
 static void dc_sift(geom_point *a, uint32_t i, uint32_t n, int frame) {
   for (uint32_t k; (k = 2 * i + 1) < n; i = k) {
-    if (k + 1 < n && dc_before(a[k], a[k + 1], frame)) k++;
-    if (!dc_before(a[i], a[k], frame)) return;
+    if (k + 1 < n && paradigm_frame_before(a[k], a[k + 1], frame)) k++;
+    if (!paradigm_frame_before(a[i], a[k], frame)) return;
     geom_point t = a[i];
     a[i] = a[k], a[k] = t;
   }
@@ -337,7 +322,7 @@ static geom_point dc_select(geom_point *a, uint32_t n, uint32_t k, int frame) {
     geom_point piv = a[q], t;
     a[q] = a[j], a[j] = piv;
     while (i < j) {
-      if (dc_before(a[i], piv, frame)) i++;
+      if (paradigm_frame_before(a[i], piv, frame)) i++;
       else t = a[i], a[i] = a[--j], a[j] = t;
     }
     a[hi - 1] = a[i], a[i] = piv;
@@ -394,7 +379,7 @@ static inline uint32_t dc_partition_in(dc_run *R, uint32_t base, uint32_t lo, ui
   uint32_t *tid = dc_to_id(R, w) + base;
   for (uint32_t k = lo; k < hi; k++) {
     geom_point v = s[k];
-    uint32_t low = (uint32_t)dc_before(v, piv, frame), at = low ? a : b - 1;
+    uint32_t low = (uint32_t)paradigm_frame_before(v, piv, frame), at = low ? a : b - 1;
     t[at] = v, tid[at] = id ? id[k] : k;
     a += low, b -= 1 - low;
   }
@@ -406,7 +391,7 @@ static inline uint32_t dc_count_in(const dc_run *R, uint32_t lo, uint32_t hi, ge
                                    int frame, int w) {
   const geom_point *s = R->sb[w];
   uint32_t a = 0;
-  for (uint32_t k = lo; k < hi; k++) a += (uint32_t)dc_before(s[k], piv, frame);
+  for (uint32_t k = lo; k < hi; k++) a += (uint32_t)paradigm_frame_before(s[k], piv, frame);
   return a;
 }
 
@@ -469,7 +454,8 @@ static void dc_sort_small(dc_run *R, uint32_t lo, uint32_t hi, int w) {
   for (uint32_t k = lo + 1; k < hi; k++) {
     geom_point v = s[k];
     uint32_t i = id[k], j = k;
-    for (; j > lo && dc_before(v, s[j - 1], 0); j--) s[j] = s[j - 1], id[j] = id[j - 1];
+    for (; j > lo && paradigm_frame_before(v, s[j - 1], 0); j--)
+      s[j] = s[j - 1], id[j] = id[j - 1];
     s[j] = v, id[j] = i;
   }
 }

@@ -60,6 +60,7 @@
 #include <string.h>
 #include "geom_mem_internal.h"
 #include "paradigm_internal.h"
+#include "splitmix.h"
 
 #define DCC_NONE UINT32_MAX
 #define DCC_FREE INT32_MIN    /* con[]: no segment on this edge */
@@ -78,6 +79,7 @@ typedef struct dcc_run {
   uint32_t *queue;        /* Sloan's crossed edges, in the order they wait */
   size_t qcap;
   const paradigm_input *in;
+  int alternating;        /* cuts alternate vertical and horizontal (Dwyer) */
   ops_counts *c;
   char *err;
   size_t errlen;
@@ -409,16 +411,33 @@ static int dcc_segments_at(dcc_run *R, uint32_t k) {
   return 0;
 }
 
-/* Sites [lo, hi): T(n) = 2 T(n/2) + merge.  0, or -1 with the message. */
-static int dcc_solve(dcc_run *R, uint32_t lo, uint32_t hi, dcc_hull *out) {
+/* Merge two pieces split by the cut of frame 1 (horizontal): their ends
+** in that frame found, merged, and the union's given back in frame 0. */
+static int dcc_merge_across(dcc_run *R, dcc_hull a, dcc_hull b, int frame, dcc_hull *m) {
+  if (frame == 0) return dcc_merge(R, a, b, m);
+  const paradigm_half *h = R->h;
+  dcc_hull a1 = {paradigm_he_extreme(h, R->s, a.l, 1, 0),
+                 h[paradigm_he_extreme(h, R->s, a.l, 1, 1)].prev};
+  dcc_hull b1 = {paradigm_he_extreme(h, R->s, b.l, 1, 0),
+                 h[paradigm_he_extreme(h, R->s, b.l, 1, 1)].prev};
+  if (dcc_merge(R, a1, b1, m) != 0) return -1;
+  *m = (dcc_hull){paradigm_he_extreme(R->h, R->s, m->l, 0, 0),
+                  R->h[paradigm_he_extreme(R->h, R->s, m->l, 0, 1)].prev};
+  return 0;
+}
+
+/* Sites [lo, hi) at depth `depth`: T(n) = 2 T(n/2) + merge.  0, or -1
+** with the message. */
+static int dcc_solve(dcc_run *R, uint32_t lo, uint32_t hi, int depth, dcc_hull *out) {
   if (hi - lo <= 3) {
     *out = dcc_base(R, lo, hi - lo);
     return dcc_segments_at(R, 2 * lo + 1);
   }
   uint32_t mid = lo + (hi - lo) / 2;
   dcc_hull a, b;
-  if (dcc_solve(R, lo, mid, &a) != 0 || dcc_solve(R, mid, hi, &b) != 0) return -1;
-  if (dcc_merge(R, a, b, out) != 0) {
+  if (dcc_solve(R, lo, mid, depth + 1, &a) != 0 || dcc_solve(R, mid, hi, depth + 1, &b) != 0)
+    return -1;
+  if (dcc_merge_across(R, a, b, R->alternating ? depth & 1 : 0, out) != 0) {
     snprintf(R->err, R->errlen, "out of memory for the merge of %u sites", hi - lo);
     return -1;
   }
@@ -432,9 +451,54 @@ typedef struct dcc_site {
   uint32_t id;
 } dcc_site;
 
-static int dcc_cmp(const void *x, const void *y) {
+static int dcc_cmp0(const void *x, const void *y) {
   const dcc_site *a = x, *b = y;
-  return geom_lexless(a->p, b->p) ? -1 : geom_lexless(b->p, a->p);
+  return paradigm_frame_before(a->p, b->p, 0) ? -1 : paradigm_frame_before(b->p, a->p, 0);
+}
+
+static int dcc_cmp1(const void *x, const void *y) {
+  const dcc_site *a = x, *b = y;
+  return paradigm_frame_before(a->p, b->p, 1) ? -1 : paradigm_frame_before(b->p, a->p, 1);
+}
+
+/* a[0 .. n) reordered so that a[k] is the element of rank k in the
+** frame's order, the smaller before it and the larger after: Hoare's
+** selection with pseudo-random pivots, O(n) expected; past its budget of
+** rounds, a sort (no input makes it quadratic).  The points are distinct. */
+static void dcc_select(dcc_site *a, uint32_t n, uint32_t k, int frame) {
+  uint64_t g = n;
+  uint32_t lo = 0, hi = n;
+  for (int budget = 64; hi - lo > 1; budget--) {
+    if (budget == 0) {
+      qsort(a + lo, hi - lo, sizeof *a, frame ? dcc_cmp1 : dcc_cmp0);
+      return;
+    }
+    uint32_t q = lo + (uint32_t)(geom_splitmix64(&g) % (hi - lo)), i = lo, j = hi - 1;
+    dcc_site piv = a[q], t;
+    a[q] = a[j], a[j] = piv;
+    while (i < j) {
+      if (paradigm_frame_before(a[i].p, piv.p, frame)) i++;
+      else t = a[i], a[i] = a[--j], a[j] = t;
+    }
+    a[hi - 1] = a[i], a[i] = piv;
+    if (k == i) return;
+    if (k < i) hi = i;
+    else lo = i + 1;
+  }
+}
+
+/* The cuts of dcc_solve, made beforehand: piece [lo, hi) at depth `depth`
+** split at its middle rank in the frame of its cut, the pieces of three
+** sites or fewer sorted in frame 0.  O(n log n) expected. */
+static void dcc_cut(dcc_site *t, uint32_t lo, uint32_t hi, int depth, int alternating) {
+  if (hi - lo <= 3) {
+    qsort(t + lo, hi - lo, sizeof *t, dcc_cmp0);
+    return;
+  }
+  uint32_t mid = lo + (hi - lo) / 2;
+  dcc_select(t + lo, hi - lo, mid - lo, alternating ? depth & 1 : 0);
+  dcc_cut(t, lo, mid, depth + 1, alternating);
+  dcc_cut(t, mid, hi, depth + 1, alternating);
 }
 
 /* The sites sorted (ranks), the segments bucketed by key (a counting
@@ -448,7 +512,7 @@ static int dcc_prepare(dcc_run *R) {
     return -1;
   }
   for (uint32_t k = 0; k < n; k++) t[k] = (dcc_site){in->p[k], k};
-  qsort(t, n, sizeof *t, dcc_cmp);   /* distinct points: a strict order */
+  dcc_cut(t, 0, n, 0, R->alternating);
   for (uint32_t k = 0; k < n; k++) R->s[k] = t[k].p, R->id[k] = t[k].id, R->pos[t[k].id] = k;
   free(t);
   uint32_t *key = R->list + in->nsegments;
@@ -527,13 +591,19 @@ int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char
     snprintf(err, errlen, "dc-constrained: %zu points, at most %u", in->n, UINT32_MAX / 8);
     return -1;
   }
-  dcc_run R = {.in = in, .c = &out->ops, .err = err, .errlen = errlen};
+  if (in->param != 0 && in->param != 1) {
+    snprintf(err, errlen, "dc-constrained: parameter %g: 0 (cuts alternating between "
+             "vertical and horizontal) or 1 (vertical strips)", in->param);
+    return -1;
+  }
+  dcc_run R = {.in = in, .c = &out->ops, .err = err, .errlen = errlen,
+               .alternating = in->param == 0};
   err[0] = '\0';
   int rc = dcc_alloc(&R);
   if (rc != 0) snprintf(err, errlen, "out of memory for the mesh of %zu points", in->n);
   if (rc == 0) rc = dcc_prepare(&R);
   dcc_hull top = {0, 0};
-  if (rc == 0 && in->n >= 2) rc = dcc_solve(&R, 0, (uint32_t)in->n, &top);
+  if (rc == 0 && in->n >= 2) rc = dcc_solve(&R, 0, (uint32_t)in->n, 0, &top);
   if (rc == 0 && in->n >= 2) rc = dcc_triangles(&R, top, out);
   if (rc == -1 && err[0] == '\0') snprintf(err, errlen, "out of memory for the triangles");
   if (rc == -2) snprintf(err, errlen, "dc-constrained: the mesh of %zu points is not a "

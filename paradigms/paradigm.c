@@ -57,9 +57,10 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"dc-constrained", "divide", "2.6.2", PARADIGM_CONSTRAINED, PARADIGM_RULE_DT,
    "DT only; point sets: dc-vertical, dc-alternating; polygons: dc-polygon",
-   "O(n log n) sort and bridges, plus the merges' flips (O(n^2) worst): vertical strips "
-   "merged by flips, each segment inserted by Sloan's flips at the merge of its ends; "
-   "Chew's virtual sites (a linear zipper per region) are not built", NULL,
+   "O(n log n) cuts and bridges, plus the merges' flips (O(n^2) worst): pieces merged "
+   "by flips, each segment inserted by Sloan's flips at the merge of its ends; Chew's "
+   "virtual sites (a linear zipper per region) are not built",
+   "1: vertical strips, as Chew's (0: cuts alternating, Dwyer's)",
    paradigm_dc_constrained},
   {"dc-polygon", "divide", "2.6.3", PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT,
    "DT only: a rule's flips need not end at its LOT (2.6.6); point sets and constraints: "

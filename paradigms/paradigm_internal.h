@@ -209,6 +209,27 @@ static inline void paradigm_he_splice(paradigm_half *h, uint32_t a, uint32_t b) 
   h[beta].prev = a, h[alpha].prev = b;
 }
 
+/* u before v in the frame of a cut: (x, y) for a vertical cut, (y, -x)
+** for a horizontal one (the frame turned a quarter clockwise). */
+static inline int paradigm_frame_before(geom_point u, geom_point v, int frame) {
+  if (frame == 0) return (u.x < v.x) | ((u.x == v.x) & (u.y < v.y));   /* no branches: */
+  return (u.y < v.y) | ((u.y == v.y) & (u.x > v.x));   /* the partitions' answers are coins */
+}
+
+/* From ccw hull edge e of a mesh of sites s, the ccw hull edge out of the
+** first (last) site of the frame: the order is unimodal along a convex
+** hull, so walk the way it improves.  O(hull). */
+static inline uint32_t paradigm_he_extreme(const paradigm_half *h, const geom_point *s,
+                                           uint32_t e, int frame, int last) {
+#define PARADIGM_BETTER(u, v) \
+  (last ? paradigm_frame_before(s[v], s[u], frame) : paradigm_frame_before(s[u], s[v], frame))
+  while (PARADIGM_BETTER(paradigm_he_dest(h, e), h[e].org)) e = paradigm_he_rprev(h, e);
+  for (uint32_t b = h[e].prev ^ 1; PARADIGM_BETTER(h[b].org, h[e].org); b = h[e].prev ^ 1)
+    e = b;
+#undef PARADIGM_BETTER
+  return e;
+}
+
 /* The triangle meshes of the rows that flip edges (sweep_finish.c, divide_polygon.c):
 ** nb[3 t + k] is the triangle across the side of t opposite its corner k, -1 outside.
 ** The corner of triangle u whose side borders triangle t, or -1 when none does. */

@@ -46,11 +46,16 @@ static size_t tdc_points(int f, testutil_rng *g, geom_point *p) {
   return k;
 }
 
+/* The cuts of dc-constrained for the next run (its parameter): alternating
+** (0) or vertical strips (1); every comparison runs both. */
+static double tdc_param;
+
 static int tdc_run(const char *row, const geom_point *p, size_t n, const uint32_t *seg,
                    size_t ns, paradigm_result *res, char *err, size_t errlen) {
   rule dt = rule_delaunay();
   paradigm_input in = {.p = p, .n = n, .r = &dt, .problem = PARADIGM_CONSTRAINED,
-                       .segments = seg, .nsegments = ns, .seed = 3, .threads = 1};
+                       .segments = seg, .nsegments = ns, .seed = 3, .threads = 1,
+                       .param = strcmp(row, "dc-constrained") == 0 ? tdc_param : 0};
   return paradigm_run(paradigm_find(row), &in, res, err, errlen);
 }
 
@@ -92,7 +97,7 @@ static int tdc_chain(const paradigm_result *dt, const geom_point *p, size_t n,
 }
 
 /* One set with its segments: dc-constrained against lot (the incremental
-** row).  When lot refuses (crossing segments, or a segment whose ends are
+** row), with either kind of cut.  When lot refuses (crossing segments, or a segment whose ends are
 ** duplicates), dc-constrained must refuse too, on one line naming a
 ** crossing when lot's does; else it must give lot's triangles
 ** exactly.  Returns 1 when it served a set with a segment that is no chain
@@ -103,23 +108,27 @@ static int tdc_compare(const geom_point *p, size_t n, const uint32_t *seg, size_
   assert_true(n <= TDC_MAXN);
   char err[512], err2[512];
   paradigm_result ref, res;
-  int lot_rc = tdc_run("incremental", p, n, seg, ns, &ref, err, sizeof err);
-  int rc = tdc_run("dc-constrained", p, n, seg, ns, &res, err2, sizeof err2);
-  if (lot_rc != 0) {
-    if (rc == 0 || (strstr(err, "cross") == NULL) != (strstr(err2, "cross") == NULL)
-        || strchr(err2, '\n') != NULL)
-      fail_msg("n %zu, %zu segments: lot refused (%s), dc-constrained %s", n, ns, err,
-               rc ? err2 : "served");
-    return 0;
+  int lot_rc = tdc_run("incremental", p, n, seg, ns, &ref, err, sizeof err), edges = 1;
+  for (tdc_param = 0; tdc_param <= 1; tdc_param++) {
+    int rc = tdc_run("dc-constrained", p, n, seg, ns, &res, err2, sizeof err2);
+    if (lot_rc != 0) {
+      if (rc == 0 || (strstr(err, "cross") == NULL) != (strstr(err2, "cross") == NULL)
+          || strchr(err2, '\n') != NULL)
+        fail_msg("n %zu, %zu segments: lot refused (%s), dc-constrained %s", n, ns, err,
+                 rc ? err2 : "served");
+      continue;
+    }
+    if (rc != 0) fail_msg("n %zu, %zu segments, cuts %g: refused: %s", n, ns, tdc_param, err2);
+    if (res.ntri != ref.ntri || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) != 0)
+      fail_msg("n %zu, %zu segments, cuts %g: differs from lot's constrained triangulation", n,
+               ns, tdc_param);
+    size_t m = res.distinct, h = 2 * m - 2 - res.ntri;
+    assert_int_equal(res.ops.v[OPS_EDGES_MADE] - res.ops.v[OPS_EDGES_DELETED], 3 * m - 3 - h);
+    paradigm_result_free(&res);
   }
-  if (rc != 0) fail_msg("n %zu, %zu segments: refused: %s", n, ns, err2);
-  int edges = 1;
+  if (lot_rc != 0) return 0;
   for (size_t s = 0; s < ns; s++) edges &= tdc_chain(dt, p, n, first, seg[2 * s], seg[2 * s + 1]);
-  if (res.ntri != ref.ntri || memcmp(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri) != 0)
-    fail_msg("n %zu, %zu segments: differs from lot's constrained triangulation", n, ns);
-  size_t m = res.distinct, h = 2 * m - 2 - res.ntri;
-  assert_int_equal(res.ops.v[OPS_EDGES_MADE] - res.ops.v[OPS_EDGES_DELETED], 3 * m - 3 - h);
-  paradigm_result_free(&res), paradigm_result_free(&ref);
+  paradigm_result_free(&ref);
   return edges ? 2 : 1;
 }
 
@@ -260,6 +269,10 @@ static void test_refusals(void **state) {
   const uint32_t self[] = {1, 1}, diag[] = {0, 2}, side[] = {0, 1};
   char err[512];
   paradigm_result res;
+  tdc_param = 2;
+  assert_int_equal(tdc_run("dc-constrained", sq, 5, side, 1, &res, err, sizeof err), -1);
+  assert_non_null(strstr(err, "dc-constrained: parameter 2: 0 (cuts alternating"));
+  tdc_param = 0;
   assert_int_equal(tdc_run("dc-constrained", sq, 5, self, 1, &res, err, sizeof err), -1);
   assert_non_null(strstr(err, "segment 0 joins a point to itself"));
   paradigm_result ref;
