@@ -6,10 +6,14 @@
 ** either refuse in one line or give a result that lot_check_constrained
 ** accepts from scratch (valid with holes, every unconstrained edge locally
 ** optimal, exactly the removed segments missing); for DT, the flip
-** algorithm must give the same CDT as the incremental one.
+** algorithm must give the same CDT as the incremental one, and without
+** holes so must chapter 2's rows that build it otherwise (divide and
+** conquer with both kinds of cut, the constrained sweep), or all refuse
+** (but the sweep refuses segments that cross at a site, docs/paradigms.md).
 */
 #include "fuzz_support.h"
 #include "lot.h"
+#include "paradigm.h"
 #include "rule.h"
 
 static const char *const fuzz_cdt_rules[] = {"DT", "P_1", "ES:square"};
@@ -30,6 +34,32 @@ static int fuzz_cdt_build(const geom_point *p, size_t n, const lot_options *o, u
   lot_get_triangles(L, *tri);
   lot_free(L);
   return 1;
+}
+
+/* The rows "incremental", "dc-constrained" (parameters 0 and 1) and
+** "sweep-constrained" on the points and segments: all refuse (on one
+** line) or all give the same triangles. */
+static void fuzz_cdt_rows(const geom_point *p, size_t n, const uint32_t *seg, size_t nseg,
+                          const rule *r) {
+  static const char *const row[] = {"incremental", "dc-constrained", "dc-constrained",
+                                    "sweep-constrained"};
+  paradigm_result res[4];
+  int rc[4];
+  for (int k = 0; k < 4; k++) {
+    paradigm_input in = {.p = p, .n = n, .r = r, .problem = PARADIGM_CONSTRAINED,
+                         .segments = seg, .nsegments = nseg, .threads = 1, .param = k == 2};
+    char err[512];
+    rc[k] = paradigm_run(paradigm_find(row[k]), &in, &res[k], err, sizeof err);
+    if (rc[k] != 0 && (err[0] == 0 || strchr(err, '\n') != NULL)) abort();
+    /* the sweep refuses segments crossing at a site, which lot splits there */
+    if (k == 3 && rc[k] != 0 && rc[0] == 0 && strstr(err, " cross") != NULL) continue;
+    if ((rc[k] != 0) != (rc[0] != 0)) abort();
+    if (rc[k] == 0 && (res[k].ntri != res[0].ntri
+                       || memcmp(res[k].tri, res[0].tri, 3 * res[0].ntri * sizeof *res[0].tri)))
+      abort();
+  }
+  for (int k = 0; k < 4; k++)
+    if (rc[k] == 0) paradigm_result_free(&res[k]);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
@@ -64,6 +94,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   uint32_t *tri = NULL, *tri2 = NULL;
   size_t ntri, ntri2;
   lot_stats st, st2;
+  if (rule_is_delaunay(r) && nholes == 0) fuzz_cdt_rows(p, n, seg, nseg, r);
   if (!fuzz_cdt_build(p, n, &o, &tri, &ntri, &st)) return 0;
   lot_check_result c;
   if (lot_check_constrained(p, n, tri, ntri, seg, nseg, r, &c) != 0) abort();

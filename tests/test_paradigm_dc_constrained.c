@@ -1,21 +1,20 @@
 /*
-** test_paradigm_dc_constrained.c: the row dc-constrained (2.6.2 as far as
-** it is built: the vertical strips with no virtual site).  On uniform
-** sets, grid sets with duplicates and ties, and integer points on two
-** concentric circles (cocircular ties): with segments drawn among the
-** Delaunay edges (many sharing endpoints) it gives exactly lot's
-** constrained triangulation; with random segments (long ones through
-** other sites, vertical ones, ones between sites of equal x, crossing
-** ones) and with sampler_segments' non-crossing ones it serves the set
-** exactly when every segment, split at the sites on it, is a chain of
-** edges of lot's Delaunay triangulation (found here by brute force), then
-** with lot's constrained triangulation, and otherwise refuses on one line
-** naming the segment and what is missing.  So too with many parallel long
-** segments, vertical ones (on a cut line), and a convex polygon's sides and
-** chords (cocircular).  A rotated grid with segments
-** along its lines (sampler_pslg_grid: unit squares cocircular, every
-** piece a side) is always served.  Euler's count holds on every run; the
-** other refusals are one line.
+** test_paradigm_dc_constrained.c: the row dc-constrained (2.6.2: pieces
+** cut alternately or in vertical strips, merged by flips, segments
+** inserted at the merge of their ends).  With both kinds of cut, on
+** uniform sets, grid sets with duplicates and ties, and integer points on
+** two concentric circles (cocircular ties), with segments drawn among the
+** Delaunay edges or at random (long ones through other sites, vertical
+** ones, ones between sites of equal x, crossing ones) and with
+** sampler_segments' non-crossing ones, it gives exactly lot's constrained
+** triangulation whenever lot gives one, and refuses on one line whenever
+** lot refuses (naming a crossing pair when lot's refusal is a crossing).
+** So too with many parallel long segments, vertical ones (on a cut line),
+** a convex polygon's sides and chords (cocircular) and a rotated grid with
+** segments along its lines.  Most random runs need insertions (a segment
+** that is no chain of Delaunay edges, found here by brute force): the
+** counts are asserted, so the tests cannot pass on easy sets only.
+** Euler's count holds on every run; the parameter is checked.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -280,16 +279,20 @@ static void test_refusals(void **state) {
   assert_int_equal(tdc_run("dc-constrained", sq, 4, cross, 3, &res, err, sizeof err), -1);
   assert_non_null(strstr(err, "segments 1 and 2 cross"));
   assert_null(strchr(err, '\n'));
-  /* A diagonal, and a segment through site 1 (pinched: no Delaunay edge),
-  ** as lot has them. */
+  /* A diagonal, a segment through site 1 (pinched: no Delaunay edge), as
+  ** lot has them. */
   const geom_point line[] = {{0, 0}, {1, 0}, {2, 0}, {1, 1}, {1, -1}};
   const geom_point pinch[] = {{0, 0}, {1, 0}, {2, 0}, {0.5, 0.1}, {0.5, -0.1}};
   const uint32_t through[] = {0, 2};
-  const geom_point *set[] = {sq, line, pinch};
-  const uint32_t *segs[] = {diag, through, through};
-  for (int k = 0; k < 3; k++) {
-    assert_int_equal(tdc_run("dc-constrained", set[k], 5, segs[k], 1, &res, err, sizeof err), 0);
-    assert_int_equal(tdc_run("incremental", set[k], 5, segs[k], 1, &ref, err, sizeof err), 0);
+  /* Two segments crossing at a site inside both: lot splits both there. */
+  const geom_point xsite[] = {{0, 0}, {2, 2}, {0, 2}, {2, 0}, {1, 1}};
+  const uint32_t xseg[] = {0, 1, 2, 3};
+  const geom_point *set[] = {sq, line, pinch, xsite};
+  const uint32_t *segs[] = {diag, through, through, xseg};
+  for (int k = 0; k < 4; k++) {
+    size_t ns = k == 3 ? 2 : 1;
+    assert_int_equal(tdc_run("dc-constrained", set[k], 5, segs[k], ns, &res, err, sizeof err), 0);
+    assert_int_equal(tdc_run("incremental", set[k], 5, segs[k], ns, &ref, err, sizeof err), 0);
     assert_int_equal(res.ntri, ref.ntri);
     assert_memory_equal(res.tri, ref.tri, 3 * ref.ntri * sizeof *ref.tri);
     paradigm_result_free(&res), paradigm_result_free(&ref);
