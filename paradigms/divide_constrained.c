@@ -1,23 +1,26 @@
 /*
 ** divide_constrained.c: the row dc-constrained, divide and conquer for the
-** constrained Delaunay triangulation by vertical strips (section 2.6.2),
-** each pair of strips merged by flips.
+** constrained Delaunay triangulation (section 2.6.2), each pair of pieces
+** merged by flips.
 **
-** The sites are sorted lexicographically and halved by rank: a piece of
-** ranks [lo, hi) is a vertical strip (the cut between ranks k - 1 and k is a
-** vertical line turned by an infinitesimal angle, so sites of equal x need
-** no case of their own).  A strip's triangulation is the constrained
-** Delaunay triangulation of its sites with the segments that have both ends
-** in it (a segment's sites on it have ranks between its ends', so they are
-** in the strip too).  Two strips, L left of R, are merged in three steps:
+** The sites are cut at the middle rank, recursively: by vertical cuts
+** (parameter 1: Chew's strips) or by cuts alternating between vertical and
+** horizontal (0, the default: Dwyer's, whose pieces stay square).  A cut
+** between ranks k - 1 and k of its frame's order is a line turned by an
+** infinitesimal angle, so equal coordinates need no case of their own.  A
+** piece's triangulation is the constrained Delaunay triangulation of its
+** sites with the segments that have both ends in it (a site on a segment
+** ranks between its ends in any frame, so it is in the piece too).  Two
+** pieces, L before R in the frame of their cut, are merged in three steps:
 **
 **   1. The bridge.  From the lower common tangent (Guibas and Stolfi's walk)
 **      the region between the two hulls is triangulated upwards, each step
 **      taking the next hull site of L or of R: the one whose circle with the
 **      present cross edge holds the other (Guibas and Stolfi's choice) when
-**      that triangle leaves the other hull's next edge above the new cross
-**      edge, else the other one.  No edge of L or R is deleted, so this is a
-**      triangulation of the union's hull holding both strips' segments.
+**      that triangle leaves the other hull's next site strictly above the
+**      new cross edge, else the other one.  No edge of L or R is deleted, so
+**      this is a triangulation of the union's hull holding both pieces'
+**      segments.
 **   2. Lawson's flips from the bridge's edges and the hull edges it covered,
 **      with lot's in-circle test (paradigm_inshape: its tie-break a
 **      symbolic perturbation of the lifts) over every edge that is no
@@ -42,18 +45,20 @@
 ** the strip's borders, infinitely far for the in-circle tests), so that a
 ** strip's triangulation is already constrained by every segment and a
 ** merge only zips each pair of facing regions (Guibas and Stolfi's zipper,
-** linear).  Here a strip sees only its own segments, and a merge repairs by
-** flips what the segments joining the two strips change: a merge by flips,
-** as dc-polygon's is; the virtual sites are not built (docs/paradigms.md
-** says what they need).
+** linear).  Here a piece sees only its own segments, and a merge repairs by
+** flips what the segments joining the two pieces change, as dc-polygon's
+** merge does; the virtual sites are not built (docs/paradigms.md says what
+** they need, and why a zipper that only spares segments is not enough).
 **
-** Cost.  The sort, O(n log n); log n levels of merges.  A merge's bridge is
-** linear in the two hulls; its flips are the edges the union does not keep
-** (an edge that is locally Delaunay in the union is never flipped), O(m^2)
-** for a merge of m sites at worst, measured in bench_paradigm_dc; each
-** segment is inserted once, at the merge of the strips of its two ends, in
-** O(k) flips for k crossed edges when they come convex (Sloan's queue can
-** take O(k^2)).  Memory: 24 bytes a half-edge, 6n of them, and 32 a site.
+** Cost.  The cuts, O(n log n) expected (a selection a level); log n levels
+** of merges.  A merge's bridge is linear in the two hulls; its flips remove
+** the edges the union does not keep (an edge that is locally Delaunay in
+** the union is never flipped) and the bridge's own, O(m^2) for a merge of
+** m sites at worst (sites on a few lines come close: docs/paradigms.md);
+** each segment is inserted once, at the merge of the pieces of its two
+** ends, in O(k) flips for k crossed edges when they come convex (Sloan's
+** queue can take O(k^2)).  Memory: 12 bytes a half-edge, 6n of them, 36 a
+** site for the sites, ranks and marks, and the segments' buckets.
 */
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,7 +71,7 @@
 #define DCC_FREE INT32_MIN    /* con[]: no segment on this edge */
 
 typedef struct dcc_run {
-  geom_point *s;          /* the sites, lexicographically sorted */
+  geom_point *s;          /* the sites, in the order of the cuts */
   uint32_t *id;           /* s[k] = in->p[id[k]] */
   uint32_t *pos;          /* pos[id[k]] = k */
   paradigm_half *h;       /* 2 per edge; at most 3n edges */
