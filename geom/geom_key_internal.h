@@ -6,7 +6,10 @@
 ** checks, constrained and CDF triangulations, got's faces and Delaunay
 ** comparison, the paradigms' constraint look-ups; and the one sort of records
 ** by a small leading key (a triangulation's triangles by their smallest
-** vertex: the paradigms' canonical order, a point set's GOT).  Not installed.
+** vertex: the paradigms' canonical order, a point set's GOT); and the one way to
+** list items by a small key, each key's items together (a grid's points cell by
+** cell: got's skeleton, the paradigms' selection and ear cutting; a triangulation's
+** edges point by point: got's Delaunay certificate).  Not installed.
 */
 #ifndef FLIPLAB_GEOM_KEY_INTERNAL_H
 #define FLIPLAB_GEOM_KEY_INTERNAL_H
@@ -64,6 +67,32 @@ static inline int geom_bucket_sort(void *base, size_t n, size_t size, uint32_t t
   memcpy(b, tmp, n * size);
   free(tmp), free(at);
   return 0;
+}
+
+/* The key that lists an item nowhere (geom_csr_build). */
+#define GEOM_CSR_NONE SIZE_MAX
+
+/* Lists by key, as compressed sparse rows: item i < n whose key(ctx, i) is k < nkeys goes
+** to list k, an item whose key is GEOM_CSR_NONE to none; list k is idx[at[k] .. at[k + 1]),
+** its items ascending (stable), so at holds nkeys + 1 offsets and idx the listed items,
+** fewer than 2^32.  A counting sort: O(n + nkeys), two calls of key an item (the same key
+** both times).  The counts become the lists' ends and the items go in from the last one
+** down, each to the slot before its list's end, so the ends finish as the starts without a
+** second array or a shift.  Inline, as geom_bucket_sort, so that each caller's key is
+** compiled into its own copy. */
+static inline void geom_csr_build(uint32_t *at, size_t nkeys, uint32_t *idx, size_t n,
+                                  size_t (*key)(const void *ctx, size_t i), const void *ctx) {
+  memset(at, 0, (nkeys + 1) * sizeof *at);
+  for (size_t i = 0; i < n; i++) {
+    size_t k = key(ctx, i);
+    if (k != GEOM_CSR_NONE) at[k]++;
+  }
+  for (size_t k = 1; k < nkeys; k++) at[k] += at[k - 1];   /* at[k]: the end of list k */
+  at[nkeys] = nkeys > 0 ? at[nkeys - 1] : 0;
+  for (size_t i = n; i-- > 0;) {
+    size_t k = key(ctx, i);
+    if (k != GEOM_CSR_NONE) idx[--at[k]] = (uint32_t)i;
+  }
 }
 
 #endif

@@ -206,6 +206,14 @@ int got_points_solve(const geom_point *p, size_t n, const rule *r, const got_opt
 int got_points_solve_dt(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                         got_skeleton skeleton, const uint32_t *dt, size_t ndt, got_result *out,
                         char *err, size_t errlen);
+/* got_points_solve_dt for points and a rule that have passed got_points_check already, as
+** study_got_points checks them before it triangulates (so that got's one-line errors come
+** before lot's): the same answer and the same refusals of the options, without running that
+** check (its O(n log n) sort) a second time.  Input that has not passed it is the caller's
+** error, not refused here. */
+int got_points_solve_checked(const geom_point *p, size_t n, const rule *r,
+                             const got_options *opt, got_skeleton skeleton, const uint32_t *dt,
+                             size_t ndt, got_result *out, char *err, size_t errlen);
 /* The skeleton's name ("auto", "all", "lmt", "delaunay"), and back (-1 for none). */
 const char *got_skeleton_name(got_skeleton s);
 int got_skeleton_find(const char *name);

@@ -845,6 +845,13 @@ int got_points_solve_dt(const geom_point *p, size_t n, const rule *r, const got_
                         char *err, size_t errlen) {
   memset(out, 0, sizeof *out);
   if (got_points_check(p, n, r, err, errlen) != 0) return -1;
+  return got_points_solve_checked(p, n, r, opt, skeleton, dt, ndt, out, err, errlen);
+}
+
+int got_points_solve_checked(const geom_point *p, size_t n, const rule *r,
+                             const got_options *opt, got_skeleton skeleton, const uint32_t *dt,
+                             size_t ndt, got_result *out, char *err, size_t errlen) {
+  memset(out, 0, sizeof *out);
   if (opt != NULL && geom_threads_check(opt->threads, err, errlen) != 0) return -1;
   if ((unsigned)skeleton >= GOT_NSKELETONS)
     return got_points_err(err, errlen, "skeleton: expected auto, all, lmt or delaunay");

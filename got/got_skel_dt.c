@@ -51,7 +51,7 @@ typedef struct dtc {
   const geom_point *p;
   size_t n, nt;
   const uint32_t *tri;
-  size_t *off;          /* n + 1: point v's outgoing edges are out[off[v] .. off[v + 1]) */
+  uint32_t *off;        /* n + 1: point v's outgoing edges are out[off[v] .. off[v + 1]) */
   uint64_t *out;        /* head << 32 | h, ascending */
   uint32_t *twin;       /* per directed edge: its reverse, or DT_NONE (the boundary) */
   uint32_t *cell;       /* per triangle: its cell (cocircular neighbours joined) */
@@ -103,17 +103,21 @@ static void dtc_sort(uint64_t *v, size_t k) {
   }
 }
 
+/* geom_csr_build's keys: a directed edge's tail, a triangle's cell. */
+static size_t dtc_tail_key(const void *ctx, size_t h) { return dtc_tail(ctx, h); }
+static size_t dtc_cell_key(const void *ctx, size_t t) { return ((const dtc *)ctx)->cell[t]; }
+
 /* Outgoing edges of each point, sorted by head; an edge used twice in one direction means
 ** overlapping triangles; a point on no triangle is missing.  O(t) and the sorts. */
 static int dtc_outgoing(dtc *d, char *err, size_t errlen) {
   size_t m = 3 * d->nt;
-  d->off = calloc(d->n + 2, sizeof *d->off);
+  uint32_t *by = malloc((m + 1) * sizeof *by);   /* the directed edges by tail */
+  d->off = malloc((d->n + 1) * sizeof *d->off);
   d->out = malloc((m + 1) * sizeof *d->out);
-  if (!d->off || !d->out) return dtc_err(err, errlen, "out of memory");
-  for (size_t h = 0; h < m; h++) d->off[dtc_tail(d, h) + 2]++;
-  for (size_t v = 0; v < d->n; v++) d->off[v + 2] += d->off[v + 1];
-  for (size_t h = 0; h < m; h++)
-    d->out[d->off[dtc_tail(d, h) + 1]++] = (uint64_t)dtc_head(d, h) << 32 | h;
+  if (!by || !d->off || !d->out) return free(by), dtc_err(err, errlen, "out of memory");
+  geom_csr_build(d->off, d->n, by, m, dtc_tail_key, d);
+  for (size_t k = 0; k < m; k++) d->out[k] = (uint64_t)dtc_head(d, by[k]) << 32 | by[k];
+  free(by);
   for (size_t v = 0; v < d->n; v++) {
     size_t a = d->off[v], b = d->off[v + 1];
     if (a == b) {
@@ -293,13 +297,11 @@ static int dtc_output(const dtc *d, size_t ncell, got_skel *s) {
                  inside ? GOT_EDGE_POSSIBLE : GOT_EDGE_CERTAIN) != 0)
       return -1;
   }
-  size_t *coff = calloc(ncell + 2, sizeof *coff);
+  uint32_t *coff = malloc((ncell + 1) * sizeof *coff);   /* the triangles by cell */
   uint32_t *tl = malloc((d->nt + 1) * sizeof *tl), *vs = malloc((d->nt + 3) * sizeof *vs);
   uint32_t *stamp = calloc(d->n + 1, sizeof *stamp);
   int rc = coff && tl && vs && stamp ? 0 : -1;
-  for (size_t t = 0; rc == 0 && t < d->nt; t++) coff[d->cell[t] + 2]++;
-  for (size_t c = 0; rc == 0 && c < ncell; c++) coff[c + 2] += coff[c + 1];
-  for (size_t t = 0; rc == 0 && t < d->nt; t++) tl[coff[d->cell[t] + 1]++] = (uint32_t)t;
+  if (rc == 0) geom_csr_build(coff, ncell, tl, d->nt, dtc_cell_key, d);
   for (size_t c = 0; rc == 0 && c < ncell; c++)
     if (coff[c + 1] - coff[c] > 1)
       rc = dtc_cell_diagonals(d, tl + coff[c], coff[c + 1] - coff[c], vs, stamp, s, &cap);

@@ -5,8 +5,17 @@
 */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 #include "got_skel_internal.h"
+#include "geom_key_internal.h"
+
+/* The cell of point i (row-major), geom_csr_build's key over the grid and the points. */
+typedef struct skel_grid_pts { const skel_grid *g; const geom_point *p; } skel_grid_pts;
+
+static size_t skel_grid_key(const void *ctx, size_t i) {
+  const skel_grid_pts *c = ctx;
+  size_t ix = (size_t)skel_cellx(c->g, c->p[i].x), iy = (size_t)skel_celly(c->g, c->p[i].y);
+  return iy * (size_t)c->g->nx + ix;
+}
 
 int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
   g->x0 = g->x1 = p[0].x, g->y0 = g->y1 = p[0].y;
@@ -21,21 +30,12 @@ int skel_grid_build(skel_grid *g, const geom_point *p, size_t n) {
   g->nx = (int)fmin(cap, w * g->inv + 1);
   g->ny = (int)fmin(cap, ht * g->inv + 1);
   size_t cells = (size_t)g->nx * (size_t)g->ny;
-  g->off = calloc(cells + 1, sizeof *g->off);
+  g->off = malloc((cells + 1) * sizeof *g->off);
   g->pt = malloc(n * sizeof *g->pt);
   g->gp = malloc(n * sizeof *g->gp);
   if (!g->off || !g->pt || !g->gp) return -1;
-  for (size_t i = 0; i < n; i++)
-    g->off[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x) + 1]++;
-  for (size_t c = 0; c < cells; c++) g->off[c + 1] += g->off[c];
-  uint32_t *fill = malloc(cells * sizeof *fill);
-  if (!fill) return -1;
-  memcpy(fill, g->off, cells * sizeof *fill);
-  for (size_t i = 0; i < n; i++)
-    g->pt[fill[(size_t)skel_celly(g, p[i].y) * (size_t)g->nx + (size_t)skel_cellx(g, p[i].x)]++] =
-        (uint32_t)i;
+  geom_csr_build(g->off, cells, g->pt, n, skel_grid_key, &(skel_grid_pts){g, p});
   for (size_t k = 0; k < n; k++) g->gp[k] = p[g->pt[k]];
-  free(fill);
   return 0;
 }
 

@@ -54,7 +54,7 @@
 */
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
+#include "geom_key_internal.h"
 #include "geom_mem_internal.h"
 #include "paradigm_internal.h"
 #include "cpdt.h"
@@ -112,6 +112,14 @@ static size_t dp_vertex_cell(const dp_run *R, const dp_ears *E, uint32_t v) {
          + dp_cell(R->q[v].x, E->x0, E->sx, E->w);
 }
 
+/* The cell of bent vertex v, GEOM_CSR_NONE for the others: geom_csr_build's key. */
+typedef struct dp_grid { const dp_run *R; const dp_ears *E; } dp_grid;
+
+static size_t dp_bent_cell(const void *ctx, size_t v) {
+  const dp_grid *g = ctx;
+  return g->E->bent[v] ? dp_vertex_cell(g->R, g->E, (uint32_t)v) : GEOM_CSR_NONE;
+}
+
 /* Is v an ear of the remaining polygon?  Strictly convex, and no reflex or
 ** flat vertex in its closed triangle (if any vertex lies in it, one of
 ** those does: the one farthest from the cut does). */
@@ -154,20 +162,14 @@ static int dp_ears_begin(dp_run *R, dp_ears *E, uint32_t *lst) {
   for (E->w = 1; (E->w + 1) * (E->w + 1) <= r; E->w++) {}
   E->sx = E->w / (x1 - E->x0), E->sy = E->w / (y1 - E->y0);   /* ranges > 0: no line */
   size_t cells = (size_t)E->w * E->w;
-  E->off = calloc(cells + 1, sizeof *E->off);
+  E->off = malloc((cells + 1) * sizeof *E->off);
   if (E->off == NULL) return -1;
   ops_memory(R->c, (int64_t)(cells + 1) * 4);
-  /* a counting sort by cell (the vertex's cell computed twice, the same both times); an
-  ** earlier linked-list insertion (link[v] = head[c], head[c] = v) came out of clang 14 at
-  ** -O3 -march=native vectorised (AVX-512 gathers and scatters) and lost vertices that
-  ** shared a cell: ears were cut over reflex vertices (test_dc_polygon caught it) */
-  for (uint32_t v = 0; v < n; v++)
-    if (E->bent[v]) E->off[dp_vertex_cell(R, E, v) + 1]++;
-  for (size_t c = 0; c < cells; c++) E->off[c + 1] += E->off[c];
-  for (uint32_t v = 0; v < n; v++)
-    if (E->bent[v]) E->cell[E->off[dp_vertex_cell(R, E, v)]++] = v;
-  memmove(E->off + 1, E->off, cells * sizeof *E->off);   /* back to the cells' starts */
-  E->off[0] = 0;
+  /* a counting sort by cell; an earlier linked-list insertion (link[v] = head[c], head[c]
+  ** = v) came out of clang 14 at -O3 -march=native vectorised (AVX-512 gathers and
+  ** scatters) and lost vertices that shared a cell: ears were cut over reflex vertices
+  ** (test_dc_polygon caught it) */
+  geom_csr_build(E->off, cells, E->cell, n, dp_bent_cell, &(dp_grid){R, E});
   return 0;
 }
 

@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom_key_internal.h"
 #include "paradigm_internal.h"
 #include "rule.h"
 #include "shape.h"
@@ -463,6 +464,12 @@ static size_t sel_cell_of(const sel_grid *g, double x, double y) {
   return j * g->gx + i;
 }
 
+/* The cell of site i, geom_csr_build's key over the state. */
+static size_t sel_site_cell(const void *ctx, size_t i) {
+  const sel_state *s = ctx;
+  return sel_cell_of(&s->g, s->p[i].x, s->p[i].y);
+}
+
 /* Visit cell k: count it, try its sites, queue its unqueued neighbours. */
 static uint32_t sel_cell_visit(sel_state *s, uint32_t a, uint32_t b, uint32_t best, size_t k,
                                size_t *qt) {
@@ -585,17 +592,12 @@ static int sel_grid_make(sel_state *s, double p) {
   g->span = fabs(g->x0) + fabs(g->y0) + wd + ht;
   g->tol = 0x1p-30 * g->span;
   size_t m = g->gx * g->gy;
-  g->start = calloc(m + 1, sizeof *g->start);
+  g->start = malloc((m + 1) * sizeof *g->start);
   g->site = malloc(s->n * sizeof *g->site);
   g->stamp = calloc(m, sizeof *g->stamp);
   g->queue = malloc(m * sizeof *g->queue);
   if (!g->start || !g->site || !g->stamp || !g->queue) return -1;
-  for (size_t i = 0; i < s->n; i++) g->start[sel_cell_of(g, s->p[i].x, s->p[i].y) + 1]++;
-  for (size_t k = 0; k < m; k++) g->start[k + 1] += g->start[k];
-  for (size_t i = 0; i < s->n; i++)     /* counting sort; start[k] ends at cell k + 1's start */
-    g->site[g->start[sel_cell_of(g, s->p[i].x, s->p[i].y)]++] = (uint32_t)i;
-  for (size_t k = m; k > 0; k--) g->start[k] = g->start[k - 1];
-  g->start[0] = 0;
+  geom_csr_build(g->start, m, g->site, s->n, sel_site_cell, s);
   return 0;
 }
 

@@ -57,7 +57,7 @@ int study_got_points(const geom_point *p, size_t n, const rule *r, const got_opt
   if ((sk != GOT_SKELETON_AUTO && sk != GOT_SKELETON_DELAUNAY) || rule_got_cdt_theorem(r) == 0)
     return got_points_solve(p, n, r, opt, sk, out, err, errlen);
   memset(out, 0, sizeof *out);
-  /* got's own checks first: its one-line errors (equal points, collinear sets) stand */
+  /* got's own checks first, once: its one-line errors (equal points, collinear sets) stand */
   if (got_points_check(p, n, r, err, errlen) != 0 ||
       got_points_check_memory(n, err, errlen) != 0)
     return -1;
@@ -66,7 +66,7 @@ int study_got_points(const geom_point *p, size_t n, const rule *r, const got_opt
   size_t nt = 0;
   if (study_delaunay(p, n, &tri, &nt, err, errlen) != 0) return -1;
   double t1 = omp_get_wtime();
-  int rc = got_points_solve_dt(p, n, r, opt, sk, tri, nt, out, err, errlen);
+  int rc = got_points_solve_checked(p, n, r, opt, sk, tri, nt, out, err, errlen);
   free(tri);
   if (rc == 0) out->seconds_delaunay = t1 - t0, out->seconds += t1 - t0;
   return rc;

@@ -176,9 +176,10 @@ void study_gotcheck_free(study_gotcheck *c);
 /* The GOT of the point set p[0..n-1] (got_points_solve), the one entry the program, the
 ** package and the benchmarks call: for the rules whose GOT is a Delaunay triangulation by
 ** a theorem (rule_got_cdt_theorem) with the skeleton AUTO or DELAUNAY, lot's exact Delaunay
-** triangulation is made first and handed to got_points_solve_dt, which certifies it
-** (res->seconds_delaunay: its time, in res->seconds too); any other rule or skeleton goes
-** to got_points_solve as it is.  0, or -1 with got's one-line err (or lot's). */
+** triangulation is made first, once the points pass got_points_check, and handed to
+** got_points_solve_checked, which certifies it (res->seconds_delaunay: its time, in
+** res->seconds too); any other rule or skeleton goes to got_points_solve as it is.  0, or
+** -1 with got's one-line err (or lot's). */
 int study_got_points(const geom_point *p, size_t n, const rule *r, const got_options *opt,
                      got_skeleton sk, got_result *out, char *err, size_t errlen);
 

@@ -20,7 +20,9 @@
 **   runner-up, certificate, triangles) for every rule.
 ** - The result does not depend on the thread count, bit for bit.
 ** - Bad input: a non-sum rule, duplicates (both rows named), collinear points, fewer than
-**   three, a coordinate outside the contract, a bad thread count or skeleton: one line.
+**   three, a coordinate outside the contract, a bad thread count or skeleton: one line,
+**   the same through study_got_points (which checks the points once for the rules whose
+**   GOT is Delaunay); got_points_solve_checked keeps the options' refusals.
 */
 #include <stdarg.h>
 #include <stddef.h>
@@ -327,16 +329,30 @@ static void test_threads(void **state) {
 }
 
 /* One line naming the problem; -1. */
-static void tgp_refused(const geom_point *p, size_t n, const char *rname, int threads,
-                        int sk, const char *want) {
+/* Refused with want in one line, by got_points_solve and by study_got_points (which checks
+** the points once, then for a rule whose GOT is Delaunay triangulates them and goes on by
+** got_points_solve_checked: no error may be lost on that way); by=2 got_points_solve_checked
+** itself, for the options' refusals it keeps. */
+static void tgp_refused_by(const geom_point *p, size_t n, const char *rname, int threads,
+                           int sk, const char *want, int by) {
   rule r = tgp_rule(rname);
   got_options o = {threads, RULE_DEFAULT_TIE_EPS};
   got_result res;
   char err[512] = "";
-  assert_int_equal(got_points_solve(p, n, &r, &o, (got_skeleton)sk, &res, err, sizeof err), -1);
+  got_skeleton s = (got_skeleton)sk;
+  int rc = by == 0   ? got_points_solve(p, n, &r, &o, s, &res, err, sizeof err)
+           : by == 1 ? study_got_points(p, n, &r, &o, s, &res, err, sizeof err)
+                     : got_points_solve_checked(p, n, &r, &o, s, NULL, 0, &res, err, sizeof err);
+  assert_int_equal(rc, -1);
   if (strstr(err, want) == NULL || strchr(err, '\n') != NULL)
-    fail_msg("wanted '%s' in '%s'", want, err);
+    fail_msg("%s, way %d: wanted '%s' in '%s'", rname, by, want, err);
   assert_null(res.tri);
+}
+
+static void tgp_refused(const geom_point *p, size_t n, const char *rname, int threads,
+                        int sk, const char *want) {
+  tgp_refused_by(p, n, rname, threads, sk, want, 0);
+  tgp_refused_by(p, n, rname, threads, sk, want, 1);
 }
 
 static void test_bad_input(void **state) {
@@ -354,6 +370,16 @@ static void test_bad_input(void **state) {
   tgp_refused(c, 4, "P_1", 1, 0, "collinear");
   geom_point o[3] = {{0, 0}, {1, 0}, {0, 1e40}};
   tgp_refused(o, 3, "P_1", 1, 0, "point 2 (0-based row)");
+  /* a rule whose GOT is Delaunay: study_got_points's own way, got's messages first */
+  tgp_refused(p, 2, "R_1", 1, 0, "at least 3 points");
+  tgp_refused(p, 5, "R_1", -1, 0, "threads");
+  tgp_refused(p, 5, "R_1", 1, 7, "skeleton");
+  tgp_refused(d, 5, "R_1", 1, GOT_SKELETON_DELAUNAY, "points 1 and 3 (0-based rows) are equal");
+  tgp_refused(c, 4, "R_1", 1, 0, "collinear");
+  tgp_refused(o, 3, "R_1", 1, 0, "point 2 (0-based row)");
+  tgp_refused_by(p, 5, "R_1", -1, 0, "threads", 2);
+  tgp_refused_by(p, 5, "R_1", 1, 7, "skeleton", 2);
+  tgp_refused_by(p, 5, "R_1", 1, GOT_SKELETON_DELAUNAY, "no Delaunay triangulation", 2);
   char err[256];
   assert_int_equal(got_points_check_memory((size_t)1 << 50, err, sizeof err), -1);
   assert_non_null(strstr(err, "GB"));
