@@ -63,6 +63,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom_key_internal.h"
 #include "geom_mem_internal.h"
 #include "paradigm_internal.h"
 #include "splitmix.h"
@@ -506,8 +507,13 @@ static void dcc_cut(dcc_site *t, uint32_t lo, uint32_t hi, int depth, int altern
   dcc_cut(t, mid, hi, depth + 1, alternating);
 }
 
-/* The sites sorted (ranks), the segments bucketed by key (a counting
-** sort), a segment joining a site to itself refused.  0, or -1. */
+/* geom_csr_build's key of segment i: its merge's, computed beforehand. */
+static size_t dcc_segment_key(const void *key, size_t i) {
+  return ((const uint32_t *)key)[i];
+}
+
+/* The cuts made (the sites' ranks), the segments listed by the key of
+** their merge, a segment joining a site to itself refused.  0, or -1. */
 static int dcc_prepare(dcc_run *R) {
   const paradigm_input *in = R->in;
   uint32_t n = (uint32_t)in->n, keys = 2 * n + 2;
@@ -528,10 +534,8 @@ static int dcc_prepare(dcc_run *R) {
       return -1;
     }
     key[s] = dcc_key(n, a < b ? a : b, a < b ? b : a);
-    R->at[key[s]]++;
   }
-  for (uint32_t k = 1; k <= keys; k++) R->at[k] += R->at[k - 1];   /* each bucket's end */
-  for (size_t s = in->nsegments; s-- > 0;) R->list[--R->at[key[s]]] = (uint32_t)s;
+  geom_csr_build(R->at, keys, R->list, in->nsegments, dcc_segment_key, key);
   return 0;
 }
 
