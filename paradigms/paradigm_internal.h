@@ -99,12 +99,13 @@ typedef enum paradigm_select_search {
 
 /* What figures 2.9-2.11 and the bucket count of 2.4.1 measure: the
 ** boundary's size after each triangle (its mean) and its peak, the hull's
-** sites, the grid's buckets. */
+** sites, the grid's buckets; and the sites the apex searches tried. */
 typedef struct paradigm_select_stats {
   double mean_boundary;
   size_t peak_boundary;
   size_t hull;
   size_t buckets;
+  uint64_t examined;
 } paradigm_select_stats;
 
 /* One selection run on distinct points (as the runner hands them over),

@@ -37,9 +37,10 @@ typedef struct sel_edge { uint32_t u, v; } sel_edge;
 /* Where the sites that beat the candidate can lie, widened by its
 ** rounding error: SEL_DISC, the part of the circle on the left of ab (DT);
 ** SEL_BOX, a box around the circumscribing homothet (ES, polygon K);
-** SEL_ANYWHERE when nothing is known (no candidate, an ellipse, a rounding
-** shape, or a triangle too flat for the floating-point bounds below).
-** xlo, xhi: its x-extent. */
+** SEL_CONE, a rounding shape's cone and hyperbola (ES, polygon K);
+** SEL_ANYWHERE when nothing is known (no candidate, an ellipse, or a
+** triangle too flat for the floating-point bounds below).  xlo, xhi: the
+** x-extent of a disc or a box. */
 typedef enum sel_bound { SEL_ANYWHERE, SEL_DISC, SEL_BOX, SEL_CONE } sel_bound;
 typedef struct sel_cap {
   sel_bound bounded;
@@ -84,6 +85,8 @@ struct sel_state {
   sel_grid g;
   uint32_t *piece;                     /* constraints: 2 sites per piece */
   size_t npiece;
+  double box[4];                       /* the sites' bounding box: x0, x1, y0, y1 */
+  uint64_t tried;                      /* sites the apex searches tried */
 };
 
 /* ---- the apex order ---------------------------------------------------- */
@@ -119,6 +122,7 @@ static int sel_visible(sel_state *s, uint32_t a, uint32_t b, uint32_t d) {
 /* Site d against the best apex so far of edge ab: the new best (the best
 ** of the visible sites, the cheaper in-shape test first). */
 static uint32_t sel_try(sel_state *s, uint32_t a, uint32_t b, uint32_t best, uint32_t d) {
+  s->tried++;
   if (d == a || d == b || ops_orient(s->c, s->p[a], s->p[b], s->p[d]) <= 0) return best;
   if (best != SEL_NONE && !s->beats(s, a, b, best, d)) return best;
   return s->npiece == 0 || sel_visible(s, a, b, d) ? d : best;
@@ -373,31 +377,6 @@ static void sel_cap_make(const sel_state *s, uint32_t a, uint32_t b, uint32_t c,
   if (c != SEL_NONE && s->cap != NULL) s->cap(s, a, b, c, k);
 }
 
-/* The x-sorted strip (2.4.1, figure 2.13): the sites between a and b in x
-** first, then outwards, the nearer side in x first, until both sides leave
-** the cap's x-extent.  Expected O(sqrt n) sites per edge on uniform sites,
-** O(n^{3/2}) in all (DT); for ES the homothet's x-extent; an ellipse or a
-** rounding shape's cone gives none (O(n) per edge). */
-static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
-  size_t i0 = s->pos[a] < s->pos[b] ? s->pos[a] : s->pos[b];
-  size_t i1 = s->pos[a] ^ s->pos[b] ^ i0, l = i0, r = i1 + 1;
-  double xlo = fmin(s->p[a].x, s->p[b].x), xhi = fmax(s->p[a].x, s->p[b].x);
-  uint32_t best = SEL_NONE;
-  for (size_t i = i0; i <= i1; i++) best = sel_try(s, a, b, best, s->ord[i]);
-  sel_cap k;
-  sel_cap_make(s, a, b, best, &k);
-  for (;;) {
-    int any = k.bounded == SEL_ANYWHERE || k.bounded == SEL_CONE;   /* no x-extent */
-    int gol = l > 0 && (any || s->p[s->ord[l - 1]].x >= k.xlo);
-    int gor = r < s->n && (any || s->p[s->ord[r]].x <= k.xhi);
-    if (!gol && !gor) return best;
-    size_t i = gol && (!gor || xlo - s->p[s->ord[l - 1]].x <= s->p[s->ord[r]].x - xhi)
-             ? --l : r++;
-    uint32_t nb = sel_try(s, a, b, best, s->ord[i]);
-    if (nb != best) best = nb, sel_cap_make(s, a, b, best, &k);
-  }
-}
-
 /* Does the rectangle [x0, x1] x [y0, y1] meet the homothet of k (ES,
 ** polygon K)?  Separating axes: the box's, then each edge's outward normal
 ** n (K of at most 64 edges): the rectangle's least n.x beyond the edge's
@@ -420,22 +399,147 @@ static int sel_rect_meets_homothet(const sel_state *s, const sel_cap *k, double 
   return 1;
 }
 
-/* Does the rectangle [x0, x1] x [y0, y1] meet the rounding shape of k?
-** The rectangle's largest X and Y against the cone's bounds, with tol and
-** 2^-40 of the magnitudes for the rounding here: Xm and Ym, the largest
-** X - xlo and Y - ylo widened by that slack, are at least their exact
-** values.  A point of the shape has X - xlo, Y - ylo > 0 and their product
-** at least r, so the rectangle meets it only if Xm, Ym >= 0 and Xm Ym >= r:
-** that with rtol on r and 2^-30 of Xm Ym for the three roundings here. */
-static int sel_rect_meets_cone(const sel_cap *k, double x0, double x1, double y0, double y1) {
+/* The slack of a corner's X - xlo and Y - ylo over the rectangle [x0, x1]
+** x [y0, y1] (the rounding shape of k): tol, and 2^-40 of the magnitudes
+** for the rounding of the cross products, the differences and xlo, ylo. */
+static double sel_cone_slack(const sel_cap *k, double x0, double x1, double y0, double y1) {
   geom_point o = k->o, u = k->u, v = k->v;
-  double mx = (v.y > 0 ? x1 : x0) - o.x, my = (v.x > 0 ? y0 : y1) - o.y;
-  double nx = (u.y > 0 ? x0 : x1) - o.x, ny = (u.x > 0 ? y1 : y0) - o.y;
   double mag = (fabs(x0 - o.x) + fabs(x1 - o.x) + fabs(y0 - o.y) + fabs(y1 - o.y))
              * (fabs(u.x) + fabs(u.y) + fabs(v.x) + fabs(v.y));
-  double slack = k->tol + 0x1p-40 * mag;
-  double xm = mx * v.y - my * v.x - k->xlo + slack, ym = u.x * ny - u.y * nx - k->ylo + slack;
+  return k->tol + 0x1p-40 * mag;
+}
+
+/* X - xlo and Y - ylo of the point (x, y) for the rounding shape of k,
+** each widened by slack (sel_cone_slack: then at least its exact value). */
+static void sel_cone_at(const sel_cap *k, double x, double y, double slack, double w[2]) {
+  double px = x - k->o.x, py = y - k->o.y;
+  w[0] = px * k->v.y - py * k->v.x - k->xlo + slack;
+  w[1] = k->u.x * py - k->u.y * px - k->ylo + slack;
+}
+
+/* Does the rectangle [x0, x1] x [y0, y1] meet the rounding shape of k?
+** The rectangle's largest X and Y against the cone's bounds: Xm and Ym,
+** the largest X - xlo and Y - ylo widened by the slack (sel_cone_at), are
+** at least their exact values.  A point of the shape has X - xlo, Y - ylo
+** > 0 and their product at least r, so the rectangle meets it only if Xm,
+** Ym >= 0 and Xm Ym >= r: that with rtol on r and 2^-30 of Xm Ym for the
+** three roundings here.  Tight on a small cell; on a tall or wide
+** rectangle Xm and Ym come from corners far apart, and
+** sel_rect_meets_branch answers then. */
+static int sel_rect_meets_cone(const sel_cap *k, double x0, double x1, double y0, double y1) {
+  geom_point u = k->u, v = k->v;
+  double slack = sel_cone_slack(k, x0, x1, y0, y1), wm[2], wn[2];
+  sel_cone_at(k, v.y > 0 ? x1 : x0, v.x > 0 ? y0 : y1, slack, wm);
+  sel_cone_at(k, u.y > 0 ? x0 : x1, u.x > 0 ? y1 : y0, slack, wn);
+  double xm = wm[0], ym = wn[1];
   return xm >= 0 && ym >= 0 && xm * ym + 0x1p-30 * (xm * ym) >= k->r - k->rtol;
+}
+
+/* An upper bound on X Y over the points of segment pq (exact inputs here)
+** in the closed quadrant X, Y >= 0; -1 when it has none.  Along the
+** segment X Y is a quadratic in the parameter t: monotone in the quadrant
+** when dX, dY have one sign (the top end then, if it is in the quadrant),
+** else concave, with its top c^2 / (4 |dX dY|) at t* (c = cross(p, q),
+** the top's X = c / (2 dY)), and its largest value on the segment at the
+** end nearer t* when t* is outside (0, 1).  t* lies inside when the slopes
+** at the ends, g0 = pX dY + pY dX > 0 > g1 = qX dY + qY dX.  Those slopes
+** and c carry at most 3u of their twins (the signs of dX, dY are exact):
+** 2^-40 of the twins decides only what is certain, and in doubt the top
+** counts (an upper bound either way).  The top itself: |c| + its error
+** bound, squared over 4 |dX dY|, within 6u below its exact value at worst. */
+static double sel_seg_peak(const double p[2], const double q[2]) {
+  double m = -1, dx = q[0] - p[0], dy = q[1] - p[1];
+  if (p[0] >= 0 && p[1] >= 0) m = p[0] * p[1];
+  if (q[0] >= 0 && q[1] >= 0 && q[0] * q[1] > m) m = q[0] * q[1];
+  if (!((dx < 0 && dy > 0) || (dx > 0 && dy < 0))) return m;
+  double g0 = p[0] * dy + p[1] * dx, e0 = 0x1p-40 * (fabs(p[0] * dy) + fabs(p[1] * dx));
+  double g1 = q[0] * dy + q[1] * dx, e1 = 0x1p-40 * (fabs(q[0] * dy) + fabs(q[1] * dx));
+  double c = p[0] * q[1] - p[1] * q[0], ec = 0x1p-40 * (fabs(p[0] * q[1]) + fabs(p[1] * q[0]));
+  if (g0 <= -e0 || g1 >= e1) return m;                /* t* outside: an end is the top */
+  if (dy > 0 ? c <= -ec : c >= ec) return m;          /* the top in X, Y < 0: no quadrant */
+  double ac = fabs(c) + ec, top = ac * ac / (4 * fabs(dx * dy));
+  return top > m ? top : m;
+}
+
+/* Does the rectangle [x0, x1] x [y0, y1] meet the rounding shape of k?
+** Exactly, but for rounding: (X - xlo, Y - ylo) is affine in the point,
+** so the rectangle's image is the hull of its corners' images, each below
+** its widened value (sel_rect_meets_cone's argument, at all four corners).
+** A point of the image in the quadrant lies below a point of the widened
+** corners' hull, in the quadrant too, where X Y is larger; and X Y,
+** whose Hessian is indefinite, takes its largest value on that hull at
+** its boundary, within the six segments between the corners
+** (sel_seg_peak).  The rectangle meets the shape only if that bound
+** reaches r, less rtol and 2^-30 of the bound (its 6u and the roundings
+** here).  Eight cross products and six segments: for the strip's tall
+** rectangles, where the cheap test is loose. */
+static int sel_rect_meets_branch(const sel_cap *k, double x0, double x1, double y0, double y1) {
+  double slack = sel_cone_slack(k, x0, x1, y0, y1), w[4][2], m = -1, rm = k->r - k->rtol;
+  for (int i = 0; i < 4; i++) sel_cone_at(k, i & 1 ? x1 : x0, i & 2 ? y1 : y0, slack, w[i]);
+  for (int i = 0; i < 4 && !(m >= 0 && m + 0x1p-30 * m >= rm); i++)
+    for (int j = i + 1; j < 4; j++) {
+      double t = sel_seg_peak(w[i], w[j]);
+      m = t > m ? t : m;
+    }
+  return m >= 0 && m + 0x1p-30 * m >= rm;
+}
+
+/* May a site with x in [x0, x1] (site coordinates, exact) beat the
+** candidate whose bound is k?  Its y lies in the sites' box.  A disc or a
+** homothet answers by its x-extent; a rounding shape by whether the
+** rectangle [x0, x1] x [the box's y-range] meets its cone and hyperbola
+** (sel_rect_meets_cone: it answers no only when no point of the
+** rectangle lies in the shape, every rounding error counted there), which
+** bounds the strip although the shape is unbounded. */
+static int sel_strip_open(const sel_state *s, const sel_cap *k, double x0, double x1) {
+  switch (k->bounded) {
+    case SEL_ANYWHERE: return 1;
+    case SEL_DISC: case SEL_BOX: return x1 >= k->xlo && x0 <= k->xhi;
+    case SEL_CONE:
+      return sel_rect_meets_cone(k, x0, x1, s->box[2], s->box[3])
+          && sel_rect_meets_branch(k, x0, x1, s->box[2], s->box[3]);
+  }
+  return 1;
+}
+
+/* The strip's next position, or SIZE_MAX when both sides are shut: the
+** side whose next site is nearer ab's x-range [xlo, xhi] first; a side
+** whose remainder cannot reach the bound k is shut (its remainder only
+** shrinks, so it stays shut until the caller opens both for a new k). */
+static size_t sel_strip_next(const sel_state *s, const sel_cap *k, size_t *l, size_t *r,
+                             int shut[2], double xlo, double xhi) {
+  for (;;) {
+    int gol = *l > 0 && !shut[0], gor = *r < s->n && !shut[1];
+    if (!gol && !gor) return SIZE_MAX;
+    double xl = gol ? s->p[s->ord[*l - 1]].x : 0, xr = gor ? s->p[s->ord[*r]].x : 0;
+    int left = gol && (!gor || xlo - xl <= xr - xhi);
+    if (left ? sel_strip_open(s, k, s->box[0], xl) : sel_strip_open(s, k, xr, s->box[1]))
+      return left ? --*l : (*r)++;
+    shut[!left] = 1;
+  }
+}
+
+/* The x-sorted strip (2.4.1, figure 2.13): the sites between a and b in x
+** first, then outwards, the nearer side in x first, until neither side's
+** remaining sites (x up to the next site's on the left, from it on the
+** right) can reach the candidate's bound (sel_strip_open).  Expected
+** O(sqrt n) sites per edge on uniform sites, O(n^{3/2}) in all (DT); for ES
+** the homothet's x-extent or the rounding shape inside the sites' box; an
+** ellipse gives none (O(n) per edge). */
+static uint32_t sel_search_strip(sel_state *s, uint32_t a, uint32_t b) {
+  size_t i0 = s->pos[a] < s->pos[b] ? s->pos[a] : s->pos[b];
+  size_t i1 = s->pos[a] ^ s->pos[b] ^ i0, l = i0, r = i1 + 1, i;
+  double xlo = fmin(s->p[a].x, s->p[b].x), xhi = fmax(s->p[a].x, s->p[b].x);
+  uint32_t best = SEL_NONE;
+  for (i = i0; i <= i1; i++) best = sel_try(s, a, b, best, s->ord[i]);
+  sel_cap k;
+  sel_cap_make(s, a, b, best, &k);
+  int shut[2] = {0, 0};
+  while ((i = sel_strip_next(s, &k, &l, &r, shut, xlo, xhi)) != SIZE_MAX) {
+    uint32_t nb = sel_try(s, a, b, best, s->ord[i]);
+    if (nb != best) best = nb, sel_cap_make(s, a, b, best, &k), shut[0] = shut[1] = 0;
+  }
+  return best;
 }
 
 /* Does cell (i, j), widened by the grid's rounding margin, meet the left
@@ -579,13 +683,9 @@ static int sel_pieces(sel_state *s, const uint32_t *seg, size_t ns, char *err, s
 ** expected per cell on uniform sites: O(n + n / p). */
 static int sel_grid_make(sel_state *s, double p) {
   sel_grid *g = &s->g;
-  double x1 = s->p[0].x, y1 = s->p[0].y;
-  g->x0 = x1, g->y0 = y1;
-  for (size_t i = 1; i < s->n; i++) {
-    g->x0 = fmin(g->x0, s->p[i].x), x1 = fmax(x1, s->p[i].x);
-    g->y0 = fmin(g->y0, s->p[i].y), y1 = fmax(y1, s->p[i].y);
-  }
-  double cells = fmax(1, floor((double)s->n / p)), wd = x1 - g->x0, ht = y1 - g->y0;
+  g->x0 = s->box[0], g->y0 = s->box[2];
+  double cells = fmax(1, floor((double)s->n / p)), wd = s->box[1] - g->x0;
+  double ht = s->box[3] - g->y0;
   g->gx = (size_t)fmin(cells, fmax(1, round(sqrt(cells * wd / ht))));
   g->gy = (size_t)fmin(cells, fmax(1, round(cells / (double)g->gx)));
   g->w = wd / (double)g->gx, g->h = ht / (double)g->gy;
@@ -606,6 +706,16 @@ static void sel_free(sel_state *s) {
   free(s->g.start), free(s->g.site), free(s->g.stamp), free(s->g.queue), free(s->piece);
 }
 
+/* The sites' bounding box (the grid's, and the strip's y-range): O(n). */
+static void sel_box(sel_state *s) {
+  double *b = s->box;
+  b[0] = b[1] = s->p[0].x, b[2] = b[3] = s->p[0].y;
+  for (size_t i = 1; i < s->n; i++) {
+    b[0] = fmin(b[0], s->p[i].x), b[1] = fmax(b[1], s->p[i].x);
+    b[2] = fmin(b[2], s->p[i].y), b[3] = fmax(b[3], s->p[i].y);
+  }
+}
+
 static int sel_alloc(sel_state *s, double p) {
   size_t n = s->n, slots = 16;
   while (slots < 8 * n) slots *= 2;
@@ -618,6 +728,7 @@ static int sel_alloc(sel_state *s, double p) {
   s->tri = malloc(3 * 2 * n * sizeof *s->tri);
   if (!s->ord || !s->pos || !s->hprev || !s->edge || !s->hkey || !s->tri) return -1;
   memset(s->hkey, 0xff, slots * sizeof *s->hkey);
+  sel_box(s);
   return p > 0 ? sel_grid_make(s, p) : 0;
 }
 
@@ -671,6 +782,7 @@ int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
   if (st) {
     st->mean_boundary = s.ntri ? s.live_sum / (double)s.ntri : 0;
     st->peak_boundary = s.peak, st->hull = s.hull, st->buckets = s.g.gx * s.g.gy;
+    st->examined = s.tried;
   }
   sel_free(&s);
   return 0;
