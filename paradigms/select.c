@@ -173,10 +173,15 @@ static void sel_close(sel_state *s, uint32_t x, uint32_t y) {
   if (!sel_take(s, x, y)) sel_push(s, y, x);
 }
 
-/* The circumcircle algorithm: O(n) boundary steps, each one apex search. */
-static void sel_wrap(sel_state *s, paradigm_select_order order) {
+/* The circumcircle algorithm: O(n) boundary steps, each one apex search.
+** A triangulation of n sites has at most 2n - 5 triangles and 3n - 6
+** edges, each pushed at most once a direction; a wrong apex (a bound of
+** the searches too tight: a bug) could go on past them, so the loop
+** stops there, returning -1, and never writes past its arrays or runs on. */
+static int sel_wrap(sel_state *s, paradigm_select_order order) {
   sel_push(s, s->h0, s->h1);
   while (s->head < s->top) {
+    if (s->ntri >= 2 * s->n || s->top + 2 > 3 * s->n) return -1;
     sel_edge e = order == PARADIGM_SELECT_STACK ? s->edge[--s->top] : s->edge[s->head++];
     if (!sel_take(s, e.u, e.v)) continue;          /* closed while it waited */
     if (s->hprev[e.u] == e.v) continue;            /* a hull edge seen from outside */
@@ -188,6 +193,7 @@ static void sel_wrap(sel_state *s, paradigm_select_order order) {
     sel_close(s, c, e.u);
     s->live_sum += (double)s->live;
   }
+  return 0;
 }
 
 /* ---- the hull: where the wrapping starts and which edges face out ------- */
@@ -777,7 +783,12 @@ int paradigm_select_run(const paradigm_input *in, paradigm_select_order order,
     sel_free(&s), free(s.tri);
     return -1;
   }
-  sel_wrap(&s, order);
+  if (sel_wrap(&s, order) != 0) {
+    snprintf(err, errlen, "selection: more than the %zu triangles of %zu sites (a bug: please "
+             "report it)", 2 * s.n, s.n);
+    sel_free(&s), free(s.tri);
+    return -1;
+  }
   out->tri = s.tri, out->ntri = s.ntri;
   if (st) {
     st->mean_boundary = s.ntri ? s.live_sum / (double)s.ntri : 0;
