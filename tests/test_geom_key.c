@@ -36,7 +36,7 @@ static void tgk_csr_check(const size_t *key, size_t n, size_t nkeys) {
 static void test_csr(void **state) {
   (void)state;
   uint64_t s = 12345;
-  size_t key[400];
+  size_t key[400] = {0};
   tgk_csr_check(key, 0, 0);
   tgk_csr_check(key, 0, 5);
   for (size_t i = 0; i < 7; i++) key[i] = GEOM_CSR_NONE;
