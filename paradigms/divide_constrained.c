@@ -78,7 +78,7 @@ typedef struct dcc_run {
   paradigm_half *h;       /* 2 per edge; at most 3n edges */
   int32_t *con;           /* per edge: the segment on it, or DCC_FREE */
   uint32_t *out;          /* a half-edge out of each site */
-  uint32_t nedges;
+  uint32_t nedges, free;   /* edges made; a deleted one to reuse (DCC_NONE: none) */
   uint32_t *at, *list;    /* the segments of each merge (by key, dcc_key) */
   uint32_t *stack;        /* Lawson's edges to check */
   size_t top, scap;
@@ -104,8 +104,10 @@ static inline uint32_t dcc_dest(const dcc_run *R, uint32_t e) {
 }
 
 static uint32_t dcc_make_edge(dcc_run *R, uint32_t a, uint32_t b) {
-  uint32_t e = 2 * R->nedges++;
   paradigm_half *h = R->h;
+  uint32_t e = R->free;
+  if (e != DCC_NONE) R->free = h[e].next;
+  else e = 2 * R->nedges++;
   h[e] = (paradigm_half){e, e, a};
   h[e + 1] = (paradigm_half){e + 1, e + 1, b};
   R->con[e / 2] = DCC_FREE;
@@ -120,6 +122,20 @@ static uint32_t dcc_connect(dcc_run *R, uint32_t a, uint32_t b) {
   paradigm_he_splice(R->h, e, paradigm_he_lnext(R->h, a));
   paradigm_he_splice(R->h, e ^ 1, b);
   return e;
+}
+
+/* Edge e out of both rings (each end keeps another edge), its origins
+** DCC_NONE, onto the free list. */
+static void dcc_delete(dcc_run *R, uint32_t e) {
+  paradigm_half *h = R->h;
+  uint32_t a = h[e].org, b = paradigm_he_dest(h, e);
+  if (R->out[a] == e) R->out[a] = h[e].next;
+  if (R->out[b] == (e ^ 1)) R->out[b] = h[e ^ 1].next;
+  paradigm_he_splice(h, e, h[e].prev);
+  paradigm_he_splice(h, e ^ 1, h[e ^ 1].prev);
+  h[e].org = h[e ^ 1].org = DCC_NONE;
+  h[e & ~1u].next = R->free, R->free = e & ~1u;
+  ops_add(R->c, OPS_EDGES_DELETED, 1);
 }
 
 /* Edge e (a -> b, triangles a b c on its left and b a d on its right)
@@ -180,6 +196,7 @@ static uint32_t dcc_apex(const dcc_run *R, uint32_t e) {
 ** only tell a hull's outer round of three from a triangle); the four
 ** sides are pushed.  0, or -1 out of memory. */
 static int dcc_check(dcc_run *R, uint32_t e) {
+  if (R->h[e].org == DCC_NONE) return 0;   /* deleted since it was pushed */
   uint32_t a = R->h[e].org, b = dcc_dest(R, e), c = dcc_apex(R, e), d = dcc_apex(R, e ^ 1);
   if (R->con[e / 2] != DCC_FREE || c == DCC_NONE || d == DCC_NONE) return 0;
   if (!dcc_incircle(R, a, b, c, d)) return 0;
@@ -216,29 +233,45 @@ static dcc_hull dcc_base(dcc_run *R, uint32_t lo, uint32_t n) {
   return (dcc_hull){a, b ^ 1};
 }
 
-/* Is the bridge's step to x (a left step: new cross edge r -> x) or to y
-** (right: y -> l) a triangle that leaves the other side's next site
-** strictly above the new cross edge?  Else the new edge would cut the
-** other hull's next edge. */
-static int dcc_step_ok(dcc_run *R, uint32_t from, uint32_t to, uint32_t other) {
-  return dcc_orient(R, other, to, from) > 0;
+/* The left (right) candidate of basel: Guibas and Stolfi's, with two
+** changes.  The first neighbour of basel's left (right) end anticlockwise
+** (clockwise) from basel and above it; while the next neighbour lies inside
+** the circle through basel and it, their edge is deleted, but only when it
+** is no segment and the face between the two edges is a triangle: then the
+** next neighbour is seen from the edge through that triangle, and basel's
+** far end from its points near basel, so every circle through the edge
+** holds a site seen from it and the union's triangulation has no such edge.
+** Else the candidate stays (docs/paradigms.md: why it is the apex when the
+** apex lies on its side).  DCC_NONE when no neighbour lies above. */
+static uint32_t dcc_candidate(dcc_run *R, uint32_t basel, int right) {
+  paradigm_half *h = R->h;
+  uint32_t bo = h[basel].org, bd = dcc_dest(R, basel), stop = right ? bd : bo;
+  uint32_t e = right ? h[basel].prev : h[basel ^ 1].next;
+  if (!dcc_right_of(R, dcc_dest(R, e), basel)) return DCC_NONE;
+  for (int deleted = 0;; deleted = 1) {
+    uint32_t t = right ? h[e].prev : h[e].next, far = dcc_dest(R, t), g = right ? e ^ 1 : e;
+    if (R->con[e / 2] != DCC_FREE || far == stop || dcc_apex(R, g) != far
+        || dcc_orient(R, h[g].org, dcc_dest(R, g), far) <= 0
+        || !dcc_incircle(R, bd, bo, dcc_dest(R, e), far))
+      return !deleted || dcc_right_of(R, dcc_dest(R, e), basel) ? e : DCC_NONE;
+    dcc_delete(R, e);
+    e = t;
+  }
 }
 
-/* The bridge (step 1 above) from basel upwards; pushes its edges and the
-** hull edges it covers.  O(the two hulls' sites).  0, or -1. */
-static int dcc_bridge(dcc_run *R, uint32_t basel) {
+/* Guibas and Stolfi's zipper from basel upwards, with dcc_candidate's
+** candidates: of the two, the right one when it lies inside the circle
+** through basel and the left one.  Pushes its edges for Lawson's check.
+** O(edges made and deleted).  0, or -1 out of memory. */
+static int dcc_zip(dcc_run *R, uint32_t basel) {
   paradigm_half *h = R->h;
   int rc = dcc_push(R, basel);
   for (;;) {
-    uint32_t lc = h[basel ^ 1].next, rc_ = h[basel].prev;
-    uint32_t l = dcc_dest(R, basel), r = h[basel].org, x = dcc_dest(R, lc), y = dcc_dest(R, rc_);
-    int lok = dcc_right_of(R, x, basel), rok = dcc_right_of(R, y, basel), right;
-    if (!lok && !rok) return rc;
-    if (!lok || !rok) right = !lok;
-    else {
-      right = dcc_incircle(R, x, l, r, y);
-      if (!dcc_step_ok(R, right ? y : r, right ? l : x, right ? x : y)) right = !right;
-    }
+    uint32_t lc = dcc_candidate(R, basel, 0), rc_ = dcc_candidate(R, basel, 1);
+    if (lc == DCC_NONE && rc_ == DCC_NONE) return rc;
+    int right = lc == DCC_NONE
+                || (rc_ != DCC_NONE && dcc_incircle(R, dcc_dest(R, lc), dcc_dest(R, basel),
+                                                    h[basel].org, dcc_dest(R, rc_)));
     rc |= dcc_push(R, right ? rc_ : lc);
     basel = right ? dcc_connect(R, rc_, basel ^ 1) : dcc_connect(R, basel ^ 1, lc ^ 1);
     rc |= dcc_push(R, basel);
@@ -259,7 +292,7 @@ static int dcc_merge(dcc_run *R, dcc_hull a, dcc_hull b, dcc_hull *m) {
   if (h[ldi].org == h[ldo].org) ldo = basel ^ 1;
   if (h[rdi].org == h[rdo].org) rdo = basel;
   *m = (dcc_hull){ldo, rdo};
-  return dcc_bridge(R, basel) != 0 || dcc_lawson(R) != 0 ? -1 : 0;
+  return dcc_zip(R, basel) != 0 || dcc_lawson(R) != 0 ? -1 : 0;
 }
 
 /* ---- step 3: a segment joining the two strips, inserted by flips ---- */
@@ -539,13 +572,41 @@ static int dcc_prepare(dcc_run *R) {
   return 0;
 }
 
+/* Is the outer face's round from e0 the hull, once round?  Every turn
+** clockwise or straight (the outer face on the left), and the x-direction
+** of its edges changing sign twice (a convex polygon once round; a
+** pentagram turns the same way throughout and changes four times).  Its
+** length into *hull.  O(h); exact tests, not counted (a check of the
+** result, as the runner's of the input). */
+static int dcc_hull_ok(const dcc_run *R, uint32_t e0, uint32_t *hull) {
+  const paradigm_half *h = R->h;
+  uint32_t e = e0, changes = 0;
+  int first = 0, last = 0;
+  *hull = 0;
+  do {
+    uint32_t f = paradigm_he_lnext(h, e);
+    geom_point a = R->s[h[e].org], b = R->s[h[f].org], c = R->s[paradigm_he_dest(h, f)];
+    if (geom_orient(a, b, c) > 0) return 0;
+    int dx = (b.x > a.x) - (b.x < a.x);
+    if (dx != 0 && first == 0) first = dx;
+    else if (dx != 0 && dx != last) changes++;
+    last = dx != 0 ? dx : last;
+    ++*hull;
+    e = f;
+  } while (e != e0 && *hull <= 2 * R->in->n);
+  return e == e0 && changes + (first != last) == 2;
+}
+
 /* The triangles: each face that is a round of three half-edges, written
 ** once from its smallest, but the outer face (a three-site hull's is a
-** round of three too).  The count must be Euler's, 2n - 2 - h.  O(n). */
+** round of three too).  The certificate that the mesh is a triangulation
+** (got's, docs/got.md): every triangle anticlockwise, the outer face the
+** hull once round (dcc_hull_ok), and Euler's count 2n - 2 - h; a half-edge
+** mesh uses each directed edge once.  O(n); -2 when it fails (a bug). */
 static int dcc_triangles(dcc_run *R, dcc_hull top, paradigm_output *out) {
-  uint32_t n = (uint32_t)R->in->n, e0 = top.l ^ 1, e = e0, hull = 0, skip = e0;
+  uint32_t n = (uint32_t)R->in->n, e0 = top.l ^ 1, e = e0, hull, skip = e0;
+  if (!dcc_hull_ok(R, e0, &hull)) return -2;
   do {
-    hull++;
     skip = e < skip ? e : skip;
     e = paradigm_he_lnext(R->h, e);
   } while (e != e0);
@@ -553,11 +614,15 @@ static int dcc_triangles(dcc_run *R, dcc_hull top, paradigm_output *out) {
   out->tri = malloc(3 * (want ? want : 1) * sizeof *out->tri);
   if (out->tri == NULL) return -1;
   for (uint32_t a = 0; a < 2 * R->nedges; a++) {
-    uint32_t b = paradigm_he_lnext(R->h, a), c = paradigm_he_lnext(R->h, b);
-    if (paradigm_he_lnext(R->h, c) != a || b < a || c < a || (hull == 3 && a == skip)) continue;
+    const paradigm_half *h = R->h;
+    uint32_t b = paradigm_he_lnext(h, a), c = paradigm_he_lnext(h, b);
+    if (h[a].org == DCC_NONE || paradigm_he_lnext(h, c) != a || b < a || c < a
+        || (hull == 3 && a == skip))
+      continue;
+    if (geom_orient(R->s[h[a].org], R->s[h[b].org], R->s[h[c].org]) <= 0) return -2;
     if (k < want) {
       uint32_t *t = out->tri + 3 * k;
-      t[0] = R->id[R->h[a].org], t[1] = R->id[R->h[b].org], t[2] = R->id[R->h[c].org];
+      t[0] = R->id[h[a].org], t[1] = R->id[h[b].org], t[2] = R->id[h[c].org];
     }
     k++;
   }
@@ -605,7 +670,7 @@ int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char
              "vertical and horizontal) or 1 (vertical strips)", in->param);
     return -1;
   }
-  dcc_run R = {.in = in, .c = &out->ops, .err = err, .errlen = errlen,
+  dcc_run R = {.in = in, .c = &out->ops, .err = err, .errlen = errlen, .free = DCC_NONE,
                .alternating = in->param == 0};
   err[0] = '\0';
   int rc = dcc_alloc(&R);
