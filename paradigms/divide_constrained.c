@@ -1,7 +1,6 @@
 /*
 ** divide_constrained.c: the row dc-constrained, divide and conquer for the
-** constrained Delaunay triangulation (section 2.6.2), each pair of pieces
-** merged by flips.
+** constrained Delaunay triangulation (section 2.6.2).
 **
 ** The sites are cut at the middle rank, recursively: by vertical cuts
 ** (parameter 1: Chew's strips) or by cuts alternating between vertical and
@@ -13,18 +12,17 @@
 ** ranks between its ends in any frame, so it is in the piece too).  Two
 ** pieces, L before R in the frame of their cut, are merged in three steps:
 **
-**   1. The bridge.  From the lower common tangent (Guibas and Stolfi's walk)
-**      the region between the two hulls is triangulated upwards, each step
-**      taking the next hull site of L or of R: the one whose circle with the
-**      present cross edge holds the other (Guibas and Stolfi's choice) when
-**      that triangle leaves the other hull's next site strictly above the
-**      new cross edge, else the other one.  No edge of L or R is deleted, so
-**      this is a triangulation of the union's hull holding both pieces'
-**      segments.
-**   2. Lawson's flips from the bridge's edges and the hull edges it covered,
-**      with lot's in-circle test (paradigm_inshape: its tie-break a
-**      symbolic perturbation of the lifts) over every edge that is no
-**      segment, flipping strictly convex quadrilaterals only.
+**   1. Guibas and Stolfi's zipper from the lower common tangent, with two
+**      changes in its candidates (dcc_candidate): a segment is never
+**      deleted, and an edge is deleted only when the face beyond it is a
+**      triangle.  No segment crosses the cut, so the union's triangulation
+**      crosses it in a chain of triangles, and its edges inside L are edges
+**      of L's; the zipper finds that chain (docs/paradigms.md argues it).
+**   2. Lawson's check of every edge of every triangle the zipper made, with
+**      lot's in-circle test (paradigm_inshape: its tie-break a symbolic
+**      perturbation of the lifts), flipping strictly convex quadrilaterals
+**      only.  It flips nothing on every set tested; it makes the union's
+**      triangulation locally constrained Delaunay whatever step 1 did.
 **   3. The segments joining L to R, each inserted by flips as Sloan does:
 **      the edges it crosses are queued; one whose quadrilateral is strictly
 **      convex is flipped, and queued again while its new diagonal still
@@ -33,31 +31,26 @@
 **      insertion rewrote.  An edge it crosses that is a segment is a
 **      crossing: refused, naming both.
 **
-** Every edge that is not on Lawson's stack is locally Delaunay or a segment
-** (the bridge's and the insertion's edges, and the sides of every
-** quadrilateral flipped, are pushed), so each merge ends at a triangulation
-** that is locally constrained Delaunay everywhere: the constrained Delaunay
-** triangulation of the union, unique under the perturbation, which makes
-** the result lot's exactly, grids and cocircular sets included.
+** Every edge off Lawson's stack is locally Delaunay or a segment (an edge
+** whose triangles did not change stays so), and the result is certified a
+** triangulation (dcc_triangles), so it is the constrained Delaunay
+** triangulation, unique under the perturbation: lot's exactly, grids and
+** cocircular sets included.  A certificate that fails is reported as a bug.
 **
 ** What is not as Chew has it.  Chew keeps in each strip also the segments
 ** that cross it (the regions they cut, and virtual sites where they cross
 ** the strip's borders, infinitely far for the in-circle tests), so that a
-** strip's triangulation is already constrained by every segment and a
-** merge only zips each pair of facing regions (Guibas and Stolfi's zipper,
-** linear).  Here a piece sees only its own segments, and a merge repairs by
-** flips what the segments joining the two pieces change, as dc-polygon's
-** merge does; the virtual sites are not built (docs/paradigms.md says what
-** they need, and why a zipper that only spares segments is not enough).
+** merge zips each pair of facing regions and inserts nothing.  Here a
+** piece sees only its own segments; those joining two pieces are inserted
+** by flips at their merge.  docs/paradigms.md says what the virtual sites
+** need.
 **
 ** Cost.  The cuts, O(n log n) expected (a selection a level); log n levels
-** of merges.  A merge's bridge is linear in the two hulls; its flips remove
-** the edges the union does not keep (an edge that is locally Delaunay in
-** the union is never flipped) and the bridge's own, O(m^2) for a merge of
-** m sites at worst (sites on a few lines come close: docs/paradigms.md);
-** each segment is inserted once, at the merge of the pieces of its two
-** ends, in O(k) flips for k crossed edges when they come convex (Sloan's
-** queue can take O(k^2)).  Memory: 12 bytes a half-edge, 6n of them, 36 a
+** of merges, each linear in the edges the zipper makes and deletes (as
+** Guibas and Stolfi's), with Lawson's check of them; each segment inserted
+** once, at the merge of the pieces of its two ends, in O(k) flips for k
+** crossed edges when they come convex (Sloan's queue can take O(k^2)), with
+** Lawson's flips after it.  Memory: 12 bytes a half-edge, 6n of them, 36 a
 ** site for the sites, ranks and marks, and the segments' buckets.
 */
 #include <stdio.h>
