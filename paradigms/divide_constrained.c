@@ -650,8 +650,8 @@ static void dcc_free(dcc_run *R) {
   free(R->at), free(R->list), free(R->stack), free(R->queue);
 }
 
-/* Cost as above the file: O(n log n) for the sort and the bridges, plus the
-** merges' flips and the segments' insertions. */
+/* Cost as above the file: O(n log n) for the cuts and the zipper's merges,
+** plus the segments' insertions. */
 int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen) {
   if (in->n > UINT32_MAX / 8) {

@@ -57,9 +57,9 @@ static const paradigm_algorithm paradigm_algorithms[] = {
    "uniform sites (Dwyer)", NULL, paradigm_dc_alternating},
   {"dc-constrained", "divide", "2.6.2", PARADIGM_CONSTRAINED, PARADIGM_RULE_DT,
    "DT only; point sets: dc-vertical, dc-alternating; polygons: dc-polygon",
-   "O(n log n) cuts and bridges, plus the merges' flips (O(n^2) worst): pieces merged "
-   "by flips, each segment inserted by Sloan's flips at the merge of its ends; Chew's "
-   "virtual sites (a linear zipper per region) are not built",
+   "O(n log n): cuts at medians, Guibas and Stolfi's zipper for each merge; plus each "
+   "segment inserted by Sloan's flips at the merge of its ends (O(k^2) for k crossed edges "
+   "at worst): Chew's virtual sites, which spare the insertions, are not built",
    "1: vertical strips, as Chew's (0: cuts alternating, Dwyer's)",
    paradigm_dc_constrained},
   {"dc-polygon", "divide", "2.6.3", PARADIGM_POLYGON | PARADIGM_CONVEX, PARADIGM_RULE_DT,

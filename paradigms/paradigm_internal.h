@@ -65,8 +65,9 @@ int paradigm_dc_alternating(const paradigm_input *in, paradigm_output *out, char
 #define PARADIGM_DC_REFUSAL \
   "constraints: the row dc-constrained (2.6.2); simple and convex polygons: " \
   "dc-polygon (2.6.3)"
-/* 2.6.2 (paradigms/divide_constrained.c): vertical strips, each with its
-** own segments, merged by a bridge and flips. */
+/* 2.6.2 (paradigms/divide_constrained.c): pieces, each with its own
+** segments, merged by Guibas and Stolfi's zipper; the segments joining two
+** pieces inserted there by flips. */
 FLIPLAB_INTERNAL
 int paradigm_dc_constrained(const paradigm_input *in, paradigm_output *out, char *err,
                             size_t errlen);

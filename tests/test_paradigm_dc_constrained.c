@@ -1,7 +1,7 @@
 /*
 ** test_paradigm_dc_constrained.c: the row dc-constrained (2.6.2: pieces
-** cut alternately or in vertical strips, merged by flips, segments
-** inserted at the merge of their ends).  With both kinds of cut, on
+** cut alternately or in vertical strips, merged by Guibas and Stolfi's
+** zipper, segments inserted by flips at the merge of their ends).  With both kinds of cut, on
 ** uniform sets, grid sets with duplicates and ties, and integer points on
 ** two concentric circles (cocircular ties), with segments drawn among the
 ** Delaunay edges or at random (long ones through other sites, vertical
