@@ -170,6 +170,10 @@ int geom_ahead(geom_point a, geom_point b, geom_point x) {
   return x.y != a.y && (b.y > a.y) == (x.y > a.y);
 }
 
+int geom_on_segment(geom_point a, geom_point b, geom_point q) {
+  return geom_orient(a, b, q) == 0 && geom_ahead(a, b, q) && geom_ahead(b, a, q);
+}
+
 double geom_dist(geom_point p, geom_point q) {
   double dx = p.x - q.x, dy = p.y - q.y;
   return sqrt(dx * dx + dy * dy);

@@ -254,6 +254,9 @@ int geom_segments_meet(geom_point a, geom_point b, geom_point c, geom_point d);
 /* For x on the line through a != b: 1 when x lies strictly beyond a in the
 ** direction of b (comparisons of coordinates only, so exact). */
 int geom_ahead(geom_point a, geom_point b, geom_point x);
+/* 1 when q lies on the open segment ab, a != b (exact: an orientation
+** test and geom_ahead from each end). */
+int geom_on_segment(geom_point a, geom_point b, geom_point q);
 const char *geom_polyerr_str(geom_polyerr e);
 
 /* A planar straight-line graph: points, segments between them (pairs of

@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "geom.h"
 #include "predicates.h"
 
 typedef enum ops_kind {
@@ -74,6 +75,12 @@ static inline int ops_segments_cross(ops_counts *c, geom_point a, geom_point b, 
                                      geom_point e) {
   return ops_orient(c, a, b, d) * ops_orient(c, a, b, e) < 0 &&
          ops_orient(c, d, e, a) * ops_orient(c, d, e, b) < 0;
+}
+
+/* geom_on_segment, counted: the coordinate comparisons first (q between a
+** and b along the line's main axis is needed), then the orientation test. */
+static inline int ops_on_segment(ops_counts *c, geom_point a, geom_point b, geom_point q) {
+  return geom_ahead(a, b, q) && geom_ahead(b, a, q) && ops_orient(c, a, b, q) == 0;
 }
 
 void ops_clear(ops_counts *c);

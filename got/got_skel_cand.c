@@ -12,11 +12,6 @@
 
 /* ---- predicates ---------------------------------------------------------- */
 
-/* 1 when q lies on the open segment ab (exact). */
-static int skel_on_segment(geom_point a, geom_point b, geom_point q) {
-  return geom_orient(a, b, q) == 0 && geom_ahead(a, b, q) && geom_ahead(b, a, q);
-}
-
 /* 1 when q certainly lies strictly inside the isosceles triangle on base ab, on the side
 ** `side` (+1 left of a->b, -1 right), with base angles pi/8 (the diamond test's region).
 ** Inside means: q strictly on that side, and its angles at a and at b both below pi/8,
@@ -45,15 +40,15 @@ static int skel_in_cone(geom_point a, geom_point b, geom_point q, int side) {
 ** the left diamond triangle, -1 inside the right one (skel_in_cone), 0 elsewhere.  One
 ** orientation determinant decides which side to test: computed, it is within ecr of its
 ** exact value (the bound of skel_in_cone, Shewchuk's), so beyond ecr q is certainly off
-** the line (skel_on_segment's exact test would say 0) and certainly not inside the other
+** the line (geom_on_segment's exact test would say 0) and certainly not inside the other
 ** side's triangle (skel_in_cone asks more than that margin); within it, neither cone test
 ** can succeed, and only the exact test on the segment is left.  The same answers as
-** skel_on_segment and skel_in_cone on both sides, one cone test instead of two. */
+** geom_on_segment and skel_in_cone on both sides, one cone test instead of two. */
 static int skel_diamond_side(geom_point a, geom_point b, geom_point q) {
   double ux = b.x - a.x, uy = b.y - a.y, vx = q.x - a.x, vy = q.y - a.y;
   double l = ux * vy, r = uy * vx, cr = l - r;
   double ecr = (3 + 16 * SKEL_U) * SKEL_U * (fabs(l) + fabs(r));
-  if (!(fabs(cr) > ecr)) return skel_on_segment(a, b, q) ? 2 : 0;
+  if (!(fabs(cr) > ecr)) return geom_on_segment(a, b, q) ? 2 : 0;
   int side = cr > 0 ? 1 : -1;
   return skel_in_cone(a, b, q, side) ? side : 0;
 }
@@ -80,7 +75,7 @@ static int skel_edge_ok(const skel_grid *g, uint32_t a, geom_point pa, uint32_t 
         uint32_t q = g->pt[k];
         geom_point pq = g->gp[k];
         if (q == a || q == b || pq.x < xa || pq.x > xb || pq.y < ya || pq.y > yb) continue;
-        int w = diamond ? skel_diamond_side(pa, pb, pq) : 2 * skel_on_segment(pa, pb, pq);
+        int w = diamond ? skel_diamond_side(pa, pb, pq) : 2 * geom_on_segment(pa, pb, pq);
         if (w == 2) return 0;
         left |= w == 1, right |= w == -1;
         if (left && right) return 0;

@@ -288,19 +288,11 @@ static int dcc_merge(dcc_run *R, dcc_hull a, dcc_hull b, dcc_hull *m) {
   return dcc_zip(R, basel) != 0 || dcc_lawson(R) != 0 ? -1 : 0;
 }
 
-/* ---- step 3: a segment joining the two strips, inserted by flips ---- */
+/* ---- step 3: a segment joining the two pieces, inserted by flips ---- */
 
 /* Mark the edge u -> w (a ring neighbour of u) as segment sg. */
 static void dcc_mark(dcc_run *R, uint32_t e, uint32_t sg) {
   R->con[e / 2] = (int32_t)sg;
-}
-
-/* Is w on the open segment from u towards v (on its line, u < w < v in
-** the order along it: lexicographic, which is monotone along a line)? */
-static int dcc_on(dcc_run *R, uint32_t u, uint32_t v, uint32_t w) {
-  int up = geom_lexless(dcc_p(R, u), dcc_p(R, v));
-  return geom_lexless(dcc_p(R, u), dcc_p(R, w)) == up
-         && geom_lexless(dcc_p(R, w), dcc_p(R, v)) == up && dcc_orient(R, u, v, w) == 0;
 }
 
 /* The first step of segment u -> v round u: the edge u -> w when w is v
@@ -314,7 +306,7 @@ static uint32_t dcc_start(dcc_run *R, uint32_t u, uint32_t v, uint32_t *first) {
   do {
     uint32_t x = dcc_dest(R, e);
     ops_add(R->c, OPS_LOCATE, 1);
-    if (x == v || dcc_on(R, u, v, x)) return e;
+    if (x == v || ops_on_segment(R->c, dcc_p(R, u), dcc_p(R, v), dcc_p(R, x))) return e;
     uint32_t f = h[e].next, y = dcc_dest(R, f);
     if (f != e && dcc_apex(R, e) == y && dcc_orient(R, u, x, v) > 0
         && dcc_orient(R, u, v, y) > 0)
@@ -623,10 +615,16 @@ static int dcc_triangles(dcc_run *R, dcc_hull top, paradigm_output *out) {
   return k == want ? 0 : -2;
 }
 
-/* Bytes a site: the sites, ranks, positions and ring ends (24), three
+/* Bytes a site: the site, its rank, position and ring end (28), three
 ** edges of two half-edges (72) and a segment mark each (12). */
 #define DCC_SITE_BYTES (sizeof(geom_point) + 3 * sizeof(uint32_t) \
                         + 6 * sizeof(paradigm_half) + 3 * sizeof(int32_t))
+
+/* The bytes dcc_alloc holds, for the peak's count. */
+static size_t dcc_bytes(const dcc_run *R) {
+  size_t n = R->in->n ? R->in->n : 1;
+  return n * DCC_SITE_BYTES + (2 * n + 3 + 2 * R->in->nsegments) * sizeof(uint32_t);
+}
 
 static int dcc_alloc(dcc_run *R) {
   size_t n = R->in->n ? R->in->n : 1, ns = R->in->nsegments;
@@ -638,13 +636,12 @@ static int dcc_alloc(dcc_run *R) {
   R->con = malloc(3 * n * sizeof *R->con);
   R->at = calloc(2 * n + 3, sizeof *R->at);
   R->list = malloc((2 * ns + 1) * sizeof *R->list);
-  ops_memory(R->c, (int64_t)(n * DCC_SITE_BYTES + (2 * n + 3 + 2 * ns) * sizeof(uint32_t)));
+  ops_memory(R->c, (int64_t)dcc_bytes(R));
   return R->s && R->id && R->pos && R->out && R->h && R->con && R->at && R->list ? 0 : -1;
 }
 
 static void dcc_free(dcc_run *R) {
-  size_t n = R->in->n ? R->in->n : 1, ns = R->in->nsegments;
-  ops_memory(R->c, -(int64_t)(n * DCC_SITE_BYTES + (2 * n + 3 + 2 * ns) * sizeof(uint32_t)));
+  ops_memory(R->c, -(int64_t)dcc_bytes(R));
   ops_memory(R->c, -(int64_t)(R->scap * sizeof *R->stack + R->qcap * sizeof *R->queue));
   free(R->s), free(R->id), free(R->pos), free(R->out), free(R->h), free(R->con);
   free(R->at), free(R->list), free(R->stack), free(R->queue);
